@@ -1,0 +1,201 @@
+"""Command line: `harness models | run | compare`; bad input ends in one line on stderr and exit code 2."""
+import argparse
+import json
+import math
+import sys
+
+from . import __version__
+from .errors import UserError
+
+EXIT_OK, EXIT_DISAGREE, EXIT_USAGE = 0, 1, 2
+
+
+class Parser(argparse.ArgumentParser):
+    """argparse that reports a usage error as one line and exit code 2."""
+
+    def error(self, message):
+        raise UserError(message)
+
+
+def number(text):
+    """A finite float (the scene validates ranges)."""
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a number: {text!r}") from None
+    if not math.isfinite(value):
+        raise argparse.ArgumentTypeError(f"not a finite number: {text!r}")
+    return value
+
+
+def number_list(text):
+    """Comma-separated finite floats: '0.9,0.5,0.1'."""
+    return tuple(number(part) for part in text.split(",") if part.strip() != "") or _empty(text)
+
+
+def _empty(text):
+    raise argparse.ArgumentTypeError(f"empty list: {text!r}")
+
+
+def angle_list(text):
+    """'A,B,C' or 'A:B:STEP' (inclusive of B when it falls on the grid), degrees."""
+    if ":" not in text:
+        return number_list(text)
+    parts = text.split(":")
+    if len(parts) != 3:
+        raise argparse.ArgumentTypeError(f"angle range must be A:B:STEP, got {text!r}")
+    start, stop, step = (number(p) for p in parts)
+    if step <= 0 or stop < start:
+        raise argparse.ArgumentTypeError(f"angle range needs STEP > 0 and B >= A, got {text!r}")
+    count = int(math.floor((stop - start) / step + 1e-9)) + 1
+    if count > 100000:
+        raise argparse.ArgumentTypeError(f"angle range has too many angles ({count})")
+    return tuple(round(start + i * step, 12) for i in range(count))
+
+
+def submodel(text):
+    """KEY=VALUE sub-model override, e.g. tangential=mindlin:total."""
+    key, sep, value = text.partition("=")
+    if not sep or not key or not value:
+        raise argparse.ArgumentTypeError(f"expected KEY=VALUE, got {text!r}")
+    return key.strip(), value.strip()
+
+
+def add_scene_options(parser):
+    """Options that describe the scene, shared by run and compare."""
+    from .scene import DEFAULT_EN
+    g = parser.add_argument_group("scene")
+    g.add_argument("--en", type=number_list, default=DEFAULT_EN, metavar="LIST",
+                   help="target normal restitution coefficients, e.g. 0.9,0.5,0.1 (default %(default)s)")
+    where = g.add_mutually_exclusive_group()
+    where.add_argument("--angles", type=angle_list, metavar="A,B,..|A:B:STEP",
+                       help="impact angles from the normal in degrees (default 1:89:2, 45 angles)")
+    where.add_argument("--psi", type=number_list, metavar="LIST",
+                       help="normalised impact angles Psi1* = kappa V_t/(mu V_n (1+e_n)) instead of angles")
+    g.add_argument("--mu", type=number, help="friction coefficient (default: the material's, else 0.3)")
+    g.add_argument("--material", default="paper", help="material preset (see `harness models`), default paper")
+    for name, unit in (("radius", "m"), ("E", "Pa"), ("nu", "-"), ("rho", "kg/m^3")):
+        g.add_argument(f"--{name}", type=number, help=f"override the material's {name} [{unit}]")
+    g.add_argument("--speed", type=number, default=1.0, help="impact speed V [m/s] (default 1)")
+    g.add_argument("--omega0", type=number, default=0.0, help="initial spin omega_y [rad/s] (default 0)")
+    g.add_argument("--gravity", type=number, default=0.0, help="gravity towards the wall [m/s^2] (default 0)")
+    g.add_argument("--wall", choices=("same", "rigid"), default="same",
+                   help="wall of the same material (the paper's case) or rigid")
+    g.add_argument("--with", dest="overrides", type=submodel, action="append", default=[], metavar="KEY=VALUE",
+                   help="replace one sub-model: normal=, damping=, end=, tangential=, tangential-damping= "
+                        "(e.g. --with tangential=mindlin:total --with end=tension)")
+    res = parser.add_argument_group("resolution")
+    how = res.add_mutually_exclusive_group()
+    how.add_argument("--steps-per-contact", type=int, default=1000, metavar="N",
+                     help="time step = estimated contact time / N (default 1000)")
+    how.add_argument("--converged", action="store_true",
+                     help="refine until results change < 1e-7 (relative to V), i.e. ~1e-7 from the exact solution")
+
+
+def scene_from_args(args):
+    """Build the validated Scene from parsed options."""
+    from .scene import from_material
+    angles = args.angles
+    if args.psi is None and angles is None:
+        from .scene import DEFAULT_ANGLES
+        angles = DEFAULT_ANGLES
+    return from_material(args.material, radius=args.radius, E=args.E, nu=args.nu, rho=args.rho, mu=args.mu,
+                         speed=args.speed, e_n=tuple(args.en), angles_deg=angles, psi1_star=args.psi,
+                         omega0=args.omega0, gravity=args.gravity, wall=args.wall)
+
+
+def law_from_args(args):
+    from .laws import compose
+    return compose(args.model, dict(args.overrides))
+
+
+def simulate_from_args(args):
+    from .solver.reference import simulate
+    if args.steps_per_contact < 5:
+        raise UserError(f"--steps-per-contact must be >= 5, got {args.steps_per_contact}")
+    scene = scene_from_args(args)
+    law = law_from_args(args)
+    frame, _ = simulate(law, scene, steps_per_contact=args.steps_per_contact, converged=args.converged)
+    return law, scene, frame
+
+
+def cmd_models(args):
+    from .laws import LAWS
+    from .materials import MATERIALS
+    if args.json:
+        print(json.dumps([{"name": law.name, "provisional": law.provisional, "summary": law.summary,
+                           "submodels": law.describe(), "engines": {"reference": ["paper"]}}
+                          for law in LAWS.values()], indent=2))
+        return EXIT_OK
+    print(f"{'model':28s} {'normal':26s} {'damping':20s} {'end':11s} {'tangential':28s} engines")
+    for law in LAWS.values():
+        d = law.describe()
+        print(f"{law.name:28s} {d['normal']:26s} {d['damping']:20s} {d['end']:11s} {d['tangential']:28s} "
+              f"reference{' [provisional]' if law.provisional else ''}")
+    print("\nmaterials: " + ", ".join(MATERIALS))
+    return EXIT_OK
+
+
+def cmd_run(args):
+    from .results import write_csv
+    check_output_file(args.output)
+    law, scene, frame = simulate_from_args(args)
+    write_csv(frame, args.output)
+    if not args.quiet:
+        bad = int((frame.status != "ok").sum())
+        print(f"{law.name}: {len(frame)} impacts -> {args.output}" + (f" ({bad} not ok)" if bad else ""))
+    return EXIT_OK
+
+
+def check_output_file(path):
+    import os
+    directory = os.path.dirname(os.path.abspath(path))
+    if not os.path.isdir(directory):
+        raise UserError(f"cannot write {path}: directory {directory} does not exist")
+    if os.path.isdir(path):
+        raise UserError(f"cannot write {path}: it is a directory")
+
+
+def cmd_compare(args):
+    from .compare import compare
+    return compare(args)
+
+
+def build_parser():
+    parser = Parser(prog="harness", description="Cross-validate DEM contact force models against the literature "
+                    "(Thornton, Cummins & Cleary 2013) and against LIGGGHTS and YADE.")
+    parser.add_argument("--version", action="version", version=f"harness {__version__}")
+    sub = parser.add_subparsers(dest="command", required=True, parser_class=Parser)
+    p = sub.add_parser("models", help="laws, their sub-models and the engines that support each")
+    p.add_argument("--json", action="store_true", help="machine-readable list")
+    p.set_defaults(func=cmd_models)
+    p = sub.add_parser("run", help="simulate one law over a scene with the reference engine, write a results CSV")
+    p.add_argument("--model", required=True, help="law name (see `harness models`)")
+    add_scene_options(p)
+    p.add_argument("-o", "--output", required=True, help="results CSV to write")
+    p.add_argument("--quiet", action="store_true", help="print nothing on success")
+    p.set_defaults(func=cmd_run)
+    p = sub.add_parser("compare", help="reference vs every available engine; tables, results.csv, report.html")
+    p.add_argument("--model", required=True, help="law name (see `harness models`)")
+    p.add_argument("--engines", default=None, help="comma-separated engines (default: all that support the law)")
+    add_scene_options(p)
+    p.add_argument("-o", "--output", default="harness-out", metavar="DIR", help="output directory (default %(default)s)")
+    p.add_argument("--quiet", action="store_true", help="print only the verdict")
+    p.set_defaults(func=cmd_compare)
+    return parser
+
+
+def main(argv=None):
+    try:
+        args = build_parser().parse_args(argv)
+        return args.func(args)
+    except UserError as exc:
+        print(f"harness: error: {exc}", file=sys.stderr)
+        return EXIT_USAGE
+    except KeyboardInterrupt:
+        print("harness: interrupted; finished results were kept", file=sys.stderr)
+        return 130
+
+
+if __name__ == "__main__":
+    sys.exit(main())

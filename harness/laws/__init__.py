@@ -1,0 +1,4 @@
+"""Contact laws as compositions of sub-models (normal, damping, end rule, tangential, tangential dashpot)."""
+from .registry import LAWS, Law, compose, get_law
+
+__all__ = ["LAWS", "Law", "compose", "get_law"]

@@ -1,0 +1,76 @@
+"""Normal damping sub-models: c(alpha) = c0 alpha^power, with c0 calibrated from the target e_n (MODELS 2.1-2.3)."""
+import math
+from dataclasses import dataclass
+
+from ..errors import UserError
+from . import calibration as cal
+
+CALIBRATIONS = ("exact", "appendix-b")
+
+
+@dataclass(frozen=True)
+class Dashpot:
+    """Kernel coefficients c0, power and the equivalent damping ratio g (0 where none is defined)."""
+    c0: float
+    power: float
+    g: float
+
+
+class NoDamping:
+    """No normal dashpot: plastic laws dissipate by hysteresis."""
+    name = "none"
+    calibration = None
+
+    def dashpot(self, normal, contact, e_n, speed, end):
+        return Dashpot(0.0, 0.0, 0.0)
+
+
+class LinearDashpot:
+    """c_n = 2 g sqrt(m k_n); g exact for the end rule: convention A closed form or Schwager-Poeschel inverted."""
+    name = "linear"
+
+    def __init__(self, calibration="exact"):
+        if calibration != "exact":
+            raise UserError("the linear dashpot has only the exact calibration")
+        self.calibration = calibration
+
+    def dashpot(self, normal, contact, e_n, speed, end):
+        k = normal.parameters(contact, e_n, speed).values[0]
+        g = cal.lsd_tension_g(e_n) if end == "tension" else cal.lsd_notension_g(e_n)
+        return Dashpot(2.0 * g * math.sqrt(contact.mass * k), 0.0, g)
+
+
+class TsujiDashpot:
+    """eta alpha^1/4 alpha_dot, eta = A sqrt(m k), k = 4/3 E* sqrt(R); A = sqrt5 beta (tension) or exact/App. B fit."""
+    name = "tsuji"
+
+    def __init__(self, calibration="appendix-b"):
+        if calibration not in CALIBRATIONS:
+            raise UserError(f"tsuji calibration must be one of {', '.join(CALIBRATIONS)}, got {calibration!r}")
+        self.calibration = calibration
+
+    def coefficient_A(self, e_n, end):
+        """A for the end rule; 'appendix-b' uses A = sqrt6 g_fit (c_n = 2 g sqrt(m 2E*a), Thornton 2013 App. B)."""
+        if self.calibration == "appendix-b":
+            return math.sqrt(6.0) * cal.thornton_appendix_b_g(e_n)
+        return cal.tsuji_tension_A(e_n) if end == "tension" else cal.tsuji_notension_A(e_n)
+
+    def dashpot(self, normal, contact, e_n, speed, end):
+        a = self.coefficient_A(e_n, end)
+        k = 4.0 / 3.0 * contact.E_star * math.sqrt(contact.radius)
+        return Dashpot(a * math.sqrt(contact.mass * k), 0.25, a / math.sqrt(6.0))
+
+
+class KuwabaraKonoDashpot:
+    """F = k[alpha^3/2 + 3/2 A alpha^1/2 alpha_dot]; A from y = A (k/m)^2/5 V^1/5 solving e(y) = e_n at V (MODELS 2.3)."""
+    name = "kuwabara-kono"
+    calibration = "exact"
+
+    def dashpot(self, normal, contact, e_n, speed, end):
+        k = 4.0 / 3.0 * contact.E_star * math.sqrt(contact.radius)
+        y = cal.kuwabara_kono_y(e_n, end)
+        a_time = y * (contact.mass / k) ** 0.4 * speed ** -0.2
+        return Dashpot(1.5 * k * a_time, 0.5, 0.0)
+
+
+DAMPING_MODELS = {cls.name: cls for cls in (NoDamping, LinearDashpot, TsujiDashpot, KuwabaraKonoDashpot)}

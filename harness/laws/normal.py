@@ -1,0 +1,98 @@
+"""Normal sub-models: the elastic/plastic part of F_n and its parameters for one contact, target e_n and speed."""
+import math
+from dataclasses import dataclass
+
+from ..solver import codes as C
+from . import calibration as cal
+
+
+@dataclass(frozen=True)
+class NormalParameters:
+    """What the kernel needs (p1..p4), plus k_n for linear tangential springs and a contact-time estimate for dt."""
+    values: tuple
+    linear_stiffness: float
+    contact_time: float
+
+
+class LinearSpring:
+    """F = k_n alpha, k_n = 16/15 sqrt(R) E* (15 m V^2/(16 sqrt(R) E*))^1/5 (Hertz's peak overlap at V) [prov]."""
+    name, code, plastic = "linear", C.NORMAL_LINEAR, False
+
+    def parameters(self, contact, e_n, speed):
+        k = cal.hertz_equivalent_stiffness(contact.E_star, contact.radius, contact.mass, speed)
+        return NormalParameters((k, 0.0, 0.0, 0.0), k, math.pi * math.sqrt(contact.mass / k))
+
+
+class Hertz:
+    """F = 4/3 E* R^1/2 alpha^3/2 (paper eq. 1)."""
+    name, code, plastic = "hertz", C.NORMAL_HERTZ, False
+
+    def parameters(self, contact, e_n, speed):
+        return NormalParameters((contact.E_star, 0.0, 0.0, 0.0),
+                                cal.hertz_equivalent_stiffness(contact.E_star, contact.radius, contact.mass, speed),
+                                cal.hertz_contact_time(contact.E_star, contact.radius, contact.mass, speed))
+
+
+class WaltonBraun:
+    """K1 alpha loading, K2 (alpha - alpha0) unloading, K2 = K1/e^2 so that e = sqrt(K1/K2) (MODELS 2.4)."""
+    name, code, plastic = "walton-braun", C.NORMAL_WALTON_BRAUN, True
+
+    def loading_stiffness(self, contact, e_n, speed):
+        """K1 as for the linear spring: Hertz's peak overlap at the scene speed [prov]."""
+        return cal.hertz_equivalent_stiffness(contact.E_star, contact.radius, contact.mass, speed)
+
+    def parameters(self, contact, e_n, speed):
+        k1 = self.loading_stiffness(contact, e_n, speed)
+        t_c = 0.5 * math.pi * math.sqrt(contact.mass / k1) * (1.0 + e_n)
+        return NormalParameters((k1, k1 / e_n ** 2, 0.0, 0.0), k1, t_c)
+
+
+class PartiallyLatchingSpring(WaltonBraun):
+    """Provisional PLS: Walton-Braun with K1 = pi p_y R, p_y of Thornton's law for e_n at V (MODELS 2.7) [prov]."""
+    name = "partially-latching-spring"
+
+    def loading_stiffness(self, contact, e_n, speed):
+        return math.pi * Thornton().yield_pressure(contact, e_n, speed) * contact.radius
+
+
+def yield_point(E_star, p_y, radius):
+    """alpha_y = (pi p_y/(2E*))^2 R, F_y = pi^3 p_y^3 R^2/(6 E*^2) (MODELS 2.6)."""
+    return (math.pi * p_y / (2.0 * E_star)) ** 2 * radius, math.pi ** 3 * p_y ** 3 * radius ** 2 / (6.0 * E_star ** 2)
+
+
+class Thornton:
+    """Thornton (1997): Hertz to p_y, F_y + pi p_y R (alpha - alpha_y), Hertz unloading, R_p; p_y gives e_n at V."""
+    name, code, plastic, law = "thornton", C.NORMAL_THORNTON, True, "thornton"
+
+    def yield_pressure(self, contact, e_n, speed):
+        """p_y from r = V_y/V solving e(r) = e_n (MODELS 2.6)."""
+        return cal.yield_pressure(cal.yield_velocity_ratio(e_n, self.law), speed, contact.E_star, contact.rho)
+
+    def plastic_stiffness(self, p_y, alpha_y, f_y, contact):
+        return math.pi * p_y * contact.radius
+
+    def parameters(self, contact, e_n, speed):
+        p_y = self.yield_pressure(contact, e_n, speed)
+        alpha_y, f_y = yield_point(contact.E_star, p_y, contact.radius)
+        k_plastic = self.plastic_stiffness(p_y, alpha_y, f_y, contact)
+        t_c = max(cal.hertz_contact_time(contact.E_star, contact.radius, contact.mass, speed),
+                  0.5 * math.pi * math.sqrt(contact.mass / k_plastic) * (1.0 + e_n))
+        k_lin = cal.hertz_equivalent_stiffness(contact.E_star, contact.radius, contact.mass, speed)
+        return NormalParameters(self.kernel_values(contact, p_y, alpha_y, f_y), k_lin, t_c)
+
+    def kernel_values(self, contact, p_y, alpha_y, f_y):
+        return (contact.E_star, p_y, alpha_y, f_y)
+
+
+class Stronge(Thornton):
+    """Provisional Stronge: Hertz to alpha_y, F_y (2 alpha/alpha_y - 1), Hertz unloading with R_c (MODELS 2.5) [prov]."""
+    name, code, law = "stronge", C.NORMAL_STRONGE, "stronge"
+
+    def plastic_stiffness(self, p_y, alpha_y, f_y, contact):
+        return 2.0 * f_y / alpha_y
+
+    def kernel_values(self, contact, p_y, alpha_y, f_y):
+        return (contact.E_star, alpha_y, f_y, 0.0)
+
+
+NORMAL_MODELS = {cls.name: cls for cls in (LinearSpring, Hertz, WaltonBraun, PartiallyLatchingSpring, Thornton, Stronge)}

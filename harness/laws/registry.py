@@ -1,0 +1,141 @@
+"""Named contact laws: compositions of normal, damping, end rule, tangential and tangential-dashpot sub-models."""
+from dataclasses import dataclass, replace
+
+from ..errors import UserError
+from .damping import DAMPING_MODELS, KuwabaraKonoDashpot, LinearDashpot, NoDamping, TsujiDashpot
+from .normal import NORMAL_MODELS, Hertz, LinearSpring, PartiallyLatchingSpring, Stronge, Thornton, WaltonBraun
+from .tangential import TANGENTIAL_MODELS, LinearTangential, Mindlin, WaltonBraunTangential
+
+END_RULES = ("tension", "no-tension")
+SUBMODEL_KEYS = ("normal", "damping", "end", "tangential", "tangential-damping")
+
+
+@dataclass(frozen=True)
+class Law:
+    """One contact law: sub-models chosen independently (as LAMMPS pair granular), defaults from the paper."""
+    name: str
+    normal: object
+    damping: object
+    end: str
+    tangential: object
+    tangential_damping: float = 0.0      # tangential dashpot damping ratio g_t (0: none; applied while sticking)
+    summary: str = ""
+
+    def describe(self):
+        """Sub-model names as {key: label}, the form `harness models` prints."""
+        damping = self.damping.name + (f":{self.damping.calibration}" if self.damping.calibration not in (None, "exact")
+                                       else "")
+        return {"normal": self.normal.name, "damping": damping, "end": self.end,
+                "tangential": self.tangential.label(), "tangential-damping": self.tangential_damping}
+
+    @property
+    def provisional(self):
+        return self.normal.name in ("stronge", "partially-latching-spring")
+
+
+LAWS = {
+    "linear-spring-dashpot": Law(
+        "linear-spring-dashpot", LinearSpring(), LinearDashpot(), "no-tension", LinearTangential("2/7"),
+        summary="Walton's linear spring-dashpot; k_n from Hertz's peak overlap at V [prov], no tension, "
+                "g exact (Schwager & Poeschel 2007), tangential spring k_t/k_n = 2/7 [prov]"),
+    "hertz-mindlin": Law(
+        "hertz-mindlin", Hertz(), TsujiDashpot("appendix-b"), "no-tension", Mindlin("rescale"),
+        summary="Hertz + Tsuji-type dashpot calibrated by Thornton et al. (2013) App. B, no tension; "
+                "Mindlin 8G*a with the eq. 18b unloading rescale"),
+    "hertz-kuwabara-kono": Law(
+        "hertz-kuwabara-kono", Hertz(), KuwabaraKonoDashpot(), "no-tension", Mindlin("rescale"),
+        summary="Hertz + Kuwabara-Kono dashpot (Zhou et al. 1999 form), A calibrated at the scene speed; "
+                "Mindlin eq. 18b"),
+    "walton-braun": Law(
+        "walton-braun", WaltonBraun(), NoDamping(), "no-tension", WaltonBraunTangential("2/7"),
+        summary="Walton & Braun (1986) linear hysteretic K2 = K1/e^2, K1 from Hertz at V [prov]; "
+                "Walton-Braun tangential k_t0/K1 = 2/7 [prov]"),
+    "stronge": Law(
+        "stronge", Stronge(), NoDamping(), "no-tension", Mindlin("rescale"),
+        summary="PROVISIONAL reconstruction of Stronge's elastic-plastic law (MODELS 2.5); Mindlin eq. 18b"),
+    "thornton": Law(
+        "thornton", Thornton(), NoDamping(), "no-tension", Mindlin("rescale"),
+        summary="Thornton (1997) elastoplastic, p_y calibrated for e_n at the scene speed; Mindlin eq. 18b"),
+    "partially-latching-spring": Law(
+        "partially-latching-spring", PartiallyLatchingSpring(), NoDamping(), "no-tension", LinearTangential("2/7"),
+        summary="PROVISIONAL: Walton-Braun spring with K1 = pi p_y R (Thornton's plastic stiffness), "
+                "K2 = K1/e^2 (MODELS 2.7); tangential spring 2/7 K1 [prov]"),
+}
+
+
+def get_law(name):
+    """Look up a named law; unknown name -> UserError listing the known ones."""
+    try:
+        return LAWS[name]
+    except KeyError:
+        raise UserError(f"unknown model {name!r}; known: {', '.join(LAWS)}") from None
+
+
+def _split(spec):
+    name, _, option = str(spec).partition(":")
+    return name, option or None
+
+
+def _damping(spec):
+    name, option = _split(spec)
+    if name not in DAMPING_MODELS:
+        raise UserError(f"unknown damping {name!r}; known: {', '.join(DAMPING_MODELS)}")
+    cls = DAMPING_MODELS[name]
+    return cls(option) if option else cls()
+
+
+def _tangential(spec):
+    name, option = _split(spec)
+    if name not in TANGENTIAL_MODELS:
+        raise UserError(f"unknown tangential model {name!r}; known: {', '.join(TANGENTIAL_MODELS)}")
+    cls = TANGENTIAL_MODELS[name]
+    return cls(option) if option else cls()
+
+
+def _tangential_damping(spec):
+    try:
+        value = float(spec)
+    except ValueError:
+        raise UserError(f"tangential-damping must be a damping ratio >= 0, got {spec!r}") from None
+    if not 0.0 <= value < 100.0:
+        raise UserError(f"tangential-damping must be a damping ratio in [0, 100), got {spec!r}")
+    return value
+
+
+def compose(name, overrides=None):
+    """The named law with sub-models replaced, e.g. {'tangential': 'mindlin:total', 'end': 'tension'}; validated."""
+    law = get_law(name)
+    changes = {}
+    for key, spec in (overrides or {}).items():
+        if key == "normal":
+            if spec not in NORMAL_MODELS:
+                raise UserError(f"unknown normal model {spec!r}; known: {', '.join(NORMAL_MODELS)}")
+            changes["normal"] = NORMAL_MODELS[spec]()
+        elif key == "damping":
+            changes["damping"] = _damping(spec)
+        elif key == "end":
+            if spec not in END_RULES:
+                raise UserError(f"end must be one of {', '.join(END_RULES)}, got {spec!r}")
+            changes["end"] = spec
+        elif key == "tangential":
+            changes["tangential"] = _tangential(spec)
+        elif key == "tangential-damping":
+            changes["tangential_damping"] = _tangential_damping(spec)
+        else:
+            raise UserError(f"unknown sub-model {key!r}; known: {', '.join(SUBMODEL_KEYS)}")
+    law = replace(law, **changes) if changes else law
+    check_composition(law)
+    return law
+
+
+def check_composition(law):
+    """Reject compositions that have no meaning (a dashpot on a plastic law, tension with a latching spring...)."""
+    if isinstance(law.damping, LinearDashpot) and not isinstance(law.normal, LinearSpring):
+        raise UserError("the linear dashpot calibration needs the linear normal spring")
+    if isinstance(law.damping, (TsujiDashpot, KuwabaraKonoDashpot)) and not isinstance(law.normal, Hertz):
+        raise UserError(f"the {law.damping.name} dashpot needs the hertz normal model")
+    if law.normal.plastic and not isinstance(law.damping, NoDamping):
+        raise UserError(f"{law.normal.name} dissipates plastically; use damping none")
+    if law.normal.plastic and law.end != "no-tension":
+        raise UserError(f"{law.normal.name} ends contact at zero force; use end no-tension")
+

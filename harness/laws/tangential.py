@@ -1,0 +1,75 @@
+"""Tangential sub-models (all capped by Coulomb |F_t| <= mu F_n) and their kernel parameter (MODELS 3)."""
+from fractions import Fraction
+
+from ..errors import UserError
+from ..solver import codes as C
+
+MINDLIN_FORMS = {"rescale": C.TANGENTIAL_MINDLIN_RESCALE, "incremental": C.TANGENTIAL_MINDLIN_INCREMENTAL,
+                 "total": C.TANGENTIAL_MINDLIN_TOTAL}
+
+
+def parse_ratio(text):
+    """'2/7', 'kappa' or a positive number -> float or the string 'kappa'."""
+    if text == "kappa":
+        return text
+    try:
+        value = float(Fraction(str(text)))
+    except (ValueError, ZeroDivisionError):
+        raise UserError(f"k_t/k_n must be 'kappa', a fraction like 2/7 or a positive number, got {text!r}") from None
+    if not 0.0 < value <= 10.0:
+        raise UserError(f"k_t/k_n must lie in (0, 10], got {text!r}")
+    return value
+
+
+class LinearTangential:
+    """dF_t = -k_t V_s dt, k_t = ratio k_n (2/7: equal periods; kappa: Mindlin's initial ratio), capped."""
+    name, code = "linear", C.TANGENTIAL_LINEAR
+
+    def __init__(self, kt_kn="2/7"):
+        self.kt_kn = parse_ratio(kt_kn)
+
+    def label(self):
+        return f"linear(k_t/k_n={self.kt_kn if self.kt_kn == 'kappa' else round(self.kt_kn, 6)})"
+
+    def parameter(self, contact, k_n):
+        ratio = contact.kappa if self.kt_kn == "kappa" else self.kt_kn
+        return ratio * k_n
+
+
+class Mindlin:
+    """No-slip Mindlin k_t = 8 G* a: 'rescale' = paper eq. 18b, 'incremental' (YADE), 'total' (LIGGGHTS)."""
+    name = "mindlin"
+
+    def __init__(self, form="rescale"):
+        if form not in MINDLIN_FORMS:
+            raise UserError(f"mindlin form must be one of {', '.join(MINDLIN_FORMS)}, got {form!r}")
+        self.form = form
+        self.code = MINDLIN_FORMS[form]
+
+    def label(self):
+        return f"mindlin({self.form})"
+
+    def parameter(self, contact, k_n):
+        return contact.G_star
+
+
+class MindlinDeresiewicz(Mindlin):
+    """Mindlin-Deresiewicz as Thornton & Yin (1991): dT = 8G*a theta_k dd + (-1)^k mu dN (1 - theta_k)."""
+    name, code, form = "mindlin-deresiewicz", C.TANGENTIAL_MINDLIN_DERESIEWICZ, "deresiewicz"
+
+    def __init__(self):
+        pass
+
+    def label(self):
+        return self.name
+
+
+class WaltonBraunTangential(LinearTangential):
+    """Walton & Braun (1986): k_t = k_t0 [1 - (T - T*)/(mu N - T*)]^1/3, k_t0 = ratio k_n (2/7 default) [rec]."""
+    name, code = "walton-braun", C.TANGENTIAL_WALTON_BRAUN
+
+    def label(self):
+        return f"walton-braun(k_t0/k_n={self.kt_kn if self.kt_kn == 'kappa' else round(self.kt_kn, 6)})"
+
+
+TANGENTIAL_MODELS = {cls.name: cls for cls in (LinearTangential, Mindlin, MindlinDeresiewicz, WaltonBraunTangential)}

@@ -1,0 +1,51 @@
+"""The results table: one row per impact, stable column names (DESIGN), written atomically."""
+import os
+import tempfile
+
+import pandas as pd
+
+from .errors import UserError
+
+IDENTITY = ("model", "dialect", "engine", "engine_version", "e_n_target", "mu", "theta_deg", "v_n0", "v_t0", "omega0",
+            "radius", "E", "nu", "rho", "dt", "steps_per_contact")
+OUTCOME = ("v_n1", "v_t1", "omega1", "e_n", "e_t", "beta", "psi1", "psi2", "psi1_star", "psi2_star", "omega_star",
+           "theta_r_com_deg", "theta_r_cp_deg", "t_contact", "f_n_max", "overlap_max", "ke_ratio", "wall_s",
+           "status", "message")
+COLUMNS = IDENTITY + OUTCOME
+
+
+def table(rows):
+    """A DataFrame with exactly the result columns, in order."""
+    frame = pd.DataFrame(rows)
+    missing = [c for c in COLUMNS if c not in frame.columns]
+    if missing:
+        raise ValueError(f"result rows lack columns {missing}")
+    return frame.loc[:, list(COLUMNS)]
+
+
+def write_csv(frame, path):
+    """Write via a temporary file and rename, so an interrupted run never leaves a half-written table."""
+    path = os.fspath(path)
+    directory = os.path.dirname(os.path.abspath(path))
+    if not os.path.isdir(directory):
+        raise UserError(f"output directory does not exist: {directory}")
+    fd, tmp = tempfile.mkstemp(prefix=".results-", suffix=".csv", dir=directory)
+    try:
+        with os.fdopen(fd, "w", newline="") as handle:
+            frame.to_csv(handle, index=False, float_format="%.17g")
+        os.replace(tmp, path)
+    except BaseException:
+        os.unlink(tmp)
+        raise
+
+
+def read_csv(path):
+    """Read a results table; a missing or foreign file is a user error."""
+    try:
+        frame = pd.read_csv(path, keep_default_na=True)
+    except (OSError, pd.errors.ParserError, UnicodeDecodeError, pd.errors.EmptyDataError) as exc:
+        raise UserError(f"cannot read results table {path}: {exc}") from None
+    missing = [c for c in COLUMNS if c not in frame.columns]
+    if missing:
+        raise UserError(f"{path} is not a harness results table (missing {', '.join(missing[:3])}...)")
+    return frame

@@ -1,0 +1,144 @@
+"""Scene: what to simulate (sphere, wall, impact set), validated once, with the effective contact properties."""
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .errors import UserError
+from .materials import get_material
+
+DEFAULT_EN = (0.9, 0.7, 0.5, 0.3, 0.1)
+DEFAULT_ANGLES = tuple(float(a) for a in range(1, 90, 2))   # 45 impact angles, 1..89 deg
+WALLS = ("same", "rigid")
+
+
+@dataclass(frozen=True)
+class Contact:
+    """Effective sphere-wall properties: E* and G* (MODELS 1), R* = R, m* = m, I = 2/5 m R^2."""
+    radius: float
+    mass: float
+    inertia: float
+    E_star: float
+    G_star: float
+    nu: float
+    rho: float
+
+    @property
+    def kappa(self):
+        """kappa = 4 G*/E* (Mindlin tangential to Hertz normal stiffness ratio, MODELS 1)."""
+        return 4.0 * self.G_star / self.E_star
+
+    @property
+    def chi(self):
+        """chi = 3.5 (1 - nu)/(2 - nu) for a solid sphere (Maw-Barber-Fawcett, MODELS 1)."""
+        return 3.5 * (1.0 - self.nu) / (2.0 - self.nu)
+
+
+@dataclass(frozen=True)
+class Scene:
+    """A sphere of radius R hitting a wall at speed V and the listed angles (deg from the normal) or Psi1* values."""
+    radius: float = 5e-3
+    E: float = 70e9
+    nu: float = 0.3
+    rho: float = 2650.0
+    mu: float = 0.3
+    speed: float = 1.0
+    e_n: tuple = DEFAULT_EN
+    angles_deg: tuple | None = DEFAULT_ANGLES
+    psi1_star: tuple | None = None
+    omega0: float = 0.0
+    wall: str = "same"
+    wall_E: float | None = None
+    wall_nu: float | None = None
+    gravity: float = 0.0
+    material: str = "paper"
+    extra: dict = field(default_factory=dict, compare=False)
+
+    def __post_init__(self):
+        validate(self)
+
+    @property
+    def contact(self):
+        return contact_properties(self)
+
+    def impacts(self, e_n):
+        """Incident (v_n, v_t, omega, theta_deg) arrays for one target e_n (Psi1* needs e_n: MODELS 4)."""
+        if self.psi1_star is not None:
+            c = self.contact
+            psi1 = np.asarray(self.psi1_star, dtype=float) * (1.0 + e_n)
+            theta = np.arctan(psi1 * self.mu / c.kappa)
+        else:
+            theta = np.radians(np.asarray(self.angles_deg, dtype=float))
+        v_n = self.speed * np.cos(theta)
+        v_t = self.speed * np.sin(theta)
+        omega = np.full_like(v_n, self.omega0)
+        return v_n, v_t, omega, np.degrees(theta)
+
+
+def contact_properties(scene):
+    """E* = 1/[(1-nu1^2)/E1 + (1-nu2^2)/E2], G* = 1/[(2-nu1)/G1 + (2-nu2)/G2]; rigid wall: E2, G2 -> inf."""
+    E1, nu1 = scene.E, scene.nu
+    G1 = E1 / (2.0 * (1.0 + nu1))
+    inv_e = (1.0 - nu1 ** 2) / E1
+    inv_g = (2.0 - nu1) / G1
+    if scene.wall == "same":
+        inv_e, inv_g = 2.0 * inv_e, 2.0 * inv_g
+    elif scene.wall == "other":
+        E2, nu2 = scene.wall_E, scene.wall_nu
+        inv_e += (1.0 - nu2 ** 2) / E2
+        inv_g += (2.0 - nu2) / (E2 / (2.0 * (1.0 + nu2)))
+    mass = 4.0 / 3.0 * math.pi * scene.radius ** 3 * scene.rho
+    return Contact(radius=scene.radius, mass=mass, inertia=0.4 * mass * scene.radius ** 2,
+                   E_star=1.0 / inv_e, G_star=1.0 / inv_g, nu=nu1, rho=scene.rho)
+
+
+def _positive(name, value):
+    if not (isinstance(value, (int, float)) and math.isfinite(value) and value > 0):
+        raise UserError(f"{name} must be a positive number, got {value!r}")
+
+
+def validate(scene):
+    """Reject physically meaningless scenes with one clear line (UserError)."""
+    for name in ("radius", "E", "rho", "speed"):
+        _positive(name, getattr(scene, name))
+    if not -1.0 < scene.nu < 0.5:
+        raise UserError(f"nu must lie in (-1, 0.5), got {scene.nu!r}")
+    if not (math.isfinite(scene.mu) and scene.mu >= 0):
+        raise UserError(f"mu must be >= 0, got {scene.mu!r}")
+    if not math.isfinite(scene.omega0) or not math.isfinite(scene.gravity) or scene.gravity < 0:
+        raise UserError("omega0 must be finite and gravity >= 0")
+    if scene.wall not in WALLS + ("other",):
+        raise UserError(f"wall must be one of {', '.join(WALLS)}, got {scene.wall!r}")
+    if scene.wall == "other":
+        _positive("wall E", scene.wall_E)
+        if scene.wall_nu is None or not -1.0 < scene.wall_nu < 0.5:
+            raise UserError(f"wall nu must lie in (-1, 0.5), got {scene.wall_nu!r}")
+    if not scene.e_n:
+        raise UserError("at least one e_n is needed")
+    for e in scene.e_n:
+        if not (math.isfinite(e) and 0.0 < e <= 1.0):
+            raise UserError(f"e_n must lie in (0, 1], got {e!r}")
+    if (scene.angles_deg is None) == (scene.psi1_star is None):
+        raise UserError("give either impact angles or Psi1* values, not both")
+    if scene.angles_deg is not None:
+        if not scene.angles_deg:
+            raise UserError("at least one impact angle is needed")
+        for a in scene.angles_deg:
+            if not (math.isfinite(a) and 0.0 <= a < 90.0):
+                raise UserError(f"impact angle must lie in [0, 90) degrees, got {a!r}")
+    else:
+        if scene.mu == 0:
+            raise UserError("Psi1* is undefined for mu = 0 (Psi1 = kappa V_s/(mu V_n)); give angles instead")
+        for psi in scene.psi1_star:
+            if not (math.isfinite(psi) and psi >= 0):
+                raise UserError(f"Psi1* must be >= 0, got {psi!r}")
+
+
+def from_material(name, **overrides):
+    """Scene from a preset material (radius, E, nu, rho, mu where the preset has one) plus explicit overrides."""
+    mat = get_material(name)
+    values = dict(radius=mat.radius, E=mat.E, nu=mat.nu, rho=mat.rho, material=mat.name)
+    if mat.mu is not None:
+        values["mu"] = mat.mu
+    values.update({k: v for k, v in overrides.items() if v is not None})
+    return Scene(**values)

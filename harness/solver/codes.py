@@ -1,0 +1,47 @@
+"""Integer codes by which the compiled kernel selects sub-models; one table, shared by plan and kernel."""
+
+# normal elastic/plastic part: F_el(alpha, alpha_max)
+NORMAL_LINEAR = 0          # k alpha                                  (MODELS 2.1)
+NORMAL_HERTZ = 1           # k alpha^3/2                              (paper eq. 1)
+NORMAL_WALTON_BRAUN = 2    # K1 alpha loading, K2 (alpha - alpha0) unloading (MODELS 2.4)
+NORMAL_THORNTON = 3        # Hertz, linear plastic, Hertz unloading with R_p (MODELS 2.6)
+NORMAL_STRONGE = 4         # Hertz, F_y (2 alpha/alpha_y - 1), Hertz unloading with R_c (MODELS 2.5)
+
+# end-of-contact rule
+END_ALPHA = 0              # tension allowed, contact ends when alpha returns to 0
+END_FORCE = 1              # no tension: F clipped at 0, contact ends when F returns to 0
+
+# tangential part
+TANGENTIAL_NONE = 0                # mu = 0 or no tangential motion: no tangential model, no rotation
+TANGENTIAL_LINEAR = 1              # dF = -k_t V_s dt, Coulomb cap              (MODELS 3)
+TANGENTIAL_MINDLIN_INCREMENTAL = 2 # dF = -8 G* a V_s dt, no rescale            (MODELS 3)
+TANGENTIAL_MINDLIN_RESCALE = 3     # F <- F a/a_old on unloading, then dF = -8 G* a V_s dt (paper eq. 18b)
+TANGENTIAL_MINDLIN_TOTAL = 4       # F = -8 G* a xi, xi total displacement       (MODELS 3)
+TANGENTIAL_MINDLIN_DERESIEWICZ = 5 # Thornton & Yin (1991) theta_k rule          (MODELS 3)
+TANGENTIAL_WALTON_BRAUN = 6        # k_t0 [1 - (T - T*)/(mu N - T*)]^1/3         (MODELS 3)
+
+# integrator
+INTEGRATOR_PAPER = 0       # velocity Verlet, damping implicit in the closing half-kick, release located in-step
+
+# per-impact parameter slots (columns of the float parameter matrix)
+P_MASS, P_INERTIA, P_RADIUS, P_DT, P_GRAVITY, P_MU = 0, 1, 2, 3, 4, 5
+P_N1, P_N2, P_N3, P_N4 = 6, 7, 8, 9          # normal-model parameters (meaning per model)
+P_DAMP_C0, P_DAMP_POWER = 10, 11             # c(alpha) = c0 alpha^power
+P_T1, P_T2 = 12, 13                          # tangential-model parameters
+P_TDAMP = 14                                 # tangential dashpot: c_t = P_TDAMP sqrt(k_t), 0 = none
+P_LEVER = 15                                 # lever arm R - P_LEVER alpha (paper 0)
+P_VZ0, P_VX0, P_W0 = 16, 17, 18              # initial velocities (vz < 0 approaching), spin omega_y
+P_MAXSTEPS = 19
+N_PARAMS = 20
+
+# per-impact integer slots
+I_NORMAL, I_END, I_TANGENTIAL, I_INTEGRATOR = 0, 1, 2, 3
+N_INTS = 4
+
+# outputs
+O_VZ, O_VX, O_W, O_TC, O_FMAX, O_AMAX, O_STEPS, O_STATUS = 0, 1, 2, 3, 4, 5, 6, 7
+N_OUT = 8
+
+STATUS_OK = 0
+STATUS_NO_SEPARATION = 1
+STATUS_NONFINITE = 2

@@ -1,0 +1,66 @@
+"""Plan: turn (law, scene, e_n) into kernel rows, switching on only the effects the scene calls for."""
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import codes as C
+
+MIN_STEPS_PER_CONTACT = 5
+
+
+@dataclass
+class Batch:
+    """Kernel input for one sweep at one target e_n, with the incident conditions kept for the results table."""
+    params: np.ndarray
+    ints: np.ndarray
+    e_n: float
+    v_n0: np.ndarray
+    v_t0: np.ndarray
+    omega0: np.ndarray
+    theta_deg: np.ndarray
+    dt: float
+    steps_per_contact: int
+    tangential_active: np.ndarray
+
+
+def needs_tangential(scene, v_t0, omega0):
+    """Per impact: a tangential model (and rotation) only with friction and some tangential motion or spin."""
+    return (scene.mu > 0.0) & ((v_t0 != 0.0) | (omega0 != 0.0))
+
+
+def plan_batch(law, scene, e_n, steps_per_contact):
+    """Kernel rows for every impact of the scene at target e_n; dt = (contact-time estimate at V) / steps."""
+    if steps_per_contact < MIN_STEPS_PER_CONTACT:
+        raise ValueError(f"steps per contact must be >= {MIN_STEPS_PER_CONTACT}")
+    contact = scene.contact
+    v_n0, v_t0, omega0, theta = scene.impacts(e_n)
+    normal = law.normal.parameters(contact, e_n, scene.speed)
+    dashpot = law.damping.dashpot(law.normal, contact, e_n, scene.speed, law.end)
+    dt = normal.contact_time / steps_per_contact
+    tangential = needs_tangential(scene, v_t0, omega0)
+    n = len(v_n0)
+    params = np.zeros((n, C.N_PARAMS))
+    params[:, C.P_MASS] = contact.mass
+    params[:, C.P_INERTIA] = contact.inertia
+    params[:, C.P_RADIUS] = contact.radius
+    params[:, C.P_DT] = dt
+    params[:, C.P_GRAVITY] = scene.gravity
+    params[:, C.P_MU] = scene.mu
+    params[:, C.P_N1:C.P_N4 + 1] = normal.values
+    params[:, C.P_DAMP_C0] = dashpot.c0
+    params[:, C.P_DAMP_POWER] = dashpot.power
+    if tangential.any():
+        params[:, C.P_T1] = law.tangential.parameter(contact, normal.linear_stiffness)
+        params[:, C.P_TDAMP] = 2.0 * law.tangential_damping * np.sqrt(contact.mass)
+    params[:, C.P_LEVER] = 0.0
+    params[:, C.P_VZ0] = -v_n0
+    params[:, C.P_VX0] = v_t0
+    params[:, C.P_W0] = omega0
+    slow = np.maximum(scene.speed / np.maximum(v_n0, 1e-12 * scene.speed), 1.0) ** 0.4
+    params[:, C.P_MAXSTEPS] = np.ceil(steps_per_contact * (20.0 * slow + 20.0))
+    ints = np.zeros((n, C.N_INTS), dtype=np.int64)
+    ints[:, C.I_NORMAL] = law.normal.code
+    ints[:, C.I_END] = C.END_ALPHA if law.end == "tension" else C.END_FORCE
+    ints[:, C.I_TANGENTIAL] = np.where(tangential, law.tangential.code, C.TANGENTIAL_NONE)
+    ints[:, C.I_INTEGRATOR] = C.INTEGRATOR_PAPER
+    return Batch(params, ints, e_n, v_n0, v_t0, omega0, theta, dt, steps_per_contact, tangential)
