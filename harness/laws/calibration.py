@@ -65,6 +65,8 @@ def _normalised_restitution(rhs_damping, param, end):
     left.terminal, left.direction = True, -1
     sol = solve_ivp(rhs, (0.0, 50.0), (0.0, 1.0), method="DOP853", events=left, rtol=1e-11, atol=1e-13,
                     first_step=1e-6)
+    if len(sol.y_events[0]) == 0:
+        return 0.0                # over-damped: it never leaves within the window, e -> 0
     return -sol.y_events[0][0][1]
 
 

@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Set up harness on Debian 12 (as root): engines and a headless browser from Debian, the package in ./.venv.
+# An engine that cannot be installed is reported and skipped later; the reference engine always works.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+export DEBIAN_FRONTEND=noninteractive
+if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
+  missing=""
+  for pkg in python3-venv liggghts yade; do
+    dpkg -s "$pkg" >/dev/null 2>&1 || missing="$missing $pkg"
+  done
+  if [ -n "$missing" ]; then
+    echo "setup: installing$missing from Debian" >&2
+    if ! { apt-get update -q >/dev/null && apt-get install -y -q $missing >/dev/null; }; then
+      echo "setup: could not install$missing; harness will skip the engines it cannot find" >&2
+    fi
+  fi
+fi
+if [ ! -x .venv/bin/python ]; then
+  python3 -m venv .venv
+fi
+.venv/bin/python -m pip install -q --disable-pip-version-check -e '.[test]' 2>&1 | grep -v '^WARNING: Location' >&2 || true
+.venv/bin/python -c "import harness, numba, pandas, matplotlib, scipy, jinja2" 
