@@ -64,15 +64,15 @@ class Scene:
     def impacts(self, e_n):
         """Incident (v_n, v_t, omega, theta_deg) arrays for one target e_n (Psi1* needs e_n: MODELS 4)."""
         if self.psi1_star is not None:
-            c = self.contact
             psi1 = np.asarray(self.psi1_star, dtype=float) * (1.0 + e_n)
-            theta = np.arctan(psi1 * self.mu / c.kappa)
+            theta = np.arctan(psi1 * self.mu / self.contact.kappa)
+            theta_deg = np.degrees(theta)
         else:
-            theta = np.radians(np.asarray(self.angles_deg, dtype=float))
+            theta_deg = np.asarray(self.angles_deg, dtype=float)
+            theta = np.radians(theta_deg)
         v_n = self.speed * np.cos(theta)
         v_t = self.speed * np.sin(theta)
-        omega = np.full_like(v_n, self.omega0)
-        return v_n, v_t, omega, np.degrees(theta)
+        return v_n, v_t, np.full_like(v_n, self.omega0), theta_deg
 
 
 def contact_properties(scene):

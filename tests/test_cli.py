@@ -1,0 +1,77 @@
+"""CLI contract: one clear line and exit code 2 on bad input, no output file; run/models/compare outputs."""
+import json
+import subprocess
+import sys
+
+import pandas as pd
+import pytest
+
+from harness.results import COLUMNS
+
+
+def harness(*args, cwd=None):
+    return subprocess.run([sys.executable, "-m", "harness.cli", *args], capture_output=True, text=True, cwd=cwd,
+                          timeout=300)
+
+
+@pytest.mark.parametrize("args", [
+    ["--model", "no-such-law"],
+    ["--model", "thornton", "--en", "1.5"],
+    ["--model", "thornton", "--en", "0"],
+    ["--model", "thornton", "--en", "nan"],
+    ["--model", "thornton", "--radius", "-1"],
+    ["--model", "thornton", "--nu", "0.5"],
+    ["--model", "thornton", "--nu", "-1"],
+    ["--model", "thornton", "--angles", "90"],
+    ["--model", "thornton", "--angles", "-1"],
+    ["--model", "thornton", "--angles", "10:5:1"],
+    ["--model", "thornton", "--material", "unobtainium"],
+    ["--model", "thornton", "--with", "tangential=magic"],
+    ["--model", "thornton", "--with", "damping=tsuji"],
+    ["--model", "thornton", "--psi", "1,2", "--mu", "0"],
+    ["--model", "thornton", "--steps-per-contact", "2"],
+    ["--model", "thornton", "--speed", "abc"],
+])
+def test_bad_input_is_one_line_and_exit_2(tmp_path, args):
+    out = tmp_path / "r.csv"
+    proc = harness("run", *args, "-o", str(out))
+    assert proc.returncode == 2, proc.stderr
+    assert len(proc.stderr.strip().splitlines()) == 1 and proc.stderr.startswith("harness: error:")
+    assert "Traceback" not in proc.stderr
+    assert not out.exists() and list(tmp_path.iterdir()) == []
+
+
+def test_unwritable_output_is_exit_2(tmp_path):
+    proc = harness("run", "--model", "thornton", "-o", str(tmp_path / "missing" / "r.csv"))
+    assert proc.returncode == 2 and len(proc.stderr.strip().splitlines()) == 1
+
+
+def test_run_writes_the_results_table(tmp_path):
+    out = tmp_path / "r.csv"
+    proc = harness("run", "--model", "hertz-mindlin", "--en", "0.9,0.3", "--angles", "0:60:30", "--mu", "0.2",
+                   "-o", str(out))
+    assert proc.returncode == 0, proc.stderr
+    frame = pd.read_csv(out)
+    assert tuple(frame.columns) == COLUMNS
+    assert len(frame) == 6 and set(frame.e_n_target) == {0.9, 0.3} and set(frame.mu) == {0.2}
+    assert sorted(set(frame.theta_deg)) == [0.0, 30.0, 60.0]
+    assert (frame.status == "ok").all()
+
+
+def test_models_json_lists_every_law():
+    from harness.laws import LAWS
+    proc = harness("models", "--json")
+    assert proc.returncode == 0
+    models = json.loads(proc.stdout)
+    assert [m["name"] for m in models] == list(LAWS)
+    assert all("normal" in m["submodels"] for m in models)
+
+
+def test_compare_writes_csv_and_report_and_names_skipped_engines(tmp_path):
+    proc = harness("compare", "--model", "hertz-mindlin", "--en", "0.5", "--angles", "0:80:20", "-o",
+                   str(tmp_path / "out"))
+    assert proc.returncode == 0, proc.stderr
+    assert (tmp_path / "out" / "results.csv").exists()
+    html = (tmp_path / "out" / "report.html").read_text()
+    assert "hertz-mindlin" in html and "data:image/png;base64," in html
+    assert "skipped liggghts" in proc.stdout and "skipped yade" in proc.stdout

@@ -1,0 +1,136 @@
+"""Solver properties: second-order convergence, converged mode accuracy, and only the effects a scene needs."""
+import math
+
+import numpy as np
+import pytest
+
+from harness.laws import LAWS, compose
+from harness.scene import Scene
+from harness.solver import codes as C
+from harness.solver.plan import plan_batch
+from harness.solver.reference import simulate
+
+
+def test_converged_mode_is_within_1e6_of_exact_lsd():
+    """Tension-allowed LSD: e is exact by construction of g (MODELS 2.1), so the converged e_n must be within 1e-6."""
+    scene = Scene(e_n=(0.9, 0.5, 0.2), angles_deg=(0.0,))
+    frame = simulate(compose("linear-spring-dashpot", {"end": "tension"}), scene, converged=True)[0]
+    assert np.allclose(frame.e_n, frame.e_n_target, rtol=1e-6, atol=0)
+    assert frame.message.str.startswith("converged").all()
+
+
+@pytest.mark.parametrize("name", list(LAWS))
+def test_converged_mode_agrees_with_much_finer_run(name):
+    """Converged results sit within 1e-6 (per V) of a brute-force run at 4x the finest converged resolution."""
+    scene = Scene(e_n=(0.5,), angles_deg=(0.0, 30.0, 60.0))
+    law = compose(name)
+    conv = simulate(law, scene, converged=True)[0]
+    fine = simulate(law, scene, steps_per_contact=int(conv.steps_per_contact.max()) * 4)[0]
+    for col, scale in (("v_n1", scene.speed), ("v_t1", scene.speed), ("omega1", scene.speed / scene.radius)):
+        assert np.allclose(conv[col], fine[col], rtol=0, atol=1e-6 * scale), col
+
+
+@pytest.mark.parametrize("name", ["linear-spring-dashpot", "hertz-mindlin", "hertz-kuwabara-kono", "walton-braun"])
+def test_normal_impact_converges_at_second_order(name):
+    """Halving dt divides the error of e_n by ~4 (velocity Verlet on u = m alpha_dot + D(alpha))."""
+    scene = Scene(e_n=(0.5,), angles_deg=(0.0,))
+    law = compose(name)
+    values = [simulate(law, scene, steps_per_contact=n)[0].e_n.iloc[0] for n in (100, 200, 400, 800)]
+    diffs = np.abs(np.diff(values))
+    orders = np.log2(diffs[:-1] / diffs[1:])
+    assert orders.min() > 1.7, orders
+
+
+@pytest.mark.parametrize("name", ["thornton", "stronge"])
+def test_plastic_laws_error_falls_like_dt_squared(name):
+    """Thornton/Stronge: the sampled turning point makes the error erratic, but it stays under C/N^2 against the
+    exact e of an independent ODE integration (tests/oracles.py)."""
+    import oracles
+    scene = Scene(e_n=(0.5,), angles_deg=(0.0,))
+    law = compose(name)
+    p_y = law.normal.yield_pressure(scene.contact, 0.5, scene.speed)
+    impact = oracles.thornton_impact if name == "thornton" else oracles.stronge_impact
+    exact = impact(p_y, scene.contact.E_star, scene.radius, scene.contact.mass, scene.speed)["e"]
+    steps = np.array([100, 200, 400, 800, 1600])
+    errors = np.array([abs(simulate(law, scene, steps_per_contact=int(n))[0].e_n.iloc[0] - exact) for n in steps])
+    assert (errors * steps ** 2).max() <= 0.5, errors
+
+
+def test_normal_impact_skips_tangential_model_and_rotation():
+    scene = Scene(e_n=(0.5,), angles_deg=(0.0, 30.0))
+    batch = plan_batch(compose("hertz-mindlin"), scene, 0.5, 100)
+    assert list(batch.ints[:, C.I_TANGENTIAL]) == [C.TANGENTIAL_NONE, C.TANGENTIAL_MINDLIN_RESCALE]
+    frame = simulate(compose("hertz-mindlin"), scene, steps_per_contact=100)[0]
+    assert frame.omega1.iloc[0] == 0.0 and frame.v_t1.iloc[0] == 0.0
+
+
+def test_frictionless_scene_needs_no_tangential_model():
+    scene = Scene(e_n=(0.5,), angles_deg=(30.0, 60.0), mu=0.0)
+    batch = plan_batch(compose("thornton"), scene, 0.5, 100)
+    assert (batch.ints[:, C.I_TANGENTIAL] == C.TANGENTIAL_NONE).all()
+    frame = simulate(compose("thornton"), scene, steps_per_contact=100)[0]
+    assert (frame.v_t1 == frame.v_t0).all() and (frame.omega1 == 0.0).all()
+
+
+def test_spin_alone_switches_the_tangential_model_on():
+    scene = Scene(e_n=(0.5,), angles_deg=(0.0,), omega0=100.0)
+    batch = plan_batch(compose("thornton"), scene, 0.5, 100)
+    assert batch.ints[0, C.I_TANGENTIAL] != C.TANGENTIAL_NONE
+    row = simulate(compose("thornton"), scene, steps_per_contact=400)[0].iloc[0]
+    assert row.omega1 < 100.0 and row.v_t1 > 0.0     # friction converts spin into forward motion
+
+
+def test_gravity_only_when_set_and_then_it_acts():
+    """With gravity, the LSD impact matches an independent ODE integration of m a'' = -(k a + c a') + m g."""
+    from oracles import normal_impact
+    base = Scene(e_n=(0.5,), angles_deg=(0.0,), speed=0.01)
+    assert plan_batch(compose("thornton"), base, 0.5, 100).params[0, C.P_GRAVITY] == 0.0
+    heavy = Scene(e_n=(0.5,), angles_deg=(0.0,), speed=0.01, gravity=9.81)
+    law = compose("linear-spring-dashpot", {"end": "tension"})
+    batch = plan_batch(law, heavy, 0.5, 100)
+    m, k, c = heavy.contact.mass, batch.params[0, C.P_N1], batch.params[0, C.P_DAMP_C0]
+    expected = normal_impact(lambda a, ad: k * a + c * ad - m * 9.81, m, 0.01, end="alpha")
+    still = simulate(law, base, converged=True)[0].iloc[0]
+    fallen = simulate(law, heavy, converged=True)[0].iloc[0]
+    assert fallen.e_n == pytest.approx(expected["e"], abs=1e-6)
+    assert fallen.t_contact == pytest.approx(expected["t_c"], rel=1e-6)
+    assert abs(fallen.e_n - still.e_n) > 1e-3              # and gravity made a difference here
+
+
+def test_force_history_only_when_asked_and_consistent():
+    scene = Scene(e_n=(0.5,), angles_deg=(0.0,))
+    law = compose("walton-braun")
+    frame, none = simulate(law, scene, steps_per_contact=400)
+    assert none == {}
+    frame, histories = simulate(law, scene, steps_per_contact=400, history_points=200)
+    hist = histories[0.5][0]
+    hist = hist[~np.isnan(hist[:, 0])]
+    assert hist[:, 2].max() == pytest.approx(frame.f_n_max.iloc[0], rel=1e-3)
+    assert hist[-1, 0] <= frame.t_contact.iloc[0] + 1e-12
+
+
+def test_psi_scene_hits_requested_normalised_angle():
+    """Psi1* input: the achieved Psi1 = kappa V_t/(mu V_n) over (1 + e_target) equals the request."""
+    scene = Scene(e_n=(0.5,), angles_deg=None, psi1_star=(0.5, 2.0, 8.0))
+    frame = simulate(compose("walton-braun"), scene, steps_per_contact=200)[0]
+    assert np.allclose(frame.psi1 / (1 + 0.5), [0.5, 2.0, 8.0], rtol=1e-12)
+
+
+def test_rigid_wall_is_stiffer_than_same_material():
+    same = Scene(e_n=(1.0,), angles_deg=(0.0,), wall="same")
+    rigid = Scene(e_n=(1.0,), angles_deg=(0.0,), wall="rigid")
+    assert rigid.contact.E_star == pytest.approx(2 * same.contact.E_star)
+    law = compose("hertz-mindlin", {"damping": "none", "end": "tension"})
+    t_same = simulate(law, same, steps_per_contact=400)[0].t_contact.iloc[0]
+    t_rigid = simulate(law, rigid, steps_per_contact=400)[0].t_contact.iloc[0]
+    assert t_rigid / t_same == pytest.approx(2 ** -0.4, rel=1e-4)    # t_c ~ E*^-2/5
+
+
+def test_material_presets_give_valid_scenes():
+    from harness.materials import MATERIALS
+    from harness.scene import from_material
+    for name, mat in MATERIALS.items():
+        scene = from_material(name, e_n=(0.5,), angles_deg=(30.0,))
+        assert scene.radius == mat.radius and mat.source
+        frame = simulate(compose("hertz-mindlin"), scene, steps_per_contact=100)[0]
+        assert (frame.status == "ok").all()
