@@ -33,6 +33,9 @@ def write_csv(frame, path):
     try:
         with os.fdopen(fd, "w", newline="") as handle:
             frame.to_csv(handle, index=False, float_format="%.17g")
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(tmp, 0o666 & ~umask)          # mkstemp makes 0600; give the file the usual permissions
         os.replace(tmp, path)
     except BaseException:
         os.unlink(tmp)

@@ -1,8 +1,9 @@
 """Compiled batch integrator: one sphere-wall impact per row, from first touch to separation.
 
 Scheme (paper dialect): velocity Verlet (kick-drift-kick) on the normal momentum u = m alpha_dot + D(alpha), whose
-rate is the elastic force alone, with midpoint tangential increments; second order for every law. The release
-(alpha = 0, or F = 0 without tension) is located inside its step by bisection on the step fraction. Only the branches a row
+rate is the elastic force alone (D' = c, the dashpot), with a linearised implicit-midpoint drift and midpoint
+tangential increments: second order for the smooth laws, unconditionally stable in the dashpot. The release
+(alpha = 0, or F = 0 without tension) is located inside its step by false position on the step fraction. Only the branches a row
 needs run: rows with TANGENTIAL_NONE never touch the tangential model or the rotation, gravity 0 skips its term.
 Frame: wall z = 0 below, sphere moving in x-z, spin omega_y; contact-point slip V_s = v_x - R omega_y.
 """
@@ -15,10 +16,9 @@ from . import codes as C
 from .normal_kernels import normal_elastic
 from .tangential_kernels import N_TSTATE, after_cap, cap, spring_force, stiffness
 
-S_ALPHA, S_VZ, S_VX, S_W, S_AMAX, S_FN, S_FT, S_FS, S_NOLD, S_U, S_FEL = 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10
-N_STATE = 11
-BISECTIONS = 60
-NEWTON_ITERATIONS = 30
+S_ALPHA, S_VZ, S_VX, S_W, S_AMAX, S_FN, S_FT, S_FS, S_NOLD, S_U, S_FEL, S_C = 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11
+N_STATE = 12
+RELEASE_ITERATIONS = 100
 
 
 @njit(cache=True)
@@ -42,50 +42,41 @@ def dashpot_potential(c0, power, alpha):
 
 
 @njit(cache=True)
-def drift(alpha, u_half, m, c0, power, h):
-    """Implicit-midpoint drift of alpha' = (u - D(alpha))/m with u frozen: explicit-midpoint predictor, then Newton
-    (G' >= 1, so it converges) to round-off."""
-    if c0 == 0.0:
-        return alpha + h * u_half / m
-    mid = alpha + 0.5 * h * (u_half - dashpot_potential(c0, power, alpha)) / m
-    x = alpha + h * (u_half - dashpot_potential(c0, power, mid)) / m
-    for _ in range(NEWTON_ITERATIONS):
-        mid = 0.5 * (alpha + x)
-        slope = c0 * damping_power(mid, power) if mid > 0.0 else 0.0
-        g = x - alpha - h * (u_half - dashpot_potential(c0, power, mid)) / m
-        dx = g / (1.0 + 0.5 * h * slope / m)
-        x -= dx
-        if abs(dx) <= 1e-15 * abs(x):
-            break
-    return x
+def drift(alpha, rate0, c_alpha, h):
+    """Linearised implicit midpoint for alpha' = (u_half - D(alpha))/m, u frozen: D(mid) = D(alpha_n) + c_n (x - alpha)/2
+    gives x = alpha + h rate0 / (1 + h c_n/(2m)); c_alpha = h c_n/(2m). Unconditionally stable, O(h^3) locally."""
+    return alpha + h * rate0 / (1.0 + c_alpha)
 
 
 @njit(cache=True, inline="always")
 def step(s, st, o, ot, p, ints, h, scratch):
     """Advance state (s, st) by h into (o, ot); returns the end-of-contact indicator (contact while > 0).
 
-    Normal direction in u = m alpha_dot + D(alpha), u' = -F_el(alpha) + m g (Strang splitting: kick, implicit
-    midpoint drift, kick), which stays second order although c(alpha) = c0 alpha^p is singular at first touch.
+    Normal direction in u = m alpha_dot + D(alpha), u' = -F_el(alpha) + m g (Strang splitting: kick, midpoint
+    drift, kick), which stays second order although c(alpha) = c0 alpha^p is singular at first touch.
     """
     m, inertia, radius, g = p[C.P_MASS], p[C.P_INERTIA], p[C.P_RADIUS], p[C.P_GRAVITY]
     c0, power = p[C.P_DAMP_C0], p[C.P_DAMP_POWER]
-    u_half = s[S_U] - 0.5 * h * (s[S_FEL] - m * g)
-    alpha = drift(s[S_ALPHA], u_half, m, c0, power, h)
+    u_shift = -0.5 * h * (s[S_FEL] - m * g)
+    alpha = drift(s[S_ALPHA], -s[S_VZ] + u_shift / m, 0.5 * h * s[S_C] / m, h)
     amax = s[S_AMAX]
+    c, d_pot = 0.0, 0.0
     if alpha > 0.0:
         f_el, a = normal_elastic(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], radius, alpha, amax)
-        c = c0 * damping_power(alpha, power) if c0 != 0.0 else 0.0
+        if c0 != 0.0:
+            q = damping_power(alpha, power)
+            c, d_pot = c0 * q, c0 * alpha * q / (power + 1.0)
     else:
-        f_el, a, c = 0.0, 0.0, 0.0
-    u = u_half - 0.5 * h * (f_el - m * g)
-    alpha_dot = (u - dashpot_potential(c0, power, alpha)) / m
+        f_el, a = 0.0, 0.0
+    u = s[S_U] + u_shift - 0.5 * h * (f_el - m * g)
+    alpha_dot = (u - d_pot) / m
     f_n = f_el + c * alpha_dot
     indicator = alpha
     if alpha > 0.0 and ints[C.I_END] == C.END_FORCE:
         indicator = f_n if f_n < alpha else alpha
     if alpha <= 0.0:
         f_n = 0.0
-    o[S_ALPHA], o[S_VZ], o[S_FN], o[S_U], o[S_FEL] = alpha, -alpha_dot, f_n, u, f_el
+    o[S_ALPHA], o[S_VZ], o[S_FN], o[S_U], o[S_FEL], o[S_C] = alpha, -alpha_dot, f_n, u, f_el, c
     o[S_AMAX] = alpha if alpha > amax else amax
     for k in range(N_TSTATE):
         ot[k] = st[k]
@@ -150,6 +141,7 @@ def integrate(params, ints, out, history, stride):
         s[S_U] = -p[C.P_MASS] * p[C.P_VZ0]
         if p[C.P_DAMP_POWER] == 0.0:
             s[S_FN] = -p[C.P_DAMP_C0] * p[C.P_VZ0]   # a constant dashpot acts from first touch
+            s[S_C] = p[C.P_DAMP_C0]
         f_prev2, f_prev1 = 0.0, 0.0
         a_prev2, a_prev1 = 0.0, 0.0
         f_peak, a_peak = s[S_FN], 0.0
@@ -163,12 +155,27 @@ def integrate(params, ints, out, history, stride):
             steps = k + 1
             if indicator <= 0.0:
                 frac_lo, frac_hi = 0.0, 1.0
-                for _ in range(BISECTIONS):
-                    mid = 0.5 * (frac_lo + frac_hi)
-                    if step(s, st, lo, lot, p, row_ints, mid * h, scratch) > 0.0:
-                        frac_lo = mid
+                g_lo, g_hi = s[S_ALPHA] if s[S_ALPHA] > 0.0 else 1.0, indicator
+                if row_ints[C.I_END] == C.END_FORCE:
+                    g_lo = min(s[S_FN], s[S_ALPHA]) if s[S_ALPHA] > 0.0 else s[S_FN]
+                side = 0
+                for _ in range(RELEASE_ITERATIONS):       # Illinois false position on the step fraction
+                    if frac_hi - frac_lo <= 1e-15:
+                        break
+                    mid = (frac_lo * g_hi - frac_hi * g_lo) / (g_hi - g_lo) if g_lo > 0.0 > g_hi else 0.5 * (frac_lo + frac_hi)
+                    if not frac_lo < mid < frac_hi:
+                        mid = 0.5 * (frac_lo + frac_hi)
+                    g_mid = step(s, st, lo, lot, p, row_ints, mid * h, scratch)
+                    if g_mid > 0.0:
+                        frac_lo, g_lo = mid, g_mid
+                        if side == 1:
+                            g_hi *= 0.5
+                        side = 1
                     else:
-                        frac_hi = mid
+                        frac_hi, g_hi = mid, g_mid
+                        if side == -1:
+                            g_lo *= 0.5
+                        side = -1
                 step(s, st, o, ot, p, row_ints, frac_lo * h, scratch)
                 t_end = (k + frac_lo) * h
                 status = C.STATUS_OK

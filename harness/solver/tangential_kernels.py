@@ -105,7 +105,7 @@ def spring_force(code, f_s, dd, a, p1, mu, n_new, n_old, st, scratch):
     every increment is a midpoint rule (second order).
     """
     a_old = st[T_AOLD]
-    a_mid = 0.5 * (a + a_old)
+    a_mid = 0.5 * (a + a_old) if a_old > 0.0 else a * (2.0 / 3.0)   # first step: a ~ sqrt(t), mean 2/3 a
     st[T_AOLD] = a
     if code == C.TANGENTIAL_LINEAR or code == C.TANGENTIAL_MINDLIN_INCREMENTAL:
         return f_s - stiffness(code, p1, a_mid) * dd
