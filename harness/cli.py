@@ -71,12 +71,15 @@ def add_scene_options(parser):
     where.add_argument("--angles", type=angle_list, metavar="A,B,..|A:B:STEP",
                        help="impact angles from the normal in degrees (default 1:89:2, 45 angles)")
     where.add_argument("--psi", type=number_list, metavar="LIST",
-                       help="normalised impact angles Psi1* = kappa V_t/(mu V_n (1+e_n)) instead of angles")
+                       help="normalised impact angles Psi1* = kappa V_s/(mu V_n (1+e_n)); --speed is then V_n")
+    where.add_argument("--vt", type=number_list, metavar="LIST",
+                       help="tangential speeds V_t [m/s]; --speed is then the normal speed V_n")
     g.add_argument("--mu", type=number, help="friction coefficient (default: the material's, else 0.3)")
     g.add_argument("--material", default="paper", help="material preset (see `harness models`), default paper")
     for name, unit in (("radius", "m"), ("E", "Pa"), ("nu", "-"), ("rho", "kg/m^3")):
         g.add_argument(f"--{name}", type=number, help=f"override the material's {name} [{unit}]")
-    g.add_argument("--speed", type=number, default=1.0, help="impact speed V [m/s] (default 1)")
+    g.add_argument("--speed", type=number, default=1.0,
+                   help="impact speed V [m/s] with --angles; normal speed V_n with --psi or --vt (default 1)")
     g.add_argument("--omega0", type=number, default=0.0, help="initial spin omega_y [rad/s] (default 0)")
     g.add_argument("--gravity", type=number, default=0.0, help="gravity towards the wall [m/s^2] (default 0)")
     g.add_argument("--wall", choices=("same", "rigid"), default="same",
@@ -96,11 +99,11 @@ def scene_from_args(args):
     """Build the validated Scene from parsed options."""
     from .scene import from_material
     angles = args.angles
-    if args.psi is None and angles is None:
+    if args.psi is None and angles is None and args.vt is None:
         from .scene import DEFAULT_ANGLES
         angles = DEFAULT_ANGLES
     return from_material(args.material, radius=args.radius, E=args.E, nu=args.nu, rho=args.rho, mu=args.mu,
-                         speed=args.speed, e_n=tuple(args.en), angles_deg=angles, psi1_star=args.psi,
+                         speed=args.speed, e_n=tuple(args.en), angles_deg=angles, psi1_star=args.psi, v_t=args.vt,
                          omega0=args.omega0, gravity=args.gravity, wall=args.wall)
 
 

@@ -28,8 +28,11 @@ def normalised_figure(frame, chi):
         group = group.sort_values("psi1_star")
         left.plot(group.psi1_star, group.psi2_star, marker=".", label=f"e_n = {e_n:g}")
         right.plot(group.psi1_star, group.omega_star, marker=".", label=f"e_n = {e_n:g}")
-    top = float(frame.psi1_star.max())
+    top = min(float(frame.psi1_star.max()), 5.0 * chi)       # the paper's range; grazing angles go far beyond
     left.plot([2 * chi, top], [0.0, top - 2 * chi], "k--", lw=1, label="sliding: Psi2* = Psi1* - 2 chi")
+    left.set_xlim(0.0, top)
+    right.set_xlim(0.0, top)
+    left.set_ylim(-top / 2.0, top - 2 * chi + 0.5)
     right.axhline(2.5, color="k", ls="--", lw=1, label="sliding: Omega* = 5/2")
     left.set(xlabel="Psi1*", ylabel="Psi2*")
     right.set(xlabel="Psi1*", ylabel="Omega*")

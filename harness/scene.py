@@ -36,7 +36,8 @@ class Contact:
 
 @dataclass(frozen=True)
 class Scene:
-    """A sphere of radius R hitting a wall at speed V and the listed angles (deg from the normal) or Psi1* values."""
+    """A sphere of radius R hitting a wall: at speed V and the listed angles (deg from the normal), or at normal
+    speed V with the listed Psi1* values or tangential speeds v_t (the paper's way: V_n fixed, V_t varied)."""
     radius: float = 5e-3
     E: float = 70e9
     nu: float = 0.3
@@ -46,6 +47,7 @@ class Scene:
     e_n: tuple = DEFAULT_EN
     angles_deg: tuple | None = DEFAULT_ANGLES
     psi1_star: tuple | None = None
+    v_t: tuple | None = None
     omega0: float = 0.0
     wall: str = "same"
     wall_E: float | None = None
@@ -63,15 +65,18 @@ class Scene:
 
     def impacts(self, e_n):
         """Incident (v_n, v_t, omega, theta_deg) arrays for one target e_n (Psi1* needs e_n: MODELS 4)."""
-        if self.psi1_star is not None:
-            psi1 = np.asarray(self.psi1_star, dtype=float) * (1.0 + e_n)
-            theta = np.arctan(psi1 * self.mu / self.contact.kappa)
-            theta_deg = np.degrees(theta)
-        else:
+        if self.angles_deg is not None:
             theta_deg = np.asarray(self.angles_deg, dtype=float)
-            theta = np.radians(theta_deg)
-        v_n = self.speed * np.cos(theta)
-        v_t = self.speed * np.sin(theta)
+            v_n = self.speed * np.cos(np.radians(theta_deg))
+            v_t = self.speed * np.sin(np.radians(theta_deg))
+        else:
+            if self.psi1_star is not None:      # Psi1 = kappa (V_t - R omega0)/(mu V_n), Psi1* = Psi1/(1 + e_n)
+                psi1 = np.asarray(self.psi1_star, dtype=float) * (1.0 + e_n)
+                v_t = psi1 * self.mu * self.speed / self.contact.kappa + self.radius * self.omega0
+            else:
+                v_t = np.asarray(self.v_t, dtype=float)
+            v_n = np.full_like(v_t, self.speed)
+            theta_deg = np.degrees(np.arctan2(v_t, v_n))
         return v_n, v_t, np.full_like(v_n, self.omega0), theta_deg
 
 
@@ -118,15 +123,18 @@ def validate(scene):
     for e in scene.e_n:
         if not (math.isfinite(e) and 0.0 < e <= 1.0):
             raise UserError(f"e_n must lie in (0, 1], got {e!r}")
-    if (scene.angles_deg is None) == (scene.psi1_star is None):
-        raise UserError("give either impact angles or Psi1* values, not both")
+    if sum(x is not None for x in (scene.angles_deg, scene.psi1_star, scene.v_t)) != 1:
+        raise UserError("give exactly one of: impact angles, Psi1* values, tangential speeds")
+    if scene.v_t is not None:
+        if not scene.v_t or not all(math.isfinite(v) and v >= 0 for v in scene.v_t):
+            raise UserError(f"tangential speeds must be finite and >= 0, got {scene.v_t!r}")
     if scene.angles_deg is not None:
         if not scene.angles_deg:
             raise UserError("at least one impact angle is needed")
         for a in scene.angles_deg:
             if not (math.isfinite(a) and 0.0 <= a < 90.0):
                 raise UserError(f"impact angle must lie in [0, 90) degrees, got {a!r}")
-    else:
+    elif scene.psi1_star is not None:
         if scene.mu == 0:
             raise UserError("Psi1* is undefined for mu = 0 (Psi1 = kappa V_s/(mu V_n)); give angles instead")
         for psi in scene.psi1_star:
@@ -140,5 +148,6 @@ def from_material(name, **overrides):
     values = dict(radius=mat.radius, E=mat.E, nu=mat.nu, rho=mat.rho, material=mat.name)
     if mat.mu is not None:
         values["mu"] = mat.mu
-    values.update({k: v for k, v in overrides.items() if v is not None})
+    material_keys = ("radius", "E", "nu", "rho", "mu")     # None here means "the preset's value"
+    values.update({k: v for k, v in overrides.items() if v is not None or k not in material_keys})
     return Scene(**values)

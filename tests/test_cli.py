@@ -31,6 +31,8 @@ def harness(*args, cwd=None):
     ["--model", "thornton", "--psi", "1,2", "--mu", "0"],
     ["--model", "thornton", "--steps-per-contact", "2"],
     ["--model", "thornton", "--speed", "abc"],
+    ["--model", "thornton", "--angles", "10", "--psi", "1"],
+    ["--model", "thornton", "--vt", "0.5,-1"],
 ])
 def test_bad_input_is_one_line_and_exit_2(tmp_path, args):
     out = tmp_path / "r.csv"
@@ -56,6 +58,19 @@ def test_run_writes_the_results_table(tmp_path):
     assert len(frame) == 6 and set(frame.e_n_target) == {0.9, 0.3} and set(frame.mu) == {0.2}
     assert sorted(set(frame.theta_deg)) == [0.0, 30.0, 60.0]
     assert (frame.status == "ok").all()
+
+
+@pytest.mark.parametrize("sweep,expected_vt", [(["--psi", "1,4"], None), (["--vt", "0.2,0.6"], [0.2, 0.6])])
+def test_run_with_normal_speed_sweeps(tmp_path, sweep, expected_vt):
+    out = tmp_path / "r.csv"
+    proc = harness("run", "--model", "thornton", "--en", "0.5", "--speed", "2", *sweep, "-o", str(out))
+    assert proc.returncode == 0, proc.stderr
+    frame = pd.read_csv(out)
+    assert len(frame) == 2 and (frame.v_n0 == 2.0).all()
+    if expected_vt:
+        assert list(frame.v_t0) == expected_vt
+    else:
+        assert frame.psi1_star.to_list() == pytest.approx([1.0, 4.0], rel=1e-4)   # e_n achieved ~ target
 
 
 def test_models_json_lists_every_law():

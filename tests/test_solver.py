@@ -134,3 +134,15 @@ def test_material_presets_give_valid_scenes():
         assert scene.radius == mat.radius and mat.source
         frame = simulate(compose("hertz-mindlin"), scene, steps_per_contact=100)[0]
         assert (frame.status == "ok").all()
+
+
+def test_psi_and_vt_scenes_hold_the_normal_speed():
+    """With Psi1* or V_t lists, --speed is V_n: a plastic law calibrated at V_n keeps e_n at its target."""
+    for scene in (Scene(e_n=(0.3,), angles_deg=None, psi1_star=(0.5, 2.0, 8.0), speed=2.0),
+                  Scene(e_n=(0.3,), angles_deg=None, v_t=(0.0, 0.5, 3.0), speed=2.0)):
+        frame = simulate(compose("thornton"), scene, steps_per_contact=2000)[0]
+        assert np.allclose(frame.v_n0, 2.0)
+        assert np.allclose(frame.e_n, 0.3, atol=1e-4)
+    frame = simulate(compose("thornton"), Scene(e_n=(0.3,), angles_deg=None, v_t=(0.0, 0.5, 3.0), speed=2.0),
+                     steps_per_contact=200)[0]
+    assert np.allclose(frame.v_t0, [0.0, 0.5, 3.0]) and np.allclose(frame.theta_deg, np.degrees(np.arctan2([0, .5, 3], 2)))
