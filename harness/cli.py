@@ -82,8 +82,8 @@ def add_scene_options(parser):
                    help="impact speed V [m/s] with --angles; normal speed V_n with --psi or --vt (default 1)")
     g.add_argument("--omega0", type=number, default=0.0, help="initial spin omega_y [rad/s] (default 0)")
     g.add_argument("--gravity", type=number, default=0.0, help="gravity towards the wall [m/s^2] (default 0)")
-    g.add_argument("--wall", choices=("same", "rigid"), default="same",
-                   help="wall of the same material (the paper's case) or rigid")
+    g.add_argument("--wall", default="same", metavar="same|rigid|MATERIAL",
+                   help="wall of the same material (the paper's case), rigid, or a preset material")
     g.add_argument("--with", dest="overrides", type=submodel, action="append", default=[], metavar="KEY=VALUE",
                    help="replace one sub-model: normal=, damping=, end=, tangential=, tangential-damping= "
                         "(e.g. --with tangential=mindlin:total --with end=tension)")
@@ -104,7 +104,16 @@ def scene_from_args(args):
         angles = DEFAULT_ANGLES
     return from_material(args.material, radius=args.radius, E=args.E, nu=args.nu, rho=args.rho, mu=args.mu,
                          speed=args.speed, e_n=tuple(args.en), angles_deg=angles, psi1_star=args.psi, v_t=args.vt,
-                         omega0=args.omega0, gravity=args.gravity, wall=args.wall)
+                         omega0=args.omega0, gravity=args.gravity, **wall_from_args(args.wall))
+
+
+def wall_from_args(text):
+    """--wall same|rigid|MATERIAL -> Scene wall fields."""
+    if text in ("same", "rigid"):
+        return {"wall": text}
+    from .materials import get_material
+    mat = get_material(text)
+    return {"wall": "other", "wall_E": mat.E, "wall_nu": mat.nu}
 
 
 def law_from_args(args):

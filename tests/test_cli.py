@@ -33,6 +33,7 @@ def harness(*args, cwd=None):
     ["--model", "thornton", "--speed", "abc"],
     ["--model", "thornton", "--angles", "10", "--psi", "1"],
     ["--model", "thornton", "--vt", "0.5,-1"],
+    ["--model", "thornton", "--wall", "jelly"],
 ])
 def test_bad_input_is_one_line_and_exit_2(tmp_path, args):
     out = tmp_path / "r.csv"
@@ -71,6 +72,14 @@ def test_run_with_normal_speed_sweeps(tmp_path, sweep, expected_vt):
         assert list(frame.v_t0) == expected_vt
     else:
         assert frame.psi1_star.to_list() == pytest.approx([1.0, 4.0], rel=1e-4)   # e_n achieved ~ target
+
+
+def test_wall_material_changes_the_contact(tmp_path):
+    same, steel = tmp_path / "same.csv", tmp_path / "steel.csv"
+    for out, wall in ((same, "same"), (steel, "steel")):
+        assert harness("run", "--model", "walton-braun", "--en", "0.5", "--angles", "0", "--wall", wall,
+                       "-o", str(out)).returncode == 0
+    assert pd.read_csv(steel).t_contact[0] < pd.read_csv(same).t_contact[0]      # a stiffer wall, a shorter contact
 
 
 def test_models_json_lists_every_law():

@@ -126,6 +126,15 @@ def test_rigid_wall_is_stiffer_than_same_material():
     assert t_rigid / t_same == pytest.approx(2 ** -0.4, rel=1e-4)    # t_c ~ E*^-2/5
 
 
+def test_wall_of_another_material_combines_both_compliances():
+    """E* = 1/[(1-nu1^2)/E1 + (1-nu2^2)/E2] and G* likewise (MODELS 1), checked against hand-written formulas."""
+    scene = Scene(e_n=(1.0,), angles_deg=(0.0,), E=70e9, nu=0.3, wall="other", wall_E=200e9, wall_nu=0.25)
+    e_star = 1 / ((1 - 0.3 ** 2) / 70e9 + (1 - 0.25 ** 2) / 200e9)
+    g1, g2 = 70e9 / (2 * 1.3), 200e9 / (2 * 1.25)
+    assert scene.contact.E_star == pytest.approx(e_star, rel=1e-12)
+    assert scene.contact.G_star == pytest.approx(1 / ((2 - 0.3) / g1 + (2 - 0.25) / g2), rel=1e-12)
+
+
 def test_material_presets_give_valid_scenes():
     from harness.materials import MATERIALS
     from harness.scene import from_material
