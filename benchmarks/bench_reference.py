@@ -79,7 +79,7 @@ def main():
         print(f"liggghts:  {len(batch.v_n0) * copies} atoms x {n_steps} steps in {full:.3f} s (start-up {startup:.3f} s) "
               f"= {lig_us:.4f} us per atom-step")
         sweep_liggghts = lig_us * 1e-6 * n_impacts * n_steps          # the whole sweep, start-up excluded
-        print(f"same sweep, start-up excluded: liggghts {sweep_liggghts:.3f} s (every sphere stepped until the last "
+        print(f"RATIO, same sweep, start-up excluded: liggghts {sweep_liggghts:.3f} s (every sphere stepped until the last "
               f"leaves) vs reference {single_us * 1e-6 * steps:.3f} s single-threaded: "
               f"ratio {sweep_liggghts / (single_us * 1e-6 * steps):.2f}")
         print(f"ratio liggghts/reference per impact-step: {lig_us / single_us:.2f} single-threaded, "
