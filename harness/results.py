@@ -2,9 +2,11 @@
 import os
 import tempfile
 
+import numpy as np
 import pandas as pd
 
 from .errors import UserError
+from .kinematics import rebound_quantities
 
 IDENTITY = ("model", "dialect", "engine", "engine_version", "e_n_target", "mu", "theta_deg", "v_n0", "v_t0", "omega0",
             "radius", "E", "nu", "rho", "dt", "steps_per_contact")
@@ -21,6 +23,23 @@ def table(rows):
     if missing:
         raise ValueError(f"result rows lack columns {missing}")
     return frame.loc[:, list(COLUMNS)]
+
+
+def impact_frame(scene, batch, *, model, dialect, engine, engine_version, dt, steps_per_contact, v_n1, v_t1, omega1,
+                 wall_s, status, message, t_contact=np.nan, f_n_max=np.nan, overlap_max=np.nan):
+    """Result rows of one batch (one e_n, every impact of the scene), outcome columns derived from the velocities."""
+    rows = {
+        "model": model, "dialect": dialect, "engine": engine, "engine_version": engine_version,
+        "e_n_target": batch.e_n, "mu": scene.mu, "theta_deg": batch.theta_deg, "v_n0": batch.v_n0,
+        "v_t0": batch.v_t0, "omega0": batch.omega0, "radius": scene.radius, "E": scene.E, "nu": scene.nu,
+        "rho": scene.rho, "dt": dt, "steps_per_contact": steps_per_contact,
+        "v_n1": v_n1, "v_t1": v_t1, "omega1": omega1, "t_contact": t_contact, "f_n_max": f_n_max,
+        "overlap_max": overlap_max, "wall_s": wall_s, "status": status, "message": message,
+    }
+    rows.update(rebound_quantities(scene.contact, scene.mu, batch.v_n0, batch.v_t0, batch.omega0,
+                                   np.asarray(v_n1, dtype=float), np.asarray(v_t1, dtype=float),
+                                   np.asarray(omega1, dtype=float)))
+    return table(rows)
 
 
 def write_csv(frame, path):

@@ -5,8 +5,7 @@ import numpy as np
 import pandas as pd
 
 from .. import __version__
-from ..kinematics import rebound_quantities
-from ..results import table
+from ..results import impact_frame
 from . import codes as C
 from .kernel import integrate
 from .plan import plan_batch
@@ -65,7 +64,6 @@ def run_converged(law, scene, e_n):
 def simulate(law, scene, steps_per_contact=1000, converged=False, history_points=0):
     """Results table of `law` over every (e_n, impact) of `scene`; histories {e_n: array} if points are asked for."""
     frames, histories = [], {}
-    contact = scene.contact
     for e_n in scene.e_n:
         if converged:
             batch, out, levels, change, dt, wall = run_converged(law, scene, e_n)
@@ -79,18 +77,9 @@ def simulate(law, scene, steps_per_contact=1000, converged=False, history_points
                 histories[e_n] = history
             messages = [""] * len(out)
             steps, dt = batch.steps_per_contact, batch.dt
-        v_n1, v_t1, omega1 = out[:, C.O_VZ], out[:, C.O_VX], out[:, C.O_W]
-        rows = {
-            "model": law.name, "dialect": "paper", "engine": "reference", "engine_version": __version__,
-            "e_n_target": e_n, "mu": scene.mu, "theta_deg": batch.theta_deg, "v_n0": batch.v_n0,
-            "v_t0": batch.v_t0, "omega0": batch.omega0, "radius": scene.radius, "E": scene.E, "nu": scene.nu,
-            "rho": scene.rho, "dt": dt, "steps_per_contact": steps,
-            "v_n1": v_n1, "v_t1": v_t1, "omega1": omega1,
-            "t_contact": out[:, C.O_TC], "f_n_max": out[:, C.O_FMAX], "overlap_max": out[:, C.O_AMAX],
-            "wall_s": wall / len(out),
-            "status": [STATUS_TEXT[int(s)] for s in out[:, C.O_STATUS]],
-            "message": messages,
-        }
-        rows.update(rebound_quantities(contact, scene.mu, batch.v_n0, batch.v_t0, batch.omega0, v_n1, v_t1, omega1))
-        frames.append(table(rows))
+        frames.append(impact_frame(
+            scene, batch, model=law.name, dialect="paper", engine="reference", engine_version=__version__, dt=dt,
+            steps_per_contact=steps, v_n1=out[:, C.O_VZ], v_t1=out[:, C.O_VX], omega1=out[:, C.O_W],
+            t_contact=out[:, C.O_TC], f_n_max=out[:, C.O_FMAX], overlap_max=out[:, C.O_AMAX], wall_s=wall / len(out),
+            status=[STATUS_TEXT[int(s)] for s in out[:, C.O_STATUS]], message=messages))
     return pd.concat(frames, ignore_index=True), histories

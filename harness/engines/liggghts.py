@@ -1,0 +1,117 @@
+"""LIGGGHTS 3.8.0 adapter: one batched deck per (law, e_n), every impact its own sphere against a wall/gran plane."""
+import math
+import os
+import re
+import shutil
+import subprocess
+from dataclasses import dataclass
+from functools import lru_cache
+
+import numpy as np
+
+from .. import __version__
+from ..render import render
+from .runner import EngineFailure, run_engine
+
+BINARY = "liggghts"
+MODELS = {                      # harness law -> LIGGGHTS normal model (MODELS 5)
+    "linear-spring-dashpot": "hooke",
+    "hertz-mindlin": "hertz",
+    "walton-braun": "hooke/hysteresis",
+    "thornton": "thornton_ning",
+}
+MIN_RESTITUTION = 0.05          # LIGGGHTS refuses coefficientRestitution <= 0.05
+PLASTICITY_DEPTH = 1e-9         # hooke/hysteresis: d_lim << every peak overlap, so k2 = k2max (Walton-Braun)
+
+
+@dataclass(frozen=True)
+class Deck:
+    """A rendered deck with the per-impact layout needed to read its dump back."""
+    text: str
+    model: str
+    n_atoms: int
+
+
+def available():
+    return shutil.which(BINARY) is not None
+
+
+@lru_cache(maxsize=None)
+def version():
+    """'3.8.0' from the banner the binary prints."""
+    try:
+        out = subprocess.run([BINARY, "-h"], capture_output=True, text=True, timeout=30, stdin=subprocess.DEVNULL)
+    except (OSError, subprocess.TimeoutExpired):
+        return "unknown"
+    match = re.search(r"LIGGGHTS-PUBLIC ([0-9.]+)", out.stdout + out.stderr)
+    return match.group(1) if match else "unknown"
+
+
+def supports(law_name):
+    return law_name in MODELS
+
+
+def settings(law, scene, e_n):
+    """Model, tangential model, options and extra global properties that express `law` at e_n in LIGGGHTS."""
+    model = MODELS[law.name]
+    properties = []
+    restitution = e_n
+    if model in ("hooke", "hooke/hysteresis"):
+        properties.append(("characteristicVelocity", "scalar", scene.speed))
+    if model == "hooke/hysteresis":
+        restitution = 1.0                               # no viscous part: all dissipation by hysteresis
+        properties += [("coefficientMaxElasticStiffness", "peratomtypepair", 1.0 / e_n ** 2),
+                       ("coefficientAdhesionStiffness", "peratomtypepair", 0.0),
+                       ("coefficientPlasticityDepth", "peratomtypepair", PLASTICITY_DEPTH)]
+    if model == "thornton_ning":
+        p_y = law.normal.yield_pressure(scene.contact, e_n, scene.speed)
+        properties += [("coefficientYieldRatio", "peratomtypepair", math.pi * p_y / (2.0 * scene.contact.E_star)),
+                       ("surfaceEnergy", "peratomtypepair", 0.0)]
+    return model, "history", [], properties, restitution
+
+
+def deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps):
+    """Render the batched deck (validated numbers and fixed words only; see harness.render)."""
+    model, tangential, options, properties, restitution = settings(law, scene, e_n)
+    if not MIN_RESTITUTION < restitution <= 1.0:
+        raise EngineFailure(f"LIGGGHTS accepts coefficientRestitution in (0.05, 1] only; e_n = {e_n:g} was not run")
+    radius = scene.radius
+    spacing = 4.0 * radius
+    atoms = [{"x": i * spacing, "vx": float(vt), "vz": -float(vn), "omegay": float(w)}
+             for i, (vn, vt, w) in enumerate(zip(v_n0, v_t0, omega0))]
+    chunk = max(10, steps_per_contact // 10)
+    text = render("liggghts/batch.in.j2", harness_version=__version__, law=law.name, model=model, e_n=restitution,
+                  atoms=atoms, x_lo=-2.0 * radius, x_hi=len(atoms) * spacing, box_half=2.0 * radius,
+                  z_lo=-radius, z_hi=4.0 * radius, skin=0.5 * radius, E=scene.E, nu=scene.nu, mu=scene.mu,
+                  properties=properties, tangential=tangential, options=options, dt=dt, radius=radius,
+                  rho=scene.rho, chunk=chunk, max_chunks=max(1, max_steps // chunk + 1))
+    return Deck(text, model, len(atoms))
+
+
+def read_dump(path, n_atoms):
+    """Final (z, vx, vz, omegay) per atom id from the dump; EngineFailure when it is missing or truncated."""
+    try:
+        with open(path) as handle:
+            lines = handle.read().splitlines()
+    except OSError:
+        raise EngineFailure("LIGGGHTS wrote no final dump") from None
+    try:
+        start = next(i for i, line in enumerate(lines) if line.startswith("ITEM: ATOMS")) + 1
+        rows = np.array([[float(x) for x in line.split()] for line in lines[start:] if line.strip()])
+    except (StopIteration, ValueError):
+        raise EngineFailure("LIGGGHTS final dump is malformed") from None
+    if rows.ndim != 2 or rows.shape != (n_atoms, 5):
+        raise EngineFailure(f"LIGGGHTS final dump is truncated: {len(rows)} of {n_atoms} spheres")
+    rows = rows[np.argsort(rows[:, 0])]
+    if not np.array_equal(rows[:, 0], np.arange(1, n_atoms + 1)):
+        raise EngineFailure("LIGGGHTS final dump lacks some sphere ids")
+    return rows[:, 1:]
+
+
+def run_deck(text, n_atoms, timeout_s, workdir):
+    """Run one deck in workdir; returns (final state per atom, wall seconds, log tail)."""
+    with open(os.path.join(workdir, "in.harness"), "w") as handle:
+        handle.write(text)
+    done = run_engine([BINARY, "-in", "in.harness", "-log", "none", "-echo", "none"], workdir, timeout_s,
+                      env={**os.environ, "OMP_NUM_THREADS": "1"})
+    return read_dump(os.path.join(workdir, "final.dump"), n_atoms), done.wall_s, done.log_tail

@@ -1,0 +1,52 @@
+"""Jinja rendering for engine inputs: StrictUndefined, and only checked numbers and fixed words reach the text."""
+import math
+import re
+from numbers import Real
+from pathlib import Path
+
+import jinja2
+
+TEMPLATES = Path(__file__).resolve().parent.parent / "templates"
+WORD = re.compile(r"[A-Za-z0-9][A-Za-z0-9_/.-]*")
+
+
+class RenderError(ValueError):
+    """A value that is not a finite number, or a name outside the fixed vocabulary, was about to enter a deck."""
+
+
+def num(value):
+    """A finite real number as its shortest exact text (repr); anything else is refused."""
+    if isinstance(value, bool) or not isinstance(value, Real):
+        raise RenderError(f"refusing to render non-number {value!r}")
+    value = float(value)
+    if not math.isfinite(value):
+        raise RenderError(f"refusing to render non-finite {value!r}")
+    return repr(value)
+
+
+def count(value):
+    """A non-negative integer (step counts, loop bounds)."""
+    if isinstance(value, bool) or not isinstance(value, int) or value < 0:
+        raise RenderError(f"refusing to render {value!r} as a count")
+    return str(value)
+
+
+def word(value):
+    """A keyword from the adapters' fixed sets: letters, digits and _ / . -, nothing else (no spaces, quotes, newlines or $)."""
+    if not isinstance(value, str) or not WORD.fullmatch(value):
+        raise RenderError(f"refusing to render {value!r} as a keyword")
+    return value
+
+
+def environment(autoescape=False):
+    env = jinja2.Environment(loader=jinja2.FileSystemLoader(str(TEMPLATES)), undefined=jinja2.StrictUndefined,
+                             autoescape=autoescape, keep_trailing_newline=True)
+    env.filters["num"] = num
+    env.filters["word"] = word
+    env.filters["count"] = count
+    return env
+
+
+def render(template, **values):
+    """Render an engine template (not autoescaped: decks and scripts are not HTML)."""
+    return environment().get_template(template).render(**values)
