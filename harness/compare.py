@@ -1,8 +1,11 @@
-"""`harness compare`: the reference law and every available engine on one scene; tables, CSV and HTML report."""
+"""`harness compare`: the paper law, each engine's dialect and each engine on one scene; tables, CSV, report."""
 import os
-import sys
 
-from .engines import INSTALLED, engine_status
+import pandas as pd
+
+from .attribution import attribution
+from .comparison import agreement, deviation, findings
+from .engines import ADAPTERS, INSTALLED, engine_status
 from .errors import UserError
 from .results import write_csv
 
@@ -28,26 +31,91 @@ def summary_lines(frame):
     return lines
 
 
+def text_table(frame, columns, formats=None):
+    """A plain fixed-width table for the terminal."""
+    if frame.empty:
+        return "  (none)"
+    formats = formats or {}
+    cells = [[formats.get(c, "{}").format(row[c]) if not isinstance(row[c], float) or c not in formats
+              else formats[c].format(row[c]) for c in columns] for _, row in frame.iterrows()]
+    widths = [max(len(c), *(len(r[i]) for r in cells)) for i, c in enumerate(columns)]
+    lines = ["  " + "  ".join(c.rjust(w) for c, w in zip(columns, widths))]
+    lines += ["  " + "  ".join(v.rjust(w) for v, w in zip(r, widths)) for r in cells]
+    return "\n".join(lines)
+
+
 def compare(args):
-    """Run, write DIR/results.csv and DIR/report.html, print tables; 0 when agreement holds."""
-    from .cli import simulate_from_args
+    """Run, write DIR/results.csv (after every batch) and DIR/report.html; 0 when every agreement holds."""
+    from .cli import law_from_args, scene_from_args
     from .report import write_report
+    from .solver.reference import simulate
     engines = requested_engines(args.engines)
-    statuses = [engine_status(name, args.model) for name in engines]
+    scene, law = scene_from_args(args), law_from_args(args)
     out_dir = args.output
     if os.path.exists(out_dir) and not os.path.isdir(out_dir):
         raise UserError(f"output {out_dir} exists and is not a directory")
-    law, scene, frame = simulate_from_args(args)
+    statuses = [engine_status(name, law.name) for name in engines]
+    if scene.gravity and any(s.available for s in statuses):
+        statuses = [s if not s.available else type(s)(s.name, False, "engine decks do not model gravity")
+                    for s in statuses]
     os.makedirs(out_dir, exist_ok=True)
-    write_csv(frame, os.path.join(out_dir, "results.csv"))
+    results_path = os.path.join(out_dir, "results.csv")
+    frames = []
+
+    def keep(frame):
+        frames.append(frame)
+        write_csv(pd.concat(frames, ignore_index=True), results_path)
+
+    steps = args.steps_per_contact
+    keep(simulate(law, scene, steps_per_contact=steps, converged=args.converged)[0])
+    failures, attributions = [], {}
+    for status in statuses:
+        if not status.available:
+            continue
+        adapter = ADAPTERS[status.name]
+        dialect = adapter.dialect(law.name)
+        keep(simulate(dialect, scene, steps_per_contact=steps)[0])
+        _, failed = adapter_sweep(adapter, law, scene, steps, keep)
+        failures += failed
+        attributions[status.name] = attribution(
+            law, dialect, scene, lambda l, s: simulate(l, s, steps_per_contact=steps)[0])
+    frame = pd.concat(frames, ignore_index=True)
+    ran = [s.name for s in statuses if s.available]
+    agree = pd.concat([agreement(frame, name) for name in ran], ignore_index=True) if ran else pd.DataFrame()
+    devs = pd.concat([deviation(frame, name, name) for name in ran], ignore_index=True) if ran else pd.DataFrame()
+    found = findings(frame)
     skipped = [(s.name, s.reason) for s in statuses if not s.available]
     report = write_report(out_dir, frame, law=law, scene=scene, skipped=skipped)
+    ok = bool(agree["pass"].all()) if not agree.empty else True
     if not args.quiet:
-        print(f"{law.name} (paper dialect, reference engine): {len(frame)} impacts")
-        print("\n".join(summary_lines(frame)))
+        print(f"{law.name}: paper law on the reference engine, {sum(frame.engine == 'reference')} rows")
+        print("\n".join(summary_lines(frame[(frame.engine == "reference") & (frame.dialect == "paper")])))
         for name, reason in skipped:
             print(f"skipped {name}: {reason}")
-        print(f"wrote {os.path.join(out_dir, 'results.csv')} and {report}")
-    print("agreement: no engine compared" if skipped and len(skipped) == len(statuses) else "agreement: ok",
-          file=sys.stdout)
-    return 0
+        if ran:
+            print("\nagreement (engine vs its dialect in the reference, equal dt):")
+            print(text_table(agree, ["engine", "metric", "max_rel_diff", "e_n_target", "theta_deg", "tolerance", "pass"],
+                             {"max_rel_diff": "{:.2e}", "tolerance": "{:.0e}"}))
+            print("\ndeviation (engine vs the paper law):")
+            print(text_table(devs, ["engine", "e_n_target", "metric", "max_abs_diff", "theta_deg", "paper",
+                                    "engine_value"], {"max_abs_diff": "{:.4g}", "paper": "{:.5g}",
+                                                      "engine_value": "{:.5g}"}))
+            for name, table in attributions.items():
+                print(f"\nattribution ({name} dialect -> paper, one ingredient at a time; max change per metric):")
+                cols = [c for c in table.columns if c.startswith("d_")]
+                print(text_table(table, ["ingredient", "dialect", "paper", *cols, "note"],
+                                 {c: "{:+.4g}" for c in cols}))
+        if not found.empty:
+            print("\nfindings:")
+            for _, row in found.iterrows():
+                print(f"  {row.engine} ({row.dialect}): {row.kind}: {row.detail}")
+        for failure in failures:
+            print(f"\n{failure.engine} failed at e_n = {failure.e_n:g}: {failure.message}\n{failure.log_tail}")
+        print(f"\nwrote {results_path} and {report}")
+    print("agreement: " + ("no engine compared" if not ran else "ok" if ok else "FAILED"))
+    return 0 if ok else 1
+
+
+def adapter_sweep(adapter, law, scene, steps, keep):
+    from .engines.sweep import run_sweep
+    return run_sweep(adapter, law, scene, steps, on_frame=keep)

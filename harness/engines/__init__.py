@@ -21,7 +21,14 @@ def _yade_installed():
 
 
 INSTALLED = {"liggghts": _liggghts_installed, "yade": _yade_installed}
-ADAPTERS = {}        # engine name -> adapter; filled by the LIGGGHTS and YADE adapters as they land
+
+
+def _adapters():
+    from . import liggghts
+    return {"liggghts": liggghts}
+
+
+ADAPTERS = _adapters()   # engine name -> adapter module (NAME, available, version, supports, dialect, run_batch)
 
 
 def engine_status(name, law_name):

@@ -13,7 +13,7 @@ from .. import __version__
 from ..render import render
 from .runner import EngineFailure, run_engine
 
-BINARY = "liggghts"
+NAME = BINARY = "liggghts"
 MODELS = {                      # harness law -> LIGGGHTS normal model (MODELS 5)
     "linear-spring-dashpot": "hooke",
     "hertz-mindlin": "hertz",
@@ -32,6 +32,24 @@ class Deck:
     n_atoms: int
 
 
+COMMON = {"end": "tension", "integrator": "velocity-verlet", "lever": "0.5"}
+DIALECTS = {                    # sub-models that make the paper law compute what LIGGGHTS computes (MODELS 5)
+    "linear-spring-dashpot": {**COMMON, "damping": "linear", "tangential": "linear:1",
+                              "tangential-damping": "normal-coefficient"},
+    "hertz-mindlin": {**COMMON, "damping": "tsuji:exact", "tangential": "mindlin:total",
+                      "tangential-damping": "normal-ratio"},
+}
+
+
+def dialect(law_name):
+    """The law as LIGGGHTS 3.8.0 computes it with default options (MODELS 5): velocity Verlet with half-step
+    velocities in the forces, lever R - d/2, no clipping (limitForce off), total-displacement tangential spring,
+    tangential dashpot after the Coulomb test (hooke: c_t = c_n with k_t = k_n; hertz: same sqrt(5/6) beta form)."""
+    from ..laws import compose
+    from ..laws.registry import replace_submodels
+    return replace_submodels(compose(law_name), DIALECTS[law_name], "liggghts")
+
+
 def available():
     return shutil.which(BINARY) is not None
 
@@ -48,7 +66,7 @@ def version():
 
 
 def supports(law_name):
-    return law_name in MODELS
+    return law_name in MODELS and law_name in DIALECTS
 
 
 def settings(law, scene, e_n):
@@ -65,7 +83,7 @@ def settings(law, scene, e_n):
                        ("coefficientPlasticityDepth", "peratomtypepair", PLASTICITY_DEPTH)]
     if model == "thornton_ning":
         p_y = law.normal.yield_pressure(scene.contact, e_n, scene.speed)
-        properties += [("coefficientYieldRatio", "peratomtypepair", math.pi * p_y / (2.0 * scene.contact.E_star)),
+        properties += [("coefficientYieldRatio", "peratomtype", math.pi * p_y / (2.0 * scene.contact.E_star)),
                        ("surfaceEnergy", "peratomtypepair", 0.0)]
     return model, "history", [], properties, restitution
 
@@ -115,3 +133,14 @@ def run_deck(text, n_atoms, timeout_s, workdir):
     done = run_engine([BINARY, "-in", "in.harness", "-log", "none", "-echo", "none"], workdir, timeout_s,
                       env={**os.environ, "OMP_NUM_THREADS": "1"})
     return read_dump(os.path.join(workdir, "final.dump"), n_atoms), done.wall_s, done.log_tail
+
+
+def run_batch(paper_law, scene, batch, max_steps, timeout_s, workdir):
+    """One batch (one e_n) in LIGGGHTS: final v_n1, v_t1, omega1 per impact and whether each sphere separated."""
+    text = deck(paper_law, scene, batch.e_n, batch.dt, batch.v_n0, batch.v_t0, batch.omega0,
+                batch.steps_per_contact, max_steps).text
+    state, wall, log_tail = run_deck(text, len(batch.v_n0), timeout_s, workdir)
+    z, vx, vz, omegay = state.T
+    if not np.all(np.isfinite(state)):
+        raise EngineFailure("LIGGGHTS returned non-finite velocities", log_tail)
+    return {"v_n1": vz, "v_t1": vx, "omega1": omegay, "separated": z > scene.radius}, wall, log_tail

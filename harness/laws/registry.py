@@ -5,9 +5,12 @@ from ..errors import UserError
 from .damping import DAMPING_MODELS, KuwabaraKonoDashpot, LinearDashpot, NoDamping, TsujiDashpot
 from .normal import NORMAL_MODELS, Hertz, LinearSpring, PartiallyLatchingSpring, Stronge, Thornton, WaltonBraun
 from .tangential import TANGENTIAL_MODELS, LinearTangential, Mindlin, WaltonBraunTangential
+from .tangential_damping import TangentialDashpot
 
 END_RULES = ("tension", "no-tension")
-SUBMODEL_KEYS = ("normal", "damping", "end", "tangential", "tangential-damping")
+INTEGRATORS = ("paper", "velocity-verlet")
+LEVERS = ("0", "0.5", "1")
+SUBMODEL_KEYS = ("normal", "damping", "end", "tangential", "tangential-damping", "integrator", "lever")
 
 
 @dataclass(frozen=True)
@@ -18,15 +21,18 @@ class Law:
     damping: object
     end: str
     tangential: object
-    tangential_damping: float = 0.0      # tangential dashpot damping ratio g_t (0: none; applied while sticking)
+    tangential_damping: TangentialDashpot = TangentialDashpot("none")
+    integrator: str = "paper"            # time stepping: 'paper' (second order) or 'velocity-verlet' (LIGGGHTS)
+    lever: float = 0.0                   # lever arm R - lever * alpha for slip and torque (paper 0, LIGGGHTS 1/2)
     summary: str = ""
+    dialect: str = "paper"               # whose formulas these are: the paper's, or an engine's (MODELS 5)
 
     def describe(self):
         """Sub-model names as {key: label}, the form `harness models` prints."""
-        damping = self.damping.name + (f":{self.damping.calibration}" if self.damping.calibration not in (None, "exact")
-                                       else "")
+        damping = self.damping.name + (f":{self.damping.calibration}" if self.damping.calibration else "")
         return {"normal": self.normal.name, "damping": damping, "end": self.end,
-                "tangential": self.tangential.label(), "tangential-damping": self.tangential_damping}
+                "tangential": self.tangential.label(), "tangential-damping": self.tangential_damping.label(),
+                "integrator": self.integrator, "lever": f"R - {self.lever:g} alpha"}
 
     @property
     def provisional(self):
@@ -92,20 +98,20 @@ def _tangential(spec):
     return cls(option) if option else cls()
 
 
-def _tangential_damping(spec):
-    try:
-        value = float(spec)
-    except ValueError:
-        raise UserError(f"tangential-damping must be a damping ratio >= 0, got {spec!r}") from None
-    if not 0.0 <= value < 100.0:
-        raise UserError(f"tangential-damping must be a damping ratio in [0, 100), got {spec!r}")
-    return value
+def _lever(spec):
+    if spec not in LEVERS:
+        raise UserError(f"lever must be one of {', '.join(LEVERS)} (lever arm R - lever alpha), got {spec!r}")
+    return float(spec)
 
 
 def compose(name, overrides=None):
     """The named law with sub-models replaced, e.g. {'tangential': 'mindlin:total', 'end': 'tension'}; validated."""
-    law = get_law(name)
-    changes = {}
+    return replace_submodels(get_law(name), overrides)
+
+
+def replace_submodels(law, overrides, dialect=None):
+    """`law` with the given sub-models replaced (same vocabulary as `compose`); `dialect` renames its dialect."""
+    changes = {} if dialect is None else {"dialect": dialect}
     for key, spec in (overrides or {}).items():
         if key == "normal":
             if spec not in NORMAL_MODELS:
@@ -120,7 +126,13 @@ def compose(name, overrides=None):
         elif key == "tangential":
             changes["tangential"] = _tangential(spec)
         elif key == "tangential-damping":
-            changes["tangential_damping"] = _tangential_damping(spec)
+            changes["tangential_damping"] = TangentialDashpot(spec)
+        elif key == "integrator":
+            if spec not in INTEGRATORS:
+                raise UserError(f"integrator must be one of {', '.join(INTEGRATORS)}, got {spec!r}")
+            changes["integrator"] = spec
+        elif key == "lever":
+            changes["lever"] = _lever(spec)
         else:
             raise UserError(f"unknown sub-model {key!r}; known: {', '.join(SUBMODEL_KEYS)}")
     law = replace(law, **changes) if changes else law

@@ -21,7 +21,9 @@ TANGENTIAL_MINDLIN_DERESIEWICZ = 5 # Thornton & Yin (1991) theta_k rule         
 TANGENTIAL_WALTON_BRAUN = 6        # k_t0 [1 - (T - T*)/(mu N - T*)]^1/3         (MODELS 3)
 
 # integrator
-INTEGRATOR_PAPER = 0       # velocity Verlet, damping implicit in the closing half-kick, release located in-step
+INTEGRATOR_PAPER = 0            # second-order splitting on u = m alpha_dot + D(alpha), release located in-step
+INTEGRATOR_VELOCITY_VERLET = 1  # LIGGGHTS nve/sphere: forces from half-step velocities, release at the step
+INTEGRATORS = {"paper": INTEGRATOR_PAPER, "velocity-verlet": INTEGRATOR_VELOCITY_VERLET}
 
 # per-impact parameter slots (columns of the float parameter matrix)
 P_MASS, P_INERTIA, P_RADIUS, P_DT, P_GRAVITY, P_MU = 0, 1, 2, 3, 4, 5

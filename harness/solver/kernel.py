@@ -112,6 +112,64 @@ def step(s, st, o, ot, p, ints, h, scratch):
     return indicator
 
 
+@njit(cache=True, inline="always")
+def step_velocity_verlet(s, st, o, ot, p, ints, h, scratch):
+    """LIGGGHTS nve/sphere + wall/gran: half kick, drift, forces from the half-step velocities, half kick.
+
+    The normal dashpot and the tangential increment see v(t + h/2); the tangential dashpot is added after the
+    Coulomb test and is not capped again; the contact ends at the first step with alpha <= 0 (MODELS 5).
+    """
+    m, inertia, radius, g = p[C.P_MASS], p[C.P_INERTIA], p[C.P_RADIUS], p[C.P_GRAVITY]
+    vz_half = s[S_VZ] + 0.5 * h * (s[S_FN] / m - g)
+    alpha = s[S_ALPHA] - h * vz_half
+    amax = s[S_AMAX]
+    f_n, a = 0.0, 0.0
+    if alpha > 0.0:
+        f_el, a = normal_elastic(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], radius, alpha, amax)
+        c = p[C.P_DAMP_C0] * damping_power(alpha, p[C.P_DAMP_POWER]) if p[C.P_DAMP_C0] != 0.0 else 0.0
+        f_n = f_el - c * vz_half
+        if f_n < 0.0 and ints[C.I_END] == C.END_FORCE:
+            f_n = 0.0
+    o[S_ALPHA], o[S_VZ], o[S_FN] = alpha, vz_half + 0.5 * h * (f_n / m - g), f_n
+    o[S_AMAX] = alpha if alpha > amax else amax
+    for k in range(N_TSTATE):
+        ot[k] = st[k]
+    code = ints[C.I_TANGENTIAL]
+    if code == C.TANGENTIAL_NONE:
+        o[S_VX], o[S_W], o[S_FT], o[S_FS], o[S_NOLD] = s[S_VX], s[S_W], 0.0, 0.0, f_n
+        return alpha
+    lever_old = radius - p[C.P_LEVER] * s[S_ALPHA]
+    vx_half = s[S_VX] + 0.5 * h * s[S_FT] / m
+    w_half = s[S_W] - 0.5 * h * lever_old * s[S_FT] / inertia
+    lever = radius - p[C.P_LEVER] * alpha
+    slip = vx_half - lever * w_half
+    f_t, f_s = 0.0, 0.0
+    if alpha > 0.0:
+        limit = p[C.P_MU] * abs(f_n)
+        f_s = spring_force(code, s[S_FS], slip * h, a, p[C.P_T1], p[C.P_MU], abs(f_n), s[S_NOLD], ot, scratch)
+        if abs(f_s) > limit:
+            f_s = cap(f_s, limit)
+            after_cap(code, f_s, p[C.P_T1], a, ot)
+            f_t = f_s
+        else:
+            f_t = f_s - p[C.P_TDAMP] * math.sqrt(stiffness(code, p[C.P_T1], a)) * slip
+    else:
+        for k in range(N_TSTATE):
+            ot[k] = 0.0
+    o[S_VX] = vx_half + 0.5 * h * f_t / m
+    o[S_W] = w_half - 0.5 * h * lever * f_t / inertia
+    o[S_FT], o[S_FS], o[S_NOLD] = f_t, f_s, abs(f_n)
+    return alpha
+
+
+@njit(cache=True, inline="always")
+def advance(s, st, o, ot, p, ints, h, scratch):
+    """One step of the row's integrator."""
+    if ints[C.I_INTEGRATOR] == C.INTEGRATOR_VELOCITY_VERLET:
+        return step_velocity_verlet(s, st, o, ot, p, ints, h, scratch)
+    return step(s, st, o, ot, p, ints, h, scratch)
+
+
 @njit(cache=True)
 def parabola_peak(y0, y1, y2):
     """Peak of the parabola through three equally spaced samples with y1 the largest."""
@@ -139,7 +197,7 @@ def integrate(params, ints, out, history, stride):
         h = p[C.P_DT]
         s[S_VZ], s[S_VX], s[S_W] = p[C.P_VZ0], p[C.P_VX0], p[C.P_W0]
         s[S_U] = -p[C.P_MASS] * p[C.P_VZ0]
-        if p[C.P_DAMP_POWER] == 0.0:
+        if p[C.P_DAMP_POWER] == 0.0 and row_ints[C.I_INTEGRATOR] == C.INTEGRATOR_PAPER:
             s[S_FN] = -p[C.P_DAMP_C0] * p[C.P_VZ0]   # a constant dashpot acts from first touch
             s[S_C] = p[C.P_DAMP_C0]
         f_prev2, f_prev1 = 0.0, 0.0
@@ -151,9 +209,12 @@ def integrate(params, ints, out, history, stride):
         steps = 0
         max_steps = int(p[C.P_MAXSTEPS])
         for k in range(max_steps):
-            indicator = step(s, st, o, ot, p, row_ints, h, scratch)
+            indicator = advance(s, st, o, ot, p, row_ints, h, scratch)
             steps = k + 1
-            if indicator <= 0.0:
+            if indicator <= 0.0 and row_ints[C.I_INTEGRATOR] == C.INTEGRATOR_VELOCITY_VERLET:
+                t_end = steps * h                          # the engine ends contact at the step, not inside it
+                status = C.STATUS_OK
+            elif indicator <= 0.0:
                 frac_lo, frac_hi = 0.0, 1.0
                 g_lo, g_hi = s[S_ALPHA] if s[S_ALPHA] > 0.0 else 1.0, indicator
                 if row_ints[C.I_END] == C.END_FORCE:

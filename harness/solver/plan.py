@@ -50,9 +50,11 @@ def plan_batch(law, scene, e_n, steps_per_contact):
     params[:, C.P_DAMP_C0] = dashpot.c0
     params[:, C.P_DAMP_POWER] = dashpot.power
     if tangential.any():
-        params[:, C.P_T1] = law.tangential.parameter(contact, normal.linear_stiffness)
-        params[:, C.P_TDAMP] = 2.0 * law.tangential_damping * np.sqrt(contact.mass)
-    params[:, C.P_LEVER] = 0.0
+        params[:, C.P_T1] = k_t = law.tangential.parameter(contact, normal.linear_stiffness)
+        constant_k_t = k_t if law.tangential.code == C.TANGENTIAL_LINEAR else None
+        g_t = law.tangential_damping.ratio(dashpot, normal.linear_stiffness, constant_k_t)
+        params[:, C.P_TDAMP] = 2.0 * g_t * np.sqrt(contact.mass)
+    params[:, C.P_LEVER] = law.lever
     params[:, C.P_VZ0] = -v_n0
     params[:, C.P_VX0] = v_t0
     params[:, C.P_W0] = omega0
@@ -62,5 +64,5 @@ def plan_batch(law, scene, e_n, steps_per_contact):
     ints[:, C.I_NORMAL] = law.normal.code
     ints[:, C.I_END] = C.END_ALPHA if law.end == "tension" else C.END_FORCE
     ints[:, C.I_TANGENTIAL] = np.where(tangential, law.tangential.code, C.TANGENTIAL_NONE)
-    ints[:, C.I_INTEGRATOR] = C.INTEGRATOR_PAPER
+    ints[:, C.I_INTEGRATOR] = C.INTEGRATORS[law.integrator]
     return Batch(params, ints, e_n, v_n0, v_t0, omega0, theta, dt, steps_per_contact, tangential)

@@ -78,7 +78,7 @@ def simulate(law, scene, steps_per_contact=1000, converged=False, history_points
             messages = [""] * len(out)
             steps, dt = batch.steps_per_contact, batch.dt
         frames.append(impact_frame(
-            scene, batch, model=law.name, dialect="paper", engine="reference", engine_version=__version__, dt=dt,
+            scene, batch, model=law.name, dialect=law.dialect, engine="reference", engine_version=__version__, dt=dt,
             steps_per_contact=steps, v_n1=out[:, C.O_VZ], v_t1=out[:, C.O_VX], omega1=out[:, C.O_W],
             t_contact=out[:, C.O_TC], f_n_max=out[:, C.O_FMAX], overlap_max=out[:, C.O_AMAX], wall_s=wall / len(out),
             status=[STATUS_TEXT[int(s)] for s in out[:, C.O_STATUS]], message=messages))

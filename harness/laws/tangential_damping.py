@@ -1,0 +1,38 @@
+"""Tangential dashpot: c_t = 2 g_t sqrt(m k_t), applied only while the contact sticks (MODELS 3, section 5)."""
+import math
+
+from ..errors import UserError
+
+RULES = ("none", "normal-ratio", "normal-coefficient")
+
+
+class TangentialDashpot:
+    """g_t fixed, or borrowed from the normal dashpot: g_t = g_n ('normal-ratio', LIGGGHTS hertz, YADE) or
+    c_t = c_n ('normal-coefficient', LIGGGHTS hooke: g_t = g_n sqrt(k_n/k_t), constant k_t only)."""
+
+    def __init__(self, spec="none"):
+        self.spec = str(spec)
+        if self.spec in RULES:
+            self.rule, self.value = self.spec, 0.0
+            return
+        try:
+            self.rule, self.value = "ratio", float(self.spec)
+        except ValueError:
+            raise UserError(f"tangential-damping must be {', '.join(RULES)} or a damping ratio, got {spec!r}") from None
+        if not (math.isfinite(self.value) and 0.0 <= self.value < 100.0):
+            raise UserError(f"tangential-damping ratio must lie in [0, 100), got {spec!r}")
+
+    def label(self):
+        return self.spec
+
+    def ratio(self, dashpot, k_n, k_t):
+        """The damping ratio g_t for this contact (dashpot: the calibrated normal Dashpot)."""
+        if self.rule == "none":
+            return 0.0
+        if self.rule == "ratio":
+            return self.value
+        if self.rule == "normal-ratio":
+            return dashpot.g
+        if k_t is None:
+            raise UserError("normal-coefficient tangential damping needs a constant tangential stiffness")
+        return dashpot.g * math.sqrt(k_n / k_t)
