@@ -9,9 +9,10 @@ import pytest
 from harness.results import COLUMNS
 
 
-def harness(*args, cwd=None):
+def harness(*args, cwd=None, env=None):
+    import os
     return subprocess.run([sys.executable, "-m", "harness.cli", *args], capture_output=True, text=True, cwd=cwd,
-                          timeout=300)
+                          timeout=600, env={**os.environ, **(env or {})})
 
 
 @pytest.mark.parametrize("args", [
@@ -91,11 +92,13 @@ def test_models_json_lists_every_law():
     assert all("normal" in m["submodels"] for m in models)
 
 
-def test_compare_writes_csv_and_report_and_names_skipped_engines(tmp_path):
+def test_compare_without_engines_runs_the_reference_and_names_what_it_skipped(tmp_path):
     proc = harness("compare", "--model", "hertz-mindlin", "--en", "0.5", "--angles", "0:80:20", "-o",
-                   str(tmp_path / "out"))
+                   str(tmp_path / "out"), env={"HARNESS_LIGGGHTS": str(tmp_path / "no-such-liggghts"),
+                                               "HARNESS_YADE_PYTHON": str(tmp_path / "no-such-python")})
     assert proc.returncode == 0, proc.stderr
     assert (tmp_path / "out" / "results.csv").exists()
     html = (tmp_path / "out" / "report.html").read_text()
     assert "hertz-mindlin" in html and "data:image/png;base64," in html
-    assert "skipped liggghts" in proc.stdout and "skipped yade" in proc.stdout
+    assert "skipped liggghts: liggghts is not installed" in proc.stdout and "skipped yade" in proc.stdout
+    assert "agreement: no engine compared" in proc.stdout

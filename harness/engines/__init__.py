@@ -13,7 +13,8 @@ class EngineStatus:
 
 
 def _liggghts_installed():
-    return shutil.which("liggghts") is not None
+    from . import liggghts
+    return liggghts.available()
 
 
 def _yade_installed():
@@ -36,7 +37,7 @@ def engine_status(name, law_name):
     if name not in INSTALLED:
         return EngineStatus(name, False, f"unknown engine {name!r}")
     if not INSTALLED[name]():
-        return EngineStatus(name, False, f"{name} is not installed (apt-get install -y {name})")
+        return EngineStatus(name, False, f"{name} is not installed (apt-get install -y {name}, or bash tools/setup.sh)")
     adapter = ADAPTERS.get(name)
     if adapter is None:
         return EngineStatus(name, False, f"{name} is installed but its adapter is not implemented yet")

@@ -13,7 +13,8 @@ from .. import __version__
 from ..render import render
 from .runner import EngineFailure, run_engine
 
-NAME = BINARY = "liggghts"
+NAME = "liggghts"
+BINARY_VARIABLE = "HARNESS_LIGGGHTS"     # path of another liggghts binary (a custom build, or a test's fake)
 MODELS = {                      # harness law -> LIGGGHTS normal model (MODELS 5)
     "linear-spring-dashpot": "hooke",
     "hertz-mindlin": "hertz",
@@ -50,15 +51,23 @@ def dialect(law_name):
     return replace_submodels(compose(law_name), DIALECTS[law_name], "liggghts")
 
 
+def binary():
+    return os.environ.get(BINARY_VARIABLE, "liggghts")
+
+
 def available():
-    return shutil.which(BINARY) is not None
+    return shutil.which(binary()) is not None
+
+
+def version():
+    return _version(binary())
 
 
 @lru_cache(maxsize=None)
-def version():
+def _version(path):
     """'3.8.0' from the banner the binary prints."""
     try:
-        out = subprocess.run([BINARY, "-h"], capture_output=True, text=True, timeout=30, stdin=subprocess.DEVNULL)
+        out = subprocess.run([path, "-h"], capture_output=True, text=True, timeout=30, stdin=subprocess.DEVNULL)
     except (OSError, subprocess.TimeoutExpired):
         return "unknown"
     match = re.search(r"LIGGGHTS-PUBLIC ([0-9.]+)", out.stdout + out.stderr)
@@ -130,7 +139,7 @@ def run_deck(text, n_atoms, timeout_s, workdir):
     """Run one deck in workdir; returns (final state per atom, wall seconds, log tail)."""
     with open(os.path.join(workdir, "in.harness"), "w") as handle:
         handle.write(text)
-    done = run_engine([BINARY, "-in", "in.harness", "-log", "none", "-echo", "none"], workdir, timeout_s,
+    done = run_engine([binary(), "-in", "in.harness", "-log", "none", "-echo", "none"], workdir, timeout_s,
                       env={**os.environ, "OMP_NUM_THREADS": "1"})
     return read_dump(os.path.join(workdir, "final.dump"), n_atoms), done.wall_s, done.log_tail
 
