@@ -85,7 +85,8 @@ def compare(args):
     devs = pd.concat([deviation(frame, name, name) for name in ran], ignore_index=True) if ran else pd.DataFrame()
     found = findings(frame)
     skipped = [(s.name, s.reason) for s in statuses if not s.available]
-    report = write_report(out_dir, frame, law=law, scene=scene, skipped=skipped)
+    report = write_report(out_dir, frame, law=law, scene=scene, skipped=skipped, agreement=agree, deviation=devs,
+                          attributions=attributions, findings=found, failures=failures)
     ok = bool(agree["pass"].all()) if not agree.empty else True
     if not args.quiet:
         print(f"{law.name}: paper law on the reference engine, {sum(frame.engine == 'reference')} rows")

@@ -44,20 +44,42 @@ def normalised_figure(frame, chi):
     return png
 
 
-def write_report(out_dir, frame, law, scene, skipped):
+def records(table):
+    """A DataFrame as (columns, rows of formatted cells) for the template."""
+    if table is None or table.empty:
+        return None
+    def cell(value):
+        if isinstance(value, float):
+            return f"{value:.6g}"
+        return str(value)
+    return list(table.columns), [[cell(v) for v in row] for row in table.itertuples(index=False)]
+
+
+def engines_ran(frame):
+    """(engine, version, dialects) for every engine that has rows."""
+    return [(engine, str(group.engine_version.iloc[0]), ", ".join(sorted(group.dialect.unique())) + " dialect")
+            for engine, group in frame.groupby("engine", sort=False)]
+
+
+def write_report(out_dir, frame, law, scene, skipped, agreement=None, deviation=None, attributions=None,
+                 findings=None, failures=()):
     """Render DIR/report.html (self-contained) and return its path."""
     env = jinja2.Environment(loader=jinja2.FileSystemLoader(str(TEMPLATES)), autoescape=True,
                              undefined=jinja2.StrictUndefined)
     figures = []
-    if frame.psi1_star.notna().any():
-        figures.append(("Normalised rebound: Psi2* and Omega* against Psi1*", normalised_figure(frame, scene.contact.chi)))
-    summary = frame.groupby("e_n_target", sort=False).agg(
+    paper = frame[(frame.engine == "reference") & (frame.dialect == "paper")]
+    if paper.psi1_star.notna().any():
+        figures.append(("Normalised rebound of the paper law: Psi2* and Omega* against Psi1*",
+                        normalised_figure(paper, scene.contact.chi)))
+    summary = paper.groupby("e_n_target", sort=False).agg(
         e_n_min=("e_n", "min"), e_n_max=("e_n", "max"), e_t_min=("e_t", "min"), e_t_max=("e_t", "max"),
         t_contact_max=("t_contact", "max"), f_n_max=("f_n_max", "max"), ke_ratio_max=("ke_ratio", "max"),
         rows=("status", "size")).reset_index()
     html = env.get_template("report.html.j2").render(
         law=law, submodels=law.describe(), scene=scene, conventions=CONVENTIONS, figures=figures,
-        summary=summary.to_dict("records"), skipped=skipped, rows=len(frame))
+        summary=summary.to_dict("records"), skipped=skipped, rows=len(frame), ran=engines_ran(frame), agreement=records(agreement),
+        deviation=records(deviation), findings=records(findings), failures=failures,
+        attributions=[(name, records(table)) for name, table in (attributions or {}).items()])
     path = os.path.join(out_dir, "report.html")
     tmp = path + ".tmp"
     with open(tmp, "w", encoding="utf-8") as handle:

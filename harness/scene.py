@@ -1,6 +1,7 @@
 """Scene: what to simulate (sphere, wall, impact set), validated once, with the effective contact properties."""
 import math
 from dataclasses import dataclass, field
+from numbers import Real
 
 import numpy as np
 
@@ -97,13 +98,24 @@ def contact_properties(scene):
                    E_star=1.0 / inv_e, G_star=1.0 / inv_g, nu=nu1, rho=scene.rho)
 
 
+def _is_number(value):
+    return isinstance(value, Real) and not isinstance(value, bool) and math.isfinite(value)
+
+
 def _positive(name, value):
-    if not (isinstance(value, (int, float)) and math.isfinite(value) and value > 0):
+    if not (_is_number(value) and value > 0):
         raise UserError(f"{name} must be a positive number, got {value!r}")
 
 
 def validate(scene):
-    """Reject physically meaningless scenes with one clear line (UserError)."""
+    """Reject physically meaningless scenes with one clear line (UserError); only finite numbers get through."""
+    for name in ("nu", "mu", "omega0", "gravity"):
+        if not _is_number(getattr(scene, name)):
+            raise UserError(f"{name} must be a finite number, got {getattr(scene, name)!r}")
+    for name in ("e_n", "angles_deg", "psi1_star", "v_t"):
+        values = getattr(scene, name)
+        if values is not None and not (isinstance(values, tuple) and all(_is_number(v) for v in values)):
+            raise UserError(f"{name} must be a tuple of finite numbers, got {values!r}")
     for name in ("radius", "E", "rho", "speed"):
         _positive(name, getattr(scene, name))
     if not -1.0 < scene.nu < 0.5:
