@@ -22,7 +22,6 @@ MODELS = {                      # harness law -> LIGGGHTS normal model (MODELS 5
     "thornton": "thornton_ning",
 }
 MIN_RESTITUTION = 0.05          # LIGGGHTS refuses coefficientRestitution <= 0.05
-PLASTICITY_DEPTH = 1e-9         # hooke/hysteresis: d_lim << every peak overlap, so k2 = k2max (Walton-Braun)
 
 
 @dataclass(frozen=True)
@@ -39,6 +38,10 @@ DIALECTS = {                    # sub-models that make the paper law compute wha
                               "tangential-damping": "normal-coefficient"},
     "hertz-mindlin": {**COMMON, "damping": "tsuji:exact", "tangential": "mindlin:total",
                       "tangential-damping": "normal-ratio"},
+    "walton-braun": {**COMMON, "end": "no-tension", "normal": "liggghts-hysteresis", "tangential": "linear:1",
+                     "tangential-damping": "none"},
+    "thornton": {**COMMON, "end": "no-tension", "normal": "liggghts-thornton-ning", "tangential": "mindlin:total",
+                 "tangential-damping": "reversed-beta"},
 }
 
 
@@ -78,6 +81,13 @@ def supports(law_name):
     return law_name in MODELS and law_name in DIALECTS
 
 
+def law_stiffness(scene):
+    """k_n of LIGGGHTS hooke: 16/15 sqrt(R) E* (15 m V_c^2/(16 sqrt(R) E*))^1/5 with V_c = the scene speed."""
+    from ..laws.calibration import hertz_equivalent_stiffness
+    c = scene.contact
+    return hertz_equivalent_stiffness(c.E_star, c.radius, c.mass, scene.speed)
+
+
 def settings(law, scene, e_n):
     """Model, tangential model, options and extra global properties that express `law` at e_n in LIGGGHTS."""
     model = MODELS[law.name]
@@ -87,9 +97,12 @@ def settings(law, scene, e_n):
         properties.append(("characteristicVelocity", "scalar", scene.speed))
     if model == "hooke/hysteresis":
         restitution = 1.0                               # no viscous part: all dissipation by hysteresis
-        properties += [("coefficientMaxElasticStiffness", "peratomtypepair", 1.0 / e_n ** 2),
+        from ..laws.normal import LudingHysteresis
+        k1 = law_stiffness(scene)
+        k2max, d_lim = LudingHysteresis.stiffness_and_limit(k1, scene.contact, e_n, scene.speed)
+        properties += [("coefficientMaxElasticStiffness", "peratomtypepair", k2max / k1),
                        ("coefficientAdhesionStiffness", "peratomtypepair", 0.0),
-                       ("coefficientPlasticityDepth", "peratomtypepair", PLASTICITY_DEPTH)]
+                       ("coefficientPlasticityDepth", "peratomtypepair", d_lim * (k2max - k1) / (k2max * 2 * scene.radius))]
     if model == "thornton_ning":
         p_y = law.normal.yield_pressure(scene.contact, e_n, scene.speed)
         properties += [("coefficientYieldRatio", "peratomtype", math.pi * p_y / (2.0 * scene.contact.E_star)),

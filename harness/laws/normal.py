@@ -96,3 +96,31 @@ class Stronge(Thornton):
 
 
 NORMAL_MODELS = {cls.name: cls for cls in (LinearSpring, Hertz, WaltonBraun, PartiallyLatchingSpring, Thornton, Stronge)}
+
+
+class LudingHysteresis:
+    """LIGGGHTS hooke/hysteresis (engine dialect): k1 as the linear spring; d_lim = 2 x the undamped normal
+    peak overlap at V and k2max = k1 (2/e^2 - 1), so that at the scene speed the unloading stiffness is K1/e^2."""
+    name, code, plastic = "liggghts-hysteresis", C.NORMAL_LUDING, True
+
+    def parameters(self, contact, e_n, speed):
+        k1 = cal.hertz_equivalent_stiffness(contact.E_star, contact.radius, contact.mass, speed)
+        k2max, d_lim = self.stiffness_and_limit(k1, contact, e_n, speed)
+        t_c = 0.5 * math.pi * math.sqrt(contact.mass / k1) * (1.0 + e_n)
+        return NormalParameters((k1, k2max, d_lim, 0.0), k1, t_c)
+
+    @staticmethod
+    def stiffness_and_limit(k1, contact, e_n, speed):
+        return k1 * (2.0 / e_n ** 2 - 1.0), 2.0 * speed * math.sqrt(contact.mass / k1)
+
+
+class ThorntonNing(Thornton):
+    """LIGGGHTS thornton_ning (engine dialect): incremental dF = 2E* a dd, a = sqrt(R d) capped at a_y = pi p_y R/(2E*)
+    while loading, unloading with R unmodified, no damping; p_y as the paper's Thornton law at the scene speed."""
+    name, code = "liggghts-thornton-ning", C.NORMAL_THORNTON_NING
+
+    def kernel_values(self, contact, p_y, alpha_y, f_y):
+        return (contact.E_star, math.pi * p_y * contact.radius / (2.0 * contact.E_star), 0.0, 0.0)
+
+
+ENGINE_NORMAL_MODELS = {cls.name: cls for cls in (LudingHysteresis, ThorntonNing)}

@@ -3,7 +3,7 @@ from dataclasses import dataclass, replace
 
 from ..errors import UserError
 from .damping import DAMPING_MODELS, KuwabaraKonoDashpot, LinearDashpot, NoDamping, TsujiDashpot
-from .normal import NORMAL_MODELS, Hertz, LinearSpring, PartiallyLatchingSpring, Stronge, Thornton, WaltonBraun
+from .normal import ENGINE_NORMAL_MODELS, NORMAL_MODELS, Hertz, LinearSpring, PartiallyLatchingSpring, Stronge, Thornton, WaltonBraun
 from .tangential import TANGENTIAL_MODELS, LinearTangential, Mindlin, WaltonBraunTangential
 from .tangential_damping import TangentialDashpot
 
@@ -114,9 +114,10 @@ def replace_submodels(law, overrides, dialect=None):
     changes = {} if dialect is None else {"dialect": dialect}
     for key, spec in (overrides or {}).items():
         if key == "normal":
-            if spec not in NORMAL_MODELS:
-                raise UserError(f"unknown normal model {spec!r}; known: {', '.join(NORMAL_MODELS)}")
-            changes["normal"] = NORMAL_MODELS[spec]()
+            models = {**NORMAL_MODELS, **ENGINE_NORMAL_MODELS}
+            if spec not in models:
+                raise UserError(f"unknown normal model {spec!r}; known: {', '.join(models)}")
+            changes["normal"] = models[spec]()
         elif key == "damping":
             changes["damping"] = _damping(spec)
         elif key == "end":

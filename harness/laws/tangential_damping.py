@@ -3,12 +3,14 @@ import math
 
 from ..errors import UserError
 
-RULES = ("none", "normal-ratio", "normal-coefficient")
+RULES = ("none", "normal-ratio", "normal-coefficient", "beta", "reversed-beta")
 
 
 class TangentialDashpot:
     """g_t fixed, or borrowed from the normal dashpot: g_t = g_n ('normal-ratio', LIGGGHTS hertz, YADE) or
-    c_t = c_n ('normal-coefficient', LIGGGHTS hooke: g_t = g_n sqrt(k_n/k_t), constant k_t only)."""
+    c_t = c_n ('normal-coefficient', LIGGGHTS hooke: g_t = g_n sqrt(k_n/k_t), constant k_t only); or from e_n:
+    g_t = sqrt(5/6)|beta| ('beta'), and its negative ('reversed-beta': the sign defect of LIGGGHTS thornton_ning,
+    which adds energy), beta = ln e/sqrt(ln^2 e + pi^2)."""
 
     def __init__(self, spec="none"):
         self.spec = str(spec)
@@ -25,10 +27,13 @@ class TangentialDashpot:
     def label(self):
         return self.spec
 
-    def ratio(self, dashpot, k_n, k_t):
+    def ratio(self, dashpot, k_n, k_t, e_n):
         """The damping ratio g_t for this contact (dashpot: the calibrated normal Dashpot)."""
         if self.rule == "none":
             return 0.0
+        if self.rule in ("beta", "reversed-beta"):
+            beta = abs(math.log(e_n)) / math.sqrt(math.log(e_n) ** 2 + math.pi ** 2)
+            return math.sqrt(5.0 / 6.0) * beta * (1.0 if self.rule == "beta" else -1.0)
         if self.rule == "ratio":
             return self.value
         if self.rule == "normal-ratio":

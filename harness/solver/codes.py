@@ -6,6 +6,8 @@ NORMAL_HERTZ = 1           # k alpha^3/2                              (paper eq.
 NORMAL_WALTON_BRAUN = 2    # K1 alpha loading, K2 (alpha - alpha0) unloading (MODELS 2.4)
 NORMAL_THORNTON = 3        # Hertz, linear plastic, Hertz unloading with R_p (MODELS 2.6)
 NORMAL_STRONGE = 4         # Hertz, F_y (2 alpha/alpha_y - 1), Hertz unloading with R_c (MODELS 2.5)
+NORMAL_LUDING = 5          # LIGGGHTS hooke/hysteresis: k2 = k1 + (k2max - k1) d_max/d_lim (engine dialect)
+NORMAL_THORNTON_NING = 6   # LIGGGHTS thornton_ning: incremental 2E* a dd, a capped at a_y (engine dialect)
 
 # end-of-contact rule
 END_ALPHA = 0              # tension allowed, contact ends when alpha returns to 0

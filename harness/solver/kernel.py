@@ -13,11 +13,12 @@ import numpy as np
 from numba import njit, prange
 
 from . import codes as C
-from .normal_kernels import normal_elastic
+from .normal_kernels import normal_elastic, thornton_ning
 from .tangential_kernels import N_TSTATE, after_cap, cap, spring_force, stiffness
 
 S_ALPHA, S_VZ, S_VX, S_W, S_AMAX, S_FN, S_FT, S_FS, S_NOLD, S_U, S_FEL, S_C = 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11
-N_STATE = 12
+S_FMAX, S_YIELD, S_DETACH = 12, 13, 14      # incremental engine laws (thornton_ning): F_max, yielded, detached at
+N_STATE = 15
 RELEASE_ITERATIONS = 100
 
 
@@ -123,14 +124,20 @@ def step_velocity_verlet(s, st, o, ot, p, ints, h, scratch):
     vz_half = s[S_VZ] + 0.5 * h * (s[S_FN] / m - g)
     alpha = s[S_ALPHA] - h * vz_half
     amax = s[S_AMAX]
-    f_n, a = 0.0, 0.0
+    f_n, f_el, a = 0.0, 0.0, 0.0
+    o[S_FMAX], o[S_YIELD], o[S_DETACH] = 0.0, 0.0, -1.0     # history cleared when out of contact
     if alpha > 0.0:
-        f_el, a = normal_elastic(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], radius, alpha, amax)
+        if ints[C.I_NORMAL] == C.NORMAL_THORNTON_NING:
+            f_el, a, o[S_YIELD], o[S_DETACH], o[S_FMAX] = thornton_ning(
+                p[C.P_N1], p[C.P_N2], radius, alpha, s[S_ALPHA], s[S_FEL], amax, s[S_FMAX], s[S_YIELD], s[S_DETACH])
+        else:
+            f_el, a = normal_elastic(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], radius, alpha,
+                                     amax)
         c = p[C.P_DAMP_C0] * damping_power(alpha, p[C.P_DAMP_POWER]) if p[C.P_DAMP_C0] != 0.0 else 0.0
         f_n = f_el - c * vz_half
         if f_n < 0.0 and ints[C.I_END] == C.END_FORCE:
             f_n = 0.0
-    o[S_ALPHA], o[S_VZ], o[S_FN] = alpha, vz_half + 0.5 * h * (f_n / m - g), f_n
+    o[S_ALPHA], o[S_VZ], o[S_FN], o[S_FEL] = alpha, vz_half + 0.5 * h * (f_n / m - g), f_n, f_el
     o[S_AMAX] = alpha if alpha > amax else amax
     for k in range(N_TSTATE):
         ot[k] = st[k]
@@ -197,9 +204,14 @@ def integrate(params, ints, out, history, stride):
         h = p[C.P_DT]
         s[S_VZ], s[S_VX], s[S_W] = p[C.P_VZ0], p[C.P_VX0], p[C.P_W0]
         s[S_U] = -p[C.P_MASS] * p[C.P_VZ0]
-        if p[C.P_DAMP_POWER] == 0.0 and row_ints[C.I_INTEGRATOR] == C.INTEGRATOR_PAPER:
+        s[S_DETACH] = -1.0
+        if p[C.P_DAMP_POWER] == 0.0:
             s[S_FN] = -p[C.P_DAMP_C0] * p[C.P_VZ0]   # a constant dashpot acts from first touch
             s[S_C] = p[C.P_DAMP_C0]
+        if row_ints[C.I_INTEGRATOR] == C.INTEGRATOR_VELOCITY_VERLET and row_ints[C.I_TANGENTIAL] != C.TANGENTIAL_NONE:
+            # LIGGGHTS' setup force at first touch (gap 0 counts as contact): the tangential dashpot alone
+            s[S_FT] = -p[C.P_TDAMP] * math.sqrt(stiffness(row_ints[C.I_TANGENTIAL], p[C.P_T1], 0.0)) * (
+                p[C.P_VX0] - p[C.P_RADIUS] * p[C.P_W0])
         f_prev2, f_prev1 = 0.0, 0.0
         a_prev2, a_prev1 = 0.0, 0.0
         f_peak, a_peak = s[S_FN], 0.0

@@ -63,6 +63,43 @@ def stronge(E_star, alpha_y, f_y, radius, alpha, alpha_max):
 
 
 @njit(cache=True)
+def luding(k1, k2max, d_lim, radius, alpha, alpha_max):
+    """LIGGGHTS hooke/hysteresis without adhesion: min(k1 d, k2 (d - d_max) + k1 d_max), k2 = k1 + (k2max - k1)
+    d_max/d_lim; beyond d_lim the line k2max (d - d_lim) + k1 d_lim (read in LIGGGHTS 3.8.0, reproduced exactly)."""
+    d_max = alpha if alpha > alpha_max else alpha_max
+    if d_max >= d_lim:
+        return k2max * (alpha - d_lim) + k1 * d_lim, math.sqrt(radius * alpha)
+    k2 = k1 + (k2max - k1) * d_max / d_lim
+    f = k2 * (alpha - d_max) + k1 * d_max
+    return (k1 * alpha if f >= k1 * alpha else f), math.sqrt(radius * alpha)
+
+
+@njit(cache=True)
+def thornton_ning(E_star, a_y, radius, alpha, alpha_old, f_old, alpha_max, f_max, yielding, detached_at):
+    """LIGGGHTS thornton_ning, surfaceEnergy 0: F += 2E* a (d - d_old) with a = sqrt(R d) at the new overlap,
+    a = a_y once yielded while loading; unloading with R unchanged; F < 0 -> 0 and detached until d returns.
+    Returns (F, a, yielding, detached_at, f_max); detached_at < 0 means attached."""
+    if detached_at >= 0.0:
+        if alpha < detached_at:
+            return 0.0, math.sqrt(radius * alpha), yielding, detached_at, f_max
+        alpha_old, f_old, detached_at = detached_at, 0.0, -1.0
+    dn = alpha - alpha_old
+    a = math.sqrt(radius * alpha)
+    if alpha >= alpha_max:
+        if a >= a_y:
+            yielding = 1.0
+        f = f_old + 2.0 * E_star * (a_y if yielding > 0.0 else a) * dn
+    elif yielding > 0.0:
+        r_p = radius * f_max / f_max
+        f = f_old + 2.0 * E_star * math.sqrt(r_p * alpha) * dn
+    else:
+        f = f_old + 2.0 * E_star * a * dn
+    if f < 0.0:
+        f, detached_at = 0.0, alpha
+    return f, a, yielding, detached_at, (f if f > f_max else f_max)
+
+
+@njit(cache=True)
 def normal_elastic(code, p1, p2, p3, p4, radius, alpha, alpha_max):
     """Dispatch to the normal model selected by `code`; returns (F_el, contact radius a)."""
     if code == C.NORMAL_LINEAR:
@@ -73,4 +110,6 @@ def normal_elastic(code, p1, p2, p3, p4, radius, alpha, alpha_max):
         return walton_braun(p1, p2, radius, alpha, alpha_max)
     if code == C.NORMAL_THORNTON:
         return thornton(p1, p2, p3, p4, radius, alpha, alpha_max)
+    if code == C.NORMAL_LUDING:
+        return luding(p1, p2, p3, radius, alpha, alpha_max)
     return stronge(p1, p2, p3, radius, alpha, alpha_max)

@@ -52,7 +52,7 @@ def plan_batch(law, scene, e_n, steps_per_contact):
     if tangential.any():
         params[:, C.P_T1] = k_t = law.tangential.parameter(contact, normal.linear_stiffness)
         constant_k_t = k_t if law.tangential.code == C.TANGENTIAL_LINEAR else None
-        g_t = law.tangential_damping.ratio(dashpot, normal.linear_stiffness, constant_k_t)
+        g_t = law.tangential_damping.ratio(dashpot, normal.linear_stiffness, constant_k_t, e_n)
         params[:, C.P_TDAMP] = 2.0 * g_t * np.sqrt(contact.mass)
     params[:, C.P_LEVER] = law.lever
     params[:, C.P_VZ0] = -v_n0

@@ -1,0 +1,146 @@
+"""LIGGGHTS adapter: real runs agree with the LIGGGHTS dialect at equal dt; failure modes give clear messages;
+decks cannot be injected into."""
+import os
+import stat
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from harness.engines import liggghts
+from harness.engines.runner import EngineFailure, run_engine
+from harness.laws import compose
+from harness.render import RenderError, render
+from harness.scene import Scene
+from harness.solver import codes as C
+from harness.solver.plan import plan_batch
+from harness.solver.reference import run_kernel
+
+needs_liggghts = pytest.mark.skipif(not liggghts.available(), reason="liggghts is not installed")
+SCENE = Scene(e_n=(0.9, 0.5, 0.1), angles_deg=(0.0, 10.0, 30.0, 50.0, 70.0, 85.0))
+
+
+def engine_and_dialect(name, scene, e_n, steps=200, tmp_path=None):
+    law = liggghts.dialect(name)
+    batch = plan_batch(law, scene, e_n, steps)
+    out, _, _ = run_kernel(batch)
+    final, _, _ = liggghts.run_batch(compose(name), scene, batch, int(batch.params[:, C.P_MAXSTEPS].max()), 300,
+                                     str(tmp_path))
+    engine = np.column_stack([final["v_n1"], final["v_t1"], final["omega1"]])
+    reference = out[:, [C.O_VZ, C.O_VX, C.O_W]]
+    return engine, reference, final
+
+
+@needs_liggghts
+@pytest.mark.parametrize("name", [n for n in liggghts.DIALECTS])
+@pytest.mark.parametrize("e_n", [0.9, 0.5, 0.1])
+def test_engine_agrees_with_its_dialect_at_equal_dt(name, e_n, tmp_path):
+    engine, reference, final = engine_and_dialect(name, SCENE, e_n, tmp_path=tmp_path)
+    assert final["separated"].all()
+    scale = np.array([1.0, 1.0, 1.0 / SCENE.radius]) * SCENE.speed
+    rel = np.abs(engine - reference) / np.maximum(np.abs(reference), 1e-9 * scale)
+    assert rel.max() < 1e-6, rel
+
+
+@needs_liggghts
+def test_lost_atoms_are_a_clear_failure(tmp_path):
+    """A sphere thrown out of the domain: LIGGGHTS stops on 'Lost atoms' (thermo_modify lost error)."""
+    law = compose("hertz-mindlin")
+    scene = Scene(e_n=(0.5,), angles_deg=(0.0,))
+    batch = plan_batch(liggghts.dialect("hertz-mindlin"), scene, 0.5, 100)
+    deck = liggghts.deck(law, scene, 0.5, batch.dt, batch.v_n0, np.array([5e3]), batch.omega0, 100, 100000)
+    with pytest.raises(EngineFailure) as failure:
+        liggghts.run_deck(deck.text, deck.n_atoms, 120, str(tmp_path))
+    assert "Lost atoms" in failure.value.log_tail
+
+
+def fake_engine(tmp_path, body):
+    path = tmp_path / "fake-liggghts"
+    path.write_text("#!/bin/sh\n" + body + "\n")
+    path.chmod(path.stat().st_mode | stat.S_IEXEC)
+    return str(path)
+
+
+def test_crash_gives_exit_code_and_log_tail(tmp_path, monkeypatch):
+    monkeypatch.setenv(liggghts.BINARY_VARIABLE, fake_engine(tmp_path, 'echo "ERROR: something broke"; exit 3'))
+    with pytest.raises(EngineFailure, match="exit code 3") as failure:
+        liggghts.run_deck("# deck", 1, 30, str(tmp_path))
+    assert "something broke" in failure.value.log_tail
+
+
+def test_hang_is_killed_at_the_timeout(tmp_path, monkeypatch):
+    monkeypatch.setenv(liggghts.BINARY_VARIABLE, fake_engine(tmp_path, "echo started; sleep 60"))
+    with pytest.raises(EngineFailure, match="did not finish within 1 s") as failure:
+        liggghts.run_deck("# deck", 1, 1, str(tmp_path))
+    assert "started" in failure.value.log_tail
+
+
+def test_truncated_dump_is_detected(tmp_path, monkeypatch):
+    body = 'printf "ITEM: ATOMS id z vx vz omegay\\n1 0.005 0 0.5 0\\n" > final.dump'
+    monkeypatch.setenv(liggghts.BINARY_VARIABLE, fake_engine(tmp_path, body))
+    with pytest.raises(EngineFailure, match="truncated: 1 of 3 spheres"):
+        liggghts.run_deck("# deck", 3, 30, str(tmp_path))
+
+
+def test_missing_binary_is_reported_not_raised(tmp_path, monkeypatch):
+    monkeypatch.setenv(liggghts.BINARY_VARIABLE, str(tmp_path / "nowhere"))
+    from harness.engines import engine_status
+    status = engine_status("liggghts", "hertz-mindlin")
+    assert not status.available and "not installed" in status.reason
+    with pytest.raises(EngineFailure, match="not found"):
+        run_engine([str(tmp_path / "nowhere")], str(tmp_path), 5)
+
+
+def test_failed_engine_run_keeps_reference_results_and_log_in_compare(tmp_path):
+    """A crashing engine: compare still writes the reference rows and prints the engine's log tail."""
+    fake = fake_engine(tmp_path, 'echo "ERROR: fake crash for the test"; exit 1')
+    env = {**os.environ, liggghts.BINARY_VARIABLE: fake}
+    proc = subprocess.run([sys.executable, "-m", "harness.cli", "compare", "--model", "hertz-mindlin", "--en", "0.5",
+                           "--angles", "0,45", "--engines", "liggghts", "-o", str(tmp_path / "out")],
+                          capture_output=True, text=True, env=env, timeout=600)
+    assert proc.returncode == 1                             # agreement cannot hold without engine rows
+    assert "fake crash for the test" in proc.stdout
+    import pandas as pd
+    frame = pd.read_csv(tmp_path / "out" / "results.csv")
+    assert set(frame[frame.engine == "reference"].status) == {"ok"}
+    assert set(frame[frame.engine == "liggghts"].status) == {"failed"}
+
+
+HOSTILE = ["1\nshell rm -rf /", "$(reboot)", "0.5\" ; print \"x", "${lowest}", "1 # comment", "nan", float("inf")]
+
+
+@pytest.mark.parametrize("value", HOSTILE)
+def test_hostile_values_cannot_reach_a_deck(value):
+    with pytest.raises(Exception) as scene_error:
+        Scene(mu=value)
+    assert type(scene_error.value).__name__ == "UserError"
+    batch = plan_batch(liggghts.dialect("hertz-mindlin"), SCENE, 0.5, 100)
+    with pytest.raises(RenderError):
+        render("liggghts/batch.in.j2", harness_version="0", law="hertz-mindlin", model="hertz", e_n=value,
+               atoms=[], x_lo=0.0, x_hi=1.0, box_half=1.0, z_lo=0.0, z_hi=1.0, skin=0.1, E=1e9, nu=0.3, mu=0.3,
+               properties=[], tangential="history", options=[], dt=batch.dt, radius=0.1, rho=1.0, chunk=10,
+               max_chunks=10)
+
+
+@pytest.mark.parametrize("word", ["hertz\nshell ls", "hertz tangential", "$x", "a\"b"])
+def test_keywords_outside_the_vocabulary_are_refused(word):
+    with pytest.raises(RenderError):
+        render("liggghts/batch.in.j2", harness_version="0", law="x", model=word, e_n=0.5, atoms=[], x_lo=0.0,
+               x_hi=1.0, box_half=1.0, z_lo=0.0, z_hi=1.0, skin=0.1, E=1e9, nu=0.3, mu=0.3, properties=[],
+               tangential="history", options=[], dt=1e-7, radius=0.1, rho=1.0, chunk=10, max_chunks=10)
+
+
+def test_rendered_deck_holds_only_the_expected_commands():
+    """Every line of a real deck starts with a known LIGGGHTS command or is a comment."""
+    law = compose("hertz-mindlin")
+    batch = plan_batch(liggghts.dialect("hertz-mindlin"), SCENE, 0.5, 100)
+    text = liggghts.deck(law, SCENE, 0.5, batch.dt, batch.v_n0, batch.v_t0, batch.omega0, 100, 1000).text
+    allowed = {"atom_style", "atom_modify", "boundary", "newton", "communicate", "units", "hard_particles", "region",
+               "create_box", "neighbor", "neigh_modify", "fix", "pair_style", "pair_coeff", "timestep",
+               "create_atoms", "set", "thermo_style", "thermo", "thermo_modify", "variable", "label", "run", "if",
+               "next", "jump", "print", "dump", "dump_modify"}
+    for line in text.splitlines():
+        if line.strip() and not line.startswith("#"):
+            assert line.split()[0] in allowed, line
+    assert "%.17g" in text and "thermo_modify lost error" in text
