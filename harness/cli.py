@@ -131,19 +131,27 @@ def simulate_from_args(args):
     return law, scene, frame
 
 
+def support(law_name):
+    """{engine: its model name or None} for every known engine (the support matrix)."""
+    from .engines import ADAPTERS, INSTALLED
+    return {name: (ADAPTERS[name].MODELS[law_name] if name in ADAPTERS and ADAPTERS[name].supports(law_name)
+                   else None) for name in INSTALLED}
+
+
 def cmd_models(args):
     from .laws import LAWS
     from .materials import MATERIALS
     if args.json:
         print(json.dumps([{"name": law.name, "provisional": law.provisional, "summary": law.summary,
-                           "submodels": law.describe(), "engines": {"reference": ["paper"]}}
+                           "submodels": law.describe(), "engines": {"reference": "paper", **support(law.name)}}
                           for law in LAWS.values()], indent=2))
         return EXIT_OK
-    print(f"{'model':28s} {'normal':26s} {'damping':20s} {'end':11s} {'tangential':28s} engines")
+    print(f"{'model':28s} {'normal':26s} {'damping':18s} {'end':11s} {'tangential':22s} engines")
     for law in LAWS.values():
         d = law.describe()
-        print(f"{law.name:28s} {d['normal']:26s} {d['damping']:20s} {d['end']:11s} {d['tangential']:28s} "
-              f"reference{' [provisional]' if law.provisional else ''}")
+        engines = ", ".join(f"{e} ({m})" for e, m in support(law.name).items() if m)
+        print(f"{law.name:28s} {d['normal']:26s} {d['damping']:18s} {d['end']:11s} {d['tangential']:22s} "
+              f"reference{', ' + engines if engines else ''}{' [provisional]' if law.provisional else ''}")
     print("\nmaterials: " + ", ".join(MATERIALS))
     return EXIT_OK
 
@@ -168,6 +176,39 @@ def check_output_file(path):
         raise UserError(f"cannot write {path}: it is a directory")
 
 
+def cmd_render(args):
+    """Write the engine input for every e_n of the scene without running it."""
+    import os
+    from .engines import ADAPTERS
+    from .engines.runner import EngineFailure
+    from .solver.codes import P_MAXSTEPS
+    from .solver.plan import plan_batch
+    if args.engine not in ADAPTERS:
+        raise UserError(f"unknown engine {args.engine!r}; known: {', '.join(ADAPTERS)}")
+    adapter = ADAPTERS[args.engine]
+    scene, law = scene_from_args(args), law_from_args(args)
+    if not adapter.supports(law.name):
+        raise UserError(f"{args.engine} has no counterpart of {law.name}")
+    if os.path.exists(args.output) and not os.path.isdir(args.output):
+        raise UserError(f"output {args.output} exists and is not a directory")
+    dialect = adapter.dialect(law.name)
+    texts = []
+    for e_n in scene.e_n:
+        batch = plan_batch(dialect, scene, e_n, args.steps_per_contact)
+        name = f"{args.engine}-{law.name}-en{e_n:g}{adapter.INPUT_SUFFIX}"
+        try:
+            texts.append((name, adapter.render_batch(law, scene, batch, int(batch.params[:, P_MAXSTEPS].max()))))
+        except EngineFailure as exc:
+            raise UserError(str(exc)) from None
+    os.makedirs(args.output, exist_ok=True)
+    for name, text in texts:
+        with open(os.path.join(args.output, name), "w") as handle:
+            handle.write(text)
+    if not args.quiet:
+        print("\n".join(os.path.join(args.output, name) for name, _ in texts))
+    return EXIT_OK
+
+
 def cmd_compare(args):
     from .compare import compare
     return compare(args)
@@ -187,6 +228,13 @@ def build_parser():
     p.add_argument("-o", "--output", required=True, help="results CSV to write")
     p.add_argument("--quiet", action="store_true", help="print nothing on success")
     p.set_defaults(func=cmd_run)
+    p = sub.add_parser("render", help="write the engine's input deck/script for the scene without running it")
+    p.add_argument("--model", required=True, help="law name (see `harness models`)")
+    p.add_argument("--engine", required=True, help="liggghts")
+    add_scene_options(p)
+    p.add_argument("-o", "--output", required=True, metavar="DIR", help="directory for the inputs")
+    p.add_argument("--quiet", action="store_true", help="print nothing on success")
+    p.set_defaults(func=cmd_render)
     p = sub.add_parser("compare", help="reference vs every available engine; tables, results.csv, report.html")
     p.add_argument("--model", required=True, help="law name (see `harness models`)")
     p.add_argument("--engines", default=None, help="comma-separated engines (default: all that support the law)")

@@ -60,16 +60,29 @@ def deviation(frame, engine, dialect):
     return pd.DataFrame(rows)
 
 
+def tangential_energy_ratio(frame):
+    """(m v_t1^2 + I omega1^2)/(m v_t0^2 + I omega0^2): a contact can only take energy out of these motions."""
+    mass = 4.0 / 3.0 * np.pi * frame.radius ** 3 * frame.rho
+    inertia = 0.4 * mass * frame.radius ** 2
+    before = mass * frame.v_t0 ** 2 + inertia * frame.omega0 ** 2
+    after = mass * frame.v_t1 ** 2 + inertia * frame.omega1 ** 2
+    return (after / before.where(before > 0)).astype(float)
+
+
 def findings(frame):
-    """Engine behaviour worth a user's attention: kinetic energy gained in an impact, failed runs."""
+    """Engine behaviour worth a user's attention: kinetic energy gained (in all, or in the tangential and
+    rotational motion, which friction can only slow), failed runs."""
     out = []
-    gain = frame[(frame.ke_ratio > 1.0 + ENERGY_TOLERANCE) & (frame.status == "ok")]
-    for (engine, dialect), group in gain.groupby(["engine", "dialect"], sort=False):
-        worst = group.loc[group.ke_ratio.idxmax()]
-        out.append({"engine": engine, "dialect": dialect, "kind": "energy gain",
-                    "detail": f"{len(group)} impacts end with more kinetic energy than they began with; worst "
-                              f"KE1/KE0 = {worst.ke_ratio:.6f} at e_n = {worst.e_n_target:g}, angle "
-                              f"{worst.theta_deg:g} deg (v_t1 = {worst.v_t1:.4f} m/s from v_t0 = {worst.v_t0:.4f})"})
+    frame = frame.assign(kt_ratio=tangential_energy_ratio(frame))
+    for kind, column, what in (("energy gain", "ke_ratio", "kinetic energy"),
+                               ("tangential energy gain", "kt_ratio", "tangential + rotational kinetic energy")):
+        gain = frame[(frame[column] > 1.0 + ENERGY_TOLERANCE) & (frame.status == "ok")]
+        for (engine, dialect), group in gain.groupby(["engine", "dialect"], sort=False):
+            worst = group.loc[group[column].idxmax()]
+            out.append({"engine": engine, "dialect": dialect, "kind": kind,
+                        "detail": f"{len(group)} impacts end with more {what} than they began with; worst ratio "
+                                  f"{worst[column]:.6f} at e_n = {worst.e_n_target:g}, angle {worst.theta_deg:g} deg "
+                                  f"(v_t1 = {worst.v_t1:.4f} m/s from v_t0 = {worst.v_t0:.4f})"})
     failed = frame[frame.status != "ok"]
     for (engine, dialect, status), group in failed.groupby(["engine", "dialect", "status"], sort=False):
         out.append({"engine": engine, "dialect": dialect, "kind": status,

@@ -144,3 +144,53 @@ def test_rendered_deck_holds_only_the_expected_commands():
         if line.strip() and not line.startswith("#"):
             assert line.split()[0] in allowed, line
     assert "%.17g" in text and "thermo_modify lost error" in text
+
+
+@needs_liggghts
+def test_thornton_ning_energy_gain_is_reported_as_a_finding():
+    """LIGGGHTS thornton_ning's tangential damping has the wrong sign (MODELS 5): the sphere leaves with more
+    tangential + rotational energy than it had; compare must say so, for the engine itself."""
+    from harness.comparison import findings
+    from harness.engines.sweep import run_sweep
+    scene = Scene(e_n=(0.5,), angles_deg=(10.0, 20.0, 60.0))
+    frames, failures = run_sweep(liggghts, compose("thornton"), scene, 200)
+    assert not failures
+    found = findings(frames[0])
+    gains = found[(found.engine == "liggghts") & (found.kind == "tangential energy gain")]
+    assert len(gains) == 1 and "angle 10 deg" in gains.detail.iloc[0]
+    row = frames[0].iloc[0]
+    assert row.v_t1 > row.v_t0                      # friction sped the sphere up: impossible for a passive contact
+
+
+@needs_liggghts
+def test_compare_cli_prints_agreement_deviation_attribution(tmp_path):
+    proc = subprocess.run([sys.executable, "-m", "harness.cli", "compare", "--model", "linear-spring-dashpot",
+                           "--en", "0.5", "--angles", "0,30,60", "--engines", "liggghts", "-o", str(tmp_path)],
+                          capture_output=True, text=True, timeout=600)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    out = proc.stdout
+    assert "agreement (engine vs its dialect" in out and "agreement: ok" in out
+    for ingredient in ("tangential-damping", "integrator", "lever", "end"):
+        assert f"  {ingredient} " in out or f" {ingredient}  " in out
+    import pandas as pd
+    frame = pd.read_csv(tmp_path / "results.csv")
+    assert set(zip(frame.engine, frame.dialect)) == {("reference", "paper"), ("reference", "liggghts"),
+                                                     ("liggghts", "liggghts")}
+    assert (frame[frame.engine == "liggghts"].engine_version.astype(str) == liggghts.version()).all()
+
+
+@needs_liggghts
+def test_render_writes_runnable_decks_and_refuses_what_liggghts_cannot_take(tmp_path):
+    proc = subprocess.run([sys.executable, "-m", "harness.cli", "render", "--model", "hertz-mindlin", "--engine",
+                           "liggghts", "--en", "0.9,0.5", "--angles", "0,30,60", "-o", str(tmp_path / "decks")],
+                          capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 0, proc.stderr
+    decks = sorted((tmp_path / "decks").iterdir())
+    assert [d.name for d in decks] == ["liggghts-hertz-mindlin-en0.5.in", "liggghts-hertz-mindlin-en0.9.in"]
+    final, _, _ = liggghts.run_deck(decks[0].read_text(), 3, 120, str(tmp_path))
+    assert np.all(final[:, 0] > SCENE.radius)                   # every sphere has left the wall
+    low = subprocess.run([sys.executable, "-m", "harness.cli", "render", "--model", "hertz-mindlin", "--engine",
+                          "liggghts", "--en", "0.03", "-o", str(tmp_path / "low")], capture_output=True, text=True,
+                         timeout=120)
+    assert low.returncode == 2 and "coefficientRestitution in (0.05, 1]" in low.stderr
+    assert not (tmp_path / "low").exists()

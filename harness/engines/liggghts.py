@@ -14,6 +14,7 @@ from ..render import render
 from .runner import EngineFailure, run_engine
 
 NAME = "liggghts"
+INPUT_SUFFIX = ".in"
 BINARY_VARIABLE = "HARNESS_LIGGGHTS"     # path of another liggghts binary (a custom build, or a test's fake)
 MODELS = {                      # harness law -> LIGGGHTS normal model (MODELS 5)
     "linear-spring-dashpot": "hooke",
@@ -159,10 +160,15 @@ def run_deck(text, n_atoms, timeout_s, workdir):
 
 def run_batch(paper_law, scene, batch, max_steps, timeout_s, workdir):
     """One batch (one e_n) in LIGGGHTS: final v_n1, v_t1, omega1 per impact and whether each sphere separated."""
-    text = deck(paper_law, scene, batch.e_n, batch.dt, batch.v_n0, batch.v_t0, batch.omega0,
-                batch.steps_per_contact, max_steps).text
+    text = render_batch(paper_law, scene, batch, max_steps)
     state, wall, log_tail = run_deck(text, len(batch.v_n0), timeout_s, workdir)
     z, vx, vz, omegay = state.T
     if not np.all(np.isfinite(state)):
         raise EngineFailure("LIGGGHTS returned non-finite velocities", log_tail)
     return {"v_n1": vz, "v_t1": vx, "omega1": omegay, "separated": z > scene.radius}, wall, log_tail
+
+
+def render_batch(paper_law, scene, batch, max_steps):
+    """The deck text for one batch, as run_batch would run it (for `harness render`)."""
+    return deck(paper_law, scene, batch.e_n, batch.dt, batch.v_n0, batch.v_t0, batch.omega0,
+                batch.steps_per_contact, max_steps).text

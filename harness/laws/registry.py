@@ -2,6 +2,7 @@
 from dataclasses import dataclass, replace
 
 from ..errors import UserError
+from ..solver import codes as C
 from .damping import DAMPING_MODELS, KuwabaraKonoDashpot, LinearDashpot, NoDamping, TsujiDashpot
 from .normal import ENGINE_NORMAL_MODELS, NORMAL_MODELS, Hertz, LinearSpring, PartiallyLatchingSpring, Stronge, Thornton, WaltonBraun
 from .tangential import TANGENTIAL_MODELS, LinearTangential, Mindlin, WaltonBraunTangential
@@ -149,6 +150,8 @@ def check_composition(law):
         raise UserError(f"the {law.damping.name} dashpot needs the hertz normal model")
     if law.normal.plastic and not isinstance(law.damping, NoDamping):
         raise UserError(f"{law.normal.name} dissipates plastically; use damping none")
+    if law.normal.code == C.NORMAL_THORNTON_NING and law.integrator != "velocity-verlet":
+        raise UserError("the incremental thornton_ning force is defined step by step only with velocity-verlet")
     if law.normal.plastic and law.end != "no-tension":
         raise UserError(f"{law.normal.name} ends contact at zero force; use end no-tension")
 
