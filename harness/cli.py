@@ -87,6 +87,9 @@ def add_scene_options(parser):
     g.add_argument("--with", dest="overrides", type=submodel, action="append", default=[], metavar="KEY=VALUE",
                    help="replace one sub-model: normal=, damping=, end=, tangential=, tangential-damping= "
                         "(e.g. --with tangential=mindlin:total --with end=tension)")
+    g.add_argument("--liggghts-option", dest="liggghts_options", type=submodel, action="append", default=[],
+                   metavar="KEY=VALUE", help="LIGGGHTS contact options: limitForce=on|off, tangential_damping=on|off, "
+                   "ktToKnUser=on|off, tangential=history|no_history (deck and dialect follow them)")
     res = parser.add_argument_group("resolution")
     how = res.add_mutually_exclusive_group()
     how.add_argument("--steps-per-contact", type=int, default=1000, metavar="N",
@@ -191,13 +194,16 @@ def cmd_render(args):
         raise UserError(f"{args.engine} has no counterpart of {law.name}")
     if os.path.exists(args.output) and not os.path.isdir(args.output):
         raise UserError(f"output {args.output} exists and is not a directory")
-    dialect = adapter.dialect(law.name)
+    from .compare import engine_options
+    options = engine_options(args, args.engine)
+    dialect = adapter.dialect(law.name, options)
     texts = []
     for e_n in scene.e_n:
         batch = plan_batch(dialect, scene, e_n, args.steps_per_contact)
         name = f"{args.engine}-{law.name}-en{e_n:g}{adapter.INPUT_SUFFIX}"
         try:
-            texts.append((name, adapter.render_batch(law, scene, batch, int(batch.params[:, P_MAXSTEPS].max()))))
+            texts.append((name, adapter.render_batch(law, scene, batch, int(batch.params[:, P_MAXSTEPS].max()),
+                                                     options)))
         except EngineFailure as exc:
             raise UserError(str(exc)) from None
     os.makedirs(args.output, exist_ok=True)

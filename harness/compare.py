@@ -6,6 +6,7 @@ import pandas as pd
 from .attribution import attribution
 from .comparison import agreement, deviation, findings
 from .engines import ADAPTERS, INSTALLED, engine_status
+from .engines.sweep import run_sweep
 from .errors import UserError
 from .results import write_csv
 
@@ -55,6 +56,9 @@ def compare(args):
     if os.path.exists(out_dir) and not os.path.isdir(out_dir):
         raise UserError(f"output {out_dir} exists and is not a directory")
     statuses = [engine_status(name, law.name) for name in engines]
+    for status in statuses:
+        if status.available:
+            ADAPTERS[status.name].dialect(law.name, engine_options(args, status.name))   # bad options: exit 2 now
     if scene.gravity and any(s.available for s in statuses):
         statuses = [s if not s.available else type(s)(s.name, False, "engine decks do not model gravity")
                     for s in statuses]
@@ -73,9 +77,10 @@ def compare(args):
         if not status.available:
             continue
         adapter = ADAPTERS[status.name]
-        dialect = adapter.dialect(law.name)
+        options = engine_options(args, status.name)
+        dialect = adapter.dialect(law.name, options)
         keep(simulate(dialect, scene, steps_per_contact=steps)[0])
-        _, failed = adapter_sweep(adapter, law, scene, steps, keep)
+        _, failed = run_sweep(adapter, law, scene, steps, on_frame=keep, options=options)
         failures += failed
         attributions[status.name] = attribution(
             law, dialect, scene, lambda l, s: simulate(l, s, steps_per_contact=steps)[0])
@@ -117,6 +122,6 @@ def compare(args):
     return 0 if ok else 1
 
 
-def adapter_sweep(adapter, law, scene, steps, keep):
-    from .engines.sweep import run_sweep
-    return run_sweep(adapter, law, scene, steps, on_frame=keep)
+def engine_options(args, engine):
+    """--liggghts-option KEY=VALUE pairs for `engine` (validated by its adapter)."""
+    return dict(getattr(args, f"{engine}_options", None) or [])

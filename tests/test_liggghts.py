@@ -21,12 +21,12 @@ needs_liggghts = pytest.mark.skipif(not liggghts.available(), reason="liggghts i
 SCENE = Scene(e_n=(0.9, 0.5, 0.1), angles_deg=(0.0, 10.0, 30.0, 50.0, 70.0, 85.0))
 
 
-def engine_and_dialect(name, scene, e_n, steps=200, tmp_path=None):
-    law = liggghts.dialect(name)
+def engine_and_dialect(name, scene, e_n, steps=200, tmp_path=None, options=None):
+    law = liggghts.dialect(name, options)
     batch = plan_batch(law, scene, e_n, steps)
     out, _, _ = run_kernel(batch)
     final, _, _ = liggghts.run_batch(compose(name), scene, batch, int(batch.params[:, C.P_MAXSTEPS].max()), 300,
-                                     str(tmp_path))
+                                     str(tmp_path), options)
     engine = np.column_stack([final["v_n1"], final["v_t1"], final["omega1"]])
     reference = out[:, [C.O_VZ, C.O_VX, C.O_W]]
     return engine, reference, final
@@ -41,6 +41,33 @@ def test_engine_agrees_with_its_dialect_at_equal_dt(name, e_n, tmp_path):
     scale = np.array([1.0, 1.0, 1.0 / SCENE.radius]) * SCENE.speed
     rel = np.abs(engine - reference) / np.maximum(np.abs(reference), 1e-9 * scale)
     assert rel.max() < 1e-6, rel
+
+
+OPTION_CASES = [("linear-spring-dashpot", {"limitForce": "on"}), ("linear-spring-dashpot", {"tangential_damping": "off"}),
+                ("linear-spring-dashpot", {"ktToKnUser": "on"}), ("linear-spring-dashpot", {"tangential": "no_history"}),
+                ("hertz-mindlin", {"limitForce": "on"}), ("hertz-mindlin", {"tangential": "no_history"}),
+                ("hertz-mindlin", {"tangential_damping": "off"}), ("thornton", {"tangential_damping": "off"})]
+
+
+@needs_liggghts
+@pytest.mark.parametrize("name,options", OPTION_CASES)
+def test_options_change_engine_and_dialect_alike(name, options, tmp_path):
+    """Each LIGGGHTS option, with spin against the motion: still agreement; and the option changed the result."""
+    scene = Scene(e_n=(0.3,), angles_deg=(0.0, 10.0, 30.0, 60.0, 85.0), omega0=-50.0)
+    engine, reference, _ = engine_and_dialect(name, scene, 0.3, tmp_path=tmp_path, options=options)
+    scale = np.array([1.0, 1.0, 1.0 / scene.radius]) * scene.speed
+    assert (np.abs(engine - reference) / np.maximum(np.abs(reference), 1e-9 * scale)).max() < 1e-6
+    default, _, _ = engine_and_dialect(name, scene, 0.3, tmp_path=tmp_path)
+    ignored = name == "thornton"                      # thornton_ning ignores tangential_damping (MODELS 5)
+    assert np.array_equal(default, engine) == ignored
+
+
+def test_bad_liggghts_options_are_user_errors():
+    from harness.errors import UserError
+    for name, options in (("hertz-mindlin", {"limitForce": "maybe"}), ("hertz-mindlin", {"speed": "on"}),
+                          ("thornton", {"tangential": "no_history"})):
+        with pytest.raises(UserError):
+            liggghts.dialect(name, options)
 
 
 @needs_liggghts

@@ -11,6 +11,7 @@ import numpy as np
 
 from .. import __version__
 from ..render import render
+from ..errors import UserError
 from .runner import EngineFailure, run_engine
 
 NAME = "liggghts"
@@ -35,24 +36,56 @@ class Deck:
 
 COMMON = {"end": "tension", "integrator": "velocity-verlet", "lever": "0.5"}
 DIALECTS = {                    # sub-models that make the paper law compute what LIGGGHTS computes (MODELS 5)
-    "linear-spring-dashpot": {**COMMON, "damping": "linear", "tangential": "linear:1",
+    "linear-spring-dashpot": {**COMMON, "damping": "linear:tension", "tangential": "linear:1",
                               "tangential-damping": "normal-coefficient"},
-    "hertz-mindlin": {**COMMON, "damping": "tsuji:exact", "tangential": "mindlin:total",
+    "hertz-mindlin": {**COMMON, "damping": "tsuji:tension", "tangential": "mindlin:total",
                       "tangential-damping": "normal-ratio"},
     "walton-braun": {**COMMON, "end": "no-tension", "normal": "liggghts-hysteresis", "tangential": "linear:1",
                      "tangential-damping": "none"},
     "thornton": {**COMMON, "end": "no-tension", "normal": "liggghts-thornton-ning", "tangential": "mindlin:total",
                  "tangential-damping": "reversed-beta"},
 }
+OPTIONS = {                     # option -> allowed values, default first, and the models that honour it
+    "limitForce": (("off", "on"), ("hooke", "hertz")),
+    "tangential_damping": (("on", "off"), ("hooke", "hertz", "hooke/hysteresis")),
+    "ktToKnUser": (("off", "on"), ("hooke",)),
+    "tangential": (("history", "no_history"), ("hooke", "hertz")),
+}
+KT_TO_KN_USER = "0.285714286"   # the literal LIGGGHTS multiplies by, not exactly 2/7
 
 
-def dialect(law_name):
-    """The law as LIGGGHTS 3.8.0 computes it with default options (MODELS 5): velocity Verlet with half-step
-    velocities in the forces, lever R - d/2, no clipping (limitForce off), total-displacement tangential spring,
-    tangential dashpot after the Coulomb test (hooke: c_t = c_n with k_t = k_n; hertz: same sqrt(5/6) beta form)."""
+def check_options(law_name, options):
+    """Validate --liggghts-option values; one clear line for a bad one."""
+    for key, value in options.items():
+        if key not in OPTIONS:
+            raise UserError(f"unknown LIGGGHTS option {key!r}; known: {', '.join(OPTIONS)}")
+        values, models = OPTIONS[key]
+        if value not in values:
+            raise UserError(f"LIGGGHTS option {key} takes {' or '.join(values)}, got {value!r}")
+        if key == "tangential" and value != "history" and MODELS.get(law_name) not in models:
+            raise UserError(f"tangential no_history is offered with hooke and hertz only, not {MODELS.get(law_name)}")
+
+
+def dialect(law_name, options=None):
+    """The law as LIGGGHTS 3.8.0 computes it (MODELS 5): velocity Verlet with half-step velocities in the forces,
+    lever R - d/2, setup force at first touch, total-displacement tangential spring with its dashpot added after the
+    Coulomb test; options change what the model honours (limitForce clips; tangential_damping off removes c_t;
+    ktToKnUser gives k_t = 0.285714286 k_n; no_history replaces the spring by capped viscous friction)."""
     from ..laws import compose
     from ..laws.registry import replace_submodels
-    return replace_submodels(compose(law_name), DIALECTS[law_name], "liggghts")
+    options = dict(options or {})
+    check_options(law_name, options)
+    overrides = dict(DIALECTS[law_name])
+    honoured = {key: value for key, value in options.items() if MODELS[law_name] in OPTIONS[key][1]}
+    if honoured.get("limitForce") == "on":
+        overrides["end"] = "no-tension"
+    if honoured.get("tangential_damping") == "off":
+        overrides["tangential-damping"] = "none"
+    if honoured.get("ktToKnUser") == "on":
+        overrides["tangential"] = f"linear:{KT_TO_KN_USER}"
+    if honoured.get("tangential") == "no_history":
+        overrides["tangential"] = "viscous:linear" if MODELS[law_name] == "hooke" else "viscous:mindlin"
+    return replace_submodels(compose(law_name), overrides, "liggghts")
 
 
 def binary():
@@ -89,9 +122,11 @@ def law_stiffness(scene):
     return hertz_equivalent_stiffness(c.E_star, c.radius, c.mass, scene.speed)
 
 
-def settings(law, scene, e_n):
+def settings(law, scene, e_n, options=None):
     """Model, tangential model, options and extra global properties that express `law` at e_n in LIGGGHTS."""
     model = MODELS[law.name]
+    options = dict(options or {})
+    tangential = options.pop("tangential", "history")
     properties = []
     restitution = e_n
     if model in ("hooke", "hooke/hysteresis"):
@@ -108,12 +143,12 @@ def settings(law, scene, e_n):
         p_y = law.normal.yield_pressure(scene.contact, e_n, scene.speed)
         properties += [("coefficientYieldRatio", "peratomtype", math.pi * p_y / (2.0 * scene.contact.E_star)),
                        ("surfaceEnergy", "peratomtypepair", 0.0)]
-    return model, "history", [], properties, restitution
+    return model, tangential, sorted(options.items()), properties, restitution
 
 
-def deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps):
+def deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, options=None):
     """Render the batched deck (validated numbers and fixed words only; see harness.render)."""
-    model, tangential, options, properties, restitution = settings(law, scene, e_n)
+    model, tangential, options, properties, restitution = settings(law, scene, e_n, options)
     if not MIN_RESTITUTION < restitution <= 1.0:
         raise EngineFailure(f"LIGGGHTS accepts coefficientRestitution in (0.05, 1] only; e_n = {e_n:g} was not run")
     radius = scene.radius
@@ -158,9 +193,9 @@ def run_deck(text, n_atoms, timeout_s, workdir):
     return read_dump(os.path.join(workdir, "final.dump"), n_atoms), done.wall_s, done.log_tail
 
 
-def run_batch(paper_law, scene, batch, max_steps, timeout_s, workdir):
+def run_batch(paper_law, scene, batch, max_steps, timeout_s, workdir, options=None):
     """One batch (one e_n) in LIGGGHTS: final v_n1, v_t1, omega1 per impact and whether each sphere separated."""
-    text = render_batch(paper_law, scene, batch, max_steps)
+    text = render_batch(paper_law, scene, batch, max_steps, options)
     state, wall, log_tail = run_deck(text, len(batch.v_n0), timeout_s, workdir)
     z, vx, vz, omegay = state.T
     if not np.all(np.isfinite(state)):
@@ -168,7 +203,7 @@ def run_batch(paper_law, scene, batch, max_steps, timeout_s, workdir):
     return {"v_n1": vz, "v_t1": vx, "omega1": omegay, "separated": z > scene.radius}, wall, log_tail
 
 
-def render_batch(paper_law, scene, batch, max_steps):
+def render_batch(paper_law, scene, batch, max_steps, options=None):
     """The deck text for one batch, as run_batch would run it (for `harness render`)."""
     return deck(paper_law, scene, batch.e_n, batch.dt, batch.v_n0, batch.v_t0, batch.omega0,
-                batch.steps_per_contact, max_steps).text
+                batch.steps_per_contact, max_steps, options).text

@@ -22,9 +22,9 @@ class FailedRun:
     log_tail: str
 
 
-def run_sweep(adapter, paper_law, scene, steps_per_contact, on_frame=None):
+def run_sweep(adapter, paper_law, scene, steps_per_contact, on_frame=None, options=None):
     """Every e_n of the scene through `adapter` at the dt of its dialect (equal dt, so agreement is exact)."""
-    dialect = adapter.dialect(paper_law.name)
+    dialect = adapter.dialect(paper_law.name, options)
     frames, failures = [], []
     for e_n in scene.e_n:
         batch = plan_batch(dialect, scene, e_n, steps_per_contact)
@@ -34,7 +34,7 @@ def run_sweep(adapter, paper_law, scene, steps_per_contact, on_frame=None):
                         engine_version=adapter.version(), dt=batch.dt, steps_per_contact=steps_per_contact)
         try:
             with tempfile.TemporaryDirectory(prefix=f"harness-{adapter.NAME}-") as workdir:
-                final, wall, _ = adapter.run_batch(paper_law, scene, batch, max_steps, timeout, workdir)
+                final, wall, _ = adapter.run_batch(paper_law, scene, batch, max_steps, timeout, workdir, options)
             separated = final["separated"]
             frame = impact_frame(scene, batch, **identity, v_n1=final["v_n1"], v_t1=final["v_t1"],
                                  omega1=final["omega1"], wall_s=wall / len(batch.v_n0),

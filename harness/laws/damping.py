@@ -5,7 +5,7 @@ from dataclasses import dataclass
 from ..errors import UserError
 from . import calibration as cal
 
-CALIBRATIONS = ("exact", "appendix-b")
+CALIBRATIONS = ("exact", "appendix-b", "tension")
 
 
 @dataclass(frozen=True)
@@ -26,22 +26,25 @@ class NoDamping:
 
 
 class LinearDashpot:
-    """c_n = 2 g sqrt(m k_n); g exact for the end rule: convention A closed form or Schwager-Poeschel inverted."""
+    """c_n = 2 g sqrt(m k_n); g exact for the end rule (convention A closed form, or Schwager-Poeschel inverted),
+    or 'tension': the convention-A g whatever the end rule (what engines do, clipped or not)."""
     name = "linear"
 
     def __init__(self, calibration="exact"):
-        if calibration != "exact":
-            raise UserError("the linear dashpot has only the exact calibration")
+        if calibration not in ("exact", "tension"):
+            raise UserError(f"the linear dashpot calibration is exact or tension, got {calibration!r}")
         self.calibration = calibration
 
     def dashpot(self, normal, contact, e_n, speed, end):
         k = normal.parameters(contact, e_n, speed).values[0]
-        g = cal.lsd_tension_g(e_n) if end == "tension" else cal.lsd_notension_g(e_n)
+        tension = end == "tension" or self.calibration == "tension"
+        g = cal.lsd_tension_g(e_n) if tension else cal.lsd_notension_g(e_n)
         return Dashpot(2.0 * g * math.sqrt(contact.mass * k), 0.0, g)
 
 
 class TsujiDashpot:
-    """eta alpha^1/4 alpha_dot, eta = A sqrt(m k), k = 4/3 E* sqrt(R); A = sqrt5 beta (tension) or exact/App. B fit."""
+    """eta alpha^1/4 alpha_dot, eta = A sqrt(m k), k = 4/3 E* sqrt(R); A exact for the end rule (sqrt5 beta with
+    tension), 'tension' (sqrt5 beta whatever the end rule) or 'appendix-b' (the Thornton 2013 fit)."""
     name = "tsuji"
 
     def __init__(self, calibration="appendix-b"):
@@ -53,7 +56,8 @@ class TsujiDashpot:
         """A for the end rule; 'appendix-b' uses A = sqrt6 g_fit (c_n = 2 g sqrt(m 2E*a), Thornton 2013 App. B)."""
         if self.calibration == "appendix-b":
             return math.sqrt(6.0) * cal.thornton_appendix_b_g(e_n)
-        return cal.tsuji_tension_A(e_n) if end == "tension" else cal.tsuji_notension_A(e_n)
+        tension = end == "tension" or self.calibration == "tension"
+        return cal.tsuji_tension_A(e_n) if tension else cal.tsuji_notension_A(e_n)
 
     def dashpot(self, normal, contact, e_n, speed, end):
         a = self.coefficient_A(e_n, end)

@@ -72,4 +72,23 @@ class WaltonBraunTangential(LinearTangential):
         return f"walton-braun(k_t0/k_n={self.kt_kn if self.kt_kn == 'kappa' else round(self.kt_kn, 6)})"
 
 
-TANGENTIAL_MODELS = {cls.name: cls for cls in (LinearTangential, Mindlin, MindlinDeresiewicz, WaltonBraunTangential)}
+class ViscousTangential:
+    """No spring: F_t = -sign(V_s) min(c_t |V_s|, mu F_n) with the tangential dashpot's c_t computed from k_t =
+    k_n ('linear') or 8 G* a ('mindlin'); LIGGGHTS 'tangential no_history'. Needs a tangential-damping rule."""
+    name = "viscous"
+    FORMS = {"linear": C.TANGENTIAL_VISCOUS_LINEAR, "mindlin": C.TANGENTIAL_VISCOUS_MINDLIN}
+
+    def __init__(self, form="linear"):
+        if form not in self.FORMS:
+            raise UserError(f"viscous tangential form must be one of {', '.join(self.FORMS)}, got {form!r}")
+        self.form, self.code = form, self.FORMS[form]
+
+    def label(self):
+        return f"viscous({self.form})"
+
+    def parameter(self, contact, k_n):
+        return k_n if self.form == "linear" else contact.G_star
+
+
+TANGENTIAL_MODELS = {cls.name: cls for cls in (LinearTangential, Mindlin, MindlinDeresiewicz, WaltonBraunTangential,
+                                                ViscousTangential)}

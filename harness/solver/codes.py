@@ -21,6 +21,8 @@ TANGENTIAL_MINDLIN_RESCALE = 3     # F <- F a/a_old on unloading, then dF = -8 G
 TANGENTIAL_MINDLIN_TOTAL = 4       # F = -8 G* a xi, xi total displacement       (MODELS 3)
 TANGENTIAL_MINDLIN_DERESIEWICZ = 5 # Thornton & Yin (1991) theta_k rule          (MODELS 3)
 TANGENTIAL_WALTON_BRAUN = 6        # k_t0 [1 - (T - T*)/(mu N - T*)]^1/3         (MODELS 3)
+TANGENTIAL_VISCOUS_LINEAR = 7      # no spring: F = -min(c_t |V_s|, mu F_n) sign V_s, c_t from k_t = p1 (no_history)
+TANGENTIAL_VISCOUS_MINDLIN = 8     # the same with c_t from k_t = 8 G* a              (LIGGGHTS no_history)
 
 # integrator
 INTEGRATOR_PAPER = 0            # second-order splitting on u = m alpha_dot + D(alpha), release located in-step

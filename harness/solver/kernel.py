@@ -14,7 +14,7 @@ from numba import njit, prange
 
 from . import codes as C
 from .normal_kernels import normal_elastic, thornton_ning
-from .tangential_kernels import N_TSTATE, after_cap, cap, spring_force, stiffness
+from .tangential_kernels import N_TSTATE, after_cap, cap, spring_force, stiffness, viscous
 
 S_ALPHA, S_VZ, S_VX, S_W, S_AMAX, S_FN, S_FT, S_FS, S_NOLD, S_U, S_FEL, S_C = 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11
 S_FMAX, S_YIELD, S_DETACH = 12, 13, 14      # incremental engine laws (thornton_ning): F_max, yielded, detached at
@@ -92,7 +92,9 @@ def step(s, st, o, ot, p, ints, h, scratch):
     slip_half = vx_half - lever * w_half
     f_t = 0.0
     f_s = 0.0
-    if f_n > 0.0 or (alpha > 0.0 and ints[C.I_END] == C.END_ALPHA):
+    if code >= C.TANGENTIAL_VISCOUS_LINEAR and alpha > 0.0:
+        f_t = viscous(code, p[C.P_T1], a, p[C.P_TDAMP], slip_half, p[C.P_MU] * abs(f_n))
+    elif f_n > 0.0 or (alpha > 0.0 and ints[C.I_END] == C.END_ALPHA):
         limit = p[C.P_MU] * abs(f_n)
         f_s = spring_force(code, s[S_FS], slip_half * h, a, p[C.P_T1], p[C.P_MU], abs(f_n), s[S_NOLD], ot, scratch)
         if abs(f_s) > limit:
@@ -151,7 +153,9 @@ def step_velocity_verlet(s, st, o, ot, p, ints, h, scratch):
     lever = radius - p[C.P_LEVER] * alpha
     slip = vx_half - lever * w_half
     f_t, f_s = 0.0, 0.0
-    if alpha > 0.0:
+    if code >= C.TANGENTIAL_VISCOUS_LINEAR and alpha > 0.0:
+        f_t = viscous(code, p[C.P_T1], a, p[C.P_TDAMP], slip, p[C.P_MU] * abs(f_n))
+    elif alpha > 0.0:
         limit = p[C.P_MU] * abs(f_n)
         f_s = spring_force(code, s[S_FS], slip * h, a, p[C.P_T1], p[C.P_MU], abs(f_n), s[S_NOLD], ot, scratch)
         if abs(f_s) > limit:
@@ -210,8 +214,12 @@ def integrate(params, ints, out, history, stride):
             s[S_C] = p[C.P_DAMP_C0]
         if row_ints[C.I_INTEGRATOR] == C.INTEGRATOR_VELOCITY_VERLET and row_ints[C.I_TANGENTIAL] != C.TANGENTIAL_NONE:
             # LIGGGHTS' setup force at first touch (gap 0 counts as contact): the tangential dashpot alone
-            s[S_FT] = -p[C.P_TDAMP] * math.sqrt(stiffness(row_ints[C.I_TANGENTIAL], p[C.P_T1], 0.0)) * (
-                p[C.P_VX0] - p[C.P_RADIUS] * p[C.P_W0])
+            code = row_ints[C.I_TANGENTIAL]
+            slip0 = p[C.P_VX0] - p[C.P_RADIUS] * p[C.P_W0]
+            if code >= C.TANGENTIAL_VISCOUS_LINEAR:
+                s[S_FT] = viscous(code, p[C.P_T1], 0.0, p[C.P_TDAMP], slip0, p[C.P_MU] * abs(s[S_FN]))
+            else:
+                s[S_FT] = -p[C.P_TDAMP] * math.sqrt(stiffness(code, p[C.P_T1], 0.0)) * slip0
         f_prev2, f_prev1 = 0.0, 0.0
         a_prev2, a_prev1 = 0.0, 0.0
         f_peak, a_peak = s[S_FN], 0.0

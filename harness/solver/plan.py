@@ -51,7 +51,7 @@ def plan_batch(law, scene, e_n, steps_per_contact):
     params[:, C.P_DAMP_POWER] = dashpot.power
     if tangential.any():
         params[:, C.P_T1] = k_t = law.tangential.parameter(contact, normal.linear_stiffness)
-        constant_k_t = k_t if law.tangential.code == C.TANGENTIAL_LINEAR else None
+        constant_k_t = k_t if law.tangential.code in (C.TANGENTIAL_LINEAR, C.TANGENTIAL_VISCOUS_LINEAR) else None
         g_t = law.tangential_damping.ratio(dashpot, normal.linear_stiffness, constant_k_t, e_n)
         params[:, C.P_TDAMP] = 2.0 * g_t * np.sqrt(contact.mass)
     params[:, C.P_LEVER] = law.lever

@@ -26,9 +26,19 @@ def cap(force, limit):
 @njit(cache=True)
 def stiffness(code, p1, a):
     """k_t: constant p1 for the linear spring and Walton-Braun (initial), 8 G* a for Mindlin (p1 = G*)."""
-    if code == C.TANGENTIAL_LINEAR or code == C.TANGENTIAL_WALTON_BRAUN:
+    if code == C.TANGENTIAL_LINEAR or code == C.TANGENTIAL_WALTON_BRAUN or code == C.TANGENTIAL_VISCOUS_LINEAR:
         return p1
     return 8.0 * p1 * a
+
+
+@njit(cache=True)
+def viscous(code, p1, a, c_factor, slip, limit):
+    """Spring-less friction: F = -sign(V_s) min(c_t |V_s|, mu F_n), c_t = c_factor sqrt(k_t) (LIGGGHTS no_history)."""
+    c_t = c_factor * math.sqrt(stiffness(code, p1, a))
+    force = c_t * abs(slip)
+    if force > limit:
+        force = limit
+    return -force if slip > 0.0 else force
 
 
 @njit(cache=True)
