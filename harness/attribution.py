@@ -10,6 +10,12 @@ from .laws.registry import SUBMODEL_KEYS, check_composition
 
 METRICS = ("e_n", "e_t", "omega_star", "psi2_star", "v_t1", "omega1")
 FIELDS = {key: key.replace("-", "_") for key in SUBMODEL_KEYS}
+NOTES = {   # what switching an ingredient carries with it, beyond its name
+    "integrator": "the engine's step conventions go with it: force at first touch, tangential dashpot added after "
+                  "the Coulomb test without a second cap, release at the step rather than inside it",
+    "damping": "the calibration alone; the end rule stays the dialect's",
+    "end": "clipping alone; the damping calibration stays the dialect's",
+}
 
 
 def differing_ingredients(paper, dialect):
@@ -38,5 +44,5 @@ def attribution(paper, dialect, scene, simulate):
                 continue
             worst = int(np.nanargmax(np.abs(diff)))
             row[f"d_{metric}"] = float(diff[worst])
-        rows.append({**row, "note": ""})
+        rows.append({**row, "note": NOTES.get(key, "")})
     return pd.DataFrame(rows)
