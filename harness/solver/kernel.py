@@ -50,13 +50,56 @@ def drift(alpha, rate0, c_alpha, h):
 
 
 @njit(cache=True, inline="always")
+def tangential_update(s, st, o, ot, p, ints, h, scratch, alpha, a, f_n, in_contact, paper):
+    """Tangential half of a step: half kick with the previous force, slip at the half step, spring increment,
+    Coulomb cap, tangential dashpot, closing half kick. The paper's dashpot is implicit and capped again; the
+    engines' (paper False) is explicit and added after the Coulomb test only (LIGGGHTS, MODELS 5)."""
+    for k in range(N_TSTATE):
+        ot[k] = st[k]
+    code = ints[C.I_TANGENTIAL]
+    if code == C.TANGENTIAL_NONE:                     # normal impact without spin, or mu = 0: nothing to do
+        o[S_VX], o[S_W], o[S_FT], o[S_FS], o[S_NOLD] = s[S_VX], s[S_W], 0.0, 0.0, f_n
+        return
+    m, inertia, radius = p[C.P_MASS], p[C.P_INERTIA], p[C.P_RADIUS]
+    lever_old = radius - p[C.P_LEVER] * s[S_ALPHA]
+    lever = radius - p[C.P_LEVER] * alpha
+    vx_half = s[S_VX] + 0.5 * h * s[S_FT] / m
+    w_half = s[S_W] - 0.5 * h * lever_old * s[S_FT] / inertia
+    slip = vx_half - lever * w_half
+    f_t, f_s = 0.0, 0.0
+    if code >= C.TANGENTIAL_VISCOUS_LINEAR and alpha > 0.0:
+        f_t = viscous(code, p[C.P_T1], a, p[C.P_TDAMP], slip, p[C.P_MU] * abs(f_n))
+    elif in_contact:
+        limit = p[C.P_MU] * abs(f_n)
+        f_s = spring_force(code, s[S_FS], slip * h, a, p[C.P_T1], p[C.P_MU], abs(f_n), s[S_NOLD], ot, scratch)
+        if abs(f_s) > limit:
+            f_s = cap(f_s, limit)
+            after_cap(code, f_s, p[C.P_T1], a, ot)
+            f_t = f_s
+        elif p[C.P_TDAMP] == 0.0:
+            f_t = f_s
+        else:
+            c_t = p[C.P_TDAMP] * math.sqrt(stiffness(code, p[C.P_T1], a))
+            if paper:
+                f_t = cap((f_s - c_t * slip) / (1.0 + 0.5 * h * c_t * (1.0 / m + lever * lever / inertia)), limit)
+            else:
+                f_t = f_s - c_t * slip
+    else:
+        for k in range(N_TSTATE):
+            ot[k] = 0.0
+    o[S_VX] = vx_half + 0.5 * h * f_t / m
+    o[S_W] = w_half - 0.5 * h * lever * f_t / inertia
+    o[S_FT], o[S_FS], o[S_NOLD] = f_t, f_s, abs(f_n)
+
+
+@njit(cache=True, inline="always")
 def step(s, st, o, ot, p, ints, h, scratch):
     """Advance state (s, st) by h into (o, ot); returns the end-of-contact indicator (contact while > 0).
 
     Normal direction in u = m alpha_dot + D(alpha), u' = -F_el(alpha) + m g (Strang splitting: kick, midpoint
     drift, kick), which stays second order although c(alpha) = c0 alpha^p is singular at first touch.
     """
-    m, inertia, radius, g = p[C.P_MASS], p[C.P_INERTIA], p[C.P_RADIUS], p[C.P_GRAVITY]
+    m, radius, g = p[C.P_MASS], p[C.P_RADIUS], p[C.P_GRAVITY]
     c0, power = p[C.P_DAMP_C0], p[C.P_DAMP_POWER]
     u_shift = -0.5 * h * (s[S_FEL] - m * g)
     alpha = drift(s[S_ALPHA], -s[S_VZ] + u_shift / m, 0.5 * h * s[S_C] / m, h)
@@ -79,39 +122,8 @@ def step(s, st, o, ot, p, ints, h, scratch):
         f_n = 0.0
     o[S_ALPHA], o[S_VZ], o[S_FN], o[S_U], o[S_FEL], o[S_C] = alpha, -alpha_dot, f_n, u, f_el, c
     o[S_AMAX] = alpha if alpha > amax else amax
-    for k in range(N_TSTATE):
-        ot[k] = st[k]
-    code = ints[C.I_TANGENTIAL]
-    if code == C.TANGENTIAL_NONE:
-        o[S_VX], o[S_W], o[S_FT], o[S_FS], o[S_NOLD] = s[S_VX], s[S_W], 0.0, 0.0, f_n
-        return indicator
-    lever_old = radius - p[C.P_LEVER] * s[S_ALPHA]
-    lever = radius - p[C.P_LEVER] * alpha
-    vx_half = s[S_VX] + 0.5 * h * s[S_FT] / m
-    w_half = s[S_W] - 0.5 * h * lever_old * s[S_FT] / inertia
-    slip_half = vx_half - lever * w_half
-    f_t = 0.0
-    f_s = 0.0
-    if code >= C.TANGENTIAL_VISCOUS_LINEAR and alpha > 0.0:
-        f_t = viscous(code, p[C.P_T1], a, p[C.P_TDAMP], slip_half, p[C.P_MU] * abs(f_n))
-    elif f_n > 0.0 or (alpha > 0.0 and ints[C.I_END] == C.END_ALPHA):
-        limit = p[C.P_MU] * abs(f_n)
-        f_s = spring_force(code, s[S_FS], slip_half * h, a, p[C.P_T1], p[C.P_MU], abs(f_n), s[S_NOLD], ot, scratch)
-        if abs(f_s) > limit:
-            f_s = cap(f_s, limit)
-            after_cap(code, f_s, p[C.P_T1], a, ot)
-            f_t = f_s
-        elif p[C.P_TDAMP] > 0.0:
-            c_t = p[C.P_TDAMP] * math.sqrt(stiffness(code, p[C.P_T1], a))
-            f_t = cap((f_s - c_t * slip_half) / (1.0 + 0.5 * h * c_t * (1.0 / m + lever * lever / inertia)), limit)
-        else:
-            f_t = f_s
-    else:
-        for k in range(N_TSTATE):
-            ot[k] = 0.0
-    o[S_VX] = vx_half + 0.5 * h * f_t / m
-    o[S_W] = w_half - 0.5 * h * lever * f_t / inertia
-    o[S_FT], o[S_FS], o[S_NOLD] = f_t, f_s, abs(f_n)
+    tangential_update(s, st, o, ot, p, ints, h, scratch, alpha, a, f_n,
+                      f_n > 0.0 or (alpha > 0.0 and ints[C.I_END] == C.END_ALPHA), True)
     return indicator
 
 
@@ -122,7 +134,7 @@ def step_velocity_verlet(s, st, o, ot, p, ints, h, scratch):
     The normal dashpot and the tangential increment see v(t + h/2); the tangential dashpot is added after the
     Coulomb test and is not capped again; the contact ends at the first step with alpha <= 0 (MODELS 5).
     """
-    m, inertia, radius, g = p[C.P_MASS], p[C.P_INERTIA], p[C.P_RADIUS], p[C.P_GRAVITY]
+    m, radius, g = p[C.P_MASS], p[C.P_RADIUS], p[C.P_GRAVITY]
     vz_half = s[S_VZ] + 0.5 * h * (s[S_FN] / m - g)
     alpha = s[S_ALPHA] - h * vz_half
     amax = s[S_AMAX]
@@ -141,35 +153,7 @@ def step_velocity_verlet(s, st, o, ot, p, ints, h, scratch):
             f_n = 0.0
     o[S_ALPHA], o[S_VZ], o[S_FN], o[S_FEL] = alpha, vz_half + 0.5 * h * (f_n / m - g), f_n, f_el
     o[S_AMAX] = alpha if alpha > amax else amax
-    for k in range(N_TSTATE):
-        ot[k] = st[k]
-    code = ints[C.I_TANGENTIAL]
-    if code == C.TANGENTIAL_NONE:
-        o[S_VX], o[S_W], o[S_FT], o[S_FS], o[S_NOLD] = s[S_VX], s[S_W], 0.0, 0.0, f_n
-        return alpha
-    lever_old = radius - p[C.P_LEVER] * s[S_ALPHA]
-    vx_half = s[S_VX] + 0.5 * h * s[S_FT] / m
-    w_half = s[S_W] - 0.5 * h * lever_old * s[S_FT] / inertia
-    lever = radius - p[C.P_LEVER] * alpha
-    slip = vx_half - lever * w_half
-    f_t, f_s = 0.0, 0.0
-    if code >= C.TANGENTIAL_VISCOUS_LINEAR and alpha > 0.0:
-        f_t = viscous(code, p[C.P_T1], a, p[C.P_TDAMP], slip, p[C.P_MU] * abs(f_n))
-    elif alpha > 0.0:
-        limit = p[C.P_MU] * abs(f_n)
-        f_s = spring_force(code, s[S_FS], slip * h, a, p[C.P_T1], p[C.P_MU], abs(f_n), s[S_NOLD], ot, scratch)
-        if abs(f_s) > limit:
-            f_s = cap(f_s, limit)
-            after_cap(code, f_s, p[C.P_T1], a, ot)
-            f_t = f_s
-        else:
-            f_t = f_s - p[C.P_TDAMP] * math.sqrt(stiffness(code, p[C.P_T1], a)) * slip
-    else:
-        for k in range(N_TSTATE):
-            ot[k] = 0.0
-    o[S_VX] = vx_half + 0.5 * h * f_t / m
-    o[S_W] = w_half - 0.5 * h * lever * f_t / inertia
-    o[S_FT], o[S_FS], o[S_NOLD] = f_t, f_s, abs(f_n)
+    tangential_update(s, st, o, ot, p, ints, h, scratch, alpha, a, f_n, alpha > 0.0, False)
     return alpha
 
 
