@@ -99,10 +99,10 @@ def _tangential(spec):
     return cls(option) if option else cls()
 
 
-def _lever(spec):
-    if spec not in LEVERS:
-        raise UserError(f"lever must be one of {', '.join(LEVERS)} (lever arm R - lever alpha), got {spec!r}")
-    return float(spec)
+def _choice(key, spec, allowed):
+    if spec not in allowed:
+        raise UserError(f"{key} must be one of {', '.join(allowed)}, got {spec!r}")
+    return spec
 
 
 def compose(name, overrides=None):
@@ -122,19 +122,15 @@ def replace_submodels(law, overrides, dialect=None):
         elif key == "damping":
             changes["damping"] = _damping(spec)
         elif key == "end":
-            if spec not in END_RULES:
-                raise UserError(f"end must be one of {', '.join(END_RULES)}, got {spec!r}")
-            changes["end"] = spec
+            changes["end"] = _choice(key, spec, END_RULES)
         elif key == "tangential":
             changes["tangential"] = _tangential(spec)
         elif key == "tangential-damping":
             changes["tangential_damping"] = TangentialDashpot(spec)
         elif key == "integrator":
-            if spec not in INTEGRATORS:
-                raise UserError(f"integrator must be one of {', '.join(INTEGRATORS)}, got {spec!r}")
-            changes["integrator"] = spec
+            changes["integrator"] = _choice(key, spec, INTEGRATORS)
         elif key == "lever":
-            changes["lever"] = _lever(spec)
+            changes["lever"] = float(_choice(key, spec, LEVERS))
         else:
             raise UserError(f"unknown sub-model {key!r}; known: {', '.join(SUBMODEL_KEYS)}")
     law = replace(law, **changes) if changes else law
