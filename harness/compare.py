@@ -40,9 +40,10 @@ def text_table(frame, columns, formats=None):
     cells = [[formats.get(c, "{}").format(row[c]) if not isinstance(row[c], float) or c not in formats
               else formats[c].format(row[c]) for c in columns] for _, row in frame.iterrows()]
     widths = [max(len(c), *(len(r[i]) for r in cells)) for i, c in enumerate(columns)]
-    lines = ["  " + "  ".join(c.rjust(w) for c, w in zip(columns, widths))]
-    lines += ["  " + "  ".join(v.rjust(w) for v, w in zip(r, widths)) for r in cells]
-    return "\n".join(lines)
+    def line(values):
+        return "  " + "  ".join(v.ljust(w) if c == "note" else v.rjust(w)
+                                for v, w, c in zip(values, widths, columns)).rstrip()
+    return "\n".join([line(columns)] + [line(r) for r in cells])
 
 
 def compare(args):
