@@ -75,7 +75,9 @@ def simulate(law, scene, steps_per_contact=1000, converged=False, history_points
             out, history, wall = run_kernel(batch, history_points)
             if history_points:
                 histories[e_n] = history
-            messages = [""] * len(out)
+            messages = ["" if status == C.STATUS_OK else
+                        f"{STATUS_TEXT[int(status)]} after {int(steps)} steps ({steps * batch.dt:.3g} s of contact)"
+                        for status, steps in zip(out[:, C.O_STATUS], out[:, C.O_STEPS])]
             steps, dt = batch.steps_per_contact, batch.dt
         frames.append(impact_frame(
             scene, batch, model=law.name, dialect=law.dialect, engine="reference", engine_version=__version__, dt=dt,
