@@ -1,0 +1,105 @@
+"""YADE 2023.02a adapter: one batched script per (law, e_n), run as a Python module without the yade launcher
+(which opens network servers), every impact its own sphere against one wall."""
+import os
+import re
+import shutil
+from functools import lru_cache
+
+import numpy as np
+
+from .. import __version__
+from ..errors import UserError
+from ..render import render
+from .runner import EngineFailure, run_engine
+
+NAME = "yade"
+INPUT_SUFFIX = ".py"
+PYTHON_VARIABLE = "HARNESS_YADE_PYTHON"    # another interpreter (a test's fake); default Debian's python3.11
+FLAVOURS = {"double": "yade-double", "long-double": "yade-longdouble", "float128": "yade-float128",
+            "mpfr150": "yade-mpfr150"}
+LIBRARY = "/usr/lib/x86_64-linux-gnu"
+MODELS = {"hertz-mindlin": "Law2_ScGeom_MindlinPhys_Mindlin"}
+DIALECTS = {}                                  # law -> sub-model overrides; filled as dialects are verified
+
+
+def python():
+    return os.environ.get(PYTHON_VARIABLE, "/usr/bin/python3.11")
+
+
+def flavour_path(precision):
+    if precision not in FLAVOURS:
+        raise UserError(f"precision must be one of {', '.join(FLAVOURS)}, got {precision!r}")
+    return os.path.join(LIBRARY, FLAVOURS[precision], "py")
+
+
+def available(precision="double"):
+    return shutil.which(python()) is not None and os.path.isdir(flavour_path(precision))
+
+
+def version():
+    return _version(LIBRARY)
+
+
+@lru_cache(maxsize=None)
+def _version(library):
+    """'2023.02a' from the Debian package's changelog path, else 'unknown'."""
+    try:
+        names = os.listdir("/usr/share/doc/yade")
+    except OSError:
+        names = []
+    for name in ("changelog.Debian.gz",):
+        if name in names:
+            import gzip
+            with gzip.open(os.path.join("/usr/share/doc/yade", name), "rt") as handle:
+                match = re.search(r"\(([0-9.a-z]+)-", handle.readline())
+                if match:
+                    return match.group(1)
+    return "unknown"
+
+
+def supports(law_name):
+    return law_name in MODELS and law_name in DIALECTS
+
+
+def environment(precision):
+    return {**os.environ, "PYTHONPATH": flavour_path(precision), "OMP_NUM_THREADS": "1"}
+
+
+def script(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps):
+    """Render the batched script (validated numbers and fixed words only; see harness.render)."""
+    import math
+    radius = scene.radius
+    spheres = [{"x": i * 4.0 * radius, "vx": float(vt), "vz": -float(vn), "omegay": float(w)}
+               for i, (vn, vt, w) in enumerate(zip(v_n0, v_t0, omega0))]
+    chunk = max(10, steps_per_contact // 10)
+    return render("yade/batch.py.j2", harness_version=__version__, law=law.name, law2=MODELS[law.name],
+                  e_n=e_n, material="FrictMat", young=scene.E, poisson=scene.nu, rho=scene.rho,
+                  friction_angle=math.atan(scene.mu), radius=radius, spheres=spheres,
+                  ig2="Ig2_Wall_Sphere_ScGeom", hertzian=True, ip2="Ip2_FrictMat_FrictMat_MindlinPhys",
+                  ip2_args=[("en", e_n), ("es", e_n)], dt=dt, chunk=chunk, max_chunks=max(1, max_steps // chunk + 1))
+
+
+def read_result(path, n_spheres):
+    """(left, vx, vz, wy) per sphere; EngineFailure when missing or truncated."""
+    try:
+        with open(path) as handle:
+            lines = handle.read().splitlines()
+    except OSError:
+        raise EngineFailure("YADE wrote no result file") from None
+    if not lines or lines[-1] != "END":
+        raise EngineFailure("YADE result file is truncated (no END line)")
+    try:
+        rows = np.array([[float(x) for x in line.split()] for line in lines[:-1]])
+    except ValueError:
+        raise EngineFailure("YADE result file is malformed") from None
+    if rows.shape != (n_spheres, 5) or not np.array_equal(rows[:, 0], np.arange(n_spheres)):
+        raise EngineFailure(f"YADE result file is truncated: {len(rows)} of {n_spheres} spheres")
+    return rows[:, 1:]
+
+
+def run_script(text, n_spheres, timeout_s, workdir, precision="double"):
+    """Run one script in workdir under Debian's python3.11 with the flavour's module path; (rows, wall, log)."""
+    with open(os.path.join(workdir, "harness_yade.py"), "w") as handle:
+        handle.write(text)
+    done = run_engine([python(), "harness_yade.py"], workdir, timeout_s, env=environment(precision))
+    return read_result(os.path.join(workdir, "result.txt"), n_spheres), done.wall_s, done.log_tail

@@ -1,0 +1,119 @@
+"""YADE adapter: runs as a Python module without network servers; precision flavours; failure modes."""
+import stat
+import subprocess
+
+import numpy as np
+import pytest
+
+from harness.engines import yade
+from harness.engines.runner import EngineFailure
+from harness.laws import compose
+from harness.scene import Scene
+from harness.solver.plan import plan_batch
+
+needs_yade = pytest.mark.skipif(not yade.available(), reason="yade is not installed")
+needs_float128 = pytest.mark.skipif(not yade.available("float128"), reason="yade-float128 is not installed")
+
+PROBE = r'''
+import os, socket, sys
+def listening_inodes():
+    inodes = set()
+    for table in ("/proc/net/tcp", "/proc/net/tcp6"):
+        with open(table) as handle:
+            for line in handle.readlines()[1:]:
+                fields = line.split()
+                if fields[3] == "0A":                       # TCP_LISTEN
+                    inodes.add(fields[9])
+    return inodes
+def my_listening_sockets():
+    mine = set()
+    for fd in os.listdir("/proc/self/fd"):
+        try:
+            target = os.readlink(f"/proc/self/fd/{fd}")
+        except OSError:
+            continue
+        if target.startswith("socket:["):
+            mine.add(target[8:-1])
+    return len(mine & listening_inodes())
+from yade import *
+O.bodies.append(utils.sphere((0, 0, 0), 1.0))
+O.run(10, True)
+if len(sys.argv) > 1:                                      # positive control: the probe does see a listener
+    server = socket.socket(); server.bind(("127.0.0.1", 0)); server.listen()
+print("LISTENING", my_listening_sockets())
+'''
+
+
+def probe(tmp_path, *args):
+    path = tmp_path / "probe.py"
+    path.write_text(PROBE)
+    proc = subprocess.run([yade.python(), str(path), *args], capture_output=True, text=True, timeout=120,
+                          env=yade.environment("double"))
+    line = [l for l in proc.stdout.splitlines() if l.startswith("LISTENING")]
+    assert line, proc.stdout + proc.stderr
+    return int(line[0].split()[1])
+
+
+@needs_yade
+def test_yade_as_a_module_opens_no_listening_socket(tmp_path):
+    assert probe(tmp_path, "control") == 1          # the probe can see a listening socket
+    assert probe(tmp_path) == 0                     # and YADE imported as harness runs it opens none
+
+
+def batch_and_script(scene, e_n=0.5, steps=200):
+    law = compose("hertz-mindlin")
+    batch = plan_batch(law, scene, e_n, steps)
+    return law, batch, yade.script(law, scene, e_n, batch.dt, batch.v_n0, batch.v_t0, batch.omega0, steps, 40000)
+
+
+@needs_yade
+@needs_float128
+def test_float128_agrees_with_double_on_a_smooth_case(tmp_path):
+    """Same script, two precisions: a smooth Hertz-Mindlin impact differs only at round-off of double (~1e-10)."""
+    scene = Scene(e_n=(0.5,), angles_deg=(0.0, 30.0, 60.0))
+    _, _, text = batch_and_script(scene)
+    (tmp_path / "d").mkdir()
+    (tmp_path / "q").mkdir()
+    double, _, _ = yade.run_script(text, 3, 120, str(tmp_path / "d"), "double")
+    quad, _, _ = yade.run_script(text, 3, 120, str(tmp_path / "q"), "float128")
+    assert double[:, 0].all() and quad[:, 0].all()              # every sphere left the wall
+    scale = np.array([1.0, 1.0, 1.0 / scene.radius])
+    rel = np.abs(double[:, 1:] - quad[:, 1:]) / np.maximum(np.abs(quad[:, 1:]), 1e-9 * scale)
+    assert rel.max() < 1e-9
+    assert rel.max() > 0.0                                      # the flavours really are different arithmetic
+
+
+def fake_python(tmp_path, body):
+    path = tmp_path / "fake-python"
+    path.write_text("#!/bin/sh\n" + body + "\n")
+    path.chmod(path.stat().st_mode | stat.S_IEXEC)
+    return str(path)
+
+
+def test_crash_hang_truncation_give_clear_failures(tmp_path, monkeypatch):
+    monkeypatch.setenv(yade.PYTHON_VARIABLE, fake_python(tmp_path, 'echo "Traceback: boom"; exit 1'))
+    with pytest.raises(EngineFailure, match="exit code 1") as failure:
+        yade.run_script("pass", 1, 30, str(tmp_path))
+    assert "boom" in failure.value.log_tail
+    monkeypatch.setenv(yade.PYTHON_VARIABLE, fake_python(tmp_path, "sleep 60"))
+    with pytest.raises(EngineFailure, match="did not finish within 1 s"):
+        yade.run_script("pass", 1, 1, str(tmp_path))
+    monkeypatch.setenv(yade.PYTHON_VARIABLE, fake_python(tmp_path, 'printf "0 1 0.1 0.5 0\\n" > result.txt'))
+    with pytest.raises(EngineFailure, match="truncated"):
+        yade.run_script("pass", 2, 30, str(tmp_path))
+
+
+def test_unknown_precision_is_a_user_error():
+    from harness.errors import UserError
+    with pytest.raises(UserError, match="precision must be one of"):
+        yade.flavour_path("quad")
+
+
+@pytest.mark.parametrize("value", ["0.5\")\nimport os; os.system(\"id\")  #", "__import__('os')", float("nan")])
+def test_hostile_values_cannot_reach_the_script(value):
+    from harness.render import RenderError, render
+    with pytest.raises(RenderError):
+        render("yade/batch.py.j2", harness_version="0", law="x", law2="Law2_ScGeom_MindlinPhys_Mindlin", e_n=value,
+               material="FrictMat", young=1e9, poisson=0.3, rho=1.0, friction_angle=0.3, radius=0.1, spheres=[],
+               ig2="Ig2_Wall_Sphere_ScGeom", hertzian=True, ip2="Ip2_FrictMat_FrictMat_MindlinPhys",
+               ip2_args=[("en", value)], dt=1e-7, chunk=10, max_chunks=1)
