@@ -68,7 +68,7 @@ def write_report(out_dir, frame, law, scene, skipped, agreement=None, deviation=
                              undefined=jinja2.StrictUndefined)
     figures = []
     paper = frame[(frame.engine == "reference") & (frame.dialect == "paper")]
-    if paper.psi1_star.notna().any():
+    if (paper.psi1_star > 0).any():
         figures.append(("Normalised rebound of the paper law: Psi2* and Omega* against Psi1*",
                         normalised_figure(paper, scene.contact.chi)))
     summary = paper.groupby("e_n_target", sort=False).agg(

@@ -1,7 +1,10 @@
 """Engine adapters: which engines exist, whether each is installed, and why one is skipped."""
-import glob
-import shutil
 from dataclasses import dataclass
+
+from . import liggghts, yade
+
+ADAPTERS = {"liggghts": liggghts, "yade": yade}   # name -> adapter module (available, version, supports, dialect...)
+INSTALLED = {name: adapter.available for name, adapter in ADAPTERS.items()}
 
 
 @dataclass(frozen=True)
@@ -12,35 +15,16 @@ class EngineStatus:
     reason: str
 
 
-def _liggghts_installed():
-    from . import liggghts
-    return liggghts.available()
-
-
-def _yade_installed():
-    return bool(glob.glob("/usr/lib/x86_64-linux-gnu/yade-*/py")) and shutil.which("python3.11") is not None
-
-
-INSTALLED = {"liggghts": _liggghts_installed, "yade": _yade_installed}
-
-
-def _adapters():
-    from . import liggghts
-    return {"liggghts": liggghts}
-
-
-ADAPTERS = _adapters()   # engine name -> adapter module (NAME, available, version, supports, dialect, run_batch)
-
-
 def engine_status(name, law_name):
-    """Can `name` run `law_name` here? Missing binary, missing adapter or unsupported law each say so."""
-    if name not in INSTALLED:
+    """Can `name` run `law_name` here? Missing engine, unsupported law or unverified dialect each say so."""
+    if name not in ADAPTERS:
         return EngineStatus(name, False, f"unknown engine {name!r}")
-    if not INSTALLED[name]():
+    adapter = ADAPTERS[name]
+    if not adapter.available():
         return EngineStatus(name, False, f"{name} is not installed (apt-get install -y {name}, or bash tools/setup.sh)")
-    adapter = ADAPTERS.get(name)
-    if adapter is None:
-        return EngineStatus(name, False, f"{name} is installed but its adapter is not implemented yet")
-    if not adapter.supports(law_name):
+    if law_name not in adapter.MODELS:
         return EngineStatus(name, False, f"{name} has no counterpart of {law_name}")
+    if not adapter.supports(law_name):
+        return EngineStatus(name, False, f"{name} runs {adapter.MODELS[law_name]} for {law_name}, but harness has "
+                                         f"no verified {name} dialect of it yet, so it cannot check agreement")
     return EngineStatus(name, True, "")
