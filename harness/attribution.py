@@ -11,8 +11,8 @@ from .laws.registry import SUBMODEL_KEYS, check_composition
 METRICS = ("e_n", "e_t", "omega_star", "psi2_star", "v_t1", "omega1")
 FIELDS = {key: key.replace("-", "_") for key in SUBMODEL_KEYS}
 NOTES = {   # what switching an ingredient carries with it, beyond its name
-    "integrator": "the engine's step conventions go with it: force at first touch, tangential dashpot added after "
-                  "the Coulomb test without a second cap, release at the step rather than inside it",
+    "integrator": "the scheme's conventions go with it: tangential dashpot after the Coulomb test without a second "
+                  "cap, release at the step rather than inside it; LIGGGHTS also its force at first touch",
     "damping": "the calibration alone; the end rule stays the dialect's",
     "end": "clipping alone; the damping calibration stays the dialect's",
 }
@@ -25,13 +25,14 @@ def differing_ingredients(paper, dialect):
 
 
 def attribution(paper, dialect, scene, simulate):
-    """One row per differing ingredient: max |change| of each metric when only it is switched to the paper's."""
+    """One row per differing ingredient: max |change| of each metric when only it is switched to the paper's
+    (or to another dialect's, when `paper` is that dialect's law)."""
     base = simulate(dialect, scene)
     rows = []
     for key, theirs, ours in differing_ingredients(paper, dialect):
         field = FIELDS[key]
         law = replace(dialect, **{field: getattr(paper, field)}, dialect=f"{dialect.dialect}+paper-{key}")
-        row = {"ingredient": key, "dialect": str(theirs), "paper": str(ours)}
+        row = {"ingredient": key, "dialect": str(theirs), "target": str(ours)}
         try:
             check_composition(law)
         except UserError as exc:

@@ -73,26 +73,31 @@ def compare(args):
 
     steps = args.steps_per_contact
     keep(simulate(law, scene, steps_per_contact=steps, converged=args.converged)[0])
-    failures, attributions = [], {}
+    failures, attributions, dialects = [], {}, {}
     for status in statuses:
         if not status.available:
             continue
         adapter = ADAPTERS[status.name]
         options = engine_options(args, status.name)
-        dialect = adapter.dialect(law.name, options)
+        dialect = dialects[status.name] = adapter.dialect(law.name, options)
         keep(simulate(dialect, scene, steps_per_contact=steps)[0])
         _, failed = run_sweep(adapter, law, scene, steps, on_frame=keep, options=options)
         failures += failed
-        attributions[status.name] = attribution(
+        attributions[f"{status.name} dialect -> paper"] = attribution(
             law, dialect, scene, lambda l, s: simulate(l, s, steps_per_contact=steps)[0])
+    if len(dialects) == 2:                      # LIGGGHTS against YADE, and which ingredients make the difference
+        (first, a), (second, b) = dialects.items()
+        attributions[f"{first} dialect -> {second} dialect"] = attribution(
+            b, a, scene, lambda l, s: simulate(l, s, steps_per_contact=steps)[0])
     frame = pd.concat(frames, ignore_index=True)
     ran = [s.name for s in statuses if s.available]
     agree = pd.concat([agreement(frame, name) for name in ran], ignore_index=True) if ran else pd.DataFrame()
     devs = pd.concat([deviation(frame, name, name) for name in ran], ignore_index=True) if ran else pd.DataFrame()
+    cross = deviation(frame, ran[1], ran[1], against=(ran[0], ran[0])) if len(ran) == 2 else pd.DataFrame()
     found = findings(frame)
     skipped = [(s.name, s.reason) for s in statuses if not s.available]
     report = write_report(out_dir, frame, law=law, scene=scene, skipped=skipped, agreement=agree, deviation=devs,
-                          attributions=attributions, findings=found, failures=failures)
+                          cross=cross, attributions=attributions, findings=found, failures=failures)
     ok = bool(agree["pass"].all()) if not agree.empty else True
     if not args.quiet:
         print(f"{law.name}: paper law on the reference engine, {sum(frame.engine == 'reference')} rows")
@@ -107,10 +112,14 @@ def compare(args):
             print(text_table(devs, ["engine", "e_n_target", "metric", "max_abs_diff", "theta_deg", "paper",
                                     "engine_value"], {"max_abs_diff": "{:.4g}", "paper": "{:.5g}",
                                                       "engine_value": "{:.5g}"}))
+            if not cross.empty:
+                print(f"\n{ran[1]} against {ran[0]} (engine runs, same scene and dt):")
+                print(text_table(cross, ["e_n_target", "metric", "max_abs_diff", "theta_deg", ran[0], "engine_value"],
+                                 {"max_abs_diff": "{:.4g}", ran[0]: "{:.5g}", "engine_value": "{:.5g}"}))
             for name, table in attributions.items():
-                print(f"\nattribution ({name} dialect -> paper, one ingredient at a time; max change per metric):")
+                print(f"\nattribution ({name}, one ingredient at a time; max change per metric):")
                 cols = [c for c in table.columns if c.startswith("d_")]
-                print(text_table(table, ["ingredient", "dialect", "paper", *cols, "note"],
+                print(text_table(table, ["ingredient", "dialect", "target", *cols, "note"],
                                  {c: "{:+.4g}" for c in cols}))
         if not found.empty:
             print("\nfindings:")
@@ -124,5 +133,7 @@ def compare(args):
 
 
 def engine_options(args, engine):
-    """--liggghts-option KEY=VALUE pairs for `engine` (validated by its adapter)."""
+    """Options for `engine` (validated by its adapter): --liggghts-option pairs, --yade-precision."""
+    if engine == "yade":
+        return {"precision": getattr(args, "yade_precision", "double")}
     return dict(getattr(args, f"{engine}_options", None) or [])

@@ -42,9 +42,9 @@ def agreement(frame, engine):
     return pd.DataFrame(rows)
 
 
-def deviation(frame, engine, dialect):
-    """Per metric and e_n: largest |engine - paper law| and the impact angle where it occurs."""
-    pairs = _pair(frame, {"engine": engine, "dialect": dialect}, {"engine": "reference", "dialect": "paper"})
+def deviation(frame, engine, dialect, against=("reference", "paper")):
+    """Per metric and e_n: largest |engine - paper law| (or - another engine) and the impact angle where it is."""
+    pairs = _pair(frame, {"engine": engine, "dialect": dialect}, {"engine": against[0], "dialect": against[1]})
     pairs = pairs[pairs.status == "ok"]
     rows = []
     for e_n, group in pairs.groupby("e_n_target", sort=False):
@@ -56,7 +56,8 @@ def deviation(frame, engine, dialect):
             rows.append({"engine": engine, "dialect": dialect, "e_n_target": e_n, "metric": metric,
                          "max_abs_diff": float(abs(diff[worst])), "signed": float(diff[worst]),
                          "theta_deg": float(group.theta_deg.iloc[worst]),
-                         "paper": float(group[metric + "_ref"].iloc[worst]), "engine_value": float(group[metric].iloc[worst])})
+                         against[0] if against[0] != "reference" else "paper": float(group[metric + "_ref"].iloc[worst]),
+                         "engine_value": float(group[metric].iloc[worst])})
     return pd.DataFrame(rows)
 
 

@@ -61,7 +61,7 @@ def engines_ran(frame):
             for engine, group in frame.groupby("engine", sort=False)]
 
 
-def write_report(out_dir, frame, law, scene, skipped, agreement=None, deviation=None, attributions=None,
+def write_report(out_dir, frame, law, scene, skipped, agreement=None, deviation=None, cross=None, attributions=None,
                  findings=None, failures=()):
     """Render DIR/report.html (self-contained) and return its path."""
     env = jinja2.Environment(loader=jinja2.FileSystemLoader(str(TEMPLATES)), autoescape=True,
@@ -78,7 +78,7 @@ def write_report(out_dir, frame, law, scene, skipped, agreement=None, deviation=
     html = env.get_template("report.html.j2").render(
         law=law, submodels=law.describe(), scene=scene, conventions=CONVENTIONS, figures=figures,
         summary=summary.to_dict("records"), skipped=skipped, rows=len(frame), ran=engines_ran(frame), agreement=records(agreement),
-        deviation=records(deviation), findings=records(findings), failures=failures,
+        deviation=records(deviation), cross=records(cross), findings=records(findings), failures=failures,
         attributions=[(name, records(table)) for name, table in (attributions or {}).items()])
     path = os.path.join(out_dir, "report.html")
     tmp = path + ".tmp"

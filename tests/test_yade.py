@@ -1,5 +1,6 @@
 """YADE adapter: runs as a Python module without network servers; precision flavours; failure modes."""
 import stat
+import sys
 import subprocess
 
 import numpy as np
@@ -117,3 +118,39 @@ def test_hostile_values_cannot_reach_the_script(value):
                material="FrictMat", young=1e9, poisson=0.3, rho=1.0, friction_angle=0.3, radius=0.1, spheres=[],
                ig2="Ig2_Wall_Sphere_ScGeom", hertzian=True, ip2="Ip2_FrictMat_FrictMat_MindlinPhys",
                ip2_args=[("en", value)], dt=1e-7, chunk=10, max_chunks=1)
+
+
+@needs_yade
+@pytest.mark.parametrize("e_n", [0.9, 0.5, 0.1])
+@pytest.mark.parametrize("omega0", [0.0, -50.0])
+def test_mindlin_agrees_with_its_yade_dialect_at_equal_dt(e_n, omega0, tmp_path):
+    from harness.solver import codes as C
+    from harness.solver.reference import run_kernel
+    scene = Scene(e_n=(e_n,), angles_deg=(0.0, 10.0, 30.0, 60.0, 85.0), omega0=omega0)
+    batch = plan_batch(yade.dialect("hertz-mindlin"), scene, e_n, 200)
+    out, _, _ = run_kernel(batch)
+    final, _, _ = yade.run_batch(compose("hertz-mindlin"), scene, batch, 20000, 120, str(tmp_path))
+    assert final["separated"].all()
+    engine = np.column_stack([final["v_n1"], final["v_t1"], final["omega1"]])
+    reference = out[:, [C.O_VZ, C.O_VX, C.O_W]]
+    scale = np.array([1.0, 1.0, 1.0 / scene.radius]) * scene.speed
+    assert (np.abs(engine - reference) / np.maximum(np.abs(reference), 1e-9 * scale)).max() < 1e-6
+
+
+@needs_yade
+def test_compare_with_both_engines_prints_the_engine_against_engine_attribution(tmp_path):
+    from harness.engines import liggghts
+    if not liggghts.available():
+        pytest.skip("liggghts is not installed")
+    proc = subprocess.run([sys.executable, "-m", "harness.cli", "compare", "--model",
+                           "hertz-mindlin", "--en", "0.5", "--angles", "0,30,60", "-o", str(tmp_path)],
+                          capture_output=True, text=True, timeout=600)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    assert "yade against liggghts" in proc.stdout
+    assert "attribution (liggghts dialect -> yade dialect" in proc.stdout
+    for ingredient in ("damping", "end", "tangential", "integrator", "lever", "slip"):
+        assert f"\n  {ingredient} " in proc.stdout or f"\n {ingredient} " in proc.stdout or f" {ingredient}  " in proc.stdout
+    import pandas as pd
+    frame = pd.read_csv(tmp_path / "results.csv")
+    assert ("yade", "yade") in set(zip(frame.engine, frame.dialect))
+    assert (frame[frame.engine == "yade"].status == "ok").all()

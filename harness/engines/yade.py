@@ -19,7 +19,24 @@ FLAVOURS = {"double": "yade-double", "long-double": "yade-longdouble", "float128
             "mpfr150": "yade-mpfr150"}
 LIBRARY = "/usr/lib/x86_64-linux-gnu"
 MODELS = {"hertz-mindlin": "Law2_ScGeom_MindlinPhys_Mindlin"}
-DIALECTS = {}                                  # law -> sub-model overrides; filled as dialects are verified
+DIALECTS = {                    # sub-models that make the paper law compute what YADE computes (MODELS 5, docs/)
+    "hertz-mindlin": {"damping": "tsuji:appendix-b", "end": "no-tension", "tangential": "mindlin:incremental",
+                      "tangential-damping": "normal-ratio", "integrator": "leapfrog", "lever": "1",
+                      "slip": "noratch"},
+}
+
+
+def dialect(law_name, options=None):
+    """The law as YADE 2023.02a computes it: leapfrog with forces from the half-step velocities, contact from
+    overlap >= 0 until the first negative overlap, App. B damping with the normal force clipped at 0, incremental
+    8G*a shear spring (not reduced as a falls), dashpot after the Coulomb test, torque lever R - d, noRatch slip."""
+    from ..laws import compose
+    from ..laws.registry import replace_submodels
+    options = dict(options or {})
+    unknown = set(options) - {"precision"}
+    if unknown:
+        raise UserError(f"unknown YADE option(s) {', '.join(sorted(unknown))}; known: precision")
+    return replace_submodels(compose(law_name), DIALECTS[law_name], "yade")
 
 
 def python():
@@ -33,6 +50,7 @@ def flavour_path(precision):
 
 
 def available(precision="double"):
+    """Debian's python3.11 and the flavour's module directory are both there."""
     return shutil.which(python()) is not None and os.path.isdir(flavour_path(precision))
 
 
@@ -103,3 +121,20 @@ def run_script(text, n_spheres, timeout_s, workdir, precision="double"):
         handle.write(text)
     done = run_engine([python(), "harness_yade.py"], workdir, timeout_s, env=environment(precision))
     return read_result(os.path.join(workdir, "result.txt"), n_spheres), done.wall_s, done.log_tail
+
+
+def render_batch(paper_law, scene, batch, max_steps, options=None):
+    """The script text for one batch, as run_batch would run it (for `harness render`)."""
+    return script(paper_law, scene, batch.e_n, batch.dt, batch.v_n0, batch.v_t0, batch.omega0,
+                  batch.steps_per_contact, max_steps)
+
+
+def run_batch(paper_law, scene, batch, max_steps, timeout_s, workdir, options=None):
+    """One batch (one e_n) in YADE: final v_n1, v_t1, omega1 per impact and whether each sphere separated."""
+    precision = dict(options or {}).get("precision", "double")
+    rows, wall, log_tail = run_script(render_batch(paper_law, scene, batch, max_steps), len(batch.v_n0), timeout_s,
+                                      workdir, precision)
+    left, vx, vz, wy = rows.T
+    if not np.all(np.isfinite(rows)):
+        raise EngineFailure("YADE returned non-finite velocities", log_tail)
+    return {"v_n1": vz, "v_t1": vx, "omega1": wy, "separated": left > 0}, wall, log_tail

@@ -9,9 +9,10 @@ from .tangential import TANGENTIAL_MODELS, LinearTangential, Mindlin, WaltonBrau
 from .tangential_damping import TangentialDashpot
 
 END_RULES = ("tension", "no-tension")
-INTEGRATORS = ("paper", "velocity-verlet")
+INTEGRATORS = ("paper", "velocity-verlet", "leapfrog")
+SLIPS = ("lever", "noratch")
 LEVERS = ("0", "0.5", "1")
-SUBMODEL_KEYS = ("normal", "damping", "end", "tangential", "tangential-damping", "integrator", "lever")
+SUBMODEL_KEYS = ("normal", "damping", "end", "tangential", "tangential-damping", "integrator", "lever", "slip")
 
 
 @dataclass(frozen=True)
@@ -25,6 +26,7 @@ class Law:
     tangential_damping: TangentialDashpot = TangentialDashpot("none")
     integrator: str = "paper"            # time stepping: 'paper' (second order) or 'velocity-verlet' (LIGGGHTS)
     lever: float = 0.0                   # lever arm R - lever * alpha for slip and torque (paper 0, LIGGGHTS 1/2)
+    slip: str = "lever"                  # slip V_t - lever omega, or YADE's 'noratch' form (MODELS 5)
     summary: str = ""
     dialect: str = "paper"               # whose formulas these are: the paper's, or an engine's (MODELS 5)
 
@@ -33,7 +35,7 @@ class Law:
         damping = self.damping.name + (f":{self.damping.calibration}" if self.damping.calibration else "")
         return {"normal": self.normal.name, "damping": damping, "end": self.end,
                 "tangential": self.tangential.label(), "tangential-damping": self.tangential_damping.label(),
-                "integrator": self.integrator, "lever": f"R - {self.lever:g} alpha"}
+                "integrator": self.integrator, "lever": f"R - {self.lever:g} alpha", "slip": self.slip}
 
     @property
     def provisional(self):
@@ -131,6 +133,8 @@ def replace_submodels(law, overrides, dialect=None):
             changes["integrator"] = _choice(key, spec, INTEGRATORS)
         elif key == "lever":
             changes["lever"] = float(_choice(key, spec, LEVERS))
+        elif key == "slip":
+            changes["slip"] = _choice(key, spec, SLIPS)
         else:
             raise UserError(f"unknown sub-model {key!r}; known: {', '.join(SUBMODEL_KEYS)}")
     law = replace(law, **changes) if changes else law

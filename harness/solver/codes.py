@@ -27,7 +27,9 @@ TANGENTIAL_VISCOUS_MINDLIN = 8     # the same with c_t from k_t = 8 G* a        
 # integrator
 INTEGRATOR_PAPER = 0            # second-order splitting on u = m alpha_dot + D(alpha), release located in-step
 INTEGRATOR_VELOCITY_VERLET = 1  # LIGGGHTS nve/sphere: forces from half-step velocities, release at the step
-INTEGRATORS = {"paper": INTEGRATOR_PAPER, "velocity-verlet": INTEGRATOR_VELOCITY_VERLET}
+INTEGRATOR_LEAPFROG = 2         # YADE NewtonIntegrator: forces at x(t) from v(t - h/2), then v, then x
+INTEGRATORS = {"paper": INTEGRATOR_PAPER, "velocity-verlet": INTEGRATOR_VELOCITY_VERLET,
+               "leapfrog": INTEGRATOR_LEAPFROG}
 
 # per-impact parameter slots (columns of the float parameter matrix)
 P_MASS, P_INERTIA, P_RADIUS, P_DT, P_GRAVITY, P_MU = 0, 1, 2, 3, 4, 5
@@ -38,7 +40,8 @@ P_TDAMP = 14                                 # tangential dashpot: c_t = P_TDAMP
 P_LEVER = 15                                 # lever arm R - P_LEVER alpha (paper 0)
 P_VZ0, P_VX0, P_W0 = 16, 17, 18              # initial velocities (vz < 0 approaching), spin omega_y
 P_MAXSTEPS = 19
-N_PARAMS = 20
+P_SLIP_R1 = 20                               # slip form: 0 -> V_t - lever omega; r1 > 0 -> YADE noRatch
+N_PARAMS = 21
 
 # per-impact integer slots
 I_NORMAL, I_END, I_TANGENTIAL, I_INTEGRATOR = 0, 1, 2, 3

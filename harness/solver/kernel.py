@@ -50,10 +50,51 @@ def drift(alpha, rate0, c_alpha, h):
 
 
 @njit(cache=True, inline="always")
-def tangential_update(s, st, o, ot, p, ints, h, scratch, alpha, a, f_n, in_contact, paper):
-    """Tangential half of a step: half kick with the previous force, slip at the half step, spring increment,
-    Coulomb cap, tangential dashpot, closing half kick. The paper's dashpot is implicit and capped again; the
-    engines' (paper False) is explicit and added after the Coulomb test only (LIGGGHTS, MODELS 5)."""
+def friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, in_contact, scheme, lever):
+    """Tangential force for this step and the spring force kept in history: spring increment from the slip,
+    Coulomb cap, tangential dashpot. The paper's dashpot is implicit and capped again; the engines' is explicit
+    and added after the Coulomb test only (LIGGGHTS and YADE alike, MODELS 5). History cleared out of contact."""
+    paper = scheme == C.INTEGRATOR_PAPER
+    f_t, f_s = 0.0, 0.0
+    if code >= C.TANGENTIAL_VISCOUS_LINEAR and alpha > 0.0:
+        f_t = viscous(code, p[C.P_T1], a, p[C.P_TDAMP], slip, p[C.P_MU] * abs(f_n))
+    elif in_contact:
+        limit = p[C.P_MU] * abs(f_n)
+        f_s = spring_force(code, s[S_FS], slip * h, a, p[C.P_T1], p[C.P_MU], abs(f_n), s[S_NOLD], ot, scratch, paper)
+        if abs(f_s) > limit:
+            f_s = cap(f_s, limit)
+            after_cap(code, f_s, p[C.P_T1], a, ot)
+            f_t = f_s
+        elif p[C.P_TDAMP] == 0.0:
+            f_t = f_s
+        else:
+            c_t = p[C.P_TDAMP] * math.sqrt(stiffness(code, p[C.P_T1], a))
+            if paper:
+                m, inertia = p[C.P_MASS], p[C.P_INERTIA]
+                f_t = cap((f_s - c_t * slip) / (1.0 + 0.5 * h * c_t * (1.0 / m + lever * lever / inertia)), limit)
+            else:
+                f_t = f_s - c_t * slip
+    else:
+        for k in range(N_TSTATE):
+            ot[k] = 0.0
+    return f_t, f_s
+
+
+@njit(cache=True, inline="always")
+def slip_velocity(p, alpha, vx, w, lever):
+    """Contact-point slip: V_t - lever omega, or YADE's noRatch form alpha_f V_t - R omega with
+    alpha_f = (r1 + R)/(r1 + R - d) (r1 the wall's reference radius)."""
+    r1 = p[C.P_SLIP_R1]
+    if r1 == 0.0:
+        return vx - lever * w
+    radius = p[C.P_RADIUS]
+    return (r1 + radius) / (r1 + radius - alpha) * vx - radius * w
+
+
+@njit(cache=True, inline="always")
+def tangential_update(s, st, o, ot, p, ints, h, scratch, alpha, a, f_n, in_contact, scheme):
+    """Tangential half of a Verlet step: half kick with the previous force, slip at the half step, friction,
+    closing half kick (paper and LIGGGHTS schemes)."""
     for k in range(N_TSTATE):
         ot[k] = st[k]
     code = ints[C.I_TANGENTIAL]
@@ -65,31 +106,45 @@ def tangential_update(s, st, o, ot, p, ints, h, scratch, alpha, a, f_n, in_conta
     lever = radius - p[C.P_LEVER] * alpha
     vx_half = s[S_VX] + 0.5 * h * s[S_FT] / m
     w_half = s[S_W] - 0.5 * h * lever_old * s[S_FT] / inertia
-    slip = vx_half - lever * w_half
-    f_t, f_s = 0.0, 0.0
-    if code >= C.TANGENTIAL_VISCOUS_LINEAR and alpha > 0.0:
-        f_t = viscous(code, p[C.P_T1], a, p[C.P_TDAMP], slip, p[C.P_MU] * abs(f_n))
-    elif in_contact:
-        limit = p[C.P_MU] * abs(f_n)
-        f_s = spring_force(code, s[S_FS], slip * h, a, p[C.P_T1], p[C.P_MU], abs(f_n), s[S_NOLD], ot, scratch)
-        if abs(f_s) > limit:
-            f_s = cap(f_s, limit)
-            after_cap(code, f_s, p[C.P_T1], a, ot)
-            f_t = f_s
-        elif p[C.P_TDAMP] == 0.0:
-            f_t = f_s
-        else:
-            c_t = p[C.P_TDAMP] * math.sqrt(stiffness(code, p[C.P_T1], a))
-            if paper:
-                f_t = cap((f_s - c_t * slip) / (1.0 + 0.5 * h * c_t * (1.0 / m + lever * lever / inertia)), limit)
-            else:
-                f_t = f_s - c_t * slip
-    else:
-        for k in range(N_TSTATE):
-            ot[k] = 0.0
+    slip = slip_velocity(p, alpha, vx_half, w_half, lever)
+    f_t, f_s = friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, in_contact, scheme, lever)
     o[S_VX] = vx_half + 0.5 * h * f_t / m
     o[S_W] = w_half - 0.5 * h * lever * f_t / inertia
     o[S_FT], o[S_FS], o[S_NOLD] = f_t, f_s, abs(f_n)
+
+
+@njit(cache=True, inline="always")
+def step_leapfrog(s, st, o, ot, p, ints, h, scratch):
+    """YADE NewtonIntegrator: forces from the overlap at x(t) and the half-step velocities v(t - h/2), then
+    v(t + h/2) = v(t - h/2) + h F/m and x(t + h) = x(t) + h v(t + h/2). A contact exists while the overlap is
+    >= 0 (a sphere placed touching starts in contact with zero force); the first step with a negative overlap
+    applies no force and ends it (returns -1)."""
+    m, inertia, radius, g = p[C.P_MASS], p[C.P_INERTIA], p[C.P_RADIUS], p[C.P_GRAVITY]
+    alpha = s[S_ALPHA]
+    amax = s[S_AMAX] if s[S_AMAX] > alpha else alpha
+    in_contact = alpha >= 0.0
+    f_n, a = 0.0, 0.0
+    if alpha > 0.0:
+        f_el, a = normal_elastic(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], radius, alpha, amax)
+        c = p[C.P_DAMP_C0] * damping_power(alpha, p[C.P_DAMP_POWER]) if p[C.P_DAMP_C0] != 0.0 else 0.0
+        f_n = f_el - c * s[S_VZ]
+        if f_n < 0.0 and ints[C.I_END] == C.END_FORCE:
+            f_n = 0.0
+    for k in range(N_TSTATE):
+        ot[k] = st[k]
+    code = ints[C.I_TANGENTIAL]
+    f_t, f_s = 0.0, 0.0
+    lever = radius - p[C.P_LEVER] * alpha
+    if code != C.TANGENTIAL_NONE:
+        slip = slip_velocity(p, alpha, s[S_VX], s[S_W], lever)
+        f_t, f_s = friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, in_contact, C.INTEGRATOR_LEAPFROG, lever)
+    vz = s[S_VZ] + h * (f_n / m - g)
+    o[S_VZ], o[S_FN], o[S_AMAX] = vz, f_n, amax
+    o[S_VX] = s[S_VX] + h * f_t / m
+    o[S_W] = s[S_W] - h * lever * f_t / inertia
+    o[S_FT], o[S_FS], o[S_NOLD] = f_t, f_s, abs(f_n)
+    o[S_ALPHA] = alpha - h * vz
+    return 1.0 if in_contact else -1.0
 
 
 @njit(cache=True, inline="always")
@@ -123,7 +178,7 @@ def step(s, st, o, ot, p, ints, h, scratch):
     o[S_ALPHA], o[S_VZ], o[S_FN], o[S_U], o[S_FEL], o[S_C] = alpha, -alpha_dot, f_n, u, f_el, c
     o[S_AMAX] = alpha if alpha > amax else amax
     tangential_update(s, st, o, ot, p, ints, h, scratch, alpha, a, f_n,
-                      f_n > 0.0 or (alpha > 0.0 and ints[C.I_END] == C.END_ALPHA), True)
+                      f_n > 0.0 or (alpha > 0.0 and ints[C.I_END] == C.END_ALPHA), C.INTEGRATOR_PAPER)
     return indicator
 
 
@@ -153,7 +208,7 @@ def step_velocity_verlet(s, st, o, ot, p, ints, h, scratch):
             f_n = 0.0
     o[S_ALPHA], o[S_VZ], o[S_FN], o[S_FEL] = alpha, vz_half + 0.5 * h * (f_n / m - g), f_n, f_el
     o[S_AMAX] = alpha if alpha > amax else amax
-    tangential_update(s, st, o, ot, p, ints, h, scratch, alpha, a, f_n, alpha > 0.0, False)
+    tangential_update(s, st, o, ot, p, ints, h, scratch, alpha, a, f_n, alpha > 0.0, C.INTEGRATOR_VELOCITY_VERLET)
     return alpha
 
 
@@ -162,6 +217,8 @@ def advance(s, st, o, ot, p, ints, h, scratch):
     """One step of the row's integrator."""
     if ints[C.I_INTEGRATOR] == C.INTEGRATOR_VELOCITY_VERLET:
         return step_velocity_verlet(s, st, o, ot, p, ints, h, scratch)
+    if ints[C.I_INTEGRATOR] == C.INTEGRATOR_LEAPFROG:
+        return step_leapfrog(s, st, o, ot, p, ints, h, scratch)
     return step(s, st, o, ot, p, ints, h, scratch)
 
 
@@ -215,7 +272,7 @@ def integrate(params, ints, out, history, stride):
         for k in range(max_steps):
             indicator = advance(s, st, o, ot, p, row_ints, h, scratch)
             steps = k + 1
-            if indicator <= 0.0 and row_ints[C.I_INTEGRATOR] == C.INTEGRATOR_VELOCITY_VERLET:
+            if indicator <= 0.0 and row_ints[C.I_INTEGRATOR] != C.INTEGRATOR_PAPER:
                 t_end = steps * h                          # the engine ends contact at the step, not inside it
                 status = C.STATUS_OK
             elif indicator <= 0.0:

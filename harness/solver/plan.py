@@ -6,6 +6,7 @@ import numpy as np
 from . import codes as C
 
 MIN_STEPS_PER_CONTACT = 5
+NORATCH_WALL_RADIUS = 1e8      # YADE's hertzian wall: reference radius 1e8 R (its noRatch slip factor uses it)
 
 
 @dataclass
@@ -55,6 +56,7 @@ def plan_batch(law, scene, e_n, steps_per_contact):
         g_t = law.tangential_damping.ratio(dashpot, normal.linear_stiffness, constant_k_t, e_n)
         params[:, C.P_TDAMP] = 2.0 * g_t * np.sqrt(contact.mass)
     params[:, C.P_LEVER] = law.lever
+    params[:, C.P_SLIP_R1] = NORATCH_WALL_RADIUS * contact.radius if law.slip == "noratch" else 0.0
     params[:, C.P_VZ0] = -v_n0
     params[:, C.P_VX0] = v_t0
     params[:, C.P_W0] = omega0

@@ -107,15 +107,20 @@ def walton_braun(f_s, dd, k_t0, mu, n_new, n_old, st, t_eval):
 
 
 @njit(cache=True)
-def spring_force(code, f_s, dd, a, p1, mu, n_new, n_old, st, scratch):
+def spring_force(code, f_s, dd, a, p1, mu, n_new, n_old, st, scratch, midpoint):
     """Trial spring force after the increment dd, before the Coulomb cap; updates the history `st`.
 
-    `a` is the contact radius at the end of the step, st[T_AOLD] the one at its start: stiffnesses use their mean,
-    and the history-dependent springs (Mindlin-Deresiewicz, Walton-Braun) a predictor-corrector on T, so that
-    every increment is a midpoint rule (second order).
+    `a` is the contact radius at the end of the step, st[T_AOLD] the one at its start. With `midpoint` (the paper
+    scheme) stiffnesses use their mean, and the history-dependent springs (Mindlin-Deresiewicz, Walton-Braun) a
+    predictor-corrector on T, so that every increment is a midpoint rule (second order); engines use the current a.
     """
     a_old = st[T_AOLD]
-    a_mid = 0.5 * (a + a_old) if a_old > 0.0 else a * (2.0 / 3.0)   # first step: a ~ sqrt(t), mean 2/3 a
+    if not midpoint:
+        a_mid = a
+    elif a_old > 0.0:
+        a_mid = 0.5 * (a + a_old)
+    else:
+        a_mid = a * (2.0 / 3.0)                  # first step: a ~ sqrt(t), mean 2/3 a
     st[T_AOLD] = a
     if code == C.TANGENTIAL_LINEAR or code == C.TANGENTIAL_MINDLIN_INCREMENTAL:
         return f_s - stiffness(code, p1, a_mid) * dd
