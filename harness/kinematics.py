@@ -18,7 +18,8 @@ CONVENTIONS = (
 def _ratio(num, den):
     num, den = np.broadcast_arrays(np.asarray(num, dtype=float), np.asarray(den, dtype=float))
     out = np.full(num.shape, np.nan)
-    np.divide(num, den, out=out, where=den != 0)
+    with np.errstate(over="ignore"):                 # a denormal mu gives an infinite Psi, which is the limit
+        np.divide(num, den, out=out, where=den != 0)
     return out
 
 

@@ -104,6 +104,22 @@ def test_crash_hang_truncation_give_clear_failures(tmp_path, monkeypatch):
         yade.run_script("pass", 2, 30, str(tmp_path))
 
 
+@needs_yade
+def test_viscel_against_a_wall_uses_half_the_mass():
+    """MODELS 5: against a Wall, ViscEl's reduced mass is m/2 while the sphere moves with m, so its damping ratio
+    is g_A(e)/sqrt2 and, with the force clipped at zero, the sphere leaves with Schwager & Poeschel's e of that
+    ratio (tests/oracles.py), not with the input e: en 0.5 -> 0.644."""
+    import math
+    import tempfile
+    from oracles import lsd_notension_e
+    g_a = -math.log(0.5) / math.sqrt(math.pi ** 2 + math.log(0.5) ** 2)
+    scene = Scene(e_n=(0.5,), angles_deg=(0.0,))
+    batch = plan_batch(yade.dialect("linear-spring-dashpot"), scene, 0.5, 2000)
+    with tempfile.TemporaryDirectory() as workdir:
+        final, _, _ = yade.run_batch(compose("linear-spring-dashpot"), scene, batch, 200000, 300, workdir)
+    assert final["v_n1"][0] == pytest.approx(lsd_notension_e(g_a / math.sqrt(2.0)), abs=2e-3)
+
+
 def test_unknown_precision_is_a_user_error():
     from harness.errors import UserError
     with pytest.raises(UserError, match="precision must be one of"):
@@ -121,15 +137,16 @@ def test_hostile_values_cannot_reach_the_script(value):
 
 
 @needs_yade
+@pytest.mark.parametrize("name", list(yade.DIALECTS))
 @pytest.mark.parametrize("e_n", [0.9, 0.5, 0.1])
 @pytest.mark.parametrize("omega0", [0.0, -50.0])
-def test_mindlin_agrees_with_its_yade_dialect_at_equal_dt(e_n, omega0, tmp_path):
+def test_engine_agrees_with_its_yade_dialect_at_equal_dt(name, e_n, omega0, tmp_path):
     from harness.solver import codes as C
     from harness.solver.reference import run_kernel
     scene = Scene(e_n=(e_n,), angles_deg=(0.0, 10.0, 30.0, 60.0, 85.0), omega0=omega0)
-    batch = plan_batch(yade.dialect("hertz-mindlin"), scene, e_n, 200)
+    batch = plan_batch(yade.dialect(name), scene, e_n, 200)
     out, _, _ = run_kernel(batch)
-    final, _, _ = yade.run_batch(compose("hertz-mindlin"), scene, batch, 20000, 120, str(tmp_path))
+    final, _, _ = yade.run_batch(compose(name), scene, batch, 20000, 120, str(tmp_path))
     assert final["separated"].all()
     engine = np.column_stack([final["v_n1"], final["v_t1"], final["omega1"]])
     reference = out[:, [C.O_VZ, C.O_VX, C.O_W]]

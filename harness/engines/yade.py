@@ -18,11 +18,13 @@ PYTHON_VARIABLE = "HARNESS_YADE_PYTHON"    # another interpreter (a test's fake)
 FLAVOURS = {"double": "yade-double", "long-double": "yade-longdouble", "float128": "yade-float128",
             "mpfr150": "yade-mpfr150"}
 LIBRARY = "/usr/lib/x86_64-linux-gnu"
-MODELS = {"hertz-mindlin": "Law2_ScGeom_MindlinPhys_Mindlin"}
+MODELS = {"hertz-mindlin": "Law2_ScGeom_MindlinPhys_Mindlin", "linear-spring-dashpot": "Law2_ScGeom_ViscElPhys_Basic"}
 DIALECTS = {                    # sub-models that make the paper law compute what YADE computes (MODELS 5, docs/)
     "hertz-mindlin": {"damping": "tsuji:appendix-b", "end": "no-tension", "tangential": "mindlin:incremental",
                       "tangential-damping": "normal-ratio", "integrator": "leapfrog", "lever": "1",
                       "slip": "noratch"},
+    "linear-spring-dashpot": {"damping": "linear:half-mass", "end": "no-tension", "tangential": "linear:2/7",
+                              "tangential-damping": "proportional", "integrator": "leapfrog", "lever": "1"},
 }
 
 
@@ -83,6 +85,14 @@ def environment(precision):
     return {**os.environ, "PYTHONPATH": flavour_path(precision), "OMP_NUM_THREADS": "1"}
 
 
+def viscel_contact_time(law, scene, e_n):
+    """tc for ViscElMat such that its k_n = (m/2)(pi^2 + ln^2 e)/tc^2 (reduced mass m/2 against a wall) equals the
+    harness linear spring's k_n: tc = sqrt((pi^2 + ln^2 e) (m/2) / k_n)."""
+    import math
+    k = law.normal.parameters(scene.contact, e_n, scene.speed).values[0]
+    return math.sqrt((math.pi ** 2 + math.log(e_n) ** 2) * 0.5 * scene.contact.mass / k)
+
+
 def script(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps):
     """Render the batched script (validated numbers and fixed words only; see harness.render)."""
     import math
@@ -90,11 +100,14 @@ def script(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps
     spheres = [{"x": i * 4.0 * radius, "vx": float(vt), "vz": -float(vn), "omegay": float(w)}
                for i, (vn, vt, w) in enumerate(zip(v_n0, v_t0, omega0))]
     chunk = max(10, steps_per_contact // 10)
-    return render("yade/batch.py.j2", harness_version=__version__, law=law.name, law2=MODELS[law.name],
-                  e_n=e_n, material="FrictMat", young=scene.E, poisson=scene.nu, rho=scene.rho,
-                  friction_angle=math.atan(scene.mu), radius=radius, spheres=spheres,
-                  ig2="Ig2_Wall_Sphere_ScGeom", hertzian=True, ip2="Ip2_FrictMat_FrictMat_MindlinPhys",
-                  ip2_args=[("en", e_n), ("es", e_n)], dt=dt, chunk=chunk, max_chunks=max(1, max_steps // chunk + 1))
+    common = dict(harness_version=__version__, law=law.name, law2=MODELS[law.name], e_n=e_n, rho=scene.rho,
+                  friction_angle=math.atan(scene.mu), radius=radius, spheres=spheres, ig2="Ig2_Wall_Sphere_ScGeom",
+                  hertzian=True, dt=dt, chunk=chunk, max_chunks=max(1, max_steps // chunk + 1))
+    if law.name == "linear-spring-dashpot":
+        return render("yade/batch.py.j2", **common, material="ViscElMat", tc=viscel_contact_time(law, scene, e_n),
+                      en=e_n, et=e_n, ip2="Ip2_ViscElMat_ViscElMat_ViscElPhys", ip2_args=[])
+    return render("yade/batch.py.j2", **common, material="FrictMat", young=scene.E, poisson=scene.nu,
+                  ip2="Ip2_FrictMat_FrictMat_MindlinPhys", ip2_args=[("en", e_n), ("es", e_n)])
 
 
 def read_result(path, n_spheres):

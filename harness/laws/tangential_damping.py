@@ -3,12 +3,13 @@ import math
 
 from ..errors import UserError
 
-RULES = ("none", "normal-ratio", "normal-coefficient", "beta", "reversed-beta")
+RULES = ("none", "normal-ratio", "normal-coefficient", "proportional", "beta", "reversed-beta")
 
 
 class TangentialDashpot:
     """g_t fixed, or borrowed from the normal dashpot: g_t = g_n ('normal-ratio', LIGGGHTS hertz, YADE) or
-    c_t = c_n ('normal-coefficient', LIGGGHTS hooke: g_t = g_n sqrt(k_n/k_t), constant k_t only); or from e_n:
+    c_t = c_n ('normal-coefficient', LIGGGHTS hooke: g_t = g_n sqrt(k_n/k_t), constant k_t only) or
+    c_t = c_n k_t/k_n ('proportional', YADE ViscEl: g_t = g_n sqrt(k_t/k_n), constant k_t only); or from e_n:
     g_t = sqrt(5/6)|beta| ('beta'), and its negative ('reversed-beta': the sign defect of LIGGGHTS thornton_ning,
     which adds energy), beta = ln e/sqrt(ln^2 e + pi^2)."""
 
@@ -39,5 +40,7 @@ class TangentialDashpot:
         if self.rule == "normal-ratio":
             return dashpot.g
         if k_t is None:
-            raise UserError("normal-coefficient tangential damping needs a constant tangential stiffness")
+            raise UserError(f"{self.rule} tangential damping needs a constant tangential stiffness")
+        if self.rule == "proportional":
+            return dashpot.g * math.sqrt(k_t / k_n)
         return dashpot.g * math.sqrt(k_n / k_t)

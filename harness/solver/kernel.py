@@ -124,7 +124,7 @@ def step_leapfrog(s, st, o, ot, p, ints, h, scratch):
     amax = s[S_AMAX] if s[S_AMAX] > alpha else alpha
     in_contact = alpha >= 0.0
     f_n, a = 0.0, 0.0
-    if alpha > 0.0:
+    if in_contact:                                    # from overlap 0: a constant dashpot acts at first touch
         f_el, a = normal_elastic(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], radius, alpha, amax)
         c = p[C.P_DAMP_C0] * damping_power(alpha, p[C.P_DAMP_POWER]) if p[C.P_DAMP_C0] != 0.0 else 0.0
         f_n = f_el - c * s[S_VZ]
