@@ -6,7 +6,8 @@ import pandas as pd
 from .attribution import attribution
 from .comparison import agreement, deviation, findings
 from .engines import ADAPTERS, INSTALLED, engine_status
-from .engines.sweep import run_sweep
+from .engines.runner import EngineFailure
+from .engines.sweep import precision_gap, run_sweep
 from .errors import UserError
 from .results import write_csv
 
@@ -73,7 +74,7 @@ def compare(args):
 
     steps = args.steps_per_contact
     keep(simulate(law, scene, steps_per_contact=steps, converged=args.converged)[0])
-    failures, attributions, dialects = [], {}, {}
+    failures, attributions, dialects, precision = [], {}, {}, None
     for status in statuses:
         if not status.available:
             continue
@@ -83,6 +84,11 @@ def compare(args):
         keep(simulate(dialect, scene, steps_per_contact=steps)[0])
         _, failed = run_sweep(adapter, law, scene, steps, on_frame=keep, options=options)
         failures += failed
+        if status.name == "yade" and options.get("precision") == "double" and not failed:
+            try:
+                precision = precision_gap(adapter, law, scene, steps)
+            except EngineFailure as exc:
+                precision = {"engine": "yade", "against": "mpfr150", "failed": str(exc)}
         attributions[f"{status.name} dialect -> paper"] = attribution(
             law, dialect, scene, lambda l, s: simulate(l, s, steps_per_contact=steps)[0])
     if len(dialects) == 2:                      # LIGGGHTS against YADE, and which ingredients make the difference
@@ -97,7 +103,8 @@ def compare(args):
     found = findings(frame)
     skipped = [(s.name, s.reason) for s in statuses if not s.available]
     report = write_report(out_dir, frame, law=law, scene=scene, skipped=skipped, agreement=agree, deviation=devs,
-                          cross=cross, attributions=attributions, findings=found, failures=failures)
+                          cross=cross, attributions=attributions, findings=found, failures=failures,
+                          precision=pd.DataFrame([precision]) if precision else None)
     ok = bool(agree["pass"].all()) if not agree.empty else True
     if not args.quiet:
         print(f"{law.name}: paper law on the reference engine, {sum(frame.engine == 'reference')} rows")
@@ -121,6 +128,10 @@ def compare(args):
                 cols = [c for c in table.columns if c.startswith("d_")]
                 print(text_table(table, ["ingredient", "dialect", "target", *cols, "note"],
                                  {c: "{:+.4g}" for c in cols}))
+        if precision:
+            gaps = ", ".join(f"{k} {v:.1e}" for k, v in precision.items() if k in ("v_n1", "v_t1", "omega1"))
+            print(f"\nprecision: YADE double against {precision['against']} on the same impacts and dt "
+                  f"(max relative difference): {gaps or precision.get('failed')}")
         if not found.empty:
             print("\nfindings:")
             for _, row in found.iterrows():

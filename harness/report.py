@@ -62,7 +62,7 @@ def engines_ran(frame):
 
 
 def write_report(out_dir, frame, law, scene, skipped, agreement=None, deviation=None, cross=None, attributions=None,
-                 findings=None, failures=()):
+                 findings=None, failures=(), precision=None):
     """Render DIR/report.html (self-contained) and return its path."""
     env = jinja2.Environment(loader=jinja2.FileSystemLoader(str(TEMPLATES)), autoescape=True,
                              undefined=jinja2.StrictUndefined)
@@ -79,6 +79,7 @@ def write_report(out_dir, frame, law, scene, skipped, agreement=None, deviation=
         law=law, submodels=law.describe(), scene=scene, conventions=CONVENTIONS, figures=figures,
         summary=summary.to_dict("records"), skipped=skipped, rows=len(frame), ran=engines_ran(frame), agreement=records(agreement),
         deviation=records(deviation), cross=records(cross), findings=records(findings), failures=failures,
+        precision=records(precision),
         attributions=[(name, records(table)) for name, table in (attributions or {}).items()])
     path = os.path.join(out_dir, "report.html")
     tmp = path + ".tmp"

@@ -171,3 +171,15 @@ def test_compare_with_both_engines_prints_the_engine_against_engine_attribution(
     frame = pd.read_csv(tmp_path / "results.csv")
     assert ("yade", "yade") in set(zip(frame.engine, frame.dialect))
     assert (frame[frame.engine == "yade"].status == "ok").all()
+
+
+@needs_yade
+def test_precision_gap_double_against_mpfr150_is_round_off():
+    """The report's precision figure: double and mpfr150 differ on a smooth impact at round-off level only."""
+    from harness.engines.sweep import precision_gap
+    if not yade.available("mpfr150"):
+        pytest.skip("yade-mpfr150 is not installed")
+    gap = precision_gap(yade, compose("hertz-mindlin"), Scene(e_n=(0.5,), angles_deg=(0.0, 45.0)), 200, samples=2)
+    assert gap["against"] == "mpfr150"
+    values = [gap[k] for k in ("v_n1", "v_t1", "omega1")]
+    assert max(values) < 1e-9 and max(values) > 0.0

@@ -1,14 +1,15 @@
-"""One batched LIGGGHTS run of a 45-angle sweep against 45 separate runs of one sphere each, side by side.
+"""One batched engine run of a 45-angle sweep against 45 separate runs of one sphere each, side by side.
 
-Run: .venv/bin/python benchmarks/bench_liggghts_batch.py   (goal: batched at least 20x faster)
+Run: .venv/bin/python benchmarks/bench_engine_batch.py [liggghts|yade]   (goal: batched at least 20x faster)
 """
 import copy
+import sys
 import tempfile
 import time
 
 import numpy as np
 
-from harness.engines import liggghts
+from harness.engines import ADAPTERS
 from harness.laws import compose
 from harness.scene import Scene
 from harness.solver import codes as C
@@ -25,32 +26,33 @@ def one_row(batch, i):
     return single
 
 
-def timed_run(law, scene, batch):
+def timed_run(engine, law, scene, batch):
     max_steps = int(batch.params[:, C.P_MAXSTEPS].max())
     with tempfile.TemporaryDirectory() as workdir:
         start = time.perf_counter()
-        final, _, _ = liggghts.run_batch(law, scene, batch, max_steps, 600, workdir)
+        final, _, _ = engine.run_batch(law, scene, batch, max_steps, 600, workdir)
         return time.perf_counter() - start, final
 
 
-def main():
-    if not liggghts.available():
-        print("liggghts is not installed; nothing to measure")
+def main(name):
+    engine = ADAPTERS[name]
+    if not engine.available():
+        print(f"{name} is not installed; nothing to measure")
         return
     scene = Scene(e_n=(0.5,))
     law = compose("hertz-mindlin")
-    batch = plan_batch(liggghts.dialect(law.name), scene, 0.5, STEPS)
-    batched, final = timed_run(law, scene, batch)
+    batch = plan_batch(engine.dialect(law.name), scene, 0.5, STEPS)
+    batched, final = timed_run(engine, law, scene, batch)
     separate, results = 0.0, []
     for i in range(len(batch.v_n0)):
-        seconds, single = timed_run(law, scene, one_row(batch, i))
+        seconds, single = timed_run(engine, law, scene, one_row(batch, i))
         separate += seconds
         results.append(single["v_t1"][0])
     same = np.allclose(final["v_t1"], results, rtol=0, atol=0)
-    print(f"{len(batch.v_n0)} impacts, {STEPS} steps per contact, hertz-mindlin, e_n = 0.5")
+    print(f"{name}: {len(batch.v_n0)} impacts, {STEPS} steps per contact, hertz-mindlin, e_n = 0.5")
     print(f"batched: 1 run, {batched:.2f} s; separate: {len(batch.v_n0)} runs, {separate:.2f} s")
     print(f"RATIO separate/batched: {separate / batched:.1f}x (identical results: {same})")
 
 
 if __name__ == "__main__":
-    main()
+    main(sys.argv[1] if len(sys.argv) > 1 else "liggghts")
