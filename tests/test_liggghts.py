@@ -1,12 +1,12 @@
 """LIGGGHTS adapter: real runs agree with the LIGGGHTS dialect at equal dt; failure modes give clear messages;
 decks cannot be injected into."""
 import os
-import stat
 import subprocess
 import sys
 
 import numpy as np
 import pytest
+from conftest import fake_executable
 
 from harness.engines import liggghts
 from harness.engines.runner import EngineFailure, run_engine
@@ -82,22 +82,15 @@ def test_lost_atoms_are_a_clear_failure(tmp_path):
     assert "Lost atoms" in failure.value.log_tail
 
 
-def fake_engine(tmp_path, body):
-    path = tmp_path / "fake-liggghts"
-    path.write_text("#!/bin/sh\n" + body + "\n")
-    path.chmod(path.stat().st_mode | stat.S_IEXEC)
-    return str(path)
-
-
 def test_crash_gives_exit_code_and_log_tail(tmp_path, monkeypatch):
-    monkeypatch.setenv(liggghts.BINARY_VARIABLE, fake_engine(tmp_path, 'echo "ERROR: something broke"; exit 3'))
+    monkeypatch.setenv(liggghts.BINARY_VARIABLE, fake_executable(tmp_path, 'echo "ERROR: something broke"; exit 3'))
     with pytest.raises(EngineFailure, match="exit code 3") as failure:
         liggghts.run_deck("# deck", 1, 30, str(tmp_path))
     assert "something broke" in failure.value.log_tail
 
 
 def test_hang_is_killed_at_the_timeout(tmp_path, monkeypatch):
-    monkeypatch.setenv(liggghts.BINARY_VARIABLE, fake_engine(tmp_path, "echo started; sleep 60"))
+    monkeypatch.setenv(liggghts.BINARY_VARIABLE, fake_executable(tmp_path, "echo started; sleep 60"))
     with pytest.raises(EngineFailure, match="did not finish within 1 s") as failure:
         liggghts.run_deck("# deck", 1, 1, str(tmp_path))
     assert "started" in failure.value.log_tail
@@ -105,7 +98,7 @@ def test_hang_is_killed_at_the_timeout(tmp_path, monkeypatch):
 
 def test_truncated_dump_is_detected(tmp_path, monkeypatch):
     body = 'printf "ITEM: ATOMS id z vx vz omegay\\n1 0.005 0 0.5 0\\n" > final.dump'
-    monkeypatch.setenv(liggghts.BINARY_VARIABLE, fake_engine(tmp_path, body))
+    monkeypatch.setenv(liggghts.BINARY_VARIABLE, fake_executable(tmp_path, body))
     with pytest.raises(EngineFailure, match="truncated: 1 of 3 spheres"):
         liggghts.run_deck("# deck", 3, 30, str(tmp_path))
 
@@ -121,7 +114,7 @@ def test_missing_binary_is_reported_not_raised(tmp_path, monkeypatch):
 
 def test_failed_engine_run_keeps_reference_results_and_log_in_compare(tmp_path):
     """A crashing engine: compare still writes the reference rows and prints the engine's log tail."""
-    fake = fake_engine(tmp_path, 'echo "ERROR: fake crash for the test"; exit 1')
+    fake = fake_executable(tmp_path, 'echo "ERROR: fake crash for the test"; exit 1')
     env = {**os.environ, liggghts.BINARY_VARIABLE: fake}
     proc = subprocess.run([sys.executable, "-m", "harness.cli", "compare", "--model", "hertz-mindlin", "--en", "0.5",
                            "--angles", "0,45", "--engines", "liggghts", "-o", str(tmp_path / "out")],

@@ -1,10 +1,10 @@
 """YADE adapter: runs as a Python module without network servers; precision flavours; failure modes."""
-import stat
-import sys
 import subprocess
+import sys
 
 import numpy as np
 import pytest
+from conftest import fake_executable
 
 from harness.engines import yade
 from harness.engines.runner import EngineFailure
@@ -84,22 +84,15 @@ def test_float128_agrees_with_double_on_a_smooth_case(tmp_path):
     assert rel.max() > 0.0                                      # the flavours really are different arithmetic
 
 
-def fake_python(tmp_path, body):
-    path = tmp_path / "fake-python"
-    path.write_text("#!/bin/sh\n" + body + "\n")
-    path.chmod(path.stat().st_mode | stat.S_IEXEC)
-    return str(path)
-
-
 def test_crash_hang_truncation_give_clear_failures(tmp_path, monkeypatch):
-    monkeypatch.setenv(yade.PYTHON_VARIABLE, fake_python(tmp_path, 'echo "Traceback: boom"; exit 1'))
+    monkeypatch.setenv(yade.PYTHON_VARIABLE, fake_executable(tmp_path, 'echo "Traceback: boom"; exit 1'))
     with pytest.raises(EngineFailure, match="exit code 1") as failure:
         yade.run_script("pass", 1, 30, str(tmp_path))
     assert "boom" in failure.value.log_tail
-    monkeypatch.setenv(yade.PYTHON_VARIABLE, fake_python(tmp_path, "sleep 60"))
+    monkeypatch.setenv(yade.PYTHON_VARIABLE, fake_executable(tmp_path, "sleep 60"))
     with pytest.raises(EngineFailure, match="did not finish within 1 s"):
         yade.run_script("pass", 1, 1, str(tmp_path))
-    monkeypatch.setenv(yade.PYTHON_VARIABLE, fake_python(tmp_path, 'printf "0 1 0.1 0.5 0\\n" > result.txt'))
+    monkeypatch.setenv(yade.PYTHON_VARIABLE, fake_executable(tmp_path, 'printf "0 1 0.1 0.5 0\\n" > result.txt'))
     with pytest.raises(EngineFailure, match="truncated"):
         yade.run_script("pass", 2, 30, str(tmp_path))
 
