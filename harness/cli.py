@@ -90,6 +90,8 @@ def add_scene_options(parser):
     g.add_argument("--liggghts-option", dest="liggghts_options", type=submodel, action="append", default=[],
                    metavar="KEY=VALUE", help="LIGGGHTS contact options: limitForce=on|off, tangential_damping=on|off, "
                    "ktToKnUser=on|off, tangential=history|no_history (deck and dialect follow them)")
+    g.add_argument("--yade-linear", choices=("viscel", "cundall-strack"), default="viscel",
+                   help="YADE law for linear-spring-dashpot: ViscEl (default) or elastic CundallStrack")
     g.add_argument("--yade-precision", choices=("double", "long-double", "float128", "mpfr150"), default="double",
                    help="YADE flavour (arithmetic) to run; inputs go in as exact decimal strings")
     res = parser.add_argument_group("resolution")

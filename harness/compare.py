@@ -146,5 +146,6 @@ def compare(args):
 def engine_options(args, engine):
     """Options for `engine` (validated by its adapter): --liggghts-option pairs, --yade-precision."""
     if engine == "yade":
-        return {"precision": getattr(args, "yade_precision", "double")}
+        return {"precision": getattr(args, "yade_precision", "double"),
+                "linear": getattr(args, "yade_linear", "viscel")}
     return dict(getattr(args, f"{engine}_options", None) or [])

@@ -23,6 +23,7 @@ class Contact:
     G_star: float
     nu: float
     rho: float
+    E: float = 0.0
 
     @property
     def kappa(self):
@@ -95,7 +96,7 @@ def contact_properties(scene):
         inv_g += (2.0 - nu2) / (E2 / (2.0 * (1.0 + nu2)))
     mass = 4.0 / 3.0 * math.pi * scene.radius ** 3 * scene.rho
     return Contact(radius=scene.radius, mass=mass, inertia=0.4 * mass * scene.radius ** 2,
-                   E_star=1.0 / inv_e, G_star=1.0 / inv_g, nu=nu1, rho=scene.rho)
+                   E_star=1.0 / inv_e, G_star=1.0 / inv_g, nu=nu1, rho=scene.rho, E=E1)
 
 
 def _is_number(value):

@@ -113,6 +113,14 @@ def test_viscel_against_a_wall_uses_half_the_mass():
     assert final["v_n1"][0] == pytest.approx(lsd_notension_e(g_a / math.sqrt(2.0)), abs=2e-3)
 
 
+def test_cundall_strack_is_elastic_whatever_e_n():
+    """CundallStrack has no damping: its dialect rebounds a normal impact with e = 1 for any target e_n."""
+    from harness.solver.reference import simulate
+    frame = simulate(yade.dialect("linear-spring-dashpot", {"linear": "cundall-strack"}),
+                     Scene(e_n=(0.9, 0.3), angles_deg=(0.0,)), steps_per_contact=400)[0]
+    assert frame.e_n.to_list() == pytest.approx([1.0, 1.0], abs=1e-5)
+
+
 def test_unknown_precision_is_a_user_error():
     from harness.errors import UserError
     with pytest.raises(UserError, match="precision must be one of"):
@@ -129,17 +137,21 @@ def test_hostile_values_cannot_reach_the_script(value):
                ip2_args=[("en", value)], dt=1e-7, chunk=10, max_chunks=1)
 
 
+YADE_LAWS = [("hertz-mindlin", {}), ("linear-spring-dashpot", {}),
+             ("linear-spring-dashpot", {"linear": "cundall-strack"})]
+
+
 @needs_yade
-@pytest.mark.parametrize("name", list(yade.DIALECTS))
+@pytest.mark.parametrize("name,options", YADE_LAWS)
 @pytest.mark.parametrize("e_n", [0.9, 0.5, 0.1])
 @pytest.mark.parametrize("omega0", [0.0, -50.0])
-def test_engine_agrees_with_its_yade_dialect_at_equal_dt(name, e_n, omega0, tmp_path):
+def test_engine_agrees_with_its_yade_dialect_at_equal_dt(name, options, e_n, omega0, tmp_path):
     from harness.solver import codes as C
     from harness.solver.reference import run_kernel
     scene = Scene(e_n=(e_n,), angles_deg=(0.0, 10.0, 30.0, 60.0, 85.0), omega0=omega0)
-    batch = plan_batch(yade.dialect(name), scene, e_n, 200)
+    batch = plan_batch(yade.dialect(name, options), scene, e_n, 200)
     out, _, _ = run_kernel(batch)
-    final, _, _ = yade.run_batch(compose(name), scene, batch, 20000, 120, str(tmp_path))
+    final, _, _ = yade.run_batch(compose(name), scene, batch, 20000, 120, str(tmp_path), options)
     assert final["separated"].all()
     engine = np.column_stack([final["v_n1"], final["v_t1"], final["omega1"]])
     reference = out[:, [C.O_VZ, C.O_VX, C.O_W]]

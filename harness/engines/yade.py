@@ -26,6 +26,13 @@ DIALECTS = {                    # sub-models that make the paper law compute wha
     "linear-spring-dashpot": {"damping": "linear:half-mass", "end": "no-tension", "tangential": "linear:2/7",
                               "tangential-damping": "proportional", "integrator": "leapfrog", "lever": "1"},
 }
+LINEAR_LAWS = ("viscel", "cundall-strack")     # YADE's two linear laws for linear-spring-dashpot (option 'linear')
+
+
+CUNDALL_STRACK = {             # K_n = E R, K_s = nu K_n, no damping (e = 1 whatever e_n), noRatch slip with the
+    "normal": "yade-cundall-strack", "damping": "none", "end": "tension",  # default wall geometry (r1 = R),
+    "tangential": "linear:nu", "tangential-damping": "none",                 # torque lever R - d/2
+    "integrator": "leapfrog", "lever": "0.5", "slip": "noratch-sphere"}
 
 
 def dialect(law_name, options=None):
@@ -35,9 +42,13 @@ def dialect(law_name, options=None):
     from ..laws import compose
     from ..laws.registry import replace_submodels
     options = dict(options or {})
-    unknown = set(options) - {"precision"}
+    unknown = set(options) - {"precision", "linear"}
     if unknown:
-        raise UserError(f"unknown YADE option(s) {', '.join(sorted(unknown))}; known: precision")
+        raise UserError(f"unknown YADE option(s) {', '.join(sorted(unknown))}; known: precision, linear")
+    if options.get("linear", "viscel") not in LINEAR_LAWS:
+        raise UserError(f"YADE linear law must be one of {', '.join(LINEAR_LAWS)}, got {options['linear']!r}")
+    if law_name == "linear-spring-dashpot" and options.get("linear") == "cundall-strack":
+        return replace_submodels(compose(law_name), CUNDALL_STRACK, "yade")
     return replace_submodels(compose(law_name), DIALECTS[law_name], "yade")
 
 
@@ -93,7 +104,7 @@ def viscel_contact_time(law, scene, e_n):
     return math.sqrt((math.pi ** 2 + math.log(e_n) ** 2) * 0.5 * scene.contact.mass / k)
 
 
-def script(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps):
+def script(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, linear="viscel"):
     """Render the batched script (validated numbers and fixed words only; see harness.render)."""
     import math
     radius = scene.radius
@@ -103,6 +114,10 @@ def script(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps
     common = dict(harness_version=__version__, law=law.name, law2=MODELS[law.name], e_n=e_n, rho=scene.rho,
                   friction_angle=math.atan(scene.mu), radius=radius, spheres=spheres, ig2="Ig2_Wall_Sphere_ScGeom",
                   hertzian=True, dt=dt, chunk=chunk, max_chunks=max(1, max_steps // chunk + 1))
+    if law.name == "linear-spring-dashpot" and linear == "cundall-strack":
+        return render("yade/batch.py.j2", **{**common, "law2": "Law2_ScGeom_FrictPhys_CundallStrack",
+                                             "hertzian": False}, material="FrictMat", young=scene.E, poisson=scene.nu,
+                      ip2="Ip2_FrictMat_FrictMat_FrictPhys", ip2_args=[])
     if law.name == "linear-spring-dashpot":
         return render("yade/batch.py.j2", **common, material="ViscElMat", tc=viscel_contact_time(law, scene, e_n),
                       en=e_n, et=e_n, ip2="Ip2_ViscElMat_ViscElMat_ViscElPhys", ip2_args=[])
@@ -139,13 +154,13 @@ def run_script(text, n_spheres, timeout_s, workdir, precision="double"):
 def render_batch(paper_law, scene, batch, max_steps, options=None):
     """The script text for one batch, as run_batch would run it (for `harness render`)."""
     return script(paper_law, scene, batch.e_n, batch.dt, batch.v_n0, batch.v_t0, batch.omega0,
-                  batch.steps_per_contact, max_steps)
+                  batch.steps_per_contact, max_steps, dict(options or {}).get("linear", "viscel"))
 
 
 def run_batch(paper_law, scene, batch, max_steps, timeout_s, workdir, options=None):
     """One batch (one e_n) in YADE: final v_n1, v_t1, omega1 per impact and whether each sphere separated."""
     precision = dict(options or {}).get("precision", "double")
-    rows, wall, log_tail = run_script(render_batch(paper_law, scene, batch, max_steps), len(batch.v_n0), timeout_s,
+    rows, wall, log_tail = run_script(render_batch(paper_law, scene, batch, max_steps, options), len(batch.v_n0), timeout_s,
                                       workdir, precision)
     left, vx, vz, wy = rows.T
     if not np.all(np.isfinite(rows)):

@@ -123,4 +123,14 @@ class ThorntonNing(Thornton):
         return (contact.E_star, math.pi * p_y * contact.radius / (2.0 * contact.E_star), 0.0, 0.0)
 
 
-ENGINE_NORMAL_MODELS = {cls.name: cls for cls in (LudingHysteresis, ThorntonNing)}
+class CundallStrackSpring(LinearSpring):
+    """YADE FrictPhys against a wall (default geometry, wall radius R): K_n = 2 E R E R/(E R + E R) = E R, with E
+    Young's modulus, whatever the impact speed (engine dialect)."""
+    name = "yade-cundall-strack"
+
+    def parameters(self, contact, e_n, speed):
+        k = contact.E * contact.radius
+        return NormalParameters((k, 0.0, 0.0, 0.0), k, math.pi * math.sqrt(contact.mass / k))
+
+
+ENGINE_NORMAL_MODELS = {cls.name: cls for cls in (LudingHysteresis, ThorntonNing, CundallStrackSpring)}

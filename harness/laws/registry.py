@@ -10,7 +10,7 @@ from .tangential_damping import TangentialDashpot
 
 END_RULES = ("tension", "no-tension")
 INTEGRATORS = ("paper", "velocity-verlet", "leapfrog")
-SLIPS = ("lever", "noratch")
+SLIPS = ("lever", "noratch", "noratch-sphere")
 LEVERS = ("0", "0.5", "1")
 SUBMODEL_KEYS = ("normal", "damping", "end", "tangential", "tangential-damping", "integrator", "lever", "slip")
 
@@ -26,7 +26,8 @@ class Law:
     tangential_damping: TangentialDashpot = TangentialDashpot("none")
     integrator: str = "paper"            # time stepping: 'paper' (second order) or 'velocity-verlet' (LIGGGHTS)
     lever: float = 0.0                   # lever arm R - lever * alpha for slip and torque (paper 0, LIGGGHTS 1/2)
-    slip: str = "lever"                  # slip V_t - lever omega, or YADE's 'noratch' form (MODELS 5)
+    slip: str = "lever"                  # slip V_t - lever omega, or YADE's noRatch form with the wall's reference
+                                         # radius 1e8 R ('noratch', hertzian wall) or R ('noratch-sphere')
     summary: str = ""
     dialect: str = "paper"               # whose formulas these are: the paper's, or an engine's (MODELS 5)
 

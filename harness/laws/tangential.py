@@ -9,8 +9,8 @@ MINDLIN_FORMS = {"rescale": C.TANGENTIAL_MINDLIN_RESCALE, "incremental": C.TANGE
 
 
 def parse_ratio(text):
-    """'2/7', 'kappa' or a positive number -> float or the string 'kappa'."""
-    if text == "kappa":
+    """'2/7', 'kappa', 'nu' (Poisson's ratio: YADE CundallStrack) or a positive number -> float or the name."""
+    if text in ("kappa", "nu"):
         return text
     try:
         value = float(Fraction(str(text)))
@@ -29,10 +29,10 @@ class LinearTangential:
         self.kt_kn = parse_ratio(kt_kn)
 
     def label(self):
-        return f"linear(k_t/k_n={self.kt_kn if self.kt_kn == 'kappa' else round(self.kt_kn, 6)})"
+        return f"linear(k_t/k_n={self.kt_kn if isinstance(self.kt_kn, str) else round(self.kt_kn, 6)})"
 
     def parameter(self, contact, k_n):
-        ratio = contact.kappa if self.kt_kn == "kappa" else self.kt_kn
+        ratio = {"kappa": contact.kappa, "nu": contact.nu}.get(self.kt_kn, self.kt_kn)
         return ratio * k_n
 
 
@@ -69,7 +69,7 @@ class WaltonBraunTangential(LinearTangential):
     name, code = "walton-braun", C.TANGENTIAL_WALTON_BRAUN
 
     def label(self):
-        return f"walton-braun(k_t0/k_n={self.kt_kn if self.kt_kn == 'kappa' else round(self.kt_kn, 6)})"
+        return f"walton-braun(k_t0/k_n={self.kt_kn if isinstance(self.kt_kn, str) else round(self.kt_kn, 6)})"
 
 
 class ViscousTangential:

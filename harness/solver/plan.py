@@ -56,7 +56,8 @@ def plan_batch(law, scene, e_n, steps_per_contact):
         g_t = law.tangential_damping.ratio(dashpot, normal.linear_stiffness, constant_k_t, e_n)
         params[:, C.P_TDAMP] = 2.0 * g_t * np.sqrt(contact.mass)
     params[:, C.P_LEVER] = law.lever
-    params[:, C.P_SLIP_R1] = NORATCH_WALL_RADIUS * contact.radius if law.slip == "noratch" else 0.0
+    params[:, C.P_SLIP_R1] = {"noratch": NORATCH_WALL_RADIUS * contact.radius, "noratch-sphere": contact.radius}.get(
+        law.slip, 0.0)
     params[:, C.P_VZ0] = -v_n0
     params[:, C.P_VX0] = v_t0
     params[:, C.P_W0] = omega0
