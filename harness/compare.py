@@ -61,9 +61,10 @@ def compare(args):
     for status in statuses:
         if status.available:
             ADAPTERS[status.name].dialect(law.name, engine_options(args, status.name))   # bad options: exit 2 now
-    if scene.gravity and any(s.available for s in statuses):
-        statuses = [s if not s.available else type(s)(s.name, False, "engine decks do not model gravity")
-                    for s in statuses]
+    unsupported = ("engine inputs do not model gravity" if scene.gravity else
+                   "engine inputs use a wall of the sphere's own material" if scene.wall != "same" else None)
+    if unsupported:
+        statuses = [type(s)(s.name, False, unsupported) if s.available else s for s in statuses]
     os.makedirs(out_dir, exist_ok=True)
     results_path = os.path.join(out_dir, "results.csv")
     frames = []

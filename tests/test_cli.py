@@ -102,3 +102,11 @@ def test_compare_without_engines_runs_the_reference_and_names_what_it_skipped(tm
     assert "hertz-mindlin" in html and "data:image/png;base64," in html
     assert "skipped liggghts: liggghts is not installed" in proc.stdout and "skipped yade" in proc.stdout
     assert "agreement: no engine compared" in proc.stdout
+
+
+def test_compare_skips_engines_for_scenes_their_inputs_cannot_express(tmp_path):
+    proc = harness("compare", "--model", "hertz-mindlin", "--en", "0.5", "--angles", "0", "--wall", "rigid",
+                   "-o", str(tmp_path))
+    assert proc.returncode == 0
+    assert "skipped liggghts: engine inputs use a wall of the sphere's own material" in proc.stdout
+    assert "skipped yade: engine inputs use a wall of the sphere's own material" in proc.stdout
