@@ -153,12 +153,15 @@ def cmd_models(args):
                            "submodels": law.describe(), "engines": {"reference": "paper", **support(law.name)}}
                           for law in LAWS.values()], indent=2))
         return EXIT_OK
-    print(f"{'model':28s} {'normal':26s} {'damping':18s} {'end':11s} {'tangential':22s} engines")
+    rows = [("model", "normal", "damping", "end", "tangential", "engines")]
     for law in LAWS.values():
         d = law.describe()
-        engines = ", ".join(f"{e} ({m})" for e, m in support(law.name).items() if m)
-        print(f"{law.name:28s} {d['normal']:26s} {d['damping']:18s} {d['end']:11s} {d['tangential']:22s} "
-              f"reference{', ' + engines if engines else ''}{' [provisional]' if law.provisional else ''}")
+        engines = ", ".join(["reference"] + [f"{e} ({m})" for e, m in support(law.name).items() if m])
+        rows.append((law.name + (" [provisional]" if law.provisional else ""), d["normal"], d["damping"], d["end"],
+                     d["tangential"], engines))
+    widths = [max(len(row[i]) for row in rows) for i in range(5)]
+    for row in rows:
+        print("  ".join(cell.ljust(w) for cell, w in zip(row, widths)) + "  " + row[5])
     print("\nmaterials: " + ", ".join(MATERIALS))
     return EXIT_OK
 
