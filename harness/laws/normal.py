@@ -133,4 +133,27 @@ class CundallStrackSpring(LinearSpring):
         return NormalParameters((k, 0.0, 0.0, 0.0), k, math.pi * math.sqrt(contact.mass / k))
 
 
-ENGINE_NORMAL_MODELS = {cls.name: cls for cls in (LudingHysteresis, ThorntonNing, CundallStrackSpring)}
+class YadeLuding(LudingHysteresis):
+    """YADE LudingMat against a huge fixed sphere (engine dialect): k1 as the linear spring, kp = k1 (2/e^2 - 1),
+    DeltPMax = 2x the normal peak overlap, so k2 = K1/e^2 at the scene speed; DeltPNull = PhiF 2R* with
+    R* = R_big R/(R_big + R) of the huge sphere, kc = 0, G0 = 0."""
+    name, code = "yade-luding", C.NORMAL_LUDING_YADE
+    HUGE = 3e5      # radius of the fixed sphere standing in for the wall, in sphere radii: larger spheres lose the
+                    # overlap R1 + R2 - |x2 - x1| to round-off, smaller ones tilt their normal as the sphere slides
+
+    def parameters(self, contact, e_n, speed):
+        base = super().parameters(contact, e_n, speed)
+        k1, kp, d_p_max, _ = base.values
+        return NormalParameters((k1, kp, d_p_max, self.plasticity_depth(k1, kp, d_p_max, contact) * 2.0 *
+                                 self.reduced_radius(contact)), base.linear_stiffness, base.contact_time)
+
+    def reduced_radius(self, contact):
+        big = self.HUGE * contact.radius
+        return big * contact.radius / (big + contact.radius)
+
+    def plasticity_depth(self, k1, kp, d_p_max, contact):
+        """PhiF from DeltPMax = kp/(kp - k1) PhiF 2R* (YADE's equation (7) of Luding 2008)."""
+        return d_p_max * (kp - k1) / (kp * 2.0 * self.reduced_radius(contact))
+
+
+ENGINE_NORMAL_MODELS = {cls.name: cls for cls in (LudingHysteresis, ThorntonNing, CundallStrackSpring, YadeLuding)}

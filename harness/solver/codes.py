@@ -8,6 +8,7 @@ NORMAL_THORNTON = 3        # Hertz, linear plastic, Hertz unloading with R_p (MO
 NORMAL_STRONGE = 4         # Hertz, F_y (2 alpha/alpha_y - 1), Hertz unloading with R_c (MODELS 2.5)
 NORMAL_LUDING = 5          # LIGGGHTS hooke/hysteresis: k2 = k1 + (k2max - k1) d_max/d_lim (engine dialect)
 NORMAL_THORNTON_NING = 6   # LIGGGHTS thornton_ning: incremental 2E* a dd, a capped at a_y (engine dialect)
+NORMAL_LUDING_YADE = 7     # YADE Law2_ScGeom_LudingPhys_Basic, kc = 0 (engine dialect, leapfrog only)
 
 # end-of-contact rule
 END_ALPHA = 0              # tension allowed, contact ends when alpha returns to 0

@@ -13,12 +13,13 @@ import numpy as np
 from numba import njit, prange
 
 from . import codes as C
-from .normal_kernels import normal_elastic, thornton_ning
+from .normal_kernels import luding_yade, normal_elastic, thornton_ning
 from .tangential_kernels import N_TSTATE, after_cap, cap, spring_force, stiffness, viscous
 
 S_ALPHA, S_VZ, S_VX, S_W, S_AMAX, S_FN, S_FT, S_FS, S_NOLD, S_U, S_FEL, S_C = 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11
 S_FMAX, S_YIELD, S_DETACH = 12, 13, 14      # incremental engine laws (thornton_ning): F_max, yielded, detached at
-N_STATE = 15
+S_DNULL, S_DPREV = 15, 16                    # YADE Luding: plastic overlap DeltNull, previous overlap DeltPrev
+N_STATE = 17
 RELEASE_ITERATIONS = 100
 
 
@@ -124,7 +125,15 @@ def step_leapfrog(s, st, o, ot, p, ints, h, scratch):
     amax = s[S_AMAX] if s[S_AMAX] > alpha else alpha
     in_contact = alpha >= 0.0
     f_n, a = 0.0, 0.0
-    if in_contact:                                    # from overlap 0: a constant dashpot acts at first touch
+    o[S_DNULL], o[S_DPREV] = s[S_DNULL], alpha
+    if in_contact and ints[C.I_NORMAL] == C.NORMAL_LUDING_YADE:
+        f_el, amax, o[S_DNULL] = luding_yade(p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], alpha, s[S_AMAX],
+                                             s[S_DNULL], s[S_DPREV])
+        a = math.sqrt(radius * alpha)
+        f_n = f_el - (p[C.P_DAMP_C0] * s[S_VZ] if p[C.P_DAMP_C0] != 0.0 else 0.0)
+        if f_n < 0.0 and ints[C.I_END] == C.END_FORCE:
+            f_n = 0.0
+    elif in_contact:                                  # from overlap 0: a constant dashpot acts at first touch
         f_el, a = normal_elastic(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], radius, alpha, amax)
         c = p[C.P_DAMP_C0] * damping_power(alpha, p[C.P_DAMP_POWER]) if p[C.P_DAMP_C0] != 0.0 else 0.0
         f_n = f_el - c * s[S_VZ]

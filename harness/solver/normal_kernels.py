@@ -100,6 +100,32 @@ def thornton_ning(E_star, a_y, radius, alpha, alpha_old, f_old, alpha_max, f_max
 
 
 @njit(cache=True)
+def luding_yade(k1, kp, delt_p_max, delt_p_null, delt, delt_max, delt_null, delt_prev):
+    """YADE Law2_ScGeom_LudingPhys_Basic with kc = 0 (read in LudingPM.cpp): k2 from the previous largest overlap,
+    k2 = k1 + (kp - k1) DeltMax/DeltPMax (<= kp); a new maximum moves DeltNull = min((1 - k1/k2) DeltMax,
+    DeltPNull); force k1 d while k2 (d - DeltNull) >= k1 d (k2 line beyond DeltPMax), else k2 (d - DeltNull) down
+    to 0, where an unloading contact resets DeltMax = d k2/(k2 - k1). Returns (F, DeltMax, DeltNull)."""
+    k2 = kp if delt_max / delt_p_max >= 1.0 else k1 + (kp - k1) * delt_max / delt_p_max
+    if k2 > kp:
+        k2 = kp
+    if delt > delt_max:
+        delt_max = delt
+        delt_null = min((1.0 - k1 / k2) * delt_max, delt_p_null)
+    k2_delt = k2 * (delt - delt_null)
+    if k2_delt >= k1 * delt:
+        force = k1 * delt if delt < delt_p_max else k2_delt
+    elif k2_delt > 0.0:
+        force = k2_delt
+    elif delt - delt_prev < 0.0:
+        force = 0.0
+        delt_max = delt * k2 / (k2 - k1)
+        delt_null = min((1.0 - k1 / k2) * delt_max, delt_p_null)
+    else:
+        force = k2_delt
+    return force, delt_max, delt_null
+
+
+@njit(cache=True)
 def normal_elastic(code, p1, p2, p3, p4, radius, alpha, alpha_max):
     """Dispatch to the normal model selected by `code`; returns (F_el, contact radius a)."""
     if code == C.NORMAL_LINEAR:
