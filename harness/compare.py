@@ -4,7 +4,7 @@ import os
 import pandas as pd
 
 from .attribution import attribution
-from .comparison import AGREEMENT_TOLERANCE, agreement, deviation, findings
+from .comparison import agreement, deviation, findings
 from .engines import ADAPTERS, INSTALLED, engine_status
 from .engines.runner import EngineFailure
 from .engines.sweep import precision_gap, run_sweep
@@ -98,8 +98,7 @@ def compare(args):
             b, a, scene, lambda l, s: simulate(l, s, steps_per_contact=steps)[0])
     frame = pd.concat(frames, ignore_index=True)
     ran = [s.name for s in statuses if s.available]
-    agree = pd.concat([agreement(frame, name, *(ADAPTERS[name].agreement_tolerance(law.name) or (AGREEMENT_TOLERANCE, "")))
-                       for name in ran], ignore_index=True) if ran else pd.DataFrame()
+    agree = pd.concat([agreement(frame, name) for name in ran], ignore_index=True) if ran else pd.DataFrame()
     devs = pd.concat([deviation(frame, name, name) for name in ran], ignore_index=True) if ran else pd.DataFrame()
     cross = deviation(frame, ran[1], ran[1], against=(ran[0], ran[0])) if len(ran) == 2 else pd.DataFrame()
     found = findings(frame)
@@ -115,8 +114,8 @@ def compare(args):
             print(f"skipped {name}: {reason}")
         if ran:
             print("\nagreement (engine vs its dialect in the reference, equal dt):")
-            print(text_table(agree, ["engine", "metric", "max_rel_diff", "e_n_target", "theta_deg", "tolerance", "pass",
-                                     "note"], {"max_rel_diff": "{:.2e}", "tolerance": "{:.0e}"}))
+            print(text_table(agree, ["engine", "metric", "max_rel_diff", "e_n_target", "theta_deg", "tolerance", "pass"],
+                             {"max_rel_diff": "{:.2e}", "tolerance": "{:.0e}"}))
             print("\ndeviation (engine vs the paper law):")
             print(text_table(devs, ["engine", "e_n_target", "metric", "max_abs_diff", "theta_deg", "paper",
                                     "engine_value"], {"max_abs_diff": "{:.4g}", "paper": "{:.5g}",

@@ -21,16 +21,15 @@ def relative_difference(value, reference, scale):
     return np.abs(value - reference) / np.maximum(np.abs(reference), 1e-9 * scale)
 
 
-def agreement(frame, engine, tolerance=AGREEMENT_TOLERANCE, reason=""):
-    """Per metric: max relative difference engine vs reference dialect at equal dt, where, and pass/fail; a law
-    whose engine set-up limits agreement above round-off carries its own tolerance and the reason."""
+def agreement(frame, engine):
+    """Per metric: max relative difference engine vs reference dialect at equal dt, where, and pass/fail."""
     pairs = _pair(frame, {"engine": engine, "dialect": engine}, {"engine": "reference", "dialect": engine})
     pairs = pairs[pairs.status == "ok"]
     rows = []
     for metric in AGREEMENT_METRICS:
         if pairs.empty:
             rows.append({"engine": engine, "metric": metric, "max_rel_diff": np.nan, "e_n_target": np.nan,
-                         "theta_deg": np.nan, "tolerance": tolerance, "pass": False, "note": reason})
+                         "theta_deg": np.nan, "tolerance": AGREEMENT_TOLERANCE, "pass": False})
             continue
         scale = pairs.v_n0.abs().max() + pairs.v_t0.abs().max()
         if metric == "omega1":
@@ -39,7 +38,7 @@ def agreement(frame, engine, tolerance=AGREEMENT_TOLERANCE, reason=""):
         worst = int(np.nanargmax(diff))
         rows.append({"engine": engine, "metric": metric, "max_rel_diff": float(diff[worst]),
                      "e_n_target": float(pairs.e_n_target.iloc[worst]), "theta_deg": float(pairs.theta_deg.iloc[worst]),
-                     "tolerance": tolerance, "pass": bool(diff[worst] <= tolerance), "note": reason})
+                     "tolerance": AGREEMENT_TOLERANCE, "pass": bool(diff[worst] <= AGREEMENT_TOLERANCE)})
     return pd.DataFrame(rows)
 
 

@@ -156,14 +156,7 @@ def test_engine_agrees_with_its_yade_dialect_at_equal_dt(name, options, e_n, ome
     engine = np.column_stack([final["v_n1"], final["v_t1"], final["omega1"]])
     reference = out[:, [C.O_VZ, C.O_VX, C.O_W]]
     scale = np.array([1.0, 1.0, 1.0 / scene.radius]) * scene.speed
-    tolerance, _ = yade.agreement_tolerance(name) or (1e-6, "")
-    assert (np.abs(engine - reference) / np.maximum(np.abs(reference), 1e-9 * scale)).max() < tolerance
-
-
-def test_only_the_huge_sphere_set_up_has_a_looser_tolerance_and_says_why():
-    assert [law for law in yade.MODELS if yade.agreement_tolerance(law)] == ["walton-braun"]
-    tolerance, reason = yade.agreement_tolerance("walton-braun")
-    assert tolerance <= 1e-5 and "round-off" in reason and "tilts" in reason
+    assert (np.abs(engine - reference) / np.maximum(np.abs(reference), 1e-9 * scale)).max() < 1e-6
 
 
 @needs_yade

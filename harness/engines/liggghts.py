@@ -111,11 +111,6 @@ def _version(path):
     return match.group(1) if match else "unknown"
 
 
-def agreement_tolerance(law_name):
-    """Every LIGGGHTS dialect is matched to round-off."""
-    return None
-
-
 def supports(law_name):
     return law_name in MODELS and law_name in DIALECTS
 

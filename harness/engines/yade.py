@@ -29,14 +29,7 @@ DIALECTS = {                    # sub-models that make the paper law compute wha
     "walton-braun": {"normal": "yade-luding", "end": "no-tension", "tangential": "linear:2/7",
                      "tangential-damping": "none", "integrator": "leapfrog", "lever": "0.5"},
 }
-LINEAR_LAWS = ("viscel", "cundall-strack")
-LOOSER_AGREEMENT = {            # law -> (tolerance, why the engine cannot be matched to round-off)
-    "walton-braun": (1e-5, "YADE computes the overlap with the huge stand-in sphere as R1 + R2 - |x2 - x1| at a "
-                           "scale of 1.5 km (round-off ~1e-13 m a step) and its normal tilts by 1e-7 rad as the "
-                           "sphere slides; measured up to 2e-6 at e_n = 0.1"),
-}     # YADE's two linear laws for linear-spring-dashpot (option 'linear')
-
-
+LINEAR_LAWS = ("viscel", "cundall-strack")     # YADE's two linear laws for linear-spring-dashpot (option 'linear')
 CUNDALL_STRACK = {             # K_n = E R, K_s = nu K_n, no damping (e = 1 whatever e_n), noRatch slip with the
     "normal": "yade-cundall-strack", "damping": "none", "end": "tension",  # default wall geometry (r1 = R),
     "tangential": "linear:nu", "tangential-damping": "none",                 # torque lever R - d/2
@@ -94,11 +87,6 @@ def _version(library):
                 if match:
                     return match.group(1)
     return "unknown"
-
-
-def agreement_tolerance(law_name):
-    """(tolerance, reason) for laws whose set-up limits agreement above round-off; None for the others."""
-    return LOOSER_AGREEMENT.get(law_name)
 
 
 def supports(law_name):

@@ -138,8 +138,8 @@ class YadeLuding(LudingHysteresis):
     DeltPMax = 2x the normal peak overlap, so k2 = K1/e^2 at the scene speed; DeltPNull = PhiF 2R* with
     R* = R_big R/(R_big + R) of the huge sphere, kc = 0, G0 = 0."""
     name, code = "yade-luding", C.NORMAL_LUDING_YADE
-    HUGE = 3e5      # radius of the fixed sphere standing in for the wall, in sphere radii: larger spheres lose the
-                    # overlap R1 + R2 - |x2 - x1| to round-off, smaller ones tilt their normal as the sphere slides
+    HUGE = 3e5      # radius of the fixed sphere standing in for the wall, in sphere radii (the kernel reproduces
+                    # YADE's sphere-sphere geometry with it: overlap round-off, tilting normal, rotated shear force)
 
     def parameters(self, contact, e_n, speed):
         base = super().parameters(contact, e_n, speed)
@@ -147,8 +147,12 @@ class YadeLuding(LudingHysteresis):
         return NormalParameters((k1, kp, d_p_max, self.plasticity_depth(k1, kp, d_p_max, contact) * 2.0 *
                                  self.reduced_radius(contact)), base.linear_stiffness, base.contact_time)
 
+    def stand_in_radius(self, contact):
+        """Radius of the fixed sphere that plays the wall (the kernel then uses YADE's sphere-sphere geometry)."""
+        return self.HUGE * contact.radius
+
     def reduced_radius(self, contact):
-        big = self.HUGE * contact.radius
+        big = self.stand_in_radius(contact)
         return big * contact.radius / (big + contact.radius)
 
     def plasticity_depth(self, k1, kp, d_p_max, contact):

@@ -19,7 +19,8 @@ from .tangential_kernels import N_TSTATE, after_cap, cap, spring_force, stiffnes
 S_ALPHA, S_VZ, S_VX, S_W, S_AMAX, S_FN, S_FT, S_FS, S_NOLD, S_U, S_FEL, S_C = 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11
 S_FMAX, S_YIELD, S_DETACH = 12, 13, 14      # incremental engine laws (thornton_ning): F_max, yielded, detached at
 S_DNULL, S_DPREV = 15, 16                    # YADE Luding: plastic overlap DeltNull, previous overlap DeltPrev
-N_STATE = 17
+S_X, S_Z, S_NX, S_NZ, S_SX, S_SZ = 17, 18, 19, 20, 21, 22   # stand-in sphere: position, normal, shear force
+N_STATE = 23
 RELEASE_ITERATIONS = 100
 
 
@@ -222,10 +223,72 @@ def step_velocity_verlet(s, st, o, ot, p, ints, h, scratch):
 
 
 @njit(cache=True, inline="always")
+def step_leapfrog_sphere(s, st, o, ot, p, ints, h, scratch):
+    """YADE Luding against a fixed sphere of radius R_big standing in for the wall, with YADE's own geometry:
+    overlap (R_big + R) - |x2 - x1|, normal along x2 - x1, contact point in the middle of the overlap, shear force
+    rotated with the normal (ScGeom::rotate), forces and torque from the contact-point branch; leapfrog as above."""
+    m, inertia, radius, big = p[C.P_MASS], p[C.P_INERTIA], p[C.P_RADIUS], p[C.P_BIG_R]
+    dx, dz = s[S_X], s[S_Z] + big
+    norm = math.sqrt(dx * dx + 0.0 + dz * dz)
+    delt = (big + radius) - norm
+    for k in range(N_STATE):
+        o[k] = s[k]
+    if delt < 0.0:                                    # contact over: no force this step, history erased
+        fx, fz, torque = 0.0, 0.0, 0.0
+        in_contact = False
+    else:
+        in_contact = True
+        nx, nz = dx / norm, dz / norm
+        if s[S_NX] != 0.0 or s[S_NZ] != 0.0:          # ScGeom::rotate about prevNormal x normal (no twist in-plane)
+            axis = s[S_NZ] * nx - s[S_NX] * nz        # y component of prevNormal x normal
+            sx, sz = s[S_SX], s[S_SZ]
+            sx, sz = sx + axis * sz, sz - axis * sx
+        else:
+            sx, sz = 0.0, 0.0
+        f_hys, dmax, o[S_DNULL] = luding_yade(p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], delt, s[S_AMAX],
+                                              s[S_DNULL], s[S_DPREV])
+        o[S_AMAX], o[S_DPREV] = dmax, delt
+        reach = big - 0.5 * delt                      # contact point: big sphere centre + reach n
+        cx, cz = reach * nx - s[S_X], (-big + reach * nz) - s[S_Z]
+        wy = s[S_W]
+        rvx, rvz = -(s[S_VX] + wy * cz), -(s[S_VZ] - wy * cx)
+        vn = nx * rvx + nz * rvz
+        svx, svz = rvx - vn * nx, rvz - vn * nz
+        sx, sz = sx + p[C.P_T1] * h * svx, sz + p[C.P_T1] * h * svz
+        g0 = p[C.P_DAMP_C0]
+        normal = f_hys + g0 * vn
+        max_fs = normal * normal * p[C.P_MU] * p[C.P_MU]
+        visc_x, visc_z = 0.0, 0.0
+        if sx * sx + sz * sz > max_fs:
+            ratio = math.sqrt(max_fs) / math.sqrt(sx * sx + sz * sz)
+            sx, sz = sx * ratio, sz * ratio
+        else:
+            visc_x, visc_z = g0 * svx, g0 * svz
+        fx = normal * nx + sx + visc_x
+        fz = normal * nz + sz + visc_z
+        torque = cz * fx - cx * fz
+        o[S_NX], o[S_NZ], o[S_SX], o[S_SZ] = nx, nz, sx, sz
+        o[S_FN] = normal
+    if not in_contact:
+        o[S_NX], o[S_NZ], o[S_SX], o[S_SZ], o[S_FN] = 0.0, 0.0, 0.0, 0.0, 0.0
+    o[S_VX] = s[S_VX] + h * fx / m
+    o[S_VZ] = s[S_VZ] + h * fz / m
+    o[S_W] = s[S_W] + h * torque / inertia
+    o[S_X] = s[S_X] + h * o[S_VX]
+    o[S_Z] = s[S_Z] + h * o[S_VZ]
+    o[S_ALPHA] = delt
+    for k in range(N_TSTATE):
+        ot[k] = st[k]
+    return 1.0 if in_contact else -1.0
+
+
+@njit(cache=True, inline="always")
 def advance(s, st, o, ot, p, ints, h, scratch):
     """One step of the row's integrator."""
     if ints[C.I_INTEGRATOR] == C.INTEGRATOR_VELOCITY_VERLET:
         return step_velocity_verlet(s, st, o, ot, p, ints, h, scratch)
+    if ints[C.I_INTEGRATOR] == C.INTEGRATOR_LEAPFROG and p[C.P_BIG_R] > 0.0:
+        return step_leapfrog_sphere(s, st, o, ot, p, ints, h, scratch)
     if ints[C.I_INTEGRATOR] == C.INTEGRATOR_LEAPFROG:
         return step_leapfrog(s, st, o, ot, p, ints, h, scratch)
     return step(s, st, o, ot, p, ints, h, scratch)
@@ -259,6 +322,7 @@ def integrate(params, ints, out, history, stride):
         s[S_VZ], s[S_VX], s[S_W] = p[C.P_VZ0], p[C.P_VX0], p[C.P_W0]
         s[S_U] = -p[C.P_MASS] * p[C.P_VZ0]
         s[S_DETACH] = -1.0
+        s[S_Z] = p[C.P_RADIUS]                        # stand-in sphere: centre at R above its apex
         if p[C.P_DAMP_POWER] == 0.0:
             s[S_FN] = -p[C.P_DAMP_C0] * p[C.P_VZ0]   # a constant dashpot acts from first touch
             s[S_C] = p[C.P_DAMP_C0]

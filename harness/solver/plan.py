@@ -56,6 +56,7 @@ def plan_batch(law, scene, e_n, steps_per_contact):
         g_t = law.tangential_damping.ratio(dashpot, normal.linear_stiffness, constant_k_t, e_n)
         params[:, C.P_TDAMP] = 2.0 * g_t * np.sqrt(contact.mass)
     params[:, C.P_LEVER] = law.lever
+    params[:, C.P_BIG_R] = law.normal.stand_in_radius(contact) if hasattr(law.normal, "stand_in_radius") else 0.0
     params[:, C.P_SLIP_R1] = {"noratch": NORATCH_WALL_RADIUS * contact.radius, "noratch-sphere": contact.radius}.get(
         law.slip, 0.0)
     params[:, C.P_VZ0] = -v_n0
