@@ -222,6 +222,32 @@ def cmd_render(args):
     return EXIT_OK
 
 
+def cmd_baseline(args):
+    from .baseline import update
+    if not args.update:
+        raise UserError("baseline rewrites the committed expectations only with --update")
+    frame, skipped = update(args.baseline)
+    for line in skipped:
+        print(f"skipped {line}")
+    print(f"wrote {len(frame)} rows to {args.baseline}")
+    return EXIT_OK
+
+
+def cmd_check(args):
+    from .baseline import check
+    from .compare import text_table
+    failures, skipped = check(args.baseline)
+    for line in skipped:
+        print(f"skipped {line}")
+    if failures.empty:
+        print("check: every metric within tolerance")
+        return EXIT_OK
+    print(f"check: {len(failures)} metric(s) outside tolerance")
+    print(text_table(failures, list(failures.columns), {"baseline": "{:.10g}", "now": "{:.10g}",
+                                                        "rel_diff": "{:.2e}", "tolerance": "{:.0e}"}))
+    return EXIT_DISAGREE
+
+
 def cmd_compare(args):
     from .compare import compare
     return compare(args)
@@ -248,6 +274,13 @@ def build_parser():
     p.add_argument("-o", "--output", required=True, metavar="DIR", help="directory for the inputs")
     p.add_argument("--quiet", action="store_true", help="print nothing on success")
     p.set_defaults(func=cmd_render)
+    p = sub.add_parser("baseline", help="rewrite the committed baseline matrix (reference/ by default)")
+    p.add_argument("--update", action="store_true", help="required: rewriting expectations is deliberate")
+    p.add_argument("--baseline", default="reference", metavar="DIR", help="baseline directory (default %(default)s)")
+    p.set_defaults(func=cmd_baseline)
+    p = sub.add_parser("check", help="recompute the baseline matrix; exit 1 listing every metric outside tolerance")
+    p.add_argument("--baseline", default="reference", metavar="DIR", help="baseline directory (default %(default)s)")
+    p.set_defaults(func=cmd_check)
     p = sub.add_parser("compare", help="reference vs every available engine; tables, results.csv, report.html")
     p.add_argument("--model", required=True, help="law name (see `harness models`)")
     p.add_argument("--engines", default=None, help="comma-separated engines (default: all that support the law)")

@@ -1,0 +1,91 @@
+"""Baselines: the expected rebound kinematics of a fixed matrix (every law through the reference and through each
+engine that supports it), committed under reference/, and the regression check against them."""
+import os
+
+import numpy as np
+import pandas as pd
+
+from .engines import ADAPTERS, engine_status
+from .errors import UserError
+from .laws import LAWS, compose
+from .results import read_csv, write_csv
+from .scene import Scene
+
+BASELINE_FILE = "baseline.csv"
+MATRIX_EN = (0.9, 0.5, 0.1)
+MATRIX_ANGLES = (0.0, 30.0, 60.0)
+STEPS_PER_CONTACT = 200
+METRICS = ("v_n1", "v_t1", "omega1", "e_n", "e_t", "omega_star", "psi2_star", "t_contact", "f_n_max")
+KEYS = ["model", "engine", "dialect", "e_n_target", "theta_deg"]
+# relative tolerance (floor 1e-9 of the metric's scale): the reference is deterministic; an engine build may move
+TOLERANCE = {"reference": 1e-9, "engine": 1e-6}
+
+
+def matrix_scene():
+    return Scene(e_n=MATRIX_EN, angles_deg=MATRIX_ANGLES)
+
+
+def compute(progress=None):
+    """The baseline matrix now: paper law and dialects on the reference, engines where installed; (frame, skipped)."""
+    from .engines.sweep import run_sweep
+    from .solver.reference import simulate
+    scene = matrix_scene()
+    frames, skipped = [], []
+    for name in LAWS:
+        law = compose(name)
+        frames.append(simulate(law, scene, steps_per_contact=STEPS_PER_CONTACT)[0])
+        for engine, adapter in ADAPTERS.items():
+            status = engine_status(engine, name)
+            if not status.available:
+                if name in adapter.MODELS:
+                    skipped.append(f"{engine} {name}: {status.reason}")
+                continue
+            frames.append(simulate(adapter.dialect(name), scene, steps_per_contact=STEPS_PER_CONTACT)[0])
+            engine_frames, failures = run_sweep(adapter, law, scene, STEPS_PER_CONTACT)
+            frames += engine_frames
+            skipped += [f"{engine} {name} e_n={f.e_n}: {f.message}" for f in failures]
+        if progress:
+            progress(name)
+    return pd.concat(frames, ignore_index=True), skipped
+
+
+def update(directory):
+    """Rewrite DIRECTORY/baseline.csv from a fresh computation."""
+    os.makedirs(directory, exist_ok=True)
+    frame, skipped = compute()
+    write_csv(frame, os.path.join(directory, BASELINE_FILE))
+    return frame, skipped
+
+
+def compare_to_baseline(baseline, now):
+    """Rows (model, engine, dialect, e_n, angle, metric, baseline, now, rel_diff, tolerance) outside tolerance."""
+    merged = baseline.merge(now, on=KEYS, suffixes=("_base", "_now"), how="left")
+    out = []
+    for metric in METRICS:
+        base, current = merged[f"{metric}_base"].to_numpy(float), merged[f"{metric}_now"].to_numpy(float)
+        scale = np.nanmax(np.abs(base)) if np.any(np.isfinite(base)) else 1.0
+        tol = np.where(merged.engine == "reference", TOLERANCE["reference"], TOLERANCE["engine"])
+        both_nan = np.isnan(base) & np.isnan(current)
+        rel = np.abs(current - base) / np.maximum(np.abs(base), 1e-9 * scale)
+        bad = ~both_nan & ~(rel <= tol)
+        for i in np.flatnonzero(bad):
+            out.append({**{k: merged[k].iloc[i] for k in KEYS}, "metric": metric, "baseline": base[i],
+                        "now": current[i], "rel_diff": rel[i], "tolerance": tol[i]})
+    return pd.DataFrame(out, columns=KEYS + ["metric", "baseline", "now", "rel_diff", "tolerance"])
+
+
+def check(directory, now=None):
+    """Recompute the matrix (unless given) and list every metric outside tolerance; rows of absent engines are
+    reported as skipped, not as failures."""
+    path = os.path.join(directory, BASELINE_FILE)
+    if not os.path.exists(path):
+        raise UserError(f"no baseline at {path}; create it with `harness baseline --update --baseline {directory}`")
+    baseline = read_csv(path)
+    skipped = []
+    if now is None:
+        now, skipped = compute()
+    ran = set(now.engine.unique())
+    missing = sorted(set(baseline.engine.unique()) - ran)
+    skipped += [f"{engine}: not run here, its baseline rows were not checked" for engine in missing]
+    baseline = baseline[baseline.engine.isin(ran)]
+    return compare_to_baseline(baseline, now), skipped

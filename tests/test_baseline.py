@@ -1,0 +1,62 @@
+"""Regression check against the committed baseline (reference/baseline.csv)."""
+from pathlib import Path
+
+import pandas as pd
+import pytest
+
+from harness import baseline
+from harness.laws import compose
+from harness.results import read_csv, write_csv
+from harness.solver.reference import simulate
+
+REFERENCE = Path(__file__).resolve().parent.parent / "reference"
+
+
+@pytest.fixture(scope="module")
+def now():
+    frame, _ = baseline.compute()
+    return frame
+
+
+def test_committed_baseline_holds(now):
+    failures, skipped = baseline.check(str(REFERENCE), now=now)
+    assert failures.empty, failures.to_string()
+
+
+def test_perturbed_baseline_value_is_named(now, tmp_path):
+    frame = read_csv(REFERENCE / baseline.BASELINE_FILE)
+    row = frame.index[(frame.model == "thornton") & (frame.engine == "reference") & (frame.theta_deg == 30.0)][0]
+    frame.loc[row, "e_t"] *= 1.0 + 1e-7                   # beyond the reference's 1e-9 tolerance
+    write_csv(frame, tmp_path / baseline.BASELINE_FILE)
+    failures, _ = baseline.check(str(tmp_path), now=now)
+    assert len(failures) == 1
+    assert failures.iloc[0].metric == "e_t" and failures.iloc[0].model == "thornton"
+
+
+def test_engine_rows_have_a_looser_tolerance(now, tmp_path):
+    frame = read_csv(REFERENCE / baseline.BASELINE_FILE)
+    engines = frame.engine != "reference"
+    if not engines.any():
+        pytest.skip("no engine rows in the baseline")
+    frame.loc[engines, "v_t1"] *= 1.0 + 1e-8              # within the engines' 1e-6
+    write_csv(frame, tmp_path / baseline.BASELINE_FILE)
+    failures, _ = baseline.check(str(tmp_path), now=now)
+    assert failures.empty
+
+
+def test_deliberately_broken_damping_is_caught(now, monkeypatch):
+    """Scale the Appendix-B damping by 1.01: the hertz-mindlin paper rows move and the check names them."""
+    from harness.laws import calibration
+    original = calibration.thornton_appendix_b_g
+    monkeypatch.setattr(calibration, "thornton_appendix_b_g", lambda e: 1.01 * original(e))
+    broken = simulate(compose("hertz-mindlin"), baseline.matrix_scene(), steps_per_contact=baseline.STEPS_PER_CONTACT)[0]
+    keep = ~((now.model == "hertz-mindlin") & (now.engine == "reference") & (now.dialect == "paper"))
+    failures, _ = baseline.check(str(REFERENCE), now=pd.concat([now[keep], broken], ignore_index=True))
+    assert not failures.empty
+    assert set(failures.model) == {"hertz-mindlin"} and "e_n" in set(failures.metric)
+
+
+def test_check_without_baseline_is_a_user_error(tmp_path):
+    from harness.errors import UserError
+    with pytest.raises(UserError, match="no baseline"):
+        baseline.check(str(tmp_path))
