@@ -105,7 +105,8 @@ def compare(args):
     skipped = [(s.name, s.reason) for s in statuses if not s.available]
     report = write_report(out_dir, frame, law=law, scene=scene, skipped=skipped, agreement=agree, deviation=devs,
                           cross=cross, attributions=attributions, findings=found, failures=failures,
-                          precision=pd.DataFrame([precision]) if precision else None)
+                          precision=pd.DataFrame([precision]) if precision else None,
+                          histories=normal_histories(law, scene, steps))
     ok = bool(agree["pass"].all()) if not agree.empty else True
     if not args.quiet:
         print(f"{law.name}: paper law on the reference engine, {sum(frame.engine == 'reference')} rows")
@@ -142,6 +143,14 @@ def compare(args):
         print(f"\nwrote {results_path} and {report}")
     print("agreement: " + ("no engine compared" if not ran else "ok" if ok else "FAILED"))
     return 0 if ok else 1
+
+
+def normal_histories(law, scene, steps):
+    """Force histories of the paper law's normal impact at the scene speed, one per e_n (for the report)."""
+    from dataclasses import replace
+    from .solver.reference import simulate
+    normal = replace(scene, angles_deg=(0.0,), psi1_star=None, v_t=None)
+    return simulate(law, normal, steps_per_contact=steps, history_points=400)[1]
 
 
 def engine_options(args, engine):

@@ -5,6 +5,7 @@ import os
 from pathlib import Path
 
 import jinja2
+import numpy as np
 
 from .kinematics import CONVENTIONS
 
@@ -16,32 +17,6 @@ def figure_png(fig):
     buffer = io.BytesIO()
     fig.savefig(buffer, format="png", dpi=90, bbox_inches="tight")
     return base64.b64encode(buffer.getvalue()).decode("ascii")
-
-
-def normalised_figure(frame, chi):
-    """Psi2* and Omega* against Psi1*, one curve per e_n, with the rigid-body sliding lines (MODELS 4)."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4.2))
-    for e_n, group in frame.groupby("e_n_target", sort=False):
-        group = group.sort_values("psi1_star")
-        left.plot(group.psi1_star, group.psi2_star, marker=".", label=f"e_n = {e_n:g}")
-        right.plot(group.psi1_star, group.omega_star, marker=".", label=f"e_n = {e_n:g}")
-    top = min(float(frame.psi1_star.max()), 5.0 * chi)       # the paper's range; grazing angles go far beyond
-    left.plot([2 * chi, top], [0.0, top - 2 * chi], "k--", lw=1, label="sliding: Psi2* = Psi1* - 2 chi")
-    left.set_xlim(0.0, top)
-    right.set_xlim(0.0, top)
-    left.set_ylim(-top / 2.0, top - 2 * chi + 0.5)
-    right.axhline(2.5, color="k", ls="--", lw=1, label="sliding: Omega* = 5/2")
-    left.set(xlabel="Psi1*", ylabel="Psi2*")
-    right.set(xlabel="Psi1*", ylabel="Omega*")
-    for ax in (left, right):
-        ax.grid(alpha=0.3)
-        ax.legend(fontsize=8)
-    png = figure_png(fig)
-    plt.close(fig)
-    return png
 
 
 def records(table):
@@ -61,16 +36,93 @@ def engines_ran(frame):
             for engine, group in frame.groupby("engine", sort=False)]
 
 
+PANELS = (   # (title, x column, y columns, sliding-line kind)
+    ("Psi2* against Psi1*", "psi1_star", ("psi2_star",), "psi2"),
+    ("Omega* against Psi1*", "psi1_star", ("omega_star",), "omega"),
+    ("e_t against impact angle", "theta_deg", ("e_t",), None),
+    ("rebound angles (centre, contact point) against impact angle", "theta_deg",
+     ("theta_r_com_deg", "theta_r_cp_deg"), None),
+)
+
+
+def series_figure(frame, title, x, ys, sliding, chi):
+    """One panel per e_n; one curve per (engine, dialect) and y column, with the rigid-body sliding line."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    groups = list(frame.groupby("e_n_target", sort=False))
+    fig, axes = plt.subplots(1, len(groups), figsize=(3.6 * len(groups), 3.4), squeeze=False)
+    top = min(float(frame.psi1_star.max()), 5.0 * chi) if x == "psi1_star" else None
+    for ax, (e_n, group) in zip(axes[0], groups):
+        for (engine, dialect), series in group.groupby(["engine", "dialect"], sort=False):
+            series = series.sort_values(x)
+            for y in ys:
+                suffix = "" if len(ys) == 1 else (" centre" if "com" in y else " contact pt")
+                ax.plot(series[x], series[y], marker=".", ms=3, lw=1, label=f"{engine}/{dialect}{suffix}")
+        if sliding == "psi2" and top:
+            ax.plot([2 * chi, top], [0.0, top - 2 * chi], "k--", lw=1, label="rigid sliding")
+        if sliding == "omega":
+            ax.axhline(2.5, color="k", ls="--", lw=1, label="rigid sliding")
+        if top:
+            ax.set_xlim(0.0, top)
+        ax.set(title=f"e_n = {e_n:g}", xlabel=x.replace("_star", "*").replace("_deg", " [deg]"))
+        ax.grid(alpha=0.3)
+    axes[0][0].set_ylabel(", ".join(ys))
+    axes[0][-1].legend(fontsize=7)
+    fig.suptitle(title)
+    png = figure_png(fig)
+    plt.close(fig)
+    return png
+
+
+def force_figure(histories, contact, speed):
+    """Normal impact: force against time and against overlap, one curve per e_n (paper law)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4))
+    for e_n, history in histories.items():
+        h = history[0][~np.isnan(history[0][:, 0])]
+        left.plot(h[:, 0] * 1e6, h[:, 2], label=f"e_n = {e_n:g}")
+        right.plot(h[:, 1] * 1e6, h[:, 2], label=f"e_n = {e_n:g}")
+    left.set(xlabel="t [us]", ylabel="F_n [N]", title="force against time")
+    right.set(xlabel="overlap [um]", ylabel="F_n [N]", title="force against overlap")
+    for ax in (left, right):
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+    png = figure_png(fig)
+    plt.close(fig)
+    return png
+
+
+def hertz_ratios(normal, contact, speed):
+    """Contact time and peak force of the normal impacts against elastic Hertz at the same speed (MODELS 4)."""
+    alpha = (15.0 * contact.mass * speed ** 2 / (16.0 * contact.E_star * np.sqrt(contact.radius))) ** 0.4
+    t_h = 2.94328 * alpha / speed
+    f_h = 4.0 / 3.0 * contact.E_star * np.sqrt(contact.radius) * alpha ** 1.5
+    table = normal[["e_n_target", "e_n", "t_contact", "f_n_max"]].copy()
+    table["t_c/t_Hertz"] = table.t_contact / t_h
+    table["F_max/F_Hertz"] = table.f_n_max / f_h
+    return table
+
+
 def write_report(out_dir, frame, law, scene, skipped, agreement=None, deviation=None, cross=None, attributions=None,
-                 findings=None, failures=(), precision=None):
+                 findings=None, failures=(), precision=None, histories=None):
     """Render DIR/report.html (self-contained) and return its path."""
     env = jinja2.Environment(loader=jinja2.FileSystemLoader(str(TEMPLATES)), autoescape=True,
                              undefined=jinja2.StrictUndefined)
     figures = []
     paper = frame[(frame.engine == "reference") & (frame.dialect == "paper")]
-    if (paper.psi1_star > 0).any():
-        figures.append(("Normalised rebound of the paper law: Psi2* and Omega* against Psi1*",
-                        normalised_figure(paper, scene.contact.chi)))
+    oblique = frame[frame.psi1_star > 0]
+    if not oblique.empty:
+        for title, x, ys, sliding in PANELS:
+            figures.append((f"{law.name}: {title}, every engine and dialect",
+                            series_figure(oblique, title, x, ys, sliding, scene.contact.chi)))
+    normal_rows = paper[paper.theta_deg == 0.0]
+    ratios = records(hertz_ratios(normal_rows, scene.contact, scene.speed)) if not normal_rows.empty else None
+    if histories:
+        figures.append((f"{law.name}: normal impact, force against time and overlap (paper law)",
+                        force_figure(histories, scene.contact, scene.speed)))
     summary = paper.groupby("e_n_target", sort=False).agg(
         e_n_min=("e_n", "min"), e_n_max=("e_n", "max"), e_t_min=("e_t", "min"), e_t_max=("e_t", "max"),
         t_contact_max=("t_contact", "max"), f_n_max=("f_n_max", "max"), ke_ratio_max=("ke_ratio", "max"),
@@ -79,7 +131,7 @@ def write_report(out_dir, frame, law, scene, skipped, agreement=None, deviation=
         law=law, submodels=law.describe(), scene=scene, conventions=CONVENTIONS, figures=figures,
         summary=summary.to_dict("records"), skipped=skipped, rows=len(frame), ran=engines_ran(frame), agreement=records(agreement),
         deviation=records(deviation), cross=records(cross), findings=records(findings), failures=failures,
-        precision=records(precision),
+        precision=records(precision), ratios=ratios,
         attributions=[(name, records(table)) for name, table in (attributions or {}).items()])
     path = os.path.join(out_dir, "report.html")
     tmp = path + ".tmp"
