@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
-# Set up harness on Debian 12 (as root): engines and a headless browser from Debian, the package in ./.venv.
+# Set up harness on Debian 12 (as root): the engines and a headless browser (for the report test) from Debian,
+# the package in ./.venv.
 # An engine that cannot be installed is reported and skipped later; the reference engine always works.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export DEBIAN_FRONTEND=noninteractive
 if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
   missing=""
-  for pkg in python3-venv liggghts yade; do
+  for pkg in python3-venv liggghts yade chromium chromium-driver; do
     dpkg -s "$pkg" >/dev/null 2>&1 || missing="$missing $pkg"
   done
   if [ -n "$missing" ]; then
