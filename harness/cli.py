@@ -248,6 +248,12 @@ def cmd_check(args):
     return EXIT_DISAGREE
 
 
+def cmd_report(args):
+    from .publish import rebuild
+    print(f"wrote {rebuild(args.directory)}")
+    return EXIT_OK
+
+
 def cmd_compare(args):
     from .compare import compare
     return compare(args)
@@ -274,6 +280,9 @@ def build_parser():
     p.add_argument("-o", "--output", required=True, metavar="DIR", help="directory for the inputs")
     p.add_argument("--quiet", action="store_true", help="print nothing on success")
     p.set_defaults(func=cmd_render)
+    p = sub.add_parser("report", help="rebuild DIR/report.html from a compare directory, simulating nothing")
+    p.add_argument("directory", metavar="DIR")
+    p.set_defaults(func=cmd_report)
     p = sub.add_parser("baseline", help="rewrite the committed baseline matrix (reference/ by default)")
     p.add_argument("--update", action="store_true", help="required: rewriting expectations is deliberate")
     p.add_argument("--baseline", default="reference", metavar="DIR", help="baseline directory (default %(default)s)")

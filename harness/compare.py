@@ -50,7 +50,7 @@ def text_table(frame, columns, formats=None):
 def compare(args):
     """Run, write DIR/results.csv (after every batch) and DIR/report.html; 0 when every agreement holds."""
     from .cli import law_from_args, scene_from_args
-    from .report import write_report
+    from .publish import rebuild, save_extras
     from .solver.reference import simulate
     engines = requested_engines(args.engines)
     scene, law = scene_from_args(args), law_from_args(args)
@@ -103,10 +103,9 @@ def compare(args):
     cross = deviation(frame, ran[1], ran[1], against=(ran[0], ran[0])) if len(ran) == 2 else pd.DataFrame()
     found = findings(frame)
     skipped = [(s.name, s.reason) for s in statuses if not s.available]
-    report = write_report(out_dir, frame, law=law, scene=scene, skipped=skipped, agreement=agree, deviation=devs,
-                          cross=cross, attributions=attributions, findings=found, failures=failures,
-                          precision=pd.DataFrame([precision]) if precision else None,
-                          histories=normal_histories(law, scene, steps))
+    save_extras(out_dir, law.name, dict(args.overrides), scene, skipped, attributions, failures, precision,
+                normal_histories(law, scene, steps))
+    report = rebuild(out_dir)
     ok = bool(agree["pass"].all()) if not agree.empty else True
     if not args.quiet:
         print(f"{law.name}: paper law on the reference engine, {sum(frame.engine == 'reference')} rows")

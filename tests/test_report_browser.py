@@ -59,3 +59,23 @@ def test_report_renders_figures_and_tables_without_errors(report, browser):
     shot = report / "report.png"
     browser.save_screenshot(str(shot))
     assert shot.stat().st_size > 10000
+
+
+def test_rebuilding_the_report_simulates_nothing(report, monkeypatch):
+    """`harness report DIR` reads the directory only: the kernel and every engine are made to fail, and the
+    rebuilt report still holds the same tables and figures."""
+    import harness.engines.runner as runner
+    import harness.solver.reference as reference
+    from harness.publish import rebuild
+
+    def forbidden(*args, **kwargs):
+        raise AssertionError("report rebuilding must not simulate")
+    monkeypatch.setattr(reference, "integrate", forbidden)
+    monkeypatch.setattr(reference, "simulate", forbidden)
+    monkeypatch.setattr(runner.subprocess, "Popen", forbidden)
+    before = (report / "report.html").read_text()
+    (report / "report.html").unlink()
+    after = open(rebuild(str(report))).read()
+    assert after.count("data:image/png;base64,") == before.count("data:image/png;base64,") >= 5
+    for heading in ("Agreement: engine against its dialect", "Attribution:", "Normal impact against elastic Hertz"):
+        assert heading in after

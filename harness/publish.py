@@ -1,0 +1,84 @@
+"""A results directory as data first: results.csv plus the other tables a comparison produced, saved as files; the
+HTML report is always rebuilt from those files, so `harness report DIR` simulates nothing."""
+import json
+import os
+from dataclasses import asdict
+
+import numpy as np
+import pandas as pd
+
+from .comparison import agreement, deviation, findings
+from .engines.sweep import FailedRun
+from .errors import UserError
+from .results import read_csv
+
+RUN, ATTRIBUTION, HISTORIES, FAILURES, PRECISION = ("run.json", "attribution.csv", "histories.csv", "failures.csv",
+                                                    "precision.csv")
+
+
+def save_extras(out_dir, law_name, overrides, scene, skipped, attributions, failures, precision, histories):
+    """Write everything beyond results.csv that the report shows."""
+    scene_fields = {k: v for k, v in asdict(scene).items() if k != "extra"}
+    with open(os.path.join(out_dir, RUN), "w") as handle:
+        json.dump({"model": law_name, "overrides": overrides, "scene": scene_fields, "skipped": skipped}, handle,
+                  indent=1)
+    tables = [table.assign(comparison=name) for name, table in attributions.items()]
+    pd.concat(tables, ignore_index=True).to_csv(os.path.join(out_dir, ATTRIBUTION), index=False) if tables else \
+        _remove(out_dir, ATTRIBUTION)
+    rows = [pd.DataFrame(h[0][~np.isnan(h[0][:, 0])], columns=["t", "overlap", "f_n", "f_t"]).assign(e_n_target=e)
+            for e, h in (histories or {}).items()]
+    pd.concat(rows, ignore_index=True).to_csv(os.path.join(out_dir, HISTORIES), index=False) if rows else \
+        _remove(out_dir, HISTORIES)
+    pd.DataFrame([vars(f) for f in failures], columns=["engine", "e_n", "message", "log_tail"]).to_csv(
+        os.path.join(out_dir, FAILURES), index=False)
+    pd.DataFrame([precision] if precision else []).to_csv(os.path.join(out_dir, PRECISION), index=False)
+
+
+def _remove(out_dir, name):
+    path = os.path.join(out_dir, name)
+    if os.path.exists(path):
+        os.remove(path)
+
+
+def _read(out_dir, name):
+    path = os.path.join(out_dir, name)
+    if not os.path.exists(path) or os.path.getsize(path) <= 1:
+        return pd.DataFrame()
+    try:
+        return pd.read_csv(path)
+    except pd.errors.EmptyDataError:
+        return pd.DataFrame()
+
+
+def rebuild(out_dir):
+    """Write DIR/report.html from the files in DIR alone; returns its path."""
+    from .laws import compose
+    from .report import write_report
+    from .scene import Scene
+    run_path = os.path.join(out_dir, RUN)
+    if not os.path.isdir(out_dir) or not os.path.exists(run_path):
+        raise UserError(f"{out_dir} is not a results directory of `harness compare` (no {RUN})")
+    frame = read_csv(os.path.join(out_dir, "results.csv"))
+    with open(run_path) as handle:
+        run = json.load(handle)
+    scene = Scene(**{k: tuple(v) if isinstance(v, list) else v for k, v in run["scene"].items()})
+    law = compose(run["model"], run["overrides"])
+    ran = [e for e in frame.engine.unique() if e != "reference"]
+    agree = pd.concat([agreement(frame, e) for e in ran], ignore_index=True) if ran else None
+    devs = pd.concat([deviation(frame, e, e) for e in ran], ignore_index=True) if ran else None
+    cross = deviation(frame, ran[1], ran[1], against=(ran[0], ran[0])) if len(ran) == 2 else None
+    attribution_table = _read(out_dir, ATTRIBUTION)
+    attributions = {name: table.drop(columns="comparison").dropna(axis=1, how="all")
+                    for name, table in attribution_table.groupby("comparison", sort=False)} \
+        if not attribution_table.empty else {}
+    history_table = _read(out_dir, HISTORIES)
+    histories = {e: group[["t", "overlap", "f_n", "f_t"]].to_numpy()[None, :, :]
+                 for e, group in history_table.groupby("e_n_target", sort=False)} if not history_table.empty else None
+    failure_table = _read(out_dir, FAILURES)
+    failures = [FailedRun(r.engine, r.e_n, r.message, "" if pd.isna(r.log_tail) else r.log_tail)
+                for r in failure_table.itertuples()] if not failure_table.empty else []
+    precision = _read(out_dir, PRECISION)
+    return write_report(out_dir, frame, law=law, scene=scene, skipped=[tuple(s) for s in run["skipped"]],
+                        agreement=agree, deviation=devs, cross=cross, attributions=attributions,
+                        findings=findings(frame), failures=failures,
+                        precision=precision if not precision.empty else None, histories=histories)
