@@ -209,3 +209,11 @@ def test_plastic_laws_lengthen_contact_at_low_restitution():
     thornton = simulate(compose("thornton"), scene, steps_per_contact=2000)[0].iloc[0]
     assert thornton.t_contact / t_h == pytest.approx(3.147, rel=0.01)
     assert thornton.f_n_max / f_h == pytest.approx(0.152, rel=0.01)
+
+
+def test_calibrations_accept_a_target_within_round_off_of_one():
+    """Found by hypothesis: e_n = 0.9999999999999999 left the Kuwabara-Kono inversion without a sign change."""
+    for name in ("hertz-kuwabara-kono", "hertz-mindlin"):
+        overrides = {"damping": "tsuji:exact"} if name == "hertz-mindlin" else {}
+        row = simulate(compose(name, overrides), normal_scene([0.9999999999999999]), steps_per_contact=200)[0].iloc[0]
+        assert row.e_n == pytest.approx(1.0, abs=1e-6)

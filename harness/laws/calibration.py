@@ -71,6 +71,10 @@ def _normalised_restitution(rhs_damping, param, end):
 
 
 def _invert(fun, e, lo, hi):
+    """The parameter in [lo, hi] with fun(parameter) = e; a target within the ODE tolerance of 1 (e above fun(lo))
+    needs no more damping than lo."""
+    if fun(lo) <= e:
+        return lo
     return brentq(lambda p: fun(p) - e, lo, hi, xtol=1e-13, rtol=1e-12)
 
 
