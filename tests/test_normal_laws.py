@@ -216,4 +216,4 @@ def test_calibrations_accept_a_target_within_round_off_of_one():
     for name in ("hertz-kuwabara-kono", "hertz-mindlin"):
         overrides = {"damping": "tsuji:exact"} if name == "hertz-mindlin" else {}
         row = simulate(compose(name, overrides), normal_scene([0.9999999999999999]), steps_per_contact=200)[0].iloc[0]
-        assert row.e_n == pytest.approx(1.0, abs=1e-6)
+        assert row.status == "ok" and row.e_n == pytest.approx(1.0, abs=1e-5)   # O(dt^2) at 200 steps
