@@ -2,14 +2,12 @@
 import base64
 import io
 import os
-from pathlib import Path
 
-import jinja2
 import numpy as np
 
 from .kinematics import CONVENTIONS
+from .render import environment
 
-TEMPLATES = Path(__file__).resolve().parent.parent / "templates"
 
 
 def figure_png(fig):
@@ -109,8 +107,7 @@ def hertz_ratios(normal, contact, speed):
 def write_report(out_dir, frame, law, scene, skipped, agreement=None, deviation=None, cross=None, attributions=None,
                  findings=None, failures=(), precision=None, histories=None):
     """Render DIR/report.html (self-contained) and return its path."""
-    env = jinja2.Environment(loader=jinja2.FileSystemLoader(str(TEMPLATES)), autoescape=True,
-                             undefined=jinja2.StrictUndefined)
+    env = environment(autoescape=True)
     figures = []
     paper = frame[(frame.engine == "reference") & (frame.dialect == "paper")]
     oblique = frame[frame.psi1_star > 0]
