@@ -104,7 +104,8 @@ def compare(args):
     found = findings(frame)
     skipped = [(s.name, s.reason) for s in statuses if not s.available]
     save_extras(out_dir, law.name, dict(args.overrides), scene, skipped, attributions, failures, precision,
-                normal_histories(law, scene, steps))
+                normal_histories(law, scene, steps),
+                {s.name: engine_options(args, s.name) for s in statuses if s.available})
     report = rebuild(out_dir)
     ok = bool(agree["pass"].all()) if not agree.empty else True
     if not args.quiet:

@@ -16,12 +16,13 @@ RUN, ATTRIBUTION, HISTORIES, FAILURES, PRECISION = ("run.json", "attribution.csv
                                                     "precision.csv")
 
 
-def save_extras(out_dir, law_name, overrides, scene, skipped, attributions, failures, precision, histories):
+def save_extras(out_dir, law_name, overrides, scene, skipped, attributions, failures, precision, histories,
+                engine_options=None):
     """Write everything beyond results.csv that the report shows."""
     scene_fields = {k: v for k, v in asdict(scene).items() if k != "extra"}
     with open(os.path.join(out_dir, RUN), "w") as handle:
-        json.dump({"model": law_name, "overrides": overrides, "scene": scene_fields, "skipped": skipped}, handle,
-                  indent=1)
+        json.dump({"model": law_name, "overrides": overrides, "scene": scene_fields, "skipped": skipped,
+                   "engine_options": engine_options or {}}, handle, indent=1)
     tables = [table.assign(comparison=name) for name, table in attributions.items()]
     pd.concat(tables, ignore_index=True).to_csv(os.path.join(out_dir, ATTRIBUTION), index=False) if tables else \
         _remove(out_dir, ATTRIBUTION)
@@ -81,4 +82,12 @@ def rebuild(out_dir):
     return write_report(out_dir, frame, law=law, scene=scene, skipped=[tuple(s) for s in run["skipped"]],
                         agreement=agree, deviation=devs, cross=cross, attributions=attributions,
                         findings=findings(frame), failures=failures,
-                        precision=precision if not precision.empty else None, histories=histories)
+                        precision=precision if not precision.empty else None, histories=histories,
+                        arithmetic=arithmetic(run.get("engine_options", {})))
+
+
+def arithmetic(engine_options):
+    """The floating-point arithmetic of each engine's run, from the options it ran with."""
+    from .engines.yade import ARITHMETIC
+    yade = engine_options.get("yade", {}).get("precision", "double")
+    return {"reference": ARITHMETIC["double"], "liggghts": ARITHMETIC["double"], "yade": ARITHMETIC[yade]}

@@ -34,6 +34,21 @@ def engines_ran(frame):
             for engine, group in frame.groupby("engine", sort=False)]
 
 
+def run_facts(frame, arithmetic):
+    """One row per (engine, dialect) run: version, arithmetic, steps per contact, dt range, impacts, wall time."""
+    import pandas as pd
+    rows = []
+    for (engine, dialect), group in frame.groupby(["engine", "dialect"], sort=False):
+        rows.append({"engine": engine, "dialect": dialect, "version": str(group.engine_version.iloc[0]),
+                     "arithmetic": arithmetic.get(engine, "double"),
+                     "steps per contact": int(group.steps_per_contact.iloc[0]),
+                     "dt min [s]": group.dt.min(), "dt max [s]": group.dt.max(), "impacts": len(group),
+                     "not ok": int((group.status != "ok").sum()),
+                     "wall time [s]": float(group.wall_s.sum()),
+                     "wall per impact [s]": float(group.wall_s.mean())})
+    return pd.DataFrame(rows)
+
+
 PANELS = (   # (title, x column, y columns, sliding-line kind)
     ("Psi2* against Psi1*", "psi1_star", ("psi2_star",), "psi2"),
     ("Omega* against Psi1*", "psi1_star", ("omega_star",), "omega"),
@@ -105,7 +120,7 @@ def hertz_ratios(normal, contact, speed):
 
 
 def write_report(out_dir, frame, law, scene, skipped, agreement=None, deviation=None, cross=None, attributions=None,
-                 findings=None, failures=(), precision=None, histories=None):
+                 findings=None, failures=(), precision=None, histories=None, arithmetic=None):
     """Render DIR/report.html (self-contained) and return its path."""
     env = environment(autoescape=True)
     figures = []
@@ -126,7 +141,8 @@ def write_report(out_dir, frame, law, scene, skipped, agreement=None, deviation=
         rows=("status", "size")).reset_index()
     html = env.get_template("report.html.j2").render(
         law=law, submodels=law.describe(), scene=scene, conventions=CONVENTIONS, figures=figures,
-        summary=summary.to_dict("records"), skipped=skipped, rows=len(frame), ran=engines_ran(frame), agreement=records(agreement),
+        summary=summary.to_dict("records"), skipped=skipped, rows=len(frame), ran=engines_ran(frame),
+        facts=records(run_facts(frame, arithmetic or {})), agreement=records(agreement),
         deviation=records(deviation), cross=records(cross), findings=records(findings), failures=failures,
         precision=records(precision), ratios=ratios,
         attributions=[(name, records(table)) for name, table in (attributions or {}).items()])

@@ -56,6 +56,17 @@ def test_report_renders_figures_and_tables_without_errors(report, browser):
     engines = [name for name, adapter in ADAPTERS.items() if adapter.available()]
     assert len(table) - 1 == 3 * len(engines)                 # v_n1, v_t1, omega1 per engine
     assert all("True" in row.text for row in table[1:])
+    facts = browser.find_elements(
+        By.XPATH, f"(//h2)[{headings.index('Run facts') + 1}]/following-sibling::table[1]//tr")
+    import pandas as pd
+    results = pd.read_csv(report / "results.csv")
+    runs = results.groupby(["engine", "dialect"]).agg(n=("wall_s", "size"), steps=("steps_per_contact", "first"))
+    assert len(facts) - 1 == len(runs) == 1 + 2 * len(engines)    # paper law, and per engine its run and dialect
+    for row in facts[1:]:
+        cells = [c.text for c in row.find_elements(By.TAG_NAME, "td")]
+        expected = runs.loc[(cells[0], cells[1])]
+        assert int(cells[4]) == expected.steps and int(cells[7]) == expected.n
+        assert "double" in cells[3] and float(cells[9]) > 0           # arithmetic stated, wall time measured
     shot = report / "report.png"
     browser.save_screenshot(str(shot))
     assert shot.stat().st_size > 10000

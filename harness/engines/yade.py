@@ -17,6 +17,8 @@ INPUT_SUFFIX = ".py"
 PYTHON_VARIABLE = "HARNESS_YADE_PYTHON"    # another interpreter (a test's fake); default Debian's python3.11
 FLAVOURS = {"double": "yade-double", "long-double": "yade-longdouble", "float128": "yade-float128",
             "mpfr150": "yade-mpfr150"}
+ARITHMETIC = {"double": "double (IEEE 754 binary64)", "long-double": "long double (x87 80-bit extended)",
+              "float128": "float128 (IEEE 754 binary128)", "mpfr150": "MPFR, 150 decimal digits"}
 LIBRARY = "/usr/lib/x86_64-linux-gnu"
 MODELS = {"hertz-mindlin": "Law2_ScGeom_MindlinPhys_Mindlin", "linear-spring-dashpot": "Law2_ScGeom_ViscElPhys_Basic",
           "walton-braun": "Law2_ScGeom_LudingPhys_Basic"}
