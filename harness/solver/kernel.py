@@ -295,12 +295,13 @@ def advance(s, st, o, ot, p, ints, h, scratch):
 
 
 @njit(cache=True)
-def parabola_peak(y0, y1, y2):
-    """Peak of the parabola through three equally spaced samples with y1 the largest."""
-    curvature = y0 - 2.0 * y1 + y2
-    if curvature >= 0.0:
+def parabola_peak(y0, y1, y2, h1, h2):
+    """Peak of the parabola through (-h1, y0), (0, y1), (h2, y2) with y1 the largest sample."""
+    c = ((y0 - y1) / h1 + (y2 - y1) / h2) / (h1 + h2)
+    if c >= 0.0:
         return y1
-    return y1 - (y0 - y2) ** 2 / (8.0 * curvature)
+    b = (y2 - y1) / h2 - c * h2
+    return y1 - b * b / (4.0 * c)
 
 
 @njit(cache=True, parallel=True)
@@ -335,6 +336,7 @@ def integrate(params, ints, out, history, stride):
             else:
                 s[S_FT] = -p[C.P_TDAMP] * math.sqrt(stiffness(code, p[C.P_T1], 0.0)) * slip0
         f_prev2, f_prev1 = 0.0, 0.0
+        h_prev = h
         a_prev2, a_prev1 = 0.0, 0.0
         f_peak, a_peak = s[S_FN], 0.0
         status = C.STATUS_NO_SEPARATION
@@ -342,11 +344,16 @@ def integrate(params, ints, out, history, stride):
         k_rec = 0
         steps = 0
         max_steps = int(p[C.P_MAXSTEPS])
+        graded = int(p[C.P_GRADED])                   # first steps end at t_k = G h/2 (k/G)^2 (plan.graded_steps)
+        t_now = 0.0
+        h_base = h
+        frac_lo = 1.0
         for k in range(max_steps):
+            h = h_base * (2 * k + 1) / (2 * graded) if k < graded else h_base
             indicator = advance(s, st, o, ot, p, row_ints, h, scratch)
             steps = k + 1
             if indicator <= 0.0 and row_ints[C.I_INTEGRATOR] != C.INTEGRATOR_PAPER:
-                t_end = steps * h                          # the engine ends contact at the step, not inside it
+                t_end = t_now + h                          # the engine ends contact at the step, not inside it
                 status = C.STATUS_OK
             elif indicator <= 0.0:
                 frac_lo, frac_hi = 0.0, 1.0
@@ -372,18 +379,21 @@ def integrate(params, ints, out, history, stride):
                             g_lo *= 0.5
                         side = -1
                 step(s, st, o, ot, p, row_ints, frac_lo * h, scratch)
-                t_end = (k + frac_lo) * h
+                t_end = t_now + frac_lo * h
                 status = C.STATUS_OK
             f_now, a_now = o[S_FN], o[S_ALPHA]
+            h_last = frac_lo * h if status == C.STATUS_OK and row_ints[C.I_INTEGRATOR] == C.INTEGRATOR_PAPER else h
             if f_prev1 >= f_prev2 and f_prev1 > f_now and f_prev1 >= f_peak and k >= 2:
-                f_peak = parabola_peak(f_prev2, f_prev1, f_now)
+                f_peak = parabola_peak(f_prev2, f_prev1, f_now, h_prev, h_last)
             if a_prev1 >= a_prev2 and a_prev1 > a_now and a_prev1 >= a_peak and k >= 2:
-                a_peak = parabola_peak(a_prev2, a_prev1, a_now)
+                a_peak = parabola_peak(a_prev2, a_prev1, a_now, h_prev, h_last)
+            h_prev = h_last
             f_peak = max(f_peak, f_now)
             a_peak = max(a_peak, a_now)
             f_prev2, f_prev1, a_prev2, a_prev1 = f_prev1, f_now, a_prev1, a_now
+            t_now += h
             if stride > 0 and k % stride == 0 and k_rec < n_hist:
-                history[i, k_rec, 0] = (k + 1) * h
+                history[i, k_rec, 0] = t_now
                 history[i, k_rec, 1] = o[S_ALPHA]
                 history[i, k_rec, 2] = o[S_FN]
                 history[i, k_rec, 3] = o[S_FT]
@@ -396,7 +406,7 @@ def integrate(params, ints, out, history, stride):
                 status = C.STATUS_NONFINITE
                 break
         out[i, C.O_VZ], out[i, C.O_VX], out[i, C.O_W] = s[S_VZ], s[S_VX], s[S_W]
-        out[i, C.O_TC] = t_end if status == C.STATUS_OK else steps * h
+        out[i, C.O_TC] = t_end if status == C.STATUS_OK else t_now
         out[i, C.O_FMAX], out[i, C.O_AMAX] = f_peak, a_peak
         out[i, C.O_STEPS], out[i, C.O_STATUS] = steps, status
         for k in range(k_rec, n_hist):

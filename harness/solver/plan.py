@@ -29,6 +29,17 @@ def needs_tangential(scene, v_t0, omega0):
     return (scene.mu > 0.0) & ((v_t0 != 0.0) | (omega0 != 0.0))
 
 
+def graded_steps(law, dashpot, steps_per_contact):
+    """G graded first steps ending at t_k = (G h/2)(k/G)^2, G = N/4, for the paper scheme when c ~ alpha^p with
+    0 < p < 1 (used on impacts with friction only; the normal motion, integrated in u, needs no grading). The
+    friction impulse of a normal force rising like t^p from first touch then keeps second order (uniform steps give
+    O(h^(1+p))): the graded region is the first eighth of the contact, grows with N, and no step in it exceeds h
+    (N/4 steps where uniform stepping takes N/8: 12.5% more steps). None below 16 steps per contact."""
+    if law.integrator != "paper" or dashpot.c0 == 0.0 or not 0.0 < dashpot.power < 1.0:
+        return 0
+    return int(steps_per_contact // 4) if steps_per_contact >= 16 else 0
+
+
 def plan_batch(law, scene, e_n, steps_per_contact):
     """Kernel rows for every impact of the scene at target e_n; dt = (contact-time estimate at V) / steps."""
     if steps_per_contact < MIN_STEPS_PER_CONTACT:
@@ -64,6 +75,7 @@ def plan_batch(law, scene, e_n, steps_per_contact):
     params[:, C.P_W0] = omega0
     slow = np.maximum(scene.speed / np.maximum(v_n0, 1e-12 * scene.speed), 1.0) ** 0.4
     params[:, C.P_MAXSTEPS] = np.ceil(steps_per_contact * (20.0 * slow + 20.0))
+    params[:, C.P_GRADED] = np.where(tangential, graded_steps(law, dashpot, steps_per_contact), 0)
     ints = np.zeros((n, C.N_INTS), dtype=np.int64)
     ints[:, C.I_NORMAL] = law.normal.code
     ints[:, C.I_END] = C.END_ALPHA if law.end == "tension" else C.END_FORCE
