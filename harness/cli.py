@@ -98,6 +98,8 @@ def add_scene_options(parser):
     how = res.add_mutually_exclusive_group()
     how.add_argument("--steps-per-contact", type=int, default=1000, metavar="N",
                      help="time step = estimated contact time / N (default 1000)")
+    how.add_argument("--dt", type=number, metavar="SECONDS",
+                     help="one time step in seconds for every law and e_n (refused above the stability limit)")
     how.add_argument("--converged", action="store_true",
                      help="refine until results change < 1e-7 (relative to V), i.e. ~1e-7 from the exact solution")
 
@@ -128,13 +130,24 @@ def law_from_args(args):
     return compose(args.model, dict(args.overrides))
 
 
+def resolution_from_args(args):
+    """--steps-per-contact N (a whole number >= 1) or --dt SECONDS (> 0), as plan_batch takes it."""
+    from .solver.plan import FixedTimeStep
+    if getattr(args, "dt", None) is not None:
+        if not args.dt > 0.0:
+            raise UserError(f"--dt must be a positive number of seconds, got {args.dt:g}")
+        return FixedTimeStep(args.dt)
+    if args.steps_per_contact < 1:
+        raise UserError(f"--steps-per-contact must be >= 1, got {args.steps_per_contact}")
+    return args.steps_per_contact
+
+
 def simulate_from_args(args):
     from .solver.reference import simulate
-    if args.steps_per_contact < 5:
-        raise UserError(f"--steps-per-contact must be >= 5, got {args.steps_per_contact}")
+    resolution = resolution_from_args(args)
     scene = scene_from_args(args)
     law = law_from_args(args)
-    frame, _ = simulate(law, scene, steps_per_contact=args.steps_per_contact, converged=args.converged)
+    frame, _ = simulate(law, scene, steps_per_contact=resolution, converged=args.converged)
     return law, scene, frame
 
 
@@ -206,7 +219,7 @@ def cmd_render(args):
     dialect = adapter.dialect(law.name, options)
     texts = []
     for e_n in scene.e_n:
-        batch = plan_batch(dialect, scene, e_n, args.steps_per_contact)
+        batch = plan_batch(dialect, scene, e_n, resolution_from_args(args))
         name = f"{args.engine}-{law.name}-en{e_n:g}{adapter.INPUT_SUFFIX}"
         try:
             texts.append((name, adapter.render_batch(law, scene, batch, int(batch.params[:, P_MAXSTEPS].max()),

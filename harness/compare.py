@@ -10,6 +10,7 @@ from .engines.runner import EngineFailure
 from .engines.sweep import precision_gap, run_sweep
 from .errors import UserError
 from .results import write_csv
+from .solver.plan import plan_batch
 
 
 def requested_engines(text):
@@ -49,22 +50,26 @@ def text_table(frame, columns, formats=None):
 
 def compare(args):
     """Run, write DIR/results.csv (after every batch) and DIR/report.html; 0 when every agreement holds."""
-    from .cli import law_from_args, scene_from_args
+    from .cli import law_from_args, resolution_from_args, scene_from_args
     from .publish import rebuild, save_extras
     from .solver.reference import simulate
     engines = requested_engines(args.engines)
-    scene, law = scene_from_args(args), law_from_args(args)
+    scene, law, steps = scene_from_args(args), law_from_args(args), resolution_from_args(args)
     out_dir = args.output
     if os.path.exists(out_dir) and not os.path.isdir(out_dir):
         raise UserError(f"output {out_dir} exists and is not a directory")
     statuses = [engine_status(name, law.name) for name in engines]
-    for status in statuses:
-        if status.available:
-            ADAPTERS[status.name].dialect(law.name, engine_options(args, status.name))   # bad options: exit 2 now
     unsupported = ("engine inputs do not model gravity" if scene.gravity else
                    "engine inputs use a wall of the sphere's own material" if scene.wall != "same" else None)
     if unsupported:
         statuses = [type(s)(s.name, False, unsupported) if s.available else s for s in statuses]
+    planned = [] if args.converged else [law]
+    for status in statuses:
+        if status.available:             # bad options or a time step above a stability limit: exit 2 before running
+            planned.append(ADAPTERS[status.name].dialect(law.name, engine_options(args, status.name)))
+    for each in planned:
+        for e_n in scene.e_n:
+            plan_batch(each, scene, e_n, steps)
     os.makedirs(out_dir, exist_ok=True)
     results_path = os.path.join(out_dir, "results.csv")
     frames = []
@@ -73,7 +78,6 @@ def compare(args):
         frames.append(frame)
         write_csv(pd.concat(frames, ignore_index=True), results_path)
 
-    steps = args.steps_per_contact
     keep(simulate(law, scene, steps_per_contact=steps, converged=args.converged)[0])
     failures, attributions, dialects, precision = [], {}, {}, None
     for status in statuses:

@@ -31,6 +31,10 @@ def harness(*args, cwd=None, env=None):
     ["--model", "thornton", "--with", "damping=tsuji"],
     ["--model", "thornton", "--psi", "1,2", "--mu", "0"],
     ["--model", "thornton", "--steps-per-contact", "2"],
+    ["--model", "thornton", "--steps-per-contact", "0"],
+    ["--model", "thornton", "--dt", "0"],
+    ["--model", "thornton", "--dt", "1e-3"],
+    ["--model", "thornton", "--dt", "1e-7", "--converged"],
     ["--model", "thornton", "--speed", "abc"],
     ["--model", "thornton", "--angles", "10", "--psi", "1"],
     ["--model", "thornton", "--vt", "0.5,-1"],
@@ -48,6 +52,17 @@ def test_bad_input_is_one_line_and_exit_2(tmp_path, args):
 def test_unwritable_output_is_exit_2(tmp_path):
     proc = harness("run", "--model", "thornton", "-o", str(tmp_path / "missing" / "r.csv"))
     assert proc.returncode == 2 and len(proc.stderr.strip().splitlines()) == 1
+
+
+def test_dt_gives_one_time_step_to_every_e_n(tmp_path):
+    """--dt: the same time step at every e_n; steps per contact follow from each contact time."""
+    out = tmp_path / "r.csv"
+    proc = harness("run", "--model", "walton-braun", "--en", "0.9,0.3", "--angles", "0,45", "--dt", "2e-7",
+                   "-o", str(out))
+    assert proc.returncode == 0, proc.stderr
+    frame = pd.read_csv(out)
+    assert set(frame.dt) == {2e-7}
+    assert (frame.steps_per_contact * frame.dt).round(12).nunique() == 2     # = each e_n's contact-time estimate
 
 
 def test_run_writes_the_results_table(tmp_path):

@@ -155,7 +155,7 @@ def deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, 
     spacing = 4.0 * radius
     atoms = [{"x": i * spacing, "vx": float(vt), "vz": -float(vn), "omegay": float(w)}
              for i, (vn, vt, w) in enumerate(zip(v_n0, v_t0, omega0))]
-    chunk = max(10, steps_per_contact // 10)
+    chunk = max(10, int(steps_per_contact // 10))
     text = render("liggghts/batch.in.j2", harness_version=__version__, law=law.name, model=model, e_n=restitution,
                   atoms=atoms, x_lo=-2.0 * radius, x_hi=len(atoms) * spacing, box_half=2.0 * radius,
                   z_lo=-radius, z_hi=4.0 * radius, skin=0.5 * radius, E=scene.E, nu=scene.nu, mu=scene.mu,

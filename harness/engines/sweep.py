@@ -31,7 +31,7 @@ def run_sweep(adapter, paper_law, scene, steps_per_contact, on_frame=None, optio
         max_steps = int(batch.params[:, P_MAXSTEPS].max())
         timeout = TIMEOUT_FLOOR_S + SECONDS_PER_ATOM_STEP * len(batch.v_n0) * max_steps
         identity = dict(model=paper_law.name, dialect=dialect.dialect, engine=adapter.NAME,
-                        engine_version=adapter.version(), dt=batch.dt, steps_per_contact=steps_per_contact)
+                        engine_version=adapter.version(), dt=batch.dt, steps_per_contact=batch.steps_per_contact)
         try:
             with tempfile.TemporaryDirectory(prefix=f"harness-{adapter.NAME}-") as workdir:
                 final, wall, _ = adapter.run_batch(paper_law, scene, batch, max_steps, timeout, workdir, options)

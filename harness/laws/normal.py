@@ -22,6 +22,11 @@ class LinearSpring:
         k = cal.hertz_equivalent_stiffness(contact.E_star, contact.radius, contact.mass, speed)
         return NormalParameters((k, 0.0, 0.0, 0.0), k, math.pi * math.sqrt(contact.mass / k))
 
+    def peak(self, contact, e_n, speed):
+        """(stiffest dF/dalpha, deepest overlap) of an impact at normal speed <= V: k, V sqrt(m/k)."""
+        k = self.parameters(contact, e_n, speed).values[0]
+        return k, speed * math.sqrt(contact.mass / k)
+
 
 class Hertz:
     """F = 4/3 E* R^1/2 alpha^3/2 (paper eq. 1)."""
@@ -31,6 +36,11 @@ class Hertz:
         return NormalParameters((contact.E_star, 0.0, 0.0, 0.0),
                                 cal.hertz_equivalent_stiffness(contact.E_star, contact.radius, contact.mass, speed),
                                 cal.hertz_contact_time(contact.E_star, contact.radius, contact.mass, speed))
+
+    def peak(self, contact, e_n, speed):
+        """Elastic Hertz bounds damped impacts: alpha_max = (5 m V^2/(4 k_h))^2/5, dF/dalpha = 2 E* sqrt(R alpha)."""
+        alpha = hertz_peak_overlap(contact, speed)
+        return 2.0 * contact.E_star * math.sqrt(contact.radius * alpha), alpha
 
 
 class WaltonBraun:
@@ -46,6 +56,11 @@ class WaltonBraun:
         t_c = 0.5 * math.pi * math.sqrt(contact.mass / k1) * (1.0 + e_n)
         return NormalParameters((k1, k1 / e_n ** 2, 0.0, 0.0), k1, t_c)
 
+    def peak(self, contact, e_n, speed):
+        """Unloading is stiffest: K2 (p2); loading reaches V sqrt(m/K1)."""
+        k1, k2 = self.parameters(contact, e_n, speed).values[:2]
+        return max(k1, k2), speed * math.sqrt(contact.mass / k1)
+
 
 class PartiallyLatchingSpring(WaltonBraun):
     """Provisional PLS: Walton-Braun with K1 = pi p_y R, p_y of Thornton's law for e_n at V (MODELS 2.7) [prov]."""
@@ -53,6 +68,12 @@ class PartiallyLatchingSpring(WaltonBraun):
 
     def loading_stiffness(self, contact, e_n, speed):
         return math.pi * Thornton().yield_pressure(contact, e_n, speed) * contact.radius
+
+
+def hertz_peak_overlap(contact, speed):
+    """alpha_max of an elastic Hertz impact at V: 2/5 k_h alpha^5/2 = 1/2 m V^2, k_h = 4/3 E* sqrt(R)."""
+    k_h = 4.0 / 3.0 * contact.E_star * math.sqrt(contact.radius)
+    return (1.25 * contact.mass * speed ** 2 / k_h) ** 0.4
 
 
 def yield_point(E_star, p_y, radius):
@@ -83,6 +104,20 @@ class Thornton:
     def kernel_values(self, contact, p_y, alpha_y, f_y):
         return (contact.E_star, p_y, alpha_y, f_y)
 
+    def peak(self, contact, e_n, speed):
+        """Energy balance 1/2 m V^2 = W_y + F_y d + k_p d^2/2 gives F_max = sqrt(F_y^2 + 2 k_p (E0 - W_y)); Hertzian
+        unloading returning e^2 E0 has dF/dalpha = 0.6 F_max^2/(e^2 E0) at its start."""
+        energy = 0.5 * contact.mass * speed ** 2
+        p_y = self.yield_pressure(contact, e_n, speed)
+        alpha_y, f_y = yield_point(contact.E_star, p_y, contact.radius)
+        if energy <= 0.4 * f_y * alpha_y:
+            return Hertz().peak(contact, e_n, speed)
+        k_p = self.plastic_stiffness(p_y, alpha_y, f_y, contact)
+        f_max = math.sqrt(f_y ** 2 + 2.0 * k_p * (energy - 0.4 * f_y * alpha_y))
+        alpha = alpha_y + (f_max - f_y) / k_p
+        k_hertz = 2.0 * contact.E_star * math.sqrt(contact.radius * alpha)     # unloading with R unmodified
+        return max(k_p, k_hertz, 0.6 * f_max ** 2 / (e_n ** 2 * energy)), alpha
+
 
 class Stronge(Thornton):
     """Provisional Stronge: Hertz to alpha_y, F_y (2 alpha/alpha_y - 1), Hertz unloading with R_c (MODELS 2.5) [prov]."""
@@ -108,6 +143,11 @@ class LudingHysteresis:
         k2max, d_lim = self.stiffness_and_limit(k1, contact, e_n, speed)
         t_c = 0.5 * math.pi * math.sqrt(contact.mass / k1) * (1.0 + e_n)
         return NormalParameters((k1, k2max, d_lim, 0.0), k1, t_c)
+
+    def peak(self, contact, e_n, speed):
+        """k2 grows to k2max (p2) with the overlap; loading reaches V sqrt(m/k1)."""
+        k1, k2max = self.parameters(contact, e_n, speed).values[:2]
+        return max(k1, k2max), speed * math.sqrt(contact.mass / k1)
 
     @staticmethod
     def stiffness_and_limit(k1, contact, e_n, speed):

@@ -3,10 +3,17 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..stability import check_time_step
 from . import codes as C
 
 MIN_STEPS_PER_CONTACT = 5
 NORATCH_WALL_RADIUS = 1e8      # YADE's hertzian wall: reference radius 1e8 R (its noRatch slip factor uses it)
+
+
+@dataclass(frozen=True)
+class FixedTimeStep:
+    """One time step in seconds (--dt) for every law and e_n; each batch's steps per contact follow from it."""
+    seconds: float
 
 
 @dataclass
@@ -20,7 +27,7 @@ class Batch:
     omega0: np.ndarray
     theta_deg: np.ndarray
     dt: float
-    steps_per_contact: int
+    steps_per_contact: float
     tangential_active: np.ndarray
 
 
@@ -41,13 +48,16 @@ def graded_steps(law, dashpot, steps_per_contact):
 
 
 def plan_batch(law, scene, e_n, steps_per_contact):
-    """Kernel rows for every impact of the scene at target e_n; dt = (contact-time estimate at V) / steps."""
-    if steps_per_contact < MIN_STEPS_PER_CONTACT:
-        raise ValueError(f"steps per contact must be >= {MIN_STEPS_PER_CONTACT}")
+    """Kernel rows for every impact of the scene at target e_n; dt = (contact-time estimate at V) / steps, or the
+    given FixedTimeStep; a dt above the stability limit is refused (harness.stability)."""
     contact = scene.contact
     v_n0, v_t0, omega0, theta = scene.impacts(e_n)
     normal = law.normal.parameters(contact, e_n, scene.speed)
     dashpot = law.damping.dashpot(law.normal, contact, e_n, scene.speed, law.end)
+    if isinstance(steps_per_contact, FixedTimeStep):
+        steps_per_contact = normal.contact_time / steps_per_contact.seconds
+    if not steps_per_contact > 0:
+        raise ValueError(f"steps per contact must be positive, got {steps_per_contact}")
     dt = normal.contact_time / steps_per_contact
     tangential = needs_tangential(scene, v_t0, omega0)
     n = len(v_n0)
@@ -76,6 +86,8 @@ def plan_batch(law, scene, e_n, steps_per_contact):
     slow = np.maximum(scene.speed / np.maximum(v_n0, 1e-12 * scene.speed), 1.0) ** 0.4
     params[:, C.P_MAXSTEPS] = np.ceil(steps_per_contact * (20.0 * slow + 20.0))
     params[:, C.P_GRADED] = np.where(tangential, graded_steps(law, dashpot, steps_per_contact), 0)
+    active = np.flatnonzero(tangential)
+    check_time_step(law, scene, e_n, dt, params[active[0] if len(active) else 0], normal.contact_time, len(active) > 0)
     ints = np.zeros((n, C.N_INTS), dtype=np.int64)
     ints[:, C.I_NORMAL] = law.normal.code
     ints[:, C.I_END] = C.END_ALPHA if law.end == "tension" else C.END_FORCE
