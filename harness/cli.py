@@ -61,8 +61,8 @@ def submodel(text):
     return key.strip(), value.strip()
 
 
-def add_scene_options(parser):
-    """Options that describe the scene, shared by run and compare."""
+def add_scene_options(parser, resolution=True):
+    """Options that describe the scene (and, unless the command sets its own, the time step)."""
     from .scene import DEFAULT_EN
     g = parser.add_argument_group("scene")
     g.add_argument("--en", type=number_list, default=DEFAULT_EN, metavar="LIST",
@@ -94,6 +94,8 @@ def add_scene_options(parser):
                    help="YADE law for linear-spring-dashpot: ViscEl (default) or elastic CundallStrack")
     g.add_argument("--yade-precision", choices=("double", "long-double", "float128", "mpfr150"), default="double",
                    help="YADE flavour (arithmetic) to run; inputs go in as exact decimal strings")
+    if not resolution:
+        return
     res = parser.add_argument_group("resolution")
     how = res.add_mutually_exclusive_group()
     how.add_argument("--steps-per-contact", type=int, default=1000, metavar="N",
@@ -272,6 +274,11 @@ def cmd_compare(args):
     return compare(args)
 
 
+def cmd_cost(args):
+    from .cost_command import cost
+    return cost(args)
+
+
 def build_parser():
     parser = Parser(prog="harness", description="Cross-validate DEM contact force models against the literature "
                     "(Thornton, Cummins & Cleary 2013) and against LIGGGHTS and YADE.")
@@ -303,6 +310,16 @@ def build_parser():
     p = sub.add_parser("check", help="recompute the baseline matrix; exit 1 listing every metric outside tolerance")
     p.add_argument("--baseline", default="reference", metavar="DIR", help="baseline directory (default %(default)s)")
     p.set_defaults(func=cmd_check)
+    p = sub.add_parser("cost", help="accuracy against time: a ladder of steps per contact for the reference, each "
+                                    "engine's dialect and each engine; cost.csv and the report")
+    p.add_argument("--model", required=True, help="law name (see `harness models`)")
+    p.add_argument("--engines", default=None, help="comma-separated engines (default: all that support the law)")
+    add_scene_options(p, resolution=False)
+    p.add_argument("--ladder", default=None, metavar="LIST",
+                   help="steps per contact to try (default 5,10,20,50,100,200,500,1000,5000)")
+    p.add_argument("-o", "--output", default="harness-out", metavar="DIR", help="output directory (default %(default)s)")
+    p.add_argument("--quiet", action="store_true", help="print only where the files are")
+    p.set_defaults(func=cmd_cost)
     p = sub.add_parser("compare", help="reference vs every available engine; tables, results.csv, report.html")
     p.add_argument("--model", required=True, help="law name (see `harness models`)")
     p.add_argument("--engines", default=None, help="comma-separated engines (default: all that support the law)")

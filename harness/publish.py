@@ -10,10 +10,12 @@ import pandas as pd
 from .comparison import agreement, deviation, findings
 from .engines.sweep import FailedRun
 from .errors import UserError
+from .report import records
 from .results import read_csv
 
 RUN, ATTRIBUTION, HISTORIES, FAILURES, PRECISION = ("run.json", "attribution.csv", "histories.csv", "failures.csv",
                                                     "precision.csv")
+COST, COST_RUN, COST_TRUTH = "cost.csv", "cost.json", "cost-truth.csv"
 
 
 def save_extras(out_dir, law_name, overrides, scene, skipped, attributions, failures, precision, histories,
@@ -52,15 +54,23 @@ def _read(out_dir, name):
 
 
 def rebuild(out_dir):
-    """Write DIR/report.html from the files in DIR alone; returns its path."""
-    from .laws import compose
+    """Write DIR/report.html from the files in DIR alone (a compare run, a cost run or both); returns its path."""
     from .report import write_report
+    has_compare = os.path.exists(os.path.join(out_dir, RUN))
+    has_cost = os.path.exists(os.path.join(out_dir, COST_RUN))
+    if not os.path.isdir(out_dir) or not (has_compare or has_cost):
+        raise UserError(f"{out_dir} is not a results directory of `harness compare` or `harness cost` "
+                        f"(no {RUN} or {COST_RUN})")
+    return write_report(out_dir, compare=compare_part(out_dir) if has_compare else None,
+                        cost=cost_part(out_dir) if has_cost else None)
+
+
+def compare_part(out_dir):
+    """Everything the compare sections of the report show, read from DIR."""
+    from .laws import compose
     from .scene import Scene
-    run_path = os.path.join(out_dir, RUN)
-    if not os.path.isdir(out_dir) or not os.path.exists(run_path):
-        raise UserError(f"{out_dir} is not a results directory of `harness compare` (no {RUN})")
     frame = read_csv(os.path.join(out_dir, "results.csv"))
-    with open(run_path) as handle:
+    with open(os.path.join(out_dir, RUN)) as handle:
         run = json.load(handle)
     scene = Scene(**{k: tuple(v) if isinstance(v, list) else v for k, v in run["scene"].items()})
     law = compose(run["model"], run["overrides"])
@@ -79,11 +89,25 @@ def rebuild(out_dir):
     failures = [FailedRun(r.engine, r.e_n, r.message, "" if pd.isna(r.log_tail) else r.log_tail)
                 for r in failure_table.itertuples()] if not failure_table.empty else []
     precision = _read(out_dir, PRECISION)
-    return write_report(out_dir, frame, law=law, scene=scene, skipped=[tuple(s) for s in run["skipped"]],
-                        agreement=agree, deviation=devs, cross=cross, attributions=attributions,
-                        findings=findings(frame), failures=failures,
-                        precision=precision if not precision.empty else None, histories=histories,
-                        arithmetic=arithmetic(run.get("engine_options", {})))
+    return dict(frame=frame, law=law, scene=scene, skipped=[tuple(s) for s in run["skipped"]],
+                agreement=agree, deviation=devs, cross=cross, attributions=attributions,
+                findings=findings(frame), failures=failures,
+                precision=precision if not precision.empty else None, histories=histories,
+                arithmetic=arithmetic(run.get("engine_options", {})))
+
+
+def cost_part(out_dir):
+    """The cost section: cost.csv, the truth uncertainties and cost.json."""
+    from .cost_report import cost_section
+    with open(os.path.join(out_dir, COST_RUN)) as handle:
+        run = json.load(handle)
+    cost = pd.read_csv(os.path.join(out_dir, COST), dtype={"rung": str, "message": str})
+    section = cost_section(cost, run["model"])
+    uncertainty = _read(out_dir, COST_TRUTH)
+    section.update(model=run["model"], skipped=[tuple(s) for s in run["skipped"]], failures=run.get("failures", []),
+                   scene=run["scene"],
+                   uncertainty=records(uncertainty) if not uncertainty.empty else None)
+    return section
 
 
 def arithmetic(engine_options):

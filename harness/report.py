@@ -119,10 +119,25 @@ def hertz_ratios(normal, contact, speed):
     return table
 
 
-def write_report(out_dir, frame, law, scene, skipped, agreement=None, deviation=None, cross=None, attributions=None,
-                 findings=None, failures=(), precision=None, histories=None, arithmetic=None):
-    """Render DIR/report.html (self-contained) and return its path."""
+def write_report(out_dir, compare=None, cost=None):
+    """Render DIR/report.html (self-contained) from a compare part, a cost part or both; returns its path."""
     env = environment(autoescape=True)
+    context = {"compare": None, "cost": cost, "conventions": CONVENTIONS,
+               "title": (compare or {}).get("law").name if compare else cost["model"]}
+    if compare:
+        context["compare"] = compare_context(**compare)
+    html = env.get_template("report.html.j2").render(**context)
+    path = os.path.join(out_dir, "report.html")
+    tmp = path + ".tmp"
+    with open(tmp, "w", encoding="utf-8") as handle:
+        handle.write(html)
+    os.replace(tmp, path)
+    return path
+
+
+def compare_context(frame, law, scene, skipped, agreement=None, deviation=None, cross=None, attributions=None,
+                    findings=None, failures=(), precision=None, histories=None, arithmetic=None):
+    """Figures and tables of the compare sections."""
     figures = []
     paper = frame[(frame.engine == "reference") & (frame.dialect == "paper")]
     oblique = frame[frame.psi1_star > 0]
@@ -139,16 +154,9 @@ def write_report(out_dir, frame, law, scene, skipped, agreement=None, deviation=
         e_n_min=("e_n", "min"), e_n_max=("e_n", "max"), e_t_min=("e_t", "min"), e_t_max=("e_t", "max"),
         t_contact_max=("t_contact", "max"), f_n_max=("f_n_max", "max"), ke_ratio_max=("ke_ratio", "max"),
         rows=("status", "size")).reset_index()
-    html = env.get_template("report.html.j2").render(
-        law=law, submodels=law.describe(), scene=scene, conventions=CONVENTIONS, figures=figures,
-        summary=summary.to_dict("records"), skipped=skipped, rows=len(frame), ran=engines_ran(frame),
-        facts=records(run_facts(frame, arithmetic or {})), agreement=records(agreement),
-        deviation=records(deviation), cross=records(cross), findings=records(findings), failures=failures,
-        precision=records(precision), ratios=ratios,
-        attributions=[(name, records(table)) for name, table in (attributions or {}).items()])
-    path = os.path.join(out_dir, "report.html")
-    tmp = path + ".tmp"
-    with open(tmp, "w", encoding="utf-8") as handle:
-        handle.write(html)
-    os.replace(tmp, path)
-    return path
+    return dict(law=law, submodels=law.describe(), scene=scene, figures=figures,
+                summary=summary.to_dict("records"), skipped=skipped, rows=len(frame), ran=engines_ran(frame),
+                facts=records(run_facts(frame, arithmetic or {})), agreement=records(agreement),
+                deviation=records(deviation), cross=records(cross), findings=records(findings), failures=failures,
+                precision=records(precision), ratios=ratios,
+                attributions=[(name, records(table)) for name, table in (attributions or {}).items()])

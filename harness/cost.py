@@ -1,0 +1,210 @@
+"""What accuracy costs in time: a ladder of steps per contact for the paper law, each engine's dialect and each
+engine, errors of e_n, e_t, Omega*, t_c and F_max against the converged reference of the same dialect."""
+import math
+import tempfile
+
+import numpy as np
+import pandas as pd
+
+from .engines.runner import EngineFailure
+from .engines.sweep import TIMEOUT_FLOOR_S, run_sweep
+from .solver.plan import FixedTimeStep, plan_batch
+from .solver.reference import simulate
+from .stability import UnstableTimeStep
+
+LADDER = (5, 10, 20, 50, 100, 200, 500, 1000, 5000)
+METRICS = ("e_n", "e_t", "omega_star", "t_contact", "f_n_max")
+TOLERANCES = (1e-2, 1e-3, 1e-4)
+TRUTH_STEPS = {"paper": 2 ** 16, "engine": 2 ** 18}   # the engines' schemes are first order: a finer truth
+RAYLEIGH_FRACTION = 0.2
+COLUMNS = ("model", "engine", "dialect", "e_n_target", "rung", "steps_per_contact", "dt", "impacts", "steps",
+           "wall_s", "startup_s", "net_wall_s", "status", "message", *(f"err_{m}" for m in METRICS), "err_max")
+
+
+def rayleigh_time(scene):
+    """T_R = pi R sqrt(rho/G)/(0.1631 nu + 0.8766), G = E/(2(1 + nu)) (Li, Xu & Thornton 2005)."""
+    shear = scene.E / (2.0 * (1.0 + scene.nu))
+    return math.pi * scene.radius * math.sqrt(scene.rho / shear) / (0.1631 * scene.nu + 0.8766)
+
+
+def relative_errors(values, truth):
+    """Per metric: max |x - x*| over the impacts / max |x*| (the sweep's scale; e_t and Omega* pass through 0)."""
+    out = {}
+    for metric in METRICS:
+        exact = truth[metric].to_numpy(dtype=float)
+        got = values[metric].to_numpy(dtype=float)
+        usable = np.isfinite(exact)
+        scale = np.max(np.abs(exact[usable])) if usable.any() else 0.0
+        if scale == 0.0 or not np.isfinite(got[usable]).any():
+            out[f"err_{metric}"] = np.nan
+            continue
+        diff = np.abs(got[usable] - exact[usable])
+        out[f"err_{metric}"] = np.inf if not np.all(np.isfinite(diff)) else float(diff.max() / scale)
+    finite = [v for v in out.values() if not np.isnan(v)]
+    out["err_max"] = max(finite) if finite else np.nan
+    return out
+
+
+def truth_of(law, scene):
+    """Converged reference of one dialect: the finest run and its uncertainty (change from half the steps, an
+    upper bound for first- and second-order schemes alike), per e_n."""
+    steps = TRUTH_STEPS["paper" if law.integrator == "paper" else "engine"]
+    fine = simulate(law, scene, steps_per_contact=steps)[0]
+    half = simulate(law, scene, steps_per_contact=steps // 2)[0]
+    uncertainty = {e: relative_errors(group, fine[fine.e_n_target == e])
+                   for e, group in half.groupby("e_n_target", sort=False)}
+    return fine, uncertainty
+
+
+def measure(rows, law_name, engine, dialect, rung, frames_by_e, truth, steps_of, startup=None):
+    """Cost rows of one rung: per e_n the errors against the truth, wall time (and without the engine's start-up)
+    and contact steps."""
+    for e_n, frame in frames_by_e.items():
+        exact = truth[truth.e_n_target == e_n]
+        ok = frame.status == "ok"
+        wall = float(frame.wall_s.sum())
+        start = (startup or {}).get(e_n, 0.0)
+        rows.append({"model": law_name, "engine": engine, "dialect": dialect, "e_n_target": e_n, "rung": rung,
+                     "steps_per_contact": float(frame.steps_per_contact.iloc[0]), "dt": float(frame.dt.iloc[0]),
+                     "impacts": len(frame), "steps": steps_of(e_n), "wall_s": wall, "startup_s": start,
+                     "net_wall_s": max(wall - start, 0.0) if np.isfinite(wall) else np.nan,
+                     "status": "ok" if ok.all() else str(frame.status[~ok].iloc[0]),
+                     "message": "" if ok.all() else str(frame.message[~ok].iloc[0]),
+                     **relative_errors(frame, exact)})
+
+
+def refused(rows, law_name, engine, dialect, rung, scene, message):
+    for e_n in scene.e_n:
+        rows.append({"model": law_name, "engine": engine, "dialect": dialect, "e_n_target": e_n, "rung": rung,
+                     "status": "refused", "message": message})
+
+
+def ladder_rungs(ladder, scene):
+    """(label, resolution) pairs: the ladder's steps per contact, then 20% of the Rayleigh time."""
+    return [(str(n), n) for n in ladder] + [("rayleigh", FixedTimeStep(RAYLEIGH_FRACTION * rayleigh_time(scene)))]
+
+
+def reference_curve(rows, law, scene, ladder, truth, engine_label="reference"):
+    """The reference engine running `law` at every rung (contact steps counted by a second, untimed kernel run)."""
+    for label, resolution in ladder_rungs(ladder, scene):
+        try:
+            frame, _ = simulate(law, scene, steps_per_contact=resolution)
+        except UnstableTimeStep as exc:
+            refused(rows, law.name, engine_label, law.dialect, label, scene, str(exc))
+            continue
+        measure(rows, law.name, engine_label, law.dialect, label,
+                {e: g for e, g in frame.groupby("e_n_target", sort=False)}, truth,
+                lambda e_n: contact_steps(law, scene, resolution, e_n))
+
+
+def contact_steps(law, scene, resolution, e_n):
+    """Impact-steps the scheme takes in contact (the kernel's step count, all impacts of one e_n)."""
+    from .solver import codes as C
+    from .solver.reference import run_kernel
+    out, _, _ = run_kernel(plan_batch(law, scene, e_n, resolution))
+    return float(out[:, C.O_STEPS].sum())
+
+
+def startup_seconds(adapter, paper_law, dialect, scene, options):
+    """Per e_n: wall time of the same batched run stopped after its first check (a few steps): process start-up,
+    reading the input and building the scene, which a long simulation pays once."""
+    starts = {}
+    for e_n in scene.e_n:
+        batch = plan_batch(dialect, scene, e_n, 1000)
+        try:
+            with tempfile.TemporaryDirectory(prefix=f"harness-{adapter.NAME}-startup-") as workdir:
+                starts[e_n] = adapter.run_batch(paper_law, scene, batch, 1, TIMEOUT_FLOOR_S, workdir, options)[1]
+        except EngineFailure:
+            starts[e_n] = np.nan
+    return starts
+
+
+def engine_curve(rows, adapter, paper_law, dialect, scene, ladder, truth, options, failures):
+    """The engine itself at every rung (one batched run per e_n); refused and failed runs keep their message."""
+    startup = startup_seconds(adapter, paper_law, dialect, scene, options)
+    for label, resolution in ladder_rungs(ladder, scene):
+        try:
+            frames, failed = run_sweep(adapter, paper_law, scene, resolution, options=options)
+        except UnstableTimeStep as exc:
+            refused(rows, paper_law.name, adapter.NAME, dialect.dialect, label, scene, str(exc))
+            continue
+        failures += failed
+        measure(rows, paper_law.name, adapter.NAME, dialect.dialect, label,
+                {f.e_n_target.iloc[0]: f for f in frames}, truth,
+                lambda e_n: contact_steps(dialect, scene, resolution, e_n), startup)
+
+
+def converged_point(rows, law, scene, truth):
+    """The paper law in --converged mode: one point of cost and error per e_n."""
+    frame, _ = simulate(law, scene, converged=True)
+    for e_n, group in frame.groupby("e_n_target", sort=False):
+        exact = truth[truth.e_n_target == e_n]
+        rows.append({"model": law.name, "engine": "reference", "dialect": law.dialect, "e_n_target": e_n,
+                     "rung": "converged", "steps_per_contact": float(group.steps_per_contact.max()),
+                     "dt": float(group.dt.min()), "impacts": len(group), "steps": np.nan,
+                     "wall_s": float(group.wall_s.sum()), "startup_s": 0.0, "net_wall_s": float(group.wall_s.sum()),
+                     "status": "ok", "message": "converged mode",
+                     **relative_errors(group, exact)})
+
+
+def cost_table(law, scene, adapters, ladder=LADDER, on_rows=None):
+    """Every curve of the study as one table (COLUMNS); adapters: {name: (adapter, options)} of the engines."""
+    simulate(law, scene.__class__(e_n=(0.5,), angles_deg=(10.0,)), steps_per_contact=10)   # compile outside timing
+    rows, failures, uncertainty = [], [], {}
+    truth, uncertainty["paper"] = truth_of(law, scene)
+    reference_curve(rows, law, scene, ladder, truth)
+    converged_point(rows, law, scene, truth)
+    if on_rows:
+        on_rows(rows)
+    for name, (adapter, options) in adapters.items():
+        dialect = adapter.dialect(law.name, options)
+        dialect_truth, uncertainty[name] = truth_of(dialect, scene)
+        reference_curve(rows, dialect, scene, ladder, dialect_truth)
+        engine_curve(rows, adapter, law, dialect, scene, ladder, dialect_truth, options, failures)
+        if on_rows:
+            on_rows(rows)
+    return pd.DataFrame(rows, columns=COLUMNS), failures, uncertainty
+
+
+def recommendations(cost):
+    """Per curve (engine, dialect): the largest ladder dt whose error, and that of every finer rung, is within each
+    tolerance at every e_n (worst metric); with its steps per contact and wall time."""
+    out = []
+    ladder = cost[cost.rung.str.fullmatch(r"\d+")]
+    for (engine, dialect), curve in ladder.groupby(["engine", "dialect"], sort=False):
+        row = {"engine": engine, "dialect": dialect}
+        for tol in TOLERANCES:
+            chosen = None
+            for rung in sorted(curve.rung.unique(), key=int, reverse=True):
+                level = curve[curve.rung == rung]
+                if level.status.eq("ok").all() and (level.err_max <= tol).all():
+                    chosen = level
+                else:
+                    break
+            key = f"{tol:.0%}" if tol >= 0.01 else f"{tol * 100:g}%"
+            row[f"dt for {key} [s]"] = chosen.dt.min() if chosen is not None else np.nan
+            row[f"steps/contact for {key}"] = int(chosen.rung.iloc[0]) if chosen is not None else np.nan
+            row[f"wall for {key} [s]"] = chosen.wall_s.sum() if chosen is not None else np.nan
+        rayleigh = cost[(cost.engine == engine) & (cost.dialect == dialect) & (cost.rung == "rayleigh")]
+        row["error at 20% Rayleigh"] = rayleigh.err_max.max() if rayleigh.status.eq("ok").all() else np.nan
+        out.append(row)
+    return pd.DataFrame(out)
+
+
+def convergence_orders(cost, floor=1e-12):
+    """Per curve and metric: slope of -log(error) against log(steps per contact) over the rungs of 20+ steps whose
+    error is above `floor` (least squares over every e_n)."""
+    out = []
+    ladder = cost[cost.rung.str.fullmatch(r"\d+") & (cost.status == "ok")]
+    for (engine, dialect), curve in ladder.groupby(["engine", "dialect"], sort=False):
+        row = {"engine": engine, "dialect": dialect}
+        for metric in METRICS:
+            pts = curve[(curve.rung.astype(int) >= 20) & (curve[f"err_{metric}"] > floor)]
+            pts = pts[np.isfinite(pts[f"err_{metric}"])]
+            if len(pts.rung.unique()) < 3:
+                row[metric] = np.nan
+                continue
+            slope = np.polyfit(np.log(pts.rung.astype(float)), np.log(pts[f"err_{metric}"]), 1)[0]
+            row[metric] = -slope
+        out.append(row)
+    return pd.DataFrame(out)

@@ -1,0 +1,114 @@
+"""`harness cost`: run the accuracy-against-cost ladder, print its tables, write DIR/cost.csv and the report."""
+import json
+import os
+from dataclasses import asdict
+
+import pandas as pd
+
+from .compare import engine_options, requested_engines, text_table
+from .cost import LADDER, METRICS, convergence_orders, cost_table, rayleigh_time, recommendations, RAYLEIGH_FRACTION
+from .engines import ADAPTERS, engine_status
+from .errors import UserError
+from .publish import COST, COST_RUN, COST_TRUTH as UNCERTAINTY
+from .results import write_csv
+
+
+
+def ladder_from_text(text):
+    """--ladder '5,10,20': whole steps per contact >= 1, ascending, no repeats."""
+    if text is None:
+        return LADDER
+    try:
+        rungs = tuple(int(part) for part in text.split(",") if part.strip())
+    except ValueError:
+        raise UserError(f"--ladder takes whole numbers of steps per contact, e.g. 5,10,100; got {text!r}") from None
+    if not rungs or min(rungs) < 1 or list(rungs) != sorted(set(rungs)):
+        raise UserError(f"--ladder needs ascending whole numbers >= 1 without repeats, got {text!r}")
+    return rungs
+
+
+def summary(cost):
+    """Per curve and rung: worst error over e_n per metric, wall time summed over e_n (start-up excluded)."""
+    ok = cost[cost.status != "refused"]
+    agg = {f"err_{m}": "max" for m in (*METRICS, "max")}
+    agg.update({"wall_s": "sum", "net_wall_s": "sum", "steps_per_contact": "min", "steps": "sum", "dt": "max"})
+    table = ok.groupby(["engine", "dialect", "rung"], sort=False).agg(agg).reset_index()
+    refused = cost[cost.status == "refused"].groupby(["engine", "dialect", "rung"], sort=False).size().reset_index()
+    return table, refused
+
+
+def save(out_dir, cost, uncertainty, law, scene, overrides, skipped, failures):
+    """DIR/cost.csv (per curve, rung and e_n), the truth uncertainties and cost.json (scene, skipped engines)."""
+    write_csv(cost, os.path.join(out_dir, COST))
+    rows = [{"curve": curve, "e_n_target": e_n, **errs} for curve, per_e in uncertainty.items()
+            for e_n, errs in per_e.items()]
+    pd.DataFrame(rows).to_csv(os.path.join(out_dir, UNCERTAINTY), index=False)
+    scene_fields = {k: v for k, v in asdict(scene).items() if k != "extra"}
+    with open(os.path.join(out_dir, COST_RUN), "w") as handle:
+        json.dump({"model": law.name, "overrides": overrides, "scene": scene_fields, "skipped": skipped,
+                   "failures": [vars(f) for f in failures]}, handle, indent=1)
+
+
+def cost(args):
+    """Run the ladder; 0 when every run succeeded or was refused with its reason, 1 when an engine run failed."""
+    from .cli import law_from_args, scene_from_args
+    from .publish import rebuild
+    engines = requested_engines(args.engines)
+    scene, law, ladder = scene_from_args(args), law_from_args(args), ladder_from_text(args.ladder)
+    out_dir = args.output
+    if os.path.exists(out_dir) and not os.path.isdir(out_dir):
+        raise UserError(f"output {out_dir} exists and is not a directory")
+    statuses = [engine_status(name, law.name) for name in engines]
+    if scene.gravity or scene.wall != "same":
+        statuses = [type(s)(s.name, False, "engine inputs model neither gravity nor another wall")
+                    if s.available else s for s in statuses]
+    adapters = {s.name: (ADAPTERS[s.name], engine_options(args, s.name)) for s in statuses if s.available}
+    for name, (adapter, options) in adapters.items():
+        adapter.dialect(law.name, options)                    # bad options: exit 2 before anything runs
+    skipped = [(s.name, s.reason) for s in statuses if not s.available]
+    os.makedirs(out_dir, exist_ok=True)
+    table, failures, uncertainty = cost_table(
+        law, scene, adapters, ladder,
+        on_rows=lambda rows: write_csv(pd.DataFrame(rows), os.path.join(out_dir, COST + ".partial")))
+    partial = os.path.join(out_dir, COST + ".partial")
+    save(out_dir, table, uncertainty, law, scene, dict(args.overrides), skipped, failures)
+    if os.path.exists(partial):
+        os.remove(partial)
+    report = rebuild(out_dir)
+    if not args.quiet:
+        print_tables(table, uncertainty, law, scene, ladder, skipped, failures)
+        print(f"\nwrote {os.path.join(out_dir, COST)} and {report}")
+    return 1 if failures else 0
+
+
+def print_tables(table, uncertainty, law, scene, ladder, skipped, failures):
+    t_r = rayleigh_time(scene)
+    print(f"{law.name}: accuracy against cost, {len(scene.e_n)} e_n x {len(scene.impacts(scene.e_n[0])[0])} "
+          f"impacts; ladder {', '.join(map(str, ladder))} steps per contact, plus {RAYLEIGH_FRACTION:.0%} of the "
+          f"Rayleigh time (T_R = {t_r:.4g} s, dt = {RAYLEIGH_FRACTION * t_r:.4g} s)")
+    print("errors: max over impacts |x - x*| / max |x*| against the converged reference of the same dialect; "
+          "wall time summed over e_n, engine start-up excluded")
+    for curve, per_e in uncertainty.items():
+        worst = max(errs["err_max"] for errs in per_e.values())
+        print(f"  converged reference of the {curve} dialect: uncertainty {worst:.1e}"
+              + (" (errors below this are not resolved)" if worst > 1e-6 else ""))
+    for name, reason in skipped:
+        print(f"skipped {name}: {reason}")
+    rows, refused = summary(table)
+    print()
+    print(text_table(rows, ["engine", "dialect", "rung", "steps_per_contact", "dt", "net_wall_s", "err_e_n", "err_e_t",
+                            "err_omega_star", "err_t_contact", "err_f_n_max"],
+                     {"steps_per_contact": "{:.4g}", "dt": "{:.3g}", "net_wall_s": "{:.3g}",
+                      **{f"err_{m}": "{:.1e}" for m in METRICS}}))
+    for _, r in refused.iterrows():
+        message = table[(table.engine == r.engine) & (table.dialect == r.dialect) & (table.rung == r.rung)].message.iloc[0]
+        print(f"  refused: {r.engine}/{r.dialect} at {r.rung}: {message}")
+    print("\nrecommended time step (coarsest rung within tolerance at every e_n, worst metric, and every finer rung too):")
+    rec = recommendations(table)
+    cols = [c for c in rec.columns if c.startswith("dt for") or c.startswith("steps/contact")] + ["error at 20% Rayleigh"]
+    print(text_table(rec, ["engine", "dialect", *cols], {c: "{:.3g}" for c in cols}))
+    print("\norder of convergence (slope of log error against log steps per contact, rungs >= 20):")
+    orders = convergence_orders(table)
+    print(text_table(orders, ["engine", "dialect", *METRICS], {m: "{:.2f}" for m in METRICS}))
+    for failure in failures:
+        print(f"\n{failure.engine} failed at e_n = {failure.e_n:g}: {failure.message}\n{failure.log_tail}")

@@ -1,0 +1,79 @@
+"""The report's accuracy-against-cost section, from cost.csv alone: log-log figures and the tables."""
+import numpy as np
+
+from .cost import METRICS, TOLERANCES, convergence_orders, recommendations
+
+LABELS = {"e_n": "e_n", "e_t": "e_t", "omega_star": "Omega*", "t_contact": "contact time", "f_n_max": "peak force",
+          "max": "worst metric"}
+
+
+def curve_style(engine, dialect):
+    """Engines solid with markers, the reference's dialects dashed, the paper law thick."""
+    if engine == "reference" and dialect == "paper":
+        return {"lw": 2.2, "ls": "-", "marker": "o", "ms": 3}
+    if engine == "reference":
+        return {"lw": 1.2, "ls": "--", "marker": ".", "ms": 3}
+    return {"lw": 1.4, "ls": "-", "marker": "s", "ms": 3}
+
+
+def _curves(cost):
+    """(engine, dialect, ladder rows aggregated over e_n, Rayleigh row, converged row) per curve."""
+    done = cost[cost.status != "refused"].copy()
+    agg = {**{f"err_{m}": "max" for m in (*METRICS, "max")}, "net_wall_s": "sum"}
+    for (engine, dialect), curve in done.groupby(["engine", "dialect"], sort=False):
+        per_rung = curve.groupby("rung", sort=False).agg(agg).reset_index()
+        per_rung["n"] = curve.groupby("rung", sort=False).steps_per_contact.min().to_numpy()
+        ladder = per_rung[per_rung.rung.str.fullmatch(r"\d+")].sort_values("n")
+        yield engine, dialect, ladder, per_rung[per_rung.rung == "rayleigh"], per_rung[per_rung.rung == "converged"]
+
+
+def cost_figure(cost, x_column, x_label, metrics):
+    """One log-log panel per metric: error against `x_column`, one curve per engine and dialect; the 20%-Rayleigh
+    run as a diamond, the converged mode as a star, the 1%, 0.1%, 0.01% levels as grey lines."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from .report import figure_png
+    fig, axes = plt.subplots(1, len(metrics), figsize=(3.7 * len(metrics), 3.6), squeeze=False)
+    for ax, metric in zip(axes[0], metrics):
+        column = f"err_{metric}"
+        for engine, dialect, ladder, rayleigh, converged in _curves(cost):
+            data = ladder[np.isfinite(ladder[column]) & (ladder[column] > 0) & (ladder[x_column] > 0)]
+            if data.empty:
+                continue
+            line, = ax.plot(data[x_column], data[column], label=f"{engine}/{dialect}", **curve_style(engine, dialect))
+            for row in rayleigh.itertuples():
+                if getattr(row, column) > 0 and getattr(row, x_column) > 0:
+                    ax.plot(getattr(row, x_column), getattr(row, column), "D", ms=7, mfc="none", color=line.get_color())
+            for row in converged.itertuples():
+                if getattr(row, column) > 0 and getattr(row, x_column) > 0:
+                    ax.plot(getattr(row, x_column), getattr(row, column), "*", ms=11, color=line.get_color())
+        for tol in TOLERANCES:
+            ax.axhline(tol, color="0.6", lw=0.8, ls=":")
+        ax.set(xscale="log", yscale="log", title=LABELS[metric], xlabel=x_label)
+        ax.grid(alpha=0.3, which="both")
+    axes[0][0].set_ylabel("relative error")
+    axes[0][-1].plot([], [], "D", mfc="none", color="k", label="20% Rayleigh time")
+    axes[0][-1].plot([], [], "*", color="k", label="converged mode")
+    axes[0][-1].legend(fontsize=7)
+    png = figure_png(fig)
+    plt.close(fig)
+    return png
+
+
+def cost_section(cost, model):
+    """Figures and tables of the cost section."""
+    from .report import records
+    figures = [
+        (f"{model}: worst-metric error against wall time (start-up excluded)",
+         cost_figure(cost, "net_wall_s", "wall time [s]", ("max",))),
+        (f"{model}: error of each metric against wall time (start-up excluded)",
+         cost_figure(cost, "net_wall_s", "wall time [s]", METRICS)),
+        (f"{model}: error of each metric against steps per contact",
+         cost_figure(cost, "n", "steps per contact", METRICS)),
+    ]
+    refused = cost[cost.status == "refused"].drop_duplicates(["engine", "dialect", "rung"])
+    return {"figures": figures, "recommendations": records(recommendations(cost)),
+            "orders": records(convergence_orders(cost)),
+            "refused": records(refused[["engine", "dialect", "rung", "message"]]),
+            "table": records(cost.drop(columns=["model", "message"]))}
