@@ -1,0 +1,143 @@
+"""`harness cost`: errors against the converged reference, orders of convergence, recommendations, refusals, the
+engines' curves against their dialects, and the CLI and report."""
+import math
+import subprocess
+import sys
+
+import numpy as np
+import pandas as pd
+import pytest
+from scipy.optimize import brentq
+
+from harness.cost import (TOLERANCES, convergence_orders, cost_table, rayleigh_time, recommendations,
+                          relative_errors)
+from harness.engines import ADAPTERS
+from harness.laws import compose
+from harness.scene import Scene
+
+LIGGGHTS = ADAPTERS["liggghts"]
+
+
+@pytest.mark.parametrize("nu", [0.0, 0.2, 0.3, 0.45])
+def test_rayleigh_time_matches_the_rayleigh_wave_equation(nu):
+    """T_R = pi R / c_R with c_R from (2 - x^2)^2 = 4 sqrt(1 - x^2) sqrt(1 - x^2 c_s^2/c_p^2), x = c_R/c_s:
+    the fitted 0.1631 nu + 0.8766 is within 0.5% of the exact root."""
+    scene = Scene(nu=nu)
+    ratio_sp = math.sqrt((1 - 2 * nu) / (2 * (1 - nu)))                  # c_s/c_p
+    root = brentq(lambda x: (2 - x * x) ** 2 - 4 * math.sqrt(1 - x * x) * math.sqrt(1 - (x * ratio_sp) ** 2),
+                  0.5, 0.999)
+    c_s = math.sqrt(scene.E / (2 * (1 + nu)) / scene.rho)
+    assert rayleigh_time(scene) == pytest.approx(math.pi * scene.radius / (root * c_s), rel=5e-3)
+
+
+def test_relative_errors_are_scaled_by_the_sweeps_largest_value():
+    truth = pd.DataFrame({"e_n": [0.5, 0.5], "e_t": [0.2, -0.4], "omega_star": [1.0, 2.0],
+                          "t_contact": [1e-5, 2e-5], "f_n_max": [10.0, 20.0]})
+    got = truth.copy()
+    got.loc[0, "e_t"] += 0.004                  # 0.004 / 0.4
+    got.loc[1, "f_n_max"] -= 0.2                # 0.2 / 20
+    err = relative_errors(got, truth)
+    assert err["err_e_t"] == pytest.approx(0.01) and err["err_f_n_max"] == pytest.approx(0.01)
+    assert err["err_e_n"] == 0 and err["err_max"] == pytest.approx(0.01)
+    got.loc[0, "omega_star"] = np.nan                      # one impact lost: an infinite error, not a silent skip
+    assert relative_errors(got, truth)["err_omega_star"] == np.inf
+    got["t_contact"] = np.nan                              # a metric the engine does not report: no error at all
+    assert np.isnan(relative_errors(got, truth)["err_t_contact"])
+
+
+@pytest.fixture(scope="module")
+def reference_cost():
+    scene = Scene(e_n=(0.9, 0.4), angles_deg=(0.0, 30.0, 60.0))
+    table, failures, uncertainty = cost_table(compose("hertz-mindlin"), scene, {}, ladder=(5, 10, 20, 50, 100, 200))
+    return table, uncertainty
+
+
+def test_paper_scheme_is_second_order_on_every_metric(reference_cost):
+    """Velocity Verlet on u with the release located in the step: error ~ h^2 (MODELS 4: order 2)."""
+    orders = convergence_orders(reference_cost[0]).set_index(["engine", "dialect"]).loc[("reference", "paper")]
+    for metric in ("e_n", "e_t", "omega_star", "t_contact", "f_n_max"):
+        assert 1.7 < orders[metric] < 2.6, (metric, orders[metric])
+
+
+def test_errors_fall_to_the_truth_and_the_truth_is_converged(reference_cost):
+    table, uncertainty = reference_cost
+    ladder = table[table.rung.str.fullmatch(r"\d+")]
+    finest = ladder[ladder.rung == "200"]
+    assert (finest.err_max < 1e-3).all() and (ladder[ladder.rung == "5"].err_max > 1e-3).all()
+    assert max(e["err_max"] for e in uncertainty["paper"].values()) < 1e-7
+
+
+def test_recommended_rung_meets_the_tolerance_and_the_next_coarser_does_not(reference_cost):
+    table = reference_cost[0]
+    paper = table[(table.engine == "reference") & (table.dialect == "paper") & table.rung.str.fullmatch(r"\d+")]
+    rec = recommendations(table).set_index(["engine", "dialect"]).loc[("reference", "paper")]
+    rungs = sorted(paper.rung.astype(int).unique())
+    for tol, key in zip(TOLERANCES, ("1%", "0.1%", "0.01%")):
+        chosen = rec[f"steps/contact for {key}"]
+        if np.isnan(chosen):
+            assert (paper[paper.rung == str(rungs[-1])].err_max > tol).any()
+            continue
+        assert (paper[paper.rung.astype(int) >= chosen].err_max <= tol).all()
+        coarser = [r for r in rungs if r < chosen]
+        if coarser:
+            assert (paper[paper.rung == str(coarser[-1])].err_max > tol).any()
+
+
+def test_converged_mode_is_a_point_below_1e6(reference_cost):
+    table = reference_cost[0]
+    converged = table[table.rung == "converged"]
+    assert len(converged) == 2 and (converged.err_max < 1e-6).all()
+
+
+def test_rungs_above_the_stability_limit_are_refused_with_the_limit():
+    """Walton-Braun at e_n = 0.05: K2 = 400 K1, so 5 and 10 steps per contact exceed the limit (h < 2/w2)."""
+    scene = Scene(e_n=(0.05,), angles_deg=(0.0,), mu=0.0)
+    table, _, _ = cost_table(compose("walton-braun"), scene, {}, ladder=(5, 10, 20, 50))
+    paper = table[table.rung.str.fullmatch(r"\d+")].set_index("rung")
+    assert list(paper.loc[["5", "10"], "status"]) == ["refused", "refused"]
+    assert paper.loc["5", "message"].count("stability limit") == 1
+    assert (paper.loc[["20", "50"], "status"] == "ok").all()
+
+
+@pytest.mark.skipif(not LIGGGHTS.available(), reason="LIGGGHTS is not installed")
+def test_engine_curve_is_its_dialects_curve():
+    """LIGGGHTS at every rung agrees with its dialect at the same dt, so its errors are the dialect's; its start-up
+    is measured and subtracted."""
+    scene = Scene(e_n=(0.5,), angles_deg=(0.0, 45.0))
+    table, failures, _ = cost_table(compose("linear-spring-dashpot"), scene, {"liggghts": (LIGGGHTS, {})},
+                                    ladder=(20, 50, 100, 200, 500))
+    assert failures == []
+    engine = table[table.engine == "liggghts"].set_index("rung")
+    dialect = table[(table.engine == "reference") & (table.dialect == "liggghts")].set_index("rung")
+    for metric in ("err_e_n", "err_e_t", "err_omega_star"):
+        assert np.allclose(engine[metric], dialect.loc[engine.index, metric], rtol=0, atol=1e-6)
+    assert (engine.startup_s > 0).all() and (engine.net_wall_s <= engine.wall_s).all()
+
+
+def run_cli(*args):
+    return subprocess.run([sys.executable, "-m", "harness.cli", *args], capture_output=True, text=True, timeout=600)
+
+
+@pytest.mark.parametrize("ladder", ["10,5", "0,5", "a,b", "5,5"])
+def test_bad_ladder_is_one_line_and_exit_2(tmp_path, ladder):
+    proc = run_cli("cost", "--model", "hertz-mindlin", "--ladder", ladder, "-o", str(tmp_path / "c"))
+    assert proc.returncode == 2 and len(proc.stderr.strip().splitlines()) == 1
+    assert not (tmp_path / "c").exists()
+
+
+def test_cli_writes_cost_csv_and_a_report_that_rebuilds(tmp_path):
+    out = tmp_path / "c"
+    proc = run_cli("cost", "--model", "thornton", "--engines", "liggghts", "--en", "0.5", "--angles", "0,40",
+                   "--ladder", "20,100", "-o", str(out))
+    assert proc.returncode == 0, proc.stderr
+    assert "recommended time step" in proc.stdout and "order of convergence" in proc.stdout
+    table = pd.read_csv(out / "cost.csv", dtype={"rung": str})
+    expected_curves = {("reference", "paper")} | ({("reference", "liggghts"), ("liggghts", "liggghts")}
+                                                   if LIGGGHTS.available() else set())
+    assert set(zip(table.engine, table.dialect)) == expected_curves
+    assert set(table.rung) >= {"20", "100", "rayleigh"}
+    html = (out / "report.html").read_text()
+    assert "what accuracy costs in time" in html and html.count("data:image/png;base64,") == 3
+    (out / "report.html").unlink()
+    rebuilt = run_cli("report", str(out))
+    assert rebuilt.returncode == 0 and (out / "report.html").read_text().count("data:image/png;base64,") == 3
