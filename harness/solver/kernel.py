@@ -14,7 +14,7 @@ from numba import njit, prange
 
 from . import codes as C
 from .normal_kernels import luding_yade, normal_elastic, thornton_ning
-from .tangential_kernels import N_TSTATE, after_cap, cap, spring_force, stiffness, viscous
+from .tangential_kernels import N_TSTATE, T_MARGIN, after_cap, cap, spring_force, stiffness, viscous
 
 S_ALPHA, S_VZ, S_VX, S_W, S_AMAX, S_FN, S_FT, S_FS, S_NOLD, S_U, S_FEL, S_C = 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11
 S_FMAX, S_YIELD, S_DETACH = 12, 13, 14      # incremental engine laws (thornton_ning): F_max, yielded, detached at
@@ -63,6 +63,7 @@ def friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, in_contact, scheme
     elif in_contact:
         limit = p[C.P_MU] * abs(f_n)
         f_s = spring_force(code, s[S_FS], slip * h, a, p[C.P_T1], p[C.P_MU], abs(f_n), s[S_NOLD], ot, scratch, paper)
+        ot[T_MARGIN] = abs(f_s) - limit
         if abs(f_s) > limit:
             f_s = cap(f_s, limit)
             after_cap(code, f_s, p[C.P_T1], a, ot)
@@ -294,6 +295,79 @@ def advance(s, st, o, ot, p, ints, h, scratch):
     return step(s, st, o, ot, p, ints, h, scratch)
 
 
+EVENT_NONE, EVENT_TURN, EVENT_SLIP, EVENT_STICK = 0, 1, 2, 3
+EVENT_ITERATIONS = 60
+
+
+@njit(cache=True, inline="always")
+def event_kind(s, st, o, ot, ints):
+    """A change of regime inside the step (paper scheme): the normal motion turns (alpha_dot through 0), the contact
+    starts to slide (trial spring force reaches mu F_n) or stops sliding (its slip velocity reverses)."""
+    if s[S_VZ] < 0.0 <= o[S_VZ] and s[S_ALPHA] > 0.0:
+        return EVENT_TURN
+    code = ints[C.I_TANGENTIAL]
+    if code == C.TANGENTIAL_NONE or code >= C.TANGENTIAL_VISCOUS_LINEAR or s[S_FN] <= 0.0 or o[S_FN] <= 0.0:
+        return EVENT_NONE
+    if st[T_MARGIN] < 0.0 < ot[T_MARGIN]:
+        return EVENT_SLIP
+    if st[T_MARGIN] > 0.0 >= ot[T_MARGIN]:
+        return EVENT_STICK
+    return EVENT_NONE
+
+
+@njit(cache=True, inline="always")
+def event_value(kind, o, ot, p, sign0):
+    """The quantity whose zero is the event: alpha_dot, spring margin, or slip velocity (signed as at the start)."""
+    if kind == EVENT_TURN:
+        return o[S_VZ]
+    if kind == EVENT_SLIP:
+        return ot[T_MARGIN]
+    lever = p[C.P_RADIUS] - p[C.P_LEVER] * o[S_ALPHA]
+    return sign0 * slip_velocity(p, o[S_ALPHA], o[S_VX], o[S_W], lever)
+
+
+@njit(cache=True)
+def locate_event(kind, s, st, lo, lot, p, ints, h, scratch, g_hi):
+    """Step fraction at which the event happens (Illinois false position on the event value); -1 if the value
+    does not change sign over the step."""
+    sign0 = 1.0
+    if kind == EVENT_STICK:
+        lever = p[C.P_RADIUS] - p[C.P_LEVER] * s[S_ALPHA]
+        slip0 = slip_velocity(p, s[S_ALPHA], s[S_VX], s[S_W], lever)
+        sign0 = 1.0 if slip0 > 0.0 else -1.0
+        g_lo = abs(slip0)
+        g_hi = event_value(kind, lo, lot, p, sign0)       # lo, lot hold the full step on entry
+        g_lo, g_hi = -g_lo, -g_hi                         # increasing through zero, as the other kinds
+    elif kind == EVENT_TURN:
+        g_lo = s[S_VZ]
+    else:
+        g_lo = st[T_MARGIN]
+    if not (g_lo < 0.0 < g_hi):
+        return -1.0
+    lo_f, hi_f, side = 0.0, 1.0, 0
+    for _ in range(EVENT_ITERATIONS):
+        if hi_f - lo_f <= 1e-14:
+            break
+        mid = (lo_f * g_hi - hi_f * g_lo) / (g_hi - g_lo)
+        if not lo_f < mid < hi_f:
+            mid = 0.5 * (lo_f + hi_f)
+        step(s, st, lo, lot, p, ints, mid * h, scratch)
+        g_mid = event_value(kind, lo, lot, p, sign0)
+        if kind == EVENT_STICK:
+            g_mid = -g_mid
+        if g_mid < 0.0:
+            lo_f, g_lo = mid, g_mid
+            if side == 1:
+                g_hi *= 0.5
+            side = 1
+        else:
+            hi_f, g_hi = mid, g_mid
+            if side == -1:
+                g_lo *= 0.5
+            side = -1
+    return hi_f
+
+
 @njit(cache=True)
 def parabola_peak(y0, y1, y2, h1, h2):
     """Peak of the parabola through (-h1, y0), (0, y1), (h2, y2) with y1 the largest sample."""
@@ -316,6 +390,8 @@ def integrate(params, ints, out, history, stride):
         ot = np.zeros(N_TSTATE)
         lo = np.zeros(N_STATE)
         lot = np.zeros(N_TSTATE)
+        at_event = np.zeros(N_STATE)
+        at_event_t = np.zeros(N_TSTATE)
         scratch = np.zeros(N_TSTATE)
         p = params[i]
         row_ints = ints[i]
@@ -351,6 +427,20 @@ def integrate(params, ints, out, history, stride):
         for k in range(max_steps):
             h = h_base * (2 * k + 1) / (2 * graded) if k < graded else h_base
             indicator = advance(s, st, o, ot, p, row_ints, h, scratch)
+            if indicator > 0.0 and row_ints[C.I_INTEGRATOR] == C.INTEGRATOR_PAPER:
+                kind = event_kind(s, st, o, ot, row_ints)
+                if kind != EVENT_NONE:                     # split the step at the event: smooth error in h
+                    lo[:] = o
+                    lot[:] = ot
+                    g_hi = event_value(kind, o, ot, p, 1.0)
+                    frac = locate_event(kind, s, st, lo, lot, p, row_ints, h, scratch, g_hi)
+                    if 0.0 < frac < 1.0:
+                        step(s, st, at_event, at_event_t, p, row_ints, frac * h, scratch)
+                        if kind == EVENT_TURN:              # alpha_max itself; F_max too when undamped
+                            a_peak = max(a_peak, at_event[S_ALPHA])
+                            if p[C.P_DAMP_C0] == 0.0:
+                                f_peak = max(f_peak, at_event[S_FN])
+                        indicator = step(at_event, at_event_t, o, ot, p, row_ints, (1.0 - frac) * h, scratch)
             steps = k + 1
             if indicator <= 0.0 and row_ints[C.I_INTEGRATOR] != C.INTEGRATOR_PAPER:
                 t_end = t_now + h                          # the engine ends contact at the step, not inside it

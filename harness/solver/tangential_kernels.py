@@ -10,7 +10,8 @@ from numba import njit
 from . import codes as C
 
 T_AUX1, T_AUX2, T_MODE, T_DIR, T_AOLD = 0, 1, 2, 3, 4
-N_TSTATE = 5
+T_MARGIN = 5          # |trial spring force| - mu F_n of the last step (> 0: capped, sliding); read by event location
+N_TSTATE = 6
 
 
 @njit(cache=True)
