@@ -147,22 +147,32 @@ def converged_point(rows, law, scene, truth):
                      **relative_errors(group, exact)})
 
 
-def cost_table(law, scene, adapters, ladder=LADDER, on_rows=None):
-    """Every curve of the study as one table (COLUMNS); adapters: {name: (adapter, options)} of the engines."""
+class Rows(list):
+    """Cost rows that hand themselves to `keep` as each is added, so an interrupted study keeps what it measured."""
+
+    def __init__(self, keep=None):
+        super().__init__()
+        self.keep = keep
+
+    def append(self, row):
+        super().append(row)
+        if self.keep:
+            self.keep(pd.DataFrame(self, columns=COLUMNS))
+
+
+def cost_table(law, scene, adapters, ladder=LADDER, keep=None):
+    """Every curve of the study as one table (COLUMNS); adapters: {name: (adapter, options)} of the engines;
+    `keep(table)` is called with the table so far after every row."""
     simulate(law, scene.__class__(e_n=(0.5,), angles_deg=(10.0,)), steps_per_contact=10)   # compile outside timing
-    rows, failures, uncertainty = [], [], {}
+    rows, failures, uncertainty = Rows(keep), [], {}
     truth, uncertainty["paper"] = truth_of(law, scene)
     reference_curve(rows, law, scene, ladder, truth)
     converged_point(rows, law, scene, truth)
-    if on_rows:
-        on_rows(rows)
     for name, (adapter, options) in adapters.items():
         dialect = adapter.dialect(law.name, options)
         dialect_truth, uncertainty[name] = truth_of(dialect, scene)
         reference_curve(rows, dialect, scene, ladder, dialect_truth)
         engine_curve(rows, adapter, law, dialect, scene, ladder, dialect_truth, options, failures)
-        if on_rows:
-            on_rows(rows)
     return pd.DataFrame(rows, columns=COLUMNS), failures, uncertainty
 
 

@@ -6,7 +6,8 @@ from dataclasses import asdict
 import pandas as pd
 
 from .compare import engine_options, requested_engines, text_table
-from .cost import LADDER, METRICS, convergence_orders, cost_table, rayleigh_time, recommendations, RAYLEIGH_FRACTION
+from .cost import (COLUMNS, LADDER, METRICS, RAYLEIGH_FRACTION, convergence_orders, cost_table, rayleigh_time,
+                   recommendations)
 from .engines import ADAPTERS, engine_status
 from .errors import UserError
 from .publish import COST, COST_RUN, COST_TRUTH as UNCERTAINTY
@@ -38,7 +39,8 @@ def summary(cost):
 
 
 def save(out_dir, cost, uncertainty, law, scene, overrides, skipped, failures):
-    """DIR/cost.csv (per curve, rung and e_n), the truth uncertainties and cost.json (scene, skipped engines)."""
+    """DIR/cost.csv (per curve, rung and e_n), the truth uncertainties and cost.json (scene, skipped engines); also
+    written before the study starts, so `harness report DIR` works on an interrupted one."""
     write_csv(cost, os.path.join(out_dir, COST))
     rows = [{"curve": curve, "e_n_target": e_n, **errs} for curve, per_e in uncertainty.items()
             for e_n, errs in per_e.items()]
@@ -67,13 +69,10 @@ def cost(args):
         adapter.dialect(law.name, options)                    # bad options: exit 2 before anything runs
     skipped = [(s.name, s.reason) for s in statuses if not s.available]
     os.makedirs(out_dir, exist_ok=True)
-    table, failures, uncertainty = cost_table(
-        law, scene, adapters, ladder,
-        on_rows=lambda rows: write_csv(pd.DataFrame(rows), os.path.join(out_dir, COST + ".partial")))
-    partial = os.path.join(out_dir, COST + ".partial")
+    save(out_dir, pd.DataFrame(columns=COLUMNS), {}, law, scene, dict(args.overrides), skipped, [])
+    table, failures, uncertainty = cost_table(law, scene, adapters, ladder,
+                                              keep=lambda so_far: write_csv(so_far, os.path.join(out_dir, COST)))
     save(out_dir, table, uncertainty, law, scene, dict(args.overrides), skipped, failures)
-    if os.path.exists(partial):
-        os.remove(partial)
     report = rebuild(out_dir)
     if not args.quiet:
         print_tables(table, uncertainty, law, scene, ladder, skipped, failures)

@@ -141,3 +141,31 @@ def test_cli_writes_cost_csv_and_a_report_that_rebuilds(tmp_path):
     (out / "report.html").unlink()
     rebuilt = run_cli("report", str(out))
     assert rebuilt.returncode == 0 and (out / "report.html").read_text().count("data:image/png;base64,") == 3
+
+
+@pytest.mark.skipif(not LIGGGHTS.available(), reason="LIGGGHTS is not installed")
+def test_an_interrupted_study_keeps_its_rows_and_reports(tmp_path, monkeypatch):
+    """Ctrl-C during the engine part: exit 130, cost.csv holds every row measured before, the report rebuilds."""
+    import harness.cost
+    from harness.cli import main
+    from harness.publish import rebuild
+
+    def interrupted(*args, **kwargs):
+        raise KeyboardInterrupt
+    monkeypatch.setattr(harness.cost, "truth_of", _truth_then(harness.cost.truth_of, interrupted))
+    out = tmp_path / "c"
+    code = main(["cost", "--model", "hertz-mindlin", "--engines", "liggghts", "--en", "0.5", "--angles", "0,40",
+                 "--ladder", "20,100", "-o", str(out)])
+    assert code == 130
+    table = pd.read_csv(out / "cost.csv", dtype={"rung": str})
+    assert set(table.rung) == {"20", "100", "rayleigh", "converged"} and set(table.engine) == {"reference"}
+    assert "what accuracy costs in time" in open(rebuild(str(out))).read()
+
+
+def _truth_then(truth_of, then):
+    """truth_of for the paper law, `then` for the next call (the first engine dialect)."""
+    calls = []
+    def wrapped(*args, **kwargs):
+        calls.append(1)
+        return truth_of(*args, **kwargs) if len(calls) == 1 else then()
+    return wrapped
