@@ -24,6 +24,8 @@ MODELS = {                      # harness law -> LIGGGHTS normal model (MODELS 5
     "thornton": "thornton_ning",
 }
 MIN_RESTITUTION = 0.05          # LIGGGHTS refuses coefficientRestitution <= 0.05
+OBSERVE_DUMP = "observe.dump"   # observe mode: `id z fz` of every sphere in contact, every step
+DUMP_HEADER_LINES = 9           # TIMESTEP, NUMBER OF ATOMS, BOX BOUNDS (3 lines) and ATOMS items
 
 
 @dataclass(frozen=True)
@@ -146,8 +148,9 @@ def settings(law, scene, e_n, options=None):
     return model, tangential, sorted(options.items()), properties, restitution
 
 
-def deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, options=None):
-    """Render the batched deck (validated numbers and fixed words only; see harness.render)."""
+def deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, options=None, observe=False):
+    """Render the batched deck (validated numbers and fixed words only; see harness.render); `observe` adds the
+    per-step contact dump (OBSERVE_DUMP)."""
     model, tangential, options, properties, restitution = settings(law, scene, e_n, options)
     if not MIN_RESTITUTION < restitution <= 1.0:
         raise EngineFailure(f"LIGGGHTS accepts coefficientRestitution in (0.05, 1] only; e_n = {e_n:g} was not run")
@@ -160,7 +163,7 @@ def deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, 
                   atoms=atoms, x_lo=-2.0 * radius, x_hi=len(atoms) * spacing, box_half=2.0 * radius,
                   z_lo=-radius, z_hi=4.0 * radius, skin=0.5 * radius, E=scene.E, nu=scene.nu, mu=scene.mu,
                   properties=properties, tangential=tangential, options=options, dt=dt, radius=radius,
-                  rho=scene.rho, chunk=chunk, max_chunks=max(1, max_steps // chunk + 1))
+                  rho=scene.rho, chunk=chunk, max_chunks=max(1, max_steps // chunk + 1), observe=bool(observe))
     return Deck(text, model, len(atoms))
 
 
@@ -184,6 +187,56 @@ def read_dump(path, n_atoms):
     return rows[:, 1:]
 
 
+def dump_rows(path):
+    """(step, atom index, z, fz) of every row of the observe dump, one array each; EngineFailure when missing or
+    malformed."""
+    try:
+        with open(path) as handle:
+            frames = handle.read().split("ITEM: TIMESTEP\n")
+    except OSError:
+        raise EngineFailure("LIGGGHTS wrote no observe dump") from None
+    try:
+        heads = [frame.split("\n", DUMP_HEADER_LINES - 1) for frame in frames[1:]]
+        if frames[0] or any(not head[-2].startswith("ITEM: ATOMS") for head in heads):
+            raise ValueError("not a dump of `id z fz` frames")
+        counts = np.array([int(head[2]) for head in heads], dtype=int)
+        step = np.repeat([int(head[0]) for head in heads], counts).astype(int)
+        rows = np.array(" ".join(head[-1] for head in heads).split(), dtype=float).reshape(len(step), 3)
+    except (IndexError, ValueError):
+        raise EngineFailure("LIGGGHTS observe dump is malformed") from None
+    return step, rows[:, 0].astype(int) - 1, rows[:, 1], rows[:, 2]
+
+
+def first_contact(step, atom):
+    """Mask of the rows in each atom's first run of consecutive steps (a repeated frame or a later contact is not)."""
+    order = np.lexsort((step, atom))
+    s, a = step[order], atom[order]
+    new_atom = np.r_[True, a[1:] != a[:-1]]
+    gap = np.diff(s, prepend=0)
+    breaks = np.cumsum(~new_atom & (gap > 1))
+    run = breaks - np.maximum.accumulate(np.where(new_atom, breaks, 0))      # contacts before this one, per atom
+    mask = np.empty(len(step), dtype=bool)
+    mask[order] = (run == 0) & (new_atom | (gap != 0))
+    return mask
+
+
+def read_observation(path, n_atoms, radius, dt):
+    """Per atom: contact time in whole steps (first step in contact to the first step out, dt each), peak fz (the
+    wall force: no gravity, no sphere-sphere contact) and peak overlap R - z, over its first contact."""
+    step, atom, z, fz = dump_rows(path)
+    if np.any((atom < 0) | (atom >= n_atoms)) or len(np.unique(atom)) != n_atoms:
+        raise EngineFailure("LIGGGHTS observe dump lacks some sphere ids")
+    keep = first_contact(step, atom)
+    step, atom, z, fz = step[keep], atom[keep], z[keep], fz[keep]
+    first, last = np.full(n_atoms, np.iinfo(int).max), np.full(n_atoms, -1)
+    force, overlap = np.full(n_atoms, -np.inf), np.full(n_atoms, -np.inf)
+    np.minimum.at(first, atom, step)
+    np.maximum.at(last, atom, step)
+    np.maximum.at(force, atom, fz)
+    np.maximum.at(overlap, atom, radius - z)
+    return {"t_contact": (last - first + 1) * dt, "f_n_max": force, "overlap_max": overlap}
+
+
 def run_deck(text, n_atoms, timeout_s, workdir):
     """Run one deck in workdir; returns (final state per atom, wall seconds, log tail)."""
     with open(os.path.join(workdir, "in.harness"), "w") as handle:
@@ -193,17 +246,21 @@ def run_deck(text, n_atoms, timeout_s, workdir):
     return read_dump(os.path.join(workdir, "final.dump"), n_atoms), done.wall_s, done.log_tail
 
 
-def run_batch(paper_law, scene, batch, max_steps, timeout_s, workdir, options=None):
-    """One batch (one e_n) in LIGGGHTS: final v_n1, v_t1, omega1 per impact and whether each sphere separated."""
-    text = render_batch(paper_law, scene, batch, max_steps, options)
+def run_batch(paper_law, scene, batch, max_steps, timeout_s, workdir, options=None, observe=False):
+    """One batch (one e_n) in LIGGGHTS: final v_n1, v_t1, omega1 per impact and whether each sphere separated;
+    with `observe` also t_contact (a whole number of steps), f_n_max and overlap_max (see read_observation)."""
+    text = render_batch(paper_law, scene, batch, max_steps, options, observe)
     state, wall, log_tail = run_deck(text, len(batch.v_n0), timeout_s, workdir)
     z, vx, vz, omegay = state.T
     if not np.all(np.isfinite(state)):
         raise EngineFailure("LIGGGHTS returned non-finite velocities", log_tail)
-    return {"v_n1": vz, "v_t1": vx, "omega1": omegay, "separated": z > scene.radius}, wall, log_tail
+    final = {"v_n1": vz, "v_t1": vx, "omega1": omegay, "separated": z > scene.radius}
+    if observe:
+        final.update(read_observation(os.path.join(workdir, OBSERVE_DUMP), len(batch.v_n0), scene.radius, batch.dt))
+    return final, wall, log_tail
 
 
-def render_batch(paper_law, scene, batch, max_steps, options=None):
+def render_batch(paper_law, scene, batch, max_steps, options=None, observe=False):
     """The deck text for one batch, as run_batch would run it (for `harness render`)."""
     return deck(paper_law, scene, batch.e_n, batch.dt, batch.v_n0, batch.v_t0, batch.omega0,
-                batch.steps_per_contact, max_steps, options).text
+                batch.steps_per_contact, max_steps, options, observe).text

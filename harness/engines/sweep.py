@@ -22,8 +22,12 @@ class FailedRun:
     log_tail: str
 
 
-def run_sweep(adapter, paper_law, scene, steps_per_contact, on_frame=None, options=None):
-    """Every e_n of the scene through `adapter` at the dt of its dialect (equal dt, so agreement is exact)."""
+OBSERVED = ("t_contact", "f_n_max", "overlap_max")
+
+
+def run_sweep(adapter, paper_law, scene, steps_per_contact, on_frame=None, options=None, observe=False):
+    """Every e_n of the scene through `adapter` at the dt of its dialect (equal dt, so agreement is exact); with
+    `observe` the rows also get the engine's t_contact, f_n_max and overlap_max (else NaN)."""
     dialect = adapter.dialect(paper_law.name, options)
     frames, failures = [], []
     for e_n in scene.e_n:
@@ -34,11 +38,13 @@ def run_sweep(adapter, paper_law, scene, steps_per_contact, on_frame=None, optio
                         engine_version=adapter.version(), dt=batch.dt, steps_per_contact=batch.steps_per_contact)
         try:
             with tempfile.TemporaryDirectory(prefix=f"harness-{adapter.NAME}-") as workdir:
-                final, wall, _ = adapter.run_batch(paper_law, scene, batch, max_steps, timeout, workdir, options)
+                final, wall, _ = adapter.run_batch(paper_law, scene, batch, max_steps, timeout, workdir, options,
+                                                   observe=observe)
             separated = final["separated"]
+            observed = {name: final[name] for name in OBSERVED if observe}
             frame = impact_frame(scene, batch, **identity, v_n1=final["v_n1"], v_t1=final["v_t1"],
                                  omega1=final["omega1"], wall_s=wall / len(batch.v_n0),
-                                 status=np.where(separated, "ok", "no-separation"), message="")
+                                 status=np.where(separated, "ok", "no-separation"), message="", **observed)
         except EngineFailure as exc:
             failures.append(FailedRun(adapter.NAME, e_n, str(exc), exc.log_tail))
             nan = np.full(len(batch.v_n0), np.nan)

@@ -20,6 +20,7 @@ FLAVOURS = {"double": "yade-double", "long-double": "yade-longdouble", "float128
 ARITHMETIC = {"double": "double (IEEE 754 binary64)", "long-double": "long double (x87 80-bit extended)",
               "float128": "float128 (IEEE 754 binary128)", "mpfr150": "MPFR, 150 decimal digits"}
 LIBRARY = "/usr/lib/x86_64-linux-gnu"
+OBSERVE_FILE = "observe.txt"    # observe mode: per sphere, first and last real step, peak normal force and overlap
 MODELS = {"hertz-mindlin": "Law2_ScGeom_MindlinPhys_Mindlin", "linear-spring-dashpot": "Law2_ScGeom_ViscElPhys_Basic",
           "walton-braun": "Law2_ScGeom_LudingPhys_Basic"}
 DIALECTS = {                    # sub-models that make the paper law compute what YADE computes (MODELS 5, docs/)
@@ -107,8 +108,9 @@ def viscel_contact_time(law, scene, e_n):
     return math.sqrt((math.pi ** 2 + math.log(e_n) ** 2) * 0.5 * scene.contact.mass / k)
 
 
-def script(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, linear="viscel"):
-    """Render the batched script (validated numbers and fixed words only; see harness.render)."""
+def script(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, linear="viscel", observe=False):
+    """Render the batched script (validated numbers and fixed words only; see harness.render); `observe` adds the
+    per-step PyRunner that writes OBSERVE_FILE."""
     import math
     radius = scene.radius
     spheres = [{"x": i * 4.0 * radius, "vx": float(vt), "vz": -float(vn), "omegay": float(w)}
@@ -116,7 +118,7 @@ def script(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps
     chunk = max(10, int(steps_per_contact // 10))
     common = dict(harness_version=__version__, law=law.name, law2=MODELS[law.name], e_n=e_n, rho=scene.rho,
                   friction_angle=math.atan(scene.mu), radius=radius, spheres=spheres, ig2="Ig2_Wall_Sphere_ScGeom",
-                  hertzian=True, dt=dt, chunk=chunk, max_chunks=max(1, max_steps // chunk + 1))
+                  hertzian=True, dt=dt, chunk=chunk, max_chunks=max(1, max_steps // chunk + 1), observe=bool(observe))
     if law.name == "walton-braun":
         from ..laws.normal import YadeLuding
         luding = YadeLuding()
@@ -140,21 +142,22 @@ def script(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps
                   ip2="Ip2_FrictMat_FrictMat_MindlinPhys", ip2_args=[("en", e_n), ("es", e_n)])
 
 
-def read_result(path, n_spheres):
-    """(left, vx, vz, wy) per sphere; EngineFailure when missing or truncated."""
+def read_result(path, n_spheres, what="result file"):
+    """(left, vx, vz, wy) per sphere (or the four columns of the observe file); EngineFailure when missing or
+    truncated."""
     try:
         with open(path) as handle:
             lines = handle.read().splitlines()
     except OSError:
-        raise EngineFailure("YADE wrote no result file") from None
+        raise EngineFailure(f"YADE wrote no {what}") from None
     if not lines or lines[-1] != "END":
-        raise EngineFailure("YADE result file is truncated (no END line)")
+        raise EngineFailure(f"YADE {what} is truncated (no END line)")
     try:
         rows = np.array([[float(x) for x in line.split()] for line in lines[:-1]])
     except ValueError:
-        raise EngineFailure("YADE result file is malformed") from None
+        raise EngineFailure(f"YADE {what} is malformed") from None
     if rows.shape != (n_spheres, 5) or not np.array_equal(rows[:, 0], np.arange(n_spheres)):
-        raise EngineFailure(f"YADE result file is truncated: {len(rows)} of {n_spheres} spheres")
+        raise EngineFailure(f"YADE {what} is truncated: {len(rows)} of {n_spheres} spheres")
     return rows[:, 1:]
 
 
@@ -166,18 +169,32 @@ def run_script(text, n_spheres, timeout_s, workdir, precision="double"):
     return read_result(os.path.join(workdir, "result.txt"), n_spheres), done.wall_s, done.log_tail
 
 
-def render_batch(paper_law, scene, batch, max_steps, options=None):
+def read_observation(path, n_spheres, dt):
+    """Per sphere: contact time in whole steps (first real step to the first step with the interaction gone, dt
+    each), peak normal force and peak overlap over the first contact; EngineFailure when missing or truncated."""
+    rows = read_result(path, n_spheres, "observe file")
+    first, last, force, overlap = rows.T
+    if np.any(first < 0) or not np.all(np.isfinite(rows)):
+        raise EngineFailure("YADE observed no contact for some spheres")
+    return {"t_contact": (last - first + 1) * dt, "f_n_max": force, "overlap_max": overlap}
+
+
+def render_batch(paper_law, scene, batch, max_steps, options=None, observe=False):
     """The script text for one batch, as run_batch would run it (for `harness render`)."""
     return script(paper_law, scene, batch.e_n, batch.dt, batch.v_n0, batch.v_t0, batch.omega0,
-                  batch.steps_per_contact, max_steps, dict(options or {}).get("linear", "viscel"))
+                  batch.steps_per_contact, max_steps, dict(options or {}).get("linear", "viscel"), observe)
 
 
-def run_batch(paper_law, scene, batch, max_steps, timeout_s, workdir, options=None):
-    """One batch (one e_n) in YADE: final v_n1, v_t1, omega1 per impact and whether each sphere separated."""
+def run_batch(paper_law, scene, batch, max_steps, timeout_s, workdir, options=None, observe=False):
+    """One batch (one e_n) in YADE: final v_n1, v_t1, omega1 per impact and whether each sphere separated; with
+    `observe` also t_contact (a whole number of steps), f_n_max and overlap_max (see read_observation)."""
     precision = dict(options or {}).get("precision", "double")
-    rows, wall, log_tail = run_script(render_batch(paper_law, scene, batch, max_steps, options), len(batch.v_n0), timeout_s,
-                                      workdir, precision)
+    rows, wall, log_tail = run_script(render_batch(paper_law, scene, batch, max_steps, options, observe),
+                                      len(batch.v_n0), timeout_s, workdir, precision)
     left, vx, vz, wy = rows.T
     if not np.all(np.isfinite(rows)):
         raise EngineFailure("YADE returned non-finite velocities", log_tail)
-    return {"v_n1": vz, "v_t1": vx, "omega1": wy, "separated": left > 0}, wall, log_tail
+    final = {"v_n1": vz, "v_t1": vx, "omega1": wy, "separated": left > 0}
+    if observe:
+        final.update(read_observation(os.path.join(workdir, OBSERVE_FILE), len(batch.v_n0), batch.dt))
+    return final, wall, log_tail
