@@ -120,7 +120,9 @@ def startup_seconds(adapter, paper_law, dialect, scene, options):
 
 
 def engine_curve(rows, adapter, paper_law, dialect, scene, ladder, truth, options, failures):
-    """The engine itself at every rung (one batched run per e_n); refused and failed runs keep their message."""
+    """The engine itself at every rung (one batched run per e_n, timed); contact time and peak force come from a
+    second, observed run (its per-step output would distort the timing); refused and failed runs keep their
+    message."""
     startup = startup_seconds(adapter, paper_law, dialect, scene, options)
     for label, resolution in ladder_rungs(ladder, scene):
         try:
@@ -129,6 +131,11 @@ def engine_curve(rows, adapter, paper_law, dialect, scene, ladder, truth, option
             refused(rows, paper_law.name, adapter.NAME, dialect.dialect, label, scene, str(exc))
             continue
         failures += failed
+        if not failed:                  # contact time and peak force from an observed, untimed second run
+            observed, _ = run_sweep(adapter, paper_law, scene, resolution, options=options, observe=True)
+            for frame, seen in zip(frames, observed):
+                for column in ("t_contact", "f_n_max", "overlap_max"):
+                    frame[column] = seen[column].to_numpy()
         measure(rows, paper_law.name, adapter.NAME, dialect.dialect, label,
                 {f.e_n_target.iloc[0]: f for f in frames}, truth,
                 lambda e_n: contact_steps(dialect, scene, resolution, e_n), startup)
