@@ -76,7 +76,8 @@ def cost(args):
     report = rebuild(out_dir)
     if not args.quiet:
         print_tables(table, uncertainty, law, scene, ladder, skipped, failures)
-        print(f"\nwrote {os.path.join(out_dir, COST)} and {report}")
+        print()
+    print(f"wrote {os.path.join(out_dir, COST)} and {report}")
     return 1 if failures else 0
 
 
