@@ -355,17 +355,23 @@ def locate_event(kind, s, st, lo, lot, p, ints, h, scratch, g_hi):
         g_mid = event_value(kind, lo, lot, p, sign0)
         if kind == EVENT_STICK:
             g_mid = -g_mid
-        if g_mid < 0.0:
-            lo_f, g_lo = mid, g_mid
-            if side == 1:
-                g_hi *= 0.5
-            side = 1
-        else:
-            hi_f, g_hi = mid, g_mid
-            if side == -1:
-                g_lo *= 0.5
-            side = -1
+        lo_f, hi_f, g_lo, g_hi, side = illinois(lo_f, hi_f, g_lo, g_hi, side, mid, g_mid, g_mid < 0.0)
     return hi_f
+
+
+@njit(cache=True, inline="always")
+def illinois(lo_f, hi_f, g_lo, g_hi, side, mid, g_mid, on_low_side):
+    """One Illinois false-position update of the bracket [lo_f, hi_f] with values g_lo, g_hi: the new point
+    replaces the end on its side, and the other end's value is halved when it was kept twice in a row."""
+    if on_low_side:
+        lo_f, g_lo = mid, g_mid
+        if side == 1:
+            g_hi *= 0.5
+        return lo_f, hi_f, g_lo, g_hi, 1
+    hi_f, g_hi = mid, g_mid
+    if side == -1:
+        g_lo *= 0.5
+    return lo_f, hi_f, g_lo, g_hi, -1
 
 
 @njit(cache=True)
@@ -458,16 +464,8 @@ def integrate(params, ints, out, history, stride):
                     if not frac_lo < mid < frac_hi:
                         mid = 0.5 * (frac_lo + frac_hi)
                     g_mid = step(s, st, lo, lot, p, row_ints, mid * h, scratch)
-                    if g_mid > 0.0:
-                        frac_lo, g_lo = mid, g_mid
-                        if side == 1:
-                            g_hi *= 0.5
-                        side = 1
-                    else:
-                        frac_hi, g_hi = mid, g_mid
-                        if side == -1:
-                            g_lo *= 0.5
-                        side = -1
+                    frac_lo, frac_hi, g_lo, g_hi, side = illinois(frac_lo, frac_hi, g_lo, g_hi, side, mid, g_mid,
+                                                                  g_mid > 0.0)
                 step(s, st, o, ot, p, row_ints, frac_lo * h, scratch)
                 t_end = t_now + frac_lo * h
                 status = C.STATUS_OK
