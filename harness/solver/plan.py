@@ -63,7 +63,9 @@ def plan_batch(law, scene, e_n, steps_per_contact):
     params[:, C.P_VX0] = v_t0
     params[:, C.P_W0] = omega0
     slow = np.maximum(scene.speed / np.maximum(v_n0, 1e-12 * scene.speed), 1.0) ** 0.4
-    params[:, C.P_MAXSTEPS] = np.ceil(steps_per_contact * (20.0 * slow + 20.0))
+    # step cap: 20 slowed contact times, plus leaving a latched dent (engine hysteresis laws keep the contact at zero
+    # force until the gap opens): depth <= alpha_max <= V_n t_c, crossed at e_n V_n, so at most t_c/e_n more
+    params[:, C.P_MAXSTEPS] = np.ceil(steps_per_contact * (slow * (20.0 + 1.0 / e_n) + 20.0))
     ints = np.zeros((n, C.N_INTS), dtype=np.int64)
     ints[:, C.I_NORMAL] = law.normal.code
     ints[:, C.I_END] = C.END_ALPHA if law.end == "tension" else C.END_FORCE
