@@ -43,6 +43,18 @@ def test_engine_agrees_with_its_dialect_at_equal_dt(name, e_n, tmp_path):
     assert rel.max() < 1e-6, rel
 
 
+
+@needs_liggghts
+def test_hysteresis_at_e_n_1_is_elastic_not_absent(tmp_path):
+    """e_n = 1 gives k2max = k1; LIGGGHTS' d_lim = k2max/(k2max - k1) phi 2R must not become 0/0 (NaN force, dropped:
+    every sphere passed through the wall with v_n1 = -V). Elastic: e_n = 1 (MODELS 2.4, e = sqrt(K1/K2)), and the
+    dialect agrees."""
+    engine, reference, final = engine_and_dialect("walton-braun", SCENE, 1.0, tmp_path=tmp_path)
+    assert final["separated"].all()
+    assert final["v_n1"] / SCENE.impacts(1.0)[0] == pytest.approx(np.ones(len(SCENE.angles_deg)), abs=1e-6)
+    scale = np.array([1.0, 1.0, 1.0 / SCENE.radius]) * SCENE.speed
+    assert (np.abs(engine - reference) / np.maximum(np.abs(reference), 1e-9 * scale)).max() < 1e-6
+
 OPTION_CASES = [("linear-spring-dashpot", {"limitForce": "on"}), ("linear-spring-dashpot", {"tangential_damping": "off"}),
                 ("linear-spring-dashpot", {"ktToKnUser": "on"}), ("linear-spring-dashpot", {"tangential": "no_history"}),
                 ("hertz-mindlin", {"limitForce": "on"}), ("hertz-mindlin", {"tangential": "no_history"}),

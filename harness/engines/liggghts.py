@@ -136,9 +136,13 @@ def settings(law, scene, e_n, options=None):
         from ..laws.normal import LudingHysteresis
         k1 = law_stiffness(scene)
         k2max, d_lim = LudingHysteresis.stiffness_and_limit(k1, scene.contact, e_n, scene.speed)
+        depth = d_lim * (k2max - k1) / (k2max * 2 * scene.radius)
+        if depth == 0.0:        # e_n = 1: LIGGGHTS' d_lim = k2max/(k2max - k1) phi 2R would be 0/0 and its force NaN,
+            depth = d_lim / (2 * scene.radius)      # which it drops (the sphere passes through the wall); any phi > 0
+                                                    # makes d_lim infinite and k2 = k1, the elastic limit
         properties += [("coefficientMaxElasticStiffness", "peratomtypepair", k2max / k1),
                        ("coefficientAdhesionStiffness", "peratomtypepair", 0.0),
-                       ("coefficientPlasticityDepth", "peratomtypepair", d_lim * (k2max - k1) / (k2max * 2 * scene.radius))]
+                       ("coefficientPlasticityDepth", "peratomtypepair", depth)]
     if model == "thornton_ning":
         p_y = law.normal.yield_pressure(scene.contact, e_n, scene.speed)
         properties += [("coefficientYieldRatio", "peratomtype", math.pi * p_y / (2.0 * scene.contact.E_star)),
