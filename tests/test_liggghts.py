@@ -55,6 +55,22 @@ def test_hysteresis_at_e_n_1_is_elastic_not_absent(tmp_path):
     scale = np.array([1.0, 1.0, 1.0 / SCENE.radius]) * SCENE.speed
     assert (np.abs(engine - reference) / np.maximum(np.abs(reference), 1e-9 * scale)).max() < 1e-6
 
+
+@needs_liggghts
+def test_soft_and_stiff_materials_run_and_negative_poisson_is_refused_clearly(tmp_path):
+    """E = 1e6 Pa (LIGGGHTS' sanity check wants >= 5e6 unless soft_particles yes, which changes nothing else) and
+    E = 1e12 Pa run and agree with the dialect; nu < 0, which LIGGGHTS refuses, is a one-line failed run."""
+    from harness.engines.sweep import run_sweep
+    for E in (1e6, 1e12):
+        scene = Scene(E=E, e_n=(0.5,), angles_deg=(0.0, 30.0, 60.0))
+        engine, reference, final = engine_and_dialect("hertz-mindlin", scene, 0.5, tmp_path=tmp_path)
+        assert final["separated"].all()
+        scale = np.array([1.0, 1.0, 1.0 / scene.radius]) * scene.speed
+        assert (np.abs(engine - reference) / np.maximum(np.abs(reference), 1e-9 * scale)).max() < 1e-6, E
+    frames, failures = run_sweep(liggghts, compose("hertz-mindlin"), Scene(nu=-0.5, e_n=(0.5,)), 100)
+    assert [f.message for f in failures] == ["LIGGGHTS accepts poissonsRatio in [0, 0.5] only; nu = -0.5 was not run"]
+    assert (frames[0].status == "failed").all()
+
 OPTION_CASES = [("linear-spring-dashpot", {"limitForce": "on"}), ("linear-spring-dashpot", {"tangential_damping": "off"}),
                 ("linear-spring-dashpot", {"ktToKnUser": "on"}), ("linear-spring-dashpot", {"tangential": "no_history"}),
                 ("hertz-mindlin", {"limitForce": "on"}), ("hertz-mindlin", {"tangential": "no_history"}),
@@ -168,7 +184,8 @@ def test_rendered_deck_holds_only_the_expected_commands():
     law = compose("hertz-mindlin")
     batch = plan_batch(liggghts.dialect("hertz-mindlin"), SCENE, 0.5, 100)
     text = liggghts.deck(law, SCENE, 0.5, batch.dt, batch.v_n0, batch.v_t0, batch.omega0, 100, 1000).text
-    allowed = {"atom_style", "atom_modify", "boundary", "newton", "communicate", "units", "hard_particles", "region",
+    allowed = {"atom_style", "atom_modify", "boundary", "newton", "communicate", "units", "hard_particles",
+               "soft_particles", "region",
                "create_box", "neighbor", "neigh_modify", "fix", "pair_style", "pair_coeff", "timestep",
                "create_atoms", "set", "thermo_style", "thermo", "thermo_modify", "variable", "label", "run", "if",
                "next", "jump", "print", "dump", "dump_modify"}

@@ -23,7 +23,8 @@ MODELS = {                      # harness law -> LIGGGHTS normal model (MODELS 5
     "walton-braun": "hooke/hysteresis",
     "thornton": "thornton_ning",
 }
-MIN_RESTITUTION = 0.05          # LIGGGHTS refuses coefficientRestitution <= 0.05
+MIN_RESTITUTION = 0.05          # LIGGGHTS refuses coefficientRestitution <= 0.05 and poissonsRatio < 0; youngsModulus
+                                # < 5e6 or > 1e9 only with soft_particles/hard_particles yes (sanity checks only)
 
 
 @dataclass(frozen=True)
@@ -155,6 +156,8 @@ def deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, 
     model, tangential, options, properties, restitution = settings(law, scene, e_n, options)
     if not MIN_RESTITUTION < restitution <= 1.0:
         raise EngineFailure(f"LIGGGHTS accepts coefficientRestitution in (0.05, 1] only; e_n = {e_n:g} was not run")
+    if scene.nu < 0.0:
+        raise EngineFailure(f"LIGGGHTS accepts poissonsRatio in [0, 0.5] only; nu = {scene.nu:g} was not run")
     radius = scene.radius
     spacing = 4.0 * radius
     atoms = [{"x": i * spacing, "vx": float(vt), "vz": -float(vn), "omegay": float(w)}
