@@ -71,6 +71,19 @@ def test_soft_and_stiff_materials_run_and_negative_poisson_is_refused_clearly(tm
     assert [f.message for f in failures] == ["LIGGGHTS accepts poissonsRatio in [0, 0.5] only; nu = -0.5 was not run"]
     assert (frames[0].status == "failed").all()
 
+
+@needs_liggghts
+def test_hooke_pushes_tangentially_even_without_friction_and_the_dialect_follows(tmp_path):
+    """coefficientFriction 0: at first touch LIGGGHTS' shear history is zero, which passes its Coulomb test
+    (k_t |xi| <= mu |F_n|, 0 <= 0), so the tangential dashpot c_t v_t acts for a step: the sphere is slowed along
+    the wall and spun although mu = 0. The dialect keeps its tangential model at mu = 0 to show the same."""
+    scene = Scene(mu=0.0, e_n=(0.5,), angles_deg=(45.0, 89.5))
+    engine, reference, final = engine_and_dialect("linear-spring-dashpot", scene, 0.5, steps=1000, tmp_path=tmp_path)
+    scale = np.array([1.0, 1.0, 1.0 / scene.radius]) * scene.speed
+    assert (np.abs(engine - reference) / np.maximum(np.abs(reference), 1e-9 * scale)).max() < 1e-6
+    v_t0 = scene.impacts(0.5)[1]
+    assert (final["v_t1"] < v_t0 * (1 - 1e-4)).all() and (final["omega1"] > 0.1).all()
+
 OPTION_CASES = [("linear-spring-dashpot", {"limitForce": "on"}), ("linear-spring-dashpot", {"tangential_damping": "off"}),
                 ("linear-spring-dashpot", {"ktToKnUser": "on"}), ("linear-spring-dashpot", {"tangential": "no_history"}),
                 ("hertz-mindlin", {"limitForce": "on"}), ("hertz-mindlin", {"tangential": "no_history"}),

@@ -24,9 +24,11 @@ class Batch:
     tangential_active: np.ndarray
 
 
-def needs_tangential(scene, v_t0, omega0):
-    """Per impact: a tangential model (and rotation) only with friction and some tangential motion or spin."""
-    return (scene.mu > 0.0) & ((v_t0 != 0.0) | (omega0 != 0.0))
+def needs_tangential(scene, v_t0, omega0, law=None):
+    """Per impact: a tangential model (and rotation) only with some tangential motion or spin, and friction or a
+    tangential dashpot (engines add it while the spring is within the cap, which at mu = 0 is when it is zero)."""
+    acts = scene.mu > 0.0 or (law is not None and law.tangential_damping.rule != "none")
+    return acts & ((v_t0 != 0.0) | (omega0 != 0.0))
 
 
 def plan_batch(law, scene, e_n, steps_per_contact):
@@ -38,7 +40,7 @@ def plan_batch(law, scene, e_n, steps_per_contact):
     normal = law.normal.parameters(contact, e_n, scene.speed)
     dashpot = law.damping.dashpot(law.normal, contact, e_n, scene.speed, law.end)
     dt = normal.contact_time / steps_per_contact
-    tangential = needs_tangential(scene, v_t0, omega0)
+    tangential = needs_tangential(scene, v_t0, omega0, law)
     n = len(v_n0)
     params = np.zeros((n, C.N_PARAMS))
     params[:, C.P_MASS] = contact.mass
