@@ -71,8 +71,8 @@ def test_random_scenes_keep_the_hard_case_invariants(law, e, angle, mu, omega, l
     assert breaks.empty, breaks.to_string()
 
 
-SENSITIVITY = 25.0      # |d outcome| <= 25 |dp/p|: the plastic calibrations amplify, r = V_y/V ~ e_n^4 (e ~ 1.185 r^1/4,
-                        # MODELS 2.6), and e_t, Omega* follow V_y; hypothesis found 10.8 (stronge, e_n 0.03, 0.5 deg)
+SENSITIVITY = 25.0      # |d outcome| <= 25 |dp/p|: the plastic calibrations amplify, r = V_y/V ~ e_n^4
+                        # (e ~ 1.185 r^1/4, MODELS 2.6); hypothesis found 10.8 (stronge e_t, e_n 0.03, 0.5 deg)
 
 
 @settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
