@@ -82,6 +82,7 @@ def findings(frame):
     status does not already say (non-finite values, long contact, normal-impact e_n off its target, a tangential
     force without friction), failed runs."""
     out = []
+    frame = frame.reset_index(drop=True)          # invariant breaks point at rows by label
     frame = frame.assign(kt_ratio=tangential_energy_ratio(frame))
     for kind, column, what in (("energy gain", "ke_ratio", "kinetic energy"),
                                ("tangential energy gain", "kt_ratio", "tangential + rotational kinetic energy")):
