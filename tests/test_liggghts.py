@@ -43,6 +43,47 @@ def test_engine_agrees_with_its_dialect_at_equal_dt(name, e_n, tmp_path):
     assert rel.max() < 1e-6, rel
 
 
+
+@needs_liggghts
+def test_hysteresis_at_e_n_1_is_elastic_not_absent(tmp_path):
+    """e_n = 1 gives k2max = k1; LIGGGHTS' d_lim = k2max/(k2max - k1) phi 2R must not become 0/0 (NaN force, dropped:
+    every sphere passed through the wall with v_n1 = -V). Elastic: e_n = 1 (MODELS 2.4, e = sqrt(K1/K2)), and the
+    dialect agrees."""
+    engine, reference, final = engine_and_dialect("walton-braun", SCENE, 1.0, tmp_path=tmp_path)
+    assert final["separated"].all()
+    assert final["v_n1"] / SCENE.impacts(1.0)[0] == pytest.approx(np.ones(len(SCENE.angles_deg)), abs=1e-6)
+    scale = np.array([1.0, 1.0, 1.0 / SCENE.radius]) * SCENE.speed
+    assert (np.abs(engine - reference) / np.maximum(np.abs(reference), 1e-9 * scale)).max() < 1e-6
+
+
+@needs_liggghts
+def test_soft_and_stiff_materials_run_and_negative_poisson_is_refused_clearly(tmp_path):
+    """E = 1e6 Pa (LIGGGHTS' sanity check wants >= 5e6 unless soft_particles yes, which changes nothing else) and
+    E = 1e12 Pa run and agree with the dialect; nu < 0, which LIGGGHTS refuses, is a one-line failed run."""
+    from harness.engines.sweep import run_sweep
+    for E in (1e6, 1e12):
+        scene = Scene(E=E, e_n=(0.5,), angles_deg=(0.0, 30.0, 60.0))
+        engine, reference, final = engine_and_dialect("hertz-mindlin", scene, 0.5, tmp_path=tmp_path)
+        assert final["separated"].all()
+        scale = np.array([1.0, 1.0, 1.0 / scene.radius]) * scene.speed
+        assert (np.abs(engine - reference) / np.maximum(np.abs(reference), 1e-9 * scale)).max() < 1e-6, E
+    frames, failures = run_sweep(liggghts, compose("hertz-mindlin"), Scene(nu=-0.5, e_n=(0.5,)), 100)
+    assert [f.message for f in failures] == ["LIGGGHTS accepts poissonsRatio in [0, 0.5] only; nu = -0.5 was not run"]
+    assert (frames[0].status == "failed").all()
+
+
+@needs_liggghts
+def test_hooke_pushes_tangentially_even_without_friction_and_the_dialect_follows(tmp_path):
+    """coefficientFriction 0: at first touch LIGGGHTS' shear history is zero, which passes its Coulomb test
+    (k_t |xi| <= mu |F_n|, 0 <= 0), so the tangential dashpot c_t v_t acts for a step: the sphere is slowed along
+    the wall and spun although mu = 0. The dialect keeps its tangential model at mu = 0 to show the same."""
+    scene = Scene(mu=0.0, e_n=(0.5,), angles_deg=(45.0, 89.5))
+    engine, reference, final = engine_and_dialect("linear-spring-dashpot", scene, 0.5, steps=1000, tmp_path=tmp_path)
+    scale = np.array([1.0, 1.0, 1.0 / scene.radius]) * scene.speed
+    assert (np.abs(engine - reference) / np.maximum(np.abs(reference), 1e-9 * scale)).max() < 1e-6
+    v_t0 = scene.impacts(0.5)[1]
+    assert (final["v_t1"] < v_t0 * (1 - 1e-4)).all() and (final["omega1"] > 0.1).all()
+
 OPTION_CASES = [("linear-spring-dashpot", {"limitForce": "on"}), ("linear-spring-dashpot", {"tangential_damping": "off"}),
                 ("linear-spring-dashpot", {"ktToKnUser": "on"}), ("linear-spring-dashpot", {"tangential": "no_history"}),
                 ("hertz-mindlin", {"limitForce": "on"}), ("hertz-mindlin", {"tangential": "no_history"}),
@@ -156,7 +197,8 @@ def test_rendered_deck_holds_only_the_expected_commands():
     law = compose("hertz-mindlin")
     batch = plan_batch(liggghts.dialect("hertz-mindlin"), SCENE, 0.5, 100)
     text = liggghts.deck(law, SCENE, 0.5, batch.dt, batch.v_n0, batch.v_t0, batch.omega0, 100, 1000).text
-    allowed = {"atom_style", "atom_modify", "boundary", "newton", "communicate", "units", "hard_particles", "region",
+    allowed = {"atom_style", "atom_modify", "boundary", "newton", "communicate", "units", "hard_particles",
+               "soft_particles", "region",
                "create_box", "neighbor", "neigh_modify", "fix", "pair_style", "pair_coeff", "timestep",
                "create_atoms", "set", "thermo_style", "thermo", "thermo_modify", "variable", "label", "run", "if",
                "next", "jump", "print", "dump", "dump_modify"}

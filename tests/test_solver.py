@@ -188,3 +188,20 @@ def test_regime_changes_located_in_their_step_make_the_error_smooth(name, e_n, a
     plain = np.abs(fine - truth)
     richardson = np.abs(fine + (fine - coarse) / 3 - truth)
     assert np.all(richardson < plain / 20), (plain, richardson)
+
+
+@pytest.mark.parametrize("engine", ["liggghts", "yade"])
+def test_hysteresis_dialects_leave_their_latched_dent_at_low_e_n(engine):
+    """Engine hysteresis laws keep the contact at zero force until the gap opens: after unloading (K2 = K1/e^2) the
+    sphere crosses the dent alpha_max (1 - e^2) at e V, so t_c = sqrt(m/K1) [pi/2 (1 + e) + (1 - e^2)/e] (MODELS
+    2.4 + the dent), 64 contact-time estimates at e_n = 0.01: the step cap must allow for it (it stopped at 40)."""
+    from harness.engines import ADAPTERS
+    e = 0.01
+    scene = Scene(e_n=(e,), angles_deg=(0.0,))
+    row = simulate(ADAPTERS[engine].dialect("walton-braun"), scene, steps_per_contact=1000)[0].iloc[0]
+    assert row.status == "ok", row.message
+    c = scene.contact
+    k1 = 16.0 / 15.0 * math.sqrt(c.radius) * c.E_star * (15.0 * c.mass / (16.0 * math.sqrt(c.radius) * c.E_star)) ** 0.2
+    t_c = math.sqrt(c.mass / k1) * (math.pi / 2.0 * (1.0 + e) + (1.0 - e * e) / e)
+    assert row.t_contact == pytest.approx(t_c, rel=5e-3)        # the exit time inherits e_n's 3e-3 at 1000 steps
+    assert row.e_n == pytest.approx(e, rel=1e-2)

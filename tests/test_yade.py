@@ -188,3 +188,13 @@ def test_precision_gap_double_against_mpfr150_is_round_off():
     assert gap["against"] == "mpfr150"
     values = [gap[k] for k in ("v_n1", "v_t1", "omega1")]
     assert max(values) < 1e-9 and max(values) > 0.0
+
+
+@needs_yade
+def test_luding_at_e_n_1_is_refused_with_one_line_not_an_abort():
+    """kp = k1 (2/e^2 - 1) = k1 at e_n = 1, which YADE's Ip2_LudingMat_LudingMat_LudingPhys rejects by throwing (the
+    interpreter aborted with signal 6): harness refuses it with the reason, and the other e_n still run."""
+    from harness.engines.sweep import run_sweep
+    frames, failures = run_sweep(yade, compose("walton-braun"), Scene(e_n=(0.5, 1.0), angles_deg=(0.0, 45.0)), 200)
+    assert [f.message for f in failures] == ["YADE's Luding law needs kp > k1, i.e. e_n < 1; e_n = 1 was not run"]
+    assert (frames[0].status == "ok").all() and (frames[1].status == "failed").all()

@@ -23,7 +23,8 @@ MODELS = {                      # harness law -> LIGGGHTS normal model (MODELS 5
     "walton-braun": "hooke/hysteresis",
     "thornton": "thornton_ning",
 }
-MIN_RESTITUTION = 0.05          # LIGGGHTS refuses coefficientRestitution <= 0.05
+MIN_RESTITUTION = 0.05          # LIGGGHTS refuses coefficientRestitution <= 0.05 and poissonsRatio < 0; youngsModulus
+                                # < 5e6 or > 1e9 only with soft_particles/hard_particles yes (sanity checks only)
 OBSERVE_DUMP = "observe.dump"   # observe mode: `id z fz` of every sphere in contact, every step
 DUMP_HEADER_LINES = 9           # TIMESTEP, NUMBER OF ATOMS, BOX BOUNDS (3 lines) and ATOMS items
 
@@ -138,9 +139,13 @@ def settings(law, scene, e_n, options=None):
         from ..laws.normal import LudingHysteresis
         k1 = law_stiffness(scene)
         k2max, d_lim = LudingHysteresis.stiffness_and_limit(k1, scene.contact, e_n, scene.speed)
+        depth = d_lim * (k2max - k1) / (k2max * 2 * scene.radius)
+        if depth == 0.0:        # e_n = 1: LIGGGHTS' d_lim = k2max/(k2max - k1) phi 2R would be 0/0 and its force NaN,
+            depth = d_lim / (2 * scene.radius)      # which it drops (the sphere passes through the wall); any phi > 0
+                                                    # makes d_lim infinite and k2 = k1, the elastic limit
         properties += [("coefficientMaxElasticStiffness", "peratomtypepair", k2max / k1),
                        ("coefficientAdhesionStiffness", "peratomtypepair", 0.0),
-                       ("coefficientPlasticityDepth", "peratomtypepair", d_lim * (k2max - k1) / (k2max * 2 * scene.radius))]
+                       ("coefficientPlasticityDepth", "peratomtypepair", depth)]
     if model == "thornton_ning":
         p_y = law.normal.yield_pressure(scene.contact, e_n, scene.speed)
         properties += [("coefficientYieldRatio", "peratomtype", math.pi * p_y / (2.0 * scene.contact.E_star)),
@@ -154,6 +159,8 @@ def deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, 
     model, tangential, options, properties, restitution = settings(law, scene, e_n, options)
     if not MIN_RESTITUTION < restitution <= 1.0:
         raise EngineFailure(f"LIGGGHTS accepts coefficientRestitution in (0.05, 1] only; e_n = {e_n:g} was not run")
+    if scene.nu < 0.0:
+        raise EngineFailure(f"LIGGGHTS accepts poissonsRatio in [0, 0.5] only; nu = {scene.nu:g} was not run")
     radius = scene.radius
     spacing = 4.0 * radius
     atoms = [{"x": i * spacing, "vx": float(vt), "vz": -float(vn), "omegay": float(w)}

@@ -31,9 +31,11 @@ class Batch:
     tangential_active: np.ndarray
 
 
-def needs_tangential(scene, v_t0, omega0):
-    """Per impact: a tangential model (and rotation) only with friction and some tangential motion or spin."""
-    return (scene.mu > 0.0) & ((v_t0 != 0.0) | (omega0 != 0.0))
+def needs_tangential(scene, v_t0, omega0, law=None):
+    """Per impact: a tangential model (and rotation) only with some tangential motion or spin, and friction or a
+    tangential dashpot (engines add it while the spring is within the cap, which at mu = 0 is when it is zero)."""
+    acts = scene.mu > 0.0 or (law is not None and law.tangential_damping.rule != "none")
+    return acts & ((v_t0 != 0.0) | (omega0 != 0.0))
 
 
 def graded_steps(law, dashpot, steps_per_contact):
@@ -59,7 +61,7 @@ def plan_batch(law, scene, e_n, steps_per_contact):
     if not steps_per_contact > 0:
         raise ValueError(f"steps per contact must be positive, got {steps_per_contact}")
     dt = normal.contact_time / steps_per_contact
-    tangential = needs_tangential(scene, v_t0, omega0)
+    tangential = needs_tangential(scene, v_t0, omega0, law)
     n = len(v_n0)
     params = np.zeros((n, C.N_PARAMS))
     params[:, C.P_MASS] = contact.mass
@@ -84,7 +86,9 @@ def plan_batch(law, scene, e_n, steps_per_contact):
     params[:, C.P_VX0] = v_t0
     params[:, C.P_W0] = omega0
     slow = np.maximum(scene.speed / np.maximum(v_n0, 1e-12 * scene.speed), 1.0) ** 0.4
-    params[:, C.P_MAXSTEPS] = np.ceil(steps_per_contact * (20.0 * slow + 20.0))
+    # step cap: 20 slowed contact times, plus leaving a latched dent (engine hysteresis laws keep the contact at zero
+    # force until the gap opens): depth <= alpha_max <= V_n t_c, crossed at e_n V_n, so at most t_c/e_n more
+    params[:, C.P_MAXSTEPS] = np.ceil(steps_per_contact * (slow * (20.0 + 1.0 / e_n) + 20.0))
     params[:, C.P_GRADED] = np.where(tangential, graded_steps(law, dashpot, steps_per_contact), 0)
     active = np.flatnonzero(tangential)
     check_time_step(law, scene, e_n, dt, params[active[0] if len(active) else 0], normal.contact_time, len(active) > 0)

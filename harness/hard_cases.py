@@ -1,0 +1,143 @@
+"""Catalogue of hard cases (issue 6): named Scene overrides on the paper scene, each with the laws it applies to,
+and runners that put a case through the reference or, batched, through an engine."""
+import copy
+import tempfile
+from dataclasses import dataclass
+
+import numpy as np
+import pandas as pd
+
+from .errors import UserError
+from .laws import LAWS, compose
+from .scene import Scene
+
+ALL_LAWS = tuple(LAWS)
+EN_RANGE = (0.01, 0.02, 0.05, 0.1, 0.3, 0.5, 0.7, 0.9, 0.99, 1.0)   # "e_n from 0.01 to 1"
+EN_DEFAULT = (0.05, 0.5, 1.0)         # low, middle and elastic, for the cases that vary something else
+ANGLES = (0.0, 45.0, 89.5)            # normal (e_n is checked there), oblique, grazing
+RATIO_TANGENTIAL = ("linear", "walton-braun")      # tangential springs whose k_t/k_n is an option (`linear:R`)
+KT_KN_RANGE = (1e-3, 10.0)            # k_t/k_n accepted by those springs is (0, 10] (harness/laws/tangential.py)
+NU_RANGE = (0.499, -0.99)             # Mindlin's k_t/k_n = kappa = 2(1-nu)/(2-nu): 0.6671 and 1.3311 at the ends of
+                                      # the Poisson range (-1, 0.5) a Scene accepts
+
+
+@dataclass(frozen=True)
+class HardCase:
+    """One hard case: overrides of the paper scene (R 5 mm, E 70 GPa, nu 0.3, rho 2650, mu 0.3, V 1 m/s), the laws
+    it applies to, and k_t/k_n for the tangential springs that take a ratio (None: the law's own)."""
+    name: str
+    scene: dict
+    laws: tuple = ALL_LAWS
+    kt_kn: float | None = None
+    why: str = ""
+
+    def make_scene(self, **extra):
+        """The Scene of this case (default e_n and angles unless the case sets them); `extra` overrides further."""
+        values = {"e_n": EN_DEFAULT, "angles_deg": ANGLES, **self.scene, **extra}
+        return Scene(**values)
+
+    def law(self, name):
+        """The registry law `name` with this case's k_t/k_n where its tangential spring takes one (engine dialects keep
+        their own: LIGGGHTS k_t = k_n, YADE 2/7 or nu; only Mindlin's kappa moves with nu in every engine)."""
+        if name not in self.laws:
+            raise UserError(f"hard case {self.name!r} does not apply to {name}")
+        law = compose(name)
+        if self.kt_kn is None or law.tangential.name not in RATIO_TANGENTIAL:
+            return law
+        return compose(name, {"tangential": f"{law.tangential.name}:{self.kt_kn!r}"})
+
+
+CATALOGUE = (
+    HardCase("e_n 0.01 to 1", {"e_n": EN_RANGE, "angles_deg": (0.0, 45.0)},
+             why="calibrations at both ends: overdamped-looking dashpots at 0.01, no dissipation at 1"),
+    HardCase("exactly normal", {"angles_deg": (0.0,)}, why="no tangential motion: the plan switches friction off"),
+    HardCase("grazing 89.5 deg", {"angles_deg": (89.5,)},
+             why="V_n = 0.0087 V: long, shallow contact; plastic laws stay elastic below V_y"),
+    HardCase("mu = 0", {"mu": 0.0}, why="no tangential force at all: rotation stays zero"),
+    HardCase("mu = 2", {"mu": 2.0},
+             why="rigid-body sliding only above 82 deg (tan theta = 3.5 mu (1 + e)): sticking, rolling, reversal"),
+    HardCase("k_t/k_n low", {"nu": NU_RANGE[0]}, kt_kn=KT_KN_RANGE[0],
+             why="tangential spring nearly absent (ratio 1e-3), Mindlin kappa 0.667 (nu 0.499)"),
+    HardCase("k_t/k_n high", {"nu": NU_RANGE[1]}, kt_kn=KT_KN_RANGE[1],
+             why="tangential spring 10x the normal one; Mindlin kappa 1.331 (nu -0.99)"),
+    HardCase("E = 1e12 Pa", {"E": 1e12}, why="very stiff: contact 12 us, peak overlap 8e-4 R"),
+    HardCase("E = 1e6 Pa", {"E": 1e6},
+             why="very soft: contact 3 ms, peak overlap 0.2 R (the engines' levers R - alpha/2, R - alpha shorten)"),
+    HardCase("R = 10 um", {"radius": 1e-5}, why="tiny mass (1.1e-11 kg), contact 69 ns, V/R = 1e5 rad/s"),
+    HardCase("R = 0.1 m", {"radius": 0.1}, why="large sphere: 11 kg, contact 0.69 ms"),
+    HardCase("spin against the motion", {"omega0": -400.0, "angles_deg": (0.0, 20.0, 45.0, 89.5)},
+             why="R omega0 = -2 V: the contact point slides at up to 3 V; friction slows the backspin"),
+    HardCase("thornton e_n 0.05", {"e_n": (0.05,), "angles_deg": (0.0, 10.0, 30.0, 60.0, 89.5)},
+             laws=("thornton",), why="deep plastic flow: V/V_y = 1/r = 3.2e5 at e_n = 0.05 (MODELS 2.6)"),
+    HardCase("K2 = 400 K1", {"e_n": (0.05,), "angles_deg": (0.0, 10.0, 30.0, 60.0, 89.5)},
+             laws=("walton-braun", "partially-latching-spring"),
+             why="Walton-Braun unloading 400x stiffer than loading (K2 = K1/e^2 at e_n = 0.05): 20x shorter period"),
+)
+
+
+def get_case(name):
+    """The catalogue case called `name`; UserError listing the names otherwise."""
+    for case in CATALOGUE:
+        if case.name == name:
+            return case
+    raise UserError(f"unknown hard case {name!r}; known: {', '.join(c.name for c in CATALOGUE)}")
+
+
+def material_key(scene):
+    """What one engine run must share: everything but the impacts (angles, spin) and e_n."""
+    return tuple((k, v) for k, v in sorted(vars(scene).items()) if k not in ("e_n", "angles_deg", "omega0", "extra"))
+
+
+def run_reference(case, name, steps_per_contact=1000, **scene_overrides):
+    """Results table of registry law `name` on `case` through the reference, with a 'case' column."""
+    from .solver.reference import simulate
+    frame = simulate(case.law(name), case.make_scene(**scene_overrides), steps_per_contact=steps_per_contact)[0]
+    return frame.assign(case=case.name)
+
+
+def _merged(batches):
+    """One kernel batch holding the impacts of several batches of equal dt (one engine run)."""
+    merged = copy.copy(batches[0])
+    for field in ("params", "ints", "v_n0", "v_t0", "omega0", "theta_deg", "tangential_active"):
+        setattr(merged, field, np.concatenate([getattr(b, field) for b in batches]))
+    return merged
+
+
+def run_engine(adapter, name, cases, e_n, steps_per_contact=1000, options=None, **scene_overrides):
+    """Every impact of `cases` (one material) at target e_n in ONE run of `adapter`: (results table with a 'case'
+    column, [FailedRun]); a refused or failed run gives status 'failed' rows and its one-line message."""
+    from .engines.runner import EngineFailure
+    from .engines.sweep import SECONDS_PER_ATOM_STEP, TIMEOUT_FLOOR_S, FailedRun
+    from .results import impact_frame
+    from .solver.codes import P_MAXSTEPS
+    from .solver.plan import plan_batch
+    scenes = [case.make_scene(e_n=(e_n,), **scene_overrides) for case in cases]
+    if len({material_key(s) for s in scenes}) != 1:
+        raise ValueError("one engine run holds one material: these cases differ in more than angles, spin or e_n")
+    dialect = adapter.dialect(name, options)
+    batches = [plan_batch(dialect, scene, e_n, steps_per_contact) for scene in scenes]
+    if len({b.dt for b in batches}) != 1:
+        raise ValueError("the cases' batches differ in dt")
+    merged = _merged(batches)
+    max_steps = int(merged.params[:, P_MAXSTEPS].max())
+    timeout = TIMEOUT_FLOOR_S + SECONDS_PER_ATOM_STEP * len(merged.v_n0) * max_steps
+    identity = dict(model=name, dialect=dialect.dialect, engine=adapter.NAME, engine_version=adapter.version(),
+                    dt=merged.dt, steps_per_contact=steps_per_contact)
+    failures = []
+    try:
+        with tempfile.TemporaryDirectory(prefix=f"harness-{adapter.NAME}-") as workdir:
+            final, wall, _ = adapter.run_batch(compose(name), scenes[0], merged, max_steps, timeout, workdir, options)
+        wall_s, message = wall / len(merged.v_n0), ""
+    except EngineFailure as exc:
+        failures.append(FailedRun(adapter.NAME, e_n, str(exc), exc.log_tail))
+        nan = np.full(len(merged.v_n0), np.nan)
+        final, wall_s, message = {"v_n1": nan, "v_t1": nan, "omega1": nan, "separated": None}, np.nan, str(exc)
+    frames, start = [], 0
+    for case, scene, batch in zip(cases, scenes, batches):
+        part = slice(start, start + len(batch.v_n0))
+        start = part.stop
+        status = "failed" if final["separated"] is None else np.where(final["separated"][part], "ok", "no-separation")
+        frames.append(impact_frame(scene, batch, **identity, v_n1=final["v_n1"][part], v_t1=final["v_t1"][part],
+                                   omega1=final["omega1"][part], wall_s=wall_s, status=status,
+                                   message=message).assign(case=case.name))
+    return pd.concat(frames, ignore_index=True), failures
