@@ -57,8 +57,8 @@ def stability_limit(law, scene, e_n, params, tangential=True):
     code = law.tangential.code
     if tangential and scene.mu > 0.0:
         p1 = law.tangential.parameter(contact, law.normal.parameters(contact, e_n, scene.speed).linear_stiffness)
-        k_t = 8.0 * p1 * math.sqrt(contact.radius * alpha) if code in MINDLIN_CODES else p1
-        c_t = abs(params[C.P_TDAMP]) * math.sqrt(k_t)
+        k_t = abs(8.0 * p1 * math.sqrt(contact.radius * alpha) if code in MINDLIN_CODES else p1)   # |k_s| = |nu| k_n
+        c_t = abs(params[C.P_TDAMP]) * math.sqrt(k_t)                          # for YADE CundallStrack with nu < 0
         m_t = 1.0 / (1.0 / mass + contact.radius ** 2 / contact.inertia)
         spring = 0.0 if code in (C.TANGENTIAL_VISCOUS_LINEAR, C.TANGENTIAL_VISCOUS_MINDLIN) else k_t
         modes.append(("tangential", spring, c_t, m_t))

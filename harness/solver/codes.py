@@ -43,8 +43,7 @@ P_VZ0, P_VX0, P_W0 = 16, 17, 18              # initial velocities (vz < 0 approa
 P_MAXSTEPS = 19
 P_SLIP_R1 = 20                               # slip form: 0 -> V_t - lever omega; r1 > 0 -> YADE noRatch
 P_BIG_R = 21                                 # > 0: the wall is a fixed sphere of this radius (YADE Luding set-up)
-P_GRADED = 22                                # paper scheme: number of graded first steps (0 = uniform)
-N_PARAMS = 23
+N_PARAMS = 22
 
 # per-impact integer slots
 I_NORMAL, I_END, I_TANGENTIAL, I_INTEGRATOR = 0, 1, 2, 3

@@ -308,6 +308,8 @@ def event_kind(s, st, o, ot, ints):
     code = ints[C.I_TANGENTIAL]
     if code == C.TANGENTIAL_NONE or code >= C.TANGENTIAL_VISCOUS_LINEAR or s[S_FN] <= 0.0 or o[S_FN] <= 0.0:
         return EVENT_NONE
+    if code == C.TANGENTIAL_WALTON_BRAUN:     # k_t -> 0 at full mobilisation: the trial force meets mu F_n
+        return EVENT_NONE                     # tangentially, and locating that only amplifies round-off
     if st[T_MARGIN] < 0.0 < ot[T_MARGIN]:
         return EVENT_SLIP
     if st[T_MARGIN] > 0.0 >= ot[T_MARGIN]:
@@ -426,12 +428,9 @@ def integrate(params, ints, out, history, stride):
         k_rec = 0
         steps = 0
         max_steps = int(p[C.P_MAXSTEPS])
-        graded = int(p[C.P_GRADED])                   # first steps end at t_k = G h/2 (k/G)^2 (plan.graded_steps)
         t_now = 0.0
-        h_base = h
         frac_lo = 1.0
         for k in range(max_steps):
-            h = h_base * (2 * k + 1) / (2 * graded) if k < graded else h_base
             indicator = advance(s, st, o, ot, p, row_ints, h, scratch)
             if indicator > 0.0 and row_ints[C.I_INTEGRATOR] == C.INTEGRATOR_PAPER:
                 kind = event_kind(s, st, o, ot, row_ints)

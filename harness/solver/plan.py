@@ -38,17 +38,6 @@ def needs_tangential(scene, v_t0, omega0, law=None):
     return acts & ((v_t0 != 0.0) | (omega0 != 0.0))
 
 
-def graded_steps(law, dashpot, steps_per_contact):
-    """G graded first steps ending at t_k = (G h/2)(k/G)^2, G = N/4, for the paper scheme when c ~ alpha^p with
-    0 < p < 1 (used on impacts with friction only; the normal motion, integrated in u, needs no grading). The
-    friction impulse of a normal force rising like t^p from first touch then keeps second order (uniform steps give
-    O(h^(1+p))): the graded region is the first eighth of the contact, grows with N, and no step in it exceeds h
-    (N/4 steps where uniform stepping takes N/8: 12.5% more steps). None below 16 steps per contact."""
-    if law.integrator != "paper" or dashpot.c0 == 0.0 or not 0.0 < dashpot.power < 1.0:
-        return 0
-    return int(steps_per_contact // 4) if steps_per_contact >= 16 else 0
-
-
 def plan_batch(law, scene, e_n, steps_per_contact):
     """Kernel rows for every impact of the scene at target e_n; dt = (contact-time estimate at V) / steps, or the
     given FixedTimeStep; a dt above the stability limit is refused (harness.stability)."""
@@ -89,7 +78,6 @@ def plan_batch(law, scene, e_n, steps_per_contact):
     # step cap: 20 slowed contact times, plus leaving a latched dent (engine hysteresis laws keep the contact at zero
     # force until the gap opens): depth <= alpha_max <= V_n t_c, crossed at e_n V_n, so at most t_c/e_n more
     params[:, C.P_MAXSTEPS] = np.ceil(steps_per_contact * (slow * (20.0 + 1.0 / e_n) + 20.0))
-    params[:, C.P_GRADED] = np.where(tangential, graded_steps(law, dashpot, steps_per_contact), 0)
     active = np.flatnonzero(tangential)
     check_time_step(law, scene, e_n, dt, params[active[0] if len(active) else 0], normal.contact_time, len(active) > 0)
     ints = np.zeros((n, C.N_INTS), dtype=np.int64)

@@ -50,13 +50,13 @@ def _change(a, b, scene, batch, rows):
     return np.column_stack([diff, relative]).max(axis=1)
 
 
-def run_converged(law, scene, e_n, tolerance=CONVERGED_TOLERANCE):
+def run_converged(law, scene, e_n, tolerance=CONVERGED_TOLERANCE, extrapolate=None):
     """Richardson-extrapolated ladder: double the steps per contact from 64; the paper scheme's error is ~c h^2
     (onset exact, release, turning point and stick-slip transitions located inside their steps), so
     R_N = f_N + (f_N - f_N/2)/3 removes it; a row stops when R_N and R_N/2 differ by less than `tolerance`,
     twice in a row (one agreement can be a crossing), which bounds the error of R_N/2 and so of R_N. Engine schemes
-    (first order) double without extrapolating."""
-    extrapolate = law.integrator == "paper"
+    (first order) double without extrapolating (extrapolate=False does the same for any law: plain refinement)."""
+    extrapolate = law.integrator == "paper" if extrapolate is None else extrapolate
     n = CONVERGED_START
     batch = plan_batch(law, scene, e_n, n)
     out, _, wall = run_kernel(batch)
@@ -88,12 +88,12 @@ def run_converged(law, scene, e_n, tolerance=CONVERGED_TOLERANCE):
     return batch, out, levels, change, dt, wall
 
 
-def simulate(law, scene, steps_per_contact=1000, converged=False, history_points=0):
+def simulate(law, scene, steps_per_contact=1000, converged=False, history_points=0, extrapolate=None):
     """Results table of `law` over every (e_n, impact) of `scene`; histories {e_n: array} if points are asked for."""
     frames, histories = [], {}
     for e_n in scene.e_n:
         if converged:
-            batch, out, levels, change, dt, wall = run_converged(law, scene, e_n)
+            batch, out, levels, change, dt, wall = run_converged(law, scene, e_n, extrapolate=extrapolate)
             messages = [f"converged: Richardson on {lv // 2} and {lv} steps/contact, last change {ch:.1e}"
                         if ch <= CONVERGED_TOLERANCE else
                         f"not converged at {lv} steps/contact (change {ch:.1e})" for lv, ch in zip(levels, change)]
