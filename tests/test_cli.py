@@ -54,23 +54,23 @@ def test_unwritable_output_is_exit_2(tmp_path):
     assert proc.returncode == 2 and len(proc.stderr.strip().splitlines()) == 1
 
 
+def run_table(tmp_path, *args):
+    """`harness run ARGS -o r.csv`, which must succeed; the table it wrote."""
+    out = tmp_path / "r.csv"
+    proc = harness("run", *args, "-o", str(out))
+    assert proc.returncode == 0, proc.stderr
+    return pd.read_csv(out)
+
+
 def test_dt_gives_one_time_step_to_every_e_n(tmp_path):
     """--dt: the same time step at every e_n; steps per contact follow from each contact time."""
-    out = tmp_path / "r.csv"
-    proc = harness("run", "--model", "walton-braun", "--en", "0.9,0.3", "--angles", "0,45", "--dt", "2e-7",
-                   "-o", str(out))
-    assert proc.returncode == 0, proc.stderr
-    frame = pd.read_csv(out)
+    frame = run_table(tmp_path, "--model", "walton-braun", "--en", "0.9,0.3", "--angles", "0,45", "--dt", "2e-7")
     assert set(frame.dt) == {2e-7}
     assert (frame.steps_per_contact * frame.dt).round(12).nunique() == 2     # = each e_n's contact-time estimate
 
 
 def test_run_writes_the_results_table(tmp_path):
-    out = tmp_path / "r.csv"
-    proc = harness("run", "--model", "hertz-mindlin", "--en", "0.9,0.3", "--angles", "0:60:30", "--mu", "0.2",
-                   "-o", str(out))
-    assert proc.returncode == 0, proc.stderr
-    frame = pd.read_csv(out)
+    frame = run_table(tmp_path, "--model", "hertz-mindlin", "--en", "0.9,0.3", "--angles", "0:60:30", "--mu", "0.2")
     assert tuple(frame.columns) == COLUMNS
     assert len(frame) == 6 and set(frame.e_n_target) == {0.9, 0.3} and set(frame.mu) == {0.2}
     assert sorted(set(frame.theta_deg)) == [0.0, 30.0, 60.0]
