@@ -24,6 +24,16 @@ def requested_engines(text):
     return names
 
 
+def runnable_statuses(engines, law, scene):
+    """Each engine's status for `law`, marked unavailable where the scene asks for what engine inputs lack."""
+    statuses = [engine_status(name, law.name) for name in engines]
+    unsupported = ("engine inputs do not model gravity" if scene.gravity else
+                   "engine inputs use a wall of the sphere's own material" if scene.wall != "same" else None)
+    if unsupported:
+        statuses = [type(s)(s.name, False, unsupported) if s.available else s for s in statuses]
+    return statuses
+
+
 def summary_lines(frame):
     """Per e_n: achieved e_n range, e_t range, largest kinetic-energy ratio and rows not ok."""
     lines = [f"{'e_n target':>10} {'e_n achieved':>21} {'e_t':>19} {'max KE1/KE0':>12} {'not ok':>6}"]
@@ -58,11 +68,7 @@ def compare(args):
     out_dir = args.output
     if os.path.exists(out_dir) and not os.path.isdir(out_dir):
         raise UserError(f"output {out_dir} exists and is not a directory")
-    statuses = [engine_status(name, law.name) for name in engines]
-    unsupported = ("engine inputs do not model gravity" if scene.gravity else
-                   "engine inputs use a wall of the sphere's own material" if scene.wall != "same" else None)
-    if unsupported:
-        statuses = [type(s)(s.name, False, unsupported) if s.available else s for s in statuses]
+    statuses = runnable_statuses(engines, law, scene)
     planned = [] if args.converged else [law]
     for status in statuses:
         if status.available:             # bad options or a time step above a stability limit: exit 2 before running

@@ -56,7 +56,13 @@ def truth_of(law, scene):
     return fine, uncertainty
 
 
-def measure(rows, law_name, engine, dialect, rung, frames_by_e, truth, steps_of, startup=None):
+def contact_steps(frame):
+    """Steps taken in contact, all impacts of one batch: ceil(t_c/dt) (the release step counts whole; an engine's
+    observed contact time is a whole number of steps)."""
+    return float(np.ceil(frame.t_contact / frame.dt - 1e-9).sum(skipna=False))
+
+
+def measure(rows, law_name, engine, dialect, rung, frames_by_e, truth, startup=None):
     """Cost rows of one rung: per e_n the errors against the truth, wall time (and without the engine's start-up)
     and contact steps."""
     for e_n, frame in frames_by_e.items():
@@ -66,7 +72,7 @@ def measure(rows, law_name, engine, dialect, rung, frames_by_e, truth, steps_of,
         start = (startup or {}).get(e_n, 0.0)
         rows.append({"model": law_name, "engine": engine, "dialect": dialect, "e_n_target": e_n, "rung": rung,
                      "steps_per_contact": float(frame.steps_per_contact.iloc[0]), "dt": float(frame.dt.iloc[0]),
-                     "impacts": len(frame), "steps": steps_of(e_n), "wall_s": wall, "startup_s": start,
+                     "impacts": len(frame), "steps": contact_steps(frame), "wall_s": wall, "startup_s": start,
                      "net_wall_s": max(wall - start, 0.0) if np.isfinite(wall) else np.nan,
                      "status": "ok" if ok.all() else str(frame.status[~ok].iloc[0]),
                      "message": "" if ok.all() else str(frame.message[~ok].iloc[0]),
@@ -85,7 +91,7 @@ def ladder_rungs(ladder, scene):
 
 
 def reference_curve(rows, law, scene, ladder, truth, engine_label="reference"):
-    """The reference engine running `law` at every rung (contact steps counted by a second, untimed kernel run)."""
+    """The reference engine running `law` at every rung."""
     for label, resolution in ladder_rungs(ladder, scene):
         try:
             frame, _ = simulate(law, scene, steps_per_contact=resolution)
@@ -93,16 +99,7 @@ def reference_curve(rows, law, scene, ladder, truth, engine_label="reference"):
             refused(rows, law.name, engine_label, law.dialect, label, scene, str(exc))
             continue
         measure(rows, law.name, engine_label, law.dialect, label,
-                {e: g for e, g in frame.groupby("e_n_target", sort=False)}, truth,
-                lambda e_n: contact_steps(law, scene, resolution, e_n))
-
-
-def contact_steps(law, scene, resolution, e_n):
-    """Impact-steps the scheme takes in contact (the kernel's step count, all impacts of one e_n)."""
-    from .solver import codes as C
-    from .solver.reference import run_kernel
-    out, _, _ = run_kernel(plan_batch(law, scene, e_n, resolution))
-    return float(out[:, C.O_STEPS].sum())
+                {e: g for e, g in frame.groupby("e_n_target", sort=False)}, truth)
 
 
 def startup_seconds(adapter, paper_law, dialect, scene, options):
@@ -137,8 +134,7 @@ def engine_curve(rows, adapter, paper_law, dialect, scene, ladder, truth, option
                 for column in ("t_contact", "f_n_max", "overlap_max"):
                     frame[column] = seen[column].to_numpy()
         measure(rows, paper_law.name, adapter.NAME, dialect.dialect, label,
-                {f.e_n_target.iloc[0]: f for f in frames}, truth,
-                lambda e_n: contact_steps(dialect, scene, resolution, e_n), startup)
+                {f.e_n_target.iloc[0]: f for f in frames}, truth, startup)
 
 
 def converged_point(rows, law, scene, truth):
@@ -181,6 +177,13 @@ def cost_table(law, scene, adapters, ladder=LADDER, keep=None):
         reference_curve(rows, dialect, scene, ladder, dialect_truth)
         engine_curve(rows, adapter, law, dialect, scene, ladder, dialect_truth, options, failures)
     return pd.DataFrame(rows, columns=COLUMNS), failures, uncertainty
+
+
+def per_rung(cost):
+    """Per curve and rung, over the e_n: worst error per metric, wall times and steps summed, finest dt."""
+    agg = {f"err_{m}": "max" for m in (*METRICS, "max")}
+    agg.update({"wall_s": "sum", "net_wall_s": "sum", "steps_per_contact": "min", "steps": "sum", "dt": "max"})
+    return cost[cost.status != "refused"].groupby(["engine", "dialect", "rung"], sort=False).agg(agg).reset_index()
 
 
 def recommendations(cost):

@@ -5,14 +5,13 @@ from dataclasses import asdict
 
 import pandas as pd
 
-from .compare import engine_options, requested_engines, text_table
-from .cost import (COLUMNS, LADDER, METRICS, RAYLEIGH_FRACTION, convergence_orders, cost_table, rayleigh_time,
-                   recommendations)
-from .engines import ADAPTERS, engine_status
+from .compare import engine_options, requested_engines, runnable_statuses, text_table
+from .cost import (COLUMNS, LADDER, METRICS, RAYLEIGH_FRACTION, convergence_orders, cost_table, per_rung,
+                   rayleigh_time, recommendations)
+from .engines import ADAPTERS
 from .errors import UserError
-from .publish import COST, COST_RUN, COST_TRUTH as UNCERTAINTY
+from .publish import COST, COST_RUN, COST_TRUTH
 from .results import write_csv
-
 
 
 def ladder_from_text(text):
@@ -28,23 +27,13 @@ def ladder_from_text(text):
     return rungs
 
 
-def summary(cost):
-    """Per curve and rung: worst error over e_n per metric, wall time summed over e_n (start-up excluded)."""
-    ok = cost[cost.status != "refused"]
-    agg = {f"err_{m}": "max" for m in (*METRICS, "max")}
-    agg.update({"wall_s": "sum", "net_wall_s": "sum", "steps_per_contact": "min", "steps": "sum", "dt": "max"})
-    table = ok.groupby(["engine", "dialect", "rung"], sort=False).agg(agg).reset_index()
-    refused = cost[cost.status == "refused"].groupby(["engine", "dialect", "rung"], sort=False).size().reset_index()
-    return table, refused
-
-
 def save(out_dir, cost, uncertainty, law, scene, overrides, skipped, failures):
     """DIR/cost.csv (per curve, rung and e_n), the truth uncertainties and cost.json (scene, skipped engines); also
     written before the study starts, so `harness report DIR` works on an interrupted one."""
     write_csv(cost, os.path.join(out_dir, COST))
     rows = [{"curve": curve, "e_n_target": e_n, **errs} for curve, per_e in uncertainty.items()
             for e_n, errs in per_e.items()]
-    pd.DataFrame(rows).to_csv(os.path.join(out_dir, UNCERTAINTY), index=False)
+    pd.DataFrame(rows).to_csv(os.path.join(out_dir, COST_TRUTH), index=False)
     scene_fields = {k: v for k, v in asdict(scene).items() if k != "extra"}
     with open(os.path.join(out_dir, COST_RUN), "w") as handle:
         json.dump({"model": law.name, "overrides": overrides, "scene": scene_fields, "skipped": skipped,
@@ -60,10 +49,7 @@ def cost(args):
     out_dir = args.output
     if os.path.exists(out_dir) and not os.path.isdir(out_dir):
         raise UserError(f"output {out_dir} exists and is not a directory")
-    statuses = [engine_status(name, law.name) for name in engines]
-    if scene.gravity or scene.wall != "same":
-        statuses = [type(s)(s.name, False, "engine inputs model neither gravity nor another wall")
-                    if s.available else s for s in statuses]
+    statuses = runnable_statuses(engines, law, scene)
     adapters = {s.name: (ADAPTERS[s.name], engine_options(args, s.name)) for s in statuses if s.available}
     for name, (adapter, options) in adapters.items():
         adapter.dialect(law.name, options)                    # bad options: exit 2 before anything runs
@@ -94,15 +80,15 @@ def print_tables(table, uncertainty, law, scene, ladder, skipped, failures):
               + (" (errors below this are not resolved)" if worst > 1e-6 else ""))
     for name, reason in skipped:
         print(f"skipped {name}: {reason}")
-    rows, refused = summary(table)
+    rows = per_rung(table)
+    refused = table[table.status == "refused"].drop_duplicates(["engine", "dialect", "rung"])
     print()
     print(text_table(rows, ["engine", "dialect", "rung", "steps_per_contact", "dt", "net_wall_s", "err_e_n", "err_e_t",
                             "err_omega_star", "err_t_contact", "err_f_n_max"],
                      {"steps_per_contact": "{:.4g}", "dt": "{:.3g}", "net_wall_s": "{:.3g}",
                       **{f"err_{m}": "{:.1e}" for m in METRICS}}))
     for _, r in refused.iterrows():
-        message = table[(table.engine == r.engine) & (table.dialect == r.dialect) & (table.rung == r.rung)].message.iloc[0]
-        print(f"  refused: {r.engine}/{r.dialect} at {r.rung}: {message}")
+        print(f"  refused: {r.engine}/{r.dialect} at {r.rung}: {r.message}")
     print("\nrecommended time step (coarsest rung within tolerance at every e_n, worst metric, and every finer rung too):")
     rec = recommendations(table)
     cols = [c for c in rec.columns if c.startswith("dt for") or c.startswith("steps/contact")] + ["error at 20% Rayleigh"]

@@ -1,7 +1,7 @@
 """The report's accuracy-against-cost section, from cost.csv alone: log-log figures and the tables."""
 import numpy as np
 
-from .cost import METRICS, TOLERANCES, convergence_orders, recommendations
+from .cost import METRICS, TOLERANCES, convergence_orders, per_rung, recommendations
 
 LABELS = {"e_n": "e_n", "e_t": "e_t", "omega_star": "Omega*", "t_contact": "contact time", "f_n_max": "peak force",
           "max": "worst metric"}
@@ -18,13 +18,11 @@ def curve_style(engine, dialect):
 
 def _curves(cost):
     """(engine, dialect, ladder rows aggregated over e_n, Rayleigh row, converged row) per curve."""
-    done = cost[cost.status != "refused"].copy()
-    agg = {**{f"err_{m}": "max" for m in (*METRICS, "max")}, "net_wall_s": "sum"}
-    for (engine, dialect), curve in done.groupby(["engine", "dialect"], sort=False):
-        per_rung = curve.groupby("rung", sort=False).agg(agg).reset_index()
-        per_rung["n"] = curve.groupby("rung", sort=False).steps_per_contact.min().to_numpy()
-        ladder = per_rung[per_rung.rung.str.fullmatch(r"\d+")].sort_values("n")
-        yield engine, dialect, ladder, per_rung[per_rung.rung == "rayleigh"], per_rung[per_rung.rung == "converged"]
+    for (engine, dialect), per_curve in per_rung(cost).groupby(["engine", "dialect"], sort=False):
+        per_curve = per_curve.rename(columns={"steps_per_contact": "n"})
+        ladder = per_curve[per_curve.rung.str.fullmatch(r"\d+")].sort_values("n")
+        yield (engine, dialect, ladder, per_curve[per_curve.rung == "rayleigh"],
+               per_curve[per_curve.rung == "converged"])
 
 
 def cost_figure(cost, x_column, x_label, metrics):

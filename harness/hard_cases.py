@@ -1,7 +1,6 @@
 """Catalogue of hard cases (issue 6): named Scene overrides on the paper scene, each with the laws it applies to,
 and runners that put a case through the reference or, batched, through an engine."""
 import copy
-import tempfile
 from dataclasses import dataclass
 
 import numpy as np
@@ -106,10 +105,7 @@ def _merged(batches):
 def run_engine(adapter, name, cases, e_n, steps_per_contact=1000, options=None, **scene_overrides):
     """Every impact of `cases` (one material) at target e_n in ONE run of `adapter`: (results table with a 'case'
     column, [FailedRun]); a refused or failed run gives status 'failed' rows and its one-line message."""
-    from .engines.runner import EngineFailure
-    from .engines.sweep import SECONDS_PER_ATOM_STEP, TIMEOUT_FLOOR_S, FailedRun
-    from .results import impact_frame
-    from .solver.codes import P_MAXSTEPS
+    from .engines.sweep import run_batch_rows
     from .solver.plan import plan_batch
     scenes = [case.make_scene(e_n=(e_n,), **scene_overrides) for case in cases]
     if len({material_key(s) for s in scenes}) != 1:
@@ -118,26 +114,10 @@ def run_engine(adapter, name, cases, e_n, steps_per_contact=1000, options=None, 
     batches = [plan_batch(dialect, scene, e_n, steps_per_contact) for scene in scenes]
     if len({b.dt for b in batches}) != 1:
         raise ValueError("the cases' batches differ in dt")
-    merged = _merged(batches)
-    max_steps = int(merged.params[:, P_MAXSTEPS].max())
-    timeout = TIMEOUT_FLOOR_S + SECONDS_PER_ATOM_STEP * len(merged.v_n0) * max_steps
-    identity = dict(model=name, dialect=dialect.dialect, engine=adapter.NAME, engine_version=adapter.version(),
-                    dt=merged.dt, steps_per_contact=steps_per_contact)
-    failures = []
-    try:
-        with tempfile.TemporaryDirectory(prefix=f"harness-{adapter.NAME}-") as workdir:
-            final, wall, _ = adapter.run_batch(compose(name), scenes[0], merged, max_steps, timeout, workdir, options)
-        wall_s, message = wall / len(merged.v_n0), ""
-    except EngineFailure as exc:
-        failures.append(FailedRun(adapter.NAME, e_n, str(exc), exc.log_tail))
-        nan = np.full(len(merged.v_n0), np.nan)
-        final, wall_s, message = {"v_n1": nan, "v_t1": nan, "omega1": nan, "separated": None}, np.nan, str(exc)
+    merged, failure = run_batch_rows(adapter, compose(name), dialect, scenes[0], _merged(batches), options)
+    failures = [failure] if failure is not None else []
     frames, start = [], 0
-    for case, scene, batch in zip(cases, scenes, batches):
-        part = slice(start, start + len(batch.v_n0))
-        start = part.stop
-        status = "failed" if final["separated"] is None else np.where(final["separated"][part], "ok", "no-separation")
-        frames.append(impact_frame(scene, batch, **identity, v_n1=final["v_n1"][part], v_t1=final["v_t1"][part],
-                                   omega1=final["omega1"][part], wall_s=wall_s, status=status,
-                                   message=message).assign(case=case.name))
+    for case, batch in zip(cases, batches):
+        frames.append(merged.iloc[start:start + len(batch.v_n0)].assign(case=case.name))
+        start += len(batch.v_n0)
     return pd.concat(frames, ignore_index=True), failures

@@ -31,29 +31,38 @@ def run_sweep(adapter, paper_law, scene, steps_per_contact, on_frame=None, optio
     dialect = adapter.dialect(paper_law.name, options)
     frames, failures = [], []
     for e_n in scene.e_n:
-        batch = plan_batch(dialect, scene, e_n, steps_per_contact)
-        max_steps = int(batch.params[:, P_MAXSTEPS].max())
-        timeout = TIMEOUT_FLOOR_S + SECONDS_PER_ATOM_STEP * len(batch.v_n0) * max_steps
-        identity = dict(model=paper_law.name, dialect=dialect.dialect, engine=adapter.NAME,
-                        engine_version=adapter.version(), dt=batch.dt, steps_per_contact=batch.steps_per_contact)
-        try:
-            with tempfile.TemporaryDirectory(prefix=f"harness-{adapter.NAME}-") as workdir:
-                final, wall, _ = adapter.run_batch(paper_law, scene, batch, max_steps, timeout, workdir, options,
-                                                   observe=observe)
-            separated = final["separated"]
-            observed = {name: final[name] for name in OBSERVED if observe}
-            frame = impact_frame(scene, batch, **identity, v_n1=final["v_n1"], v_t1=final["v_t1"],
-                                 omega1=final["omega1"], wall_s=wall / len(batch.v_n0),
-                                 status=np.where(separated, "ok", "no-separation"), message="", **observed)
-        except EngineFailure as exc:
-            failures.append(FailedRun(adapter.NAME, e_n, str(exc), exc.log_tail))
-            nan = np.full(len(batch.v_n0), np.nan)
-            frame = impact_frame(scene, batch, **identity, v_n1=nan, v_t1=nan, omega1=nan, wall_s=np.nan,
-                                 status="failed", message=str(exc))
+        frame, failure = run_batch_rows(adapter, paper_law, dialect, scene, plan_batch(dialect, scene, e_n,
+                                                                                        steps_per_contact),
+                                        options, observe)
+        if failure is not None:
+            failures.append(failure)
         frames.append(frame)
         if on_frame is not None:
             on_frame(frame)
     return frames, failures
+
+
+def run_batch_rows(adapter, paper_law, dialect, scene, batch, options=None, observe=False):
+    """One batched engine run as result rows, and its FailedRun (None when it ran): a refused or failed run gives
+    'failed' rows carrying its one-line message."""
+    max_steps = int(batch.params[:, P_MAXSTEPS].max())
+    timeout = TIMEOUT_FLOOR_S + SECONDS_PER_ATOM_STEP * len(batch.v_n0) * max_steps
+    identity = dict(model=paper_law.name, dialect=dialect.dialect, engine=adapter.NAME,
+                    engine_version=adapter.version(), dt=batch.dt, steps_per_contact=batch.steps_per_contact)
+    try:
+        with tempfile.TemporaryDirectory(prefix=f"harness-{adapter.NAME}-") as workdir:
+            final, wall, _ = adapter.run_batch(paper_law, scene, batch, max_steps, timeout, workdir, options,
+                                               observe=observe)
+    except EngineFailure as exc:
+        nan = np.full(len(batch.v_n0), np.nan)
+        frame = impact_frame(scene, batch, **identity, v_n1=nan, v_t1=nan, omega1=nan, wall_s=np.nan,
+                             status="failed", message=str(exc))
+        return frame, FailedRun(adapter.NAME, batch.e_n, str(exc), exc.log_tail)
+    observed = {name: final[name] for name in OBSERVED if observe}
+    frame = impact_frame(scene, batch, **identity, v_n1=final["v_n1"], v_t1=final["v_t1"], omega1=final["omega1"],
+                         wall_s=wall / len(batch.v_n0), status=np.where(final["separated"], "ok", "no-separation"),
+                         message="", **observed)
+    return frame, None
 
 
 def precision_gap(adapter, paper_law, scene, steps_per_contact, precision="mpfr150", samples=3):

@@ -318,32 +318,24 @@ def event_kind(s, st, o, ot, ints):
 
 
 @njit(cache=True, inline="always")
-def event_value(kind, o, ot, p, sign0):
-    """The quantity whose zero is the event: alpha_dot, spring margin, or slip velocity (signed as at the start)."""
+def event_value(kind, a, at, p, sign0):
+    """The quantity that rises through zero at the event, in state (a, at): -alpha_dot, the spring margin, or the
+    slip velocity against its sign at the step's start (sign0)."""
     if kind == EVENT_TURN:
-        return o[S_VZ]
+        return a[S_VZ]
     if kind == EVENT_SLIP:
-        return ot[T_MARGIN]
-    lever = p[C.P_RADIUS] - p[C.P_LEVER] * o[S_ALPHA]
-    return sign0 * slip_velocity(p, o[S_ALPHA], o[S_VX], o[S_W], lever)
+        return at[T_MARGIN]
+    lever = p[C.P_RADIUS] - p[C.P_LEVER] * a[S_ALPHA]
+    return -sign0 * slip_velocity(p, a[S_ALPHA], a[S_VX], a[S_W], lever)
 
 
 @njit(cache=True)
-def locate_event(kind, s, st, lo, lot, p, ints, h, scratch, g_hi):
-    """Step fraction at which the event happens (Illinois false position on the event value); -1 if the value
-    does not change sign over the step."""
-    sign0 = 1.0
-    if kind == EVENT_STICK:
-        lever = p[C.P_RADIUS] - p[C.P_LEVER] * s[S_ALPHA]
-        slip0 = slip_velocity(p, s[S_ALPHA], s[S_VX], s[S_W], lever)
-        sign0 = 1.0 if slip0 > 0.0 else -1.0
-        g_lo = abs(slip0)
-        g_hi = event_value(kind, lo, lot, p, sign0)       # lo, lot hold the full step on entry
-        g_lo, g_hi = -g_lo, -g_hi                         # increasing through zero, as the other kinds
-    elif kind == EVENT_TURN:
-        g_lo = s[S_VZ]
-    else:
-        g_lo = st[T_MARGIN]
+def locate_event(kind, s, st, o, ot, lo, lot, p, ints, h, scratch):
+    """Step fraction at which the event happens between (s, st) and (o, ot) (Illinois false position on the event
+    value, trial steps in lo, lot); -1 if the value does not change sign over the step."""
+    lever = p[C.P_RADIUS] - p[C.P_LEVER] * s[S_ALPHA]
+    sign0 = 1.0 if slip_velocity(p, s[S_ALPHA], s[S_VX], s[S_W], lever) > 0.0 else -1.0
+    g_lo, g_hi = event_value(kind, s, st, p, sign0), event_value(kind, o, ot, p, sign0)
     if not (g_lo < 0.0 < g_hi):
         return -1.0
     lo_f, hi_f, side = 0.0, 1.0, 0
@@ -355,8 +347,6 @@ def locate_event(kind, s, st, lo, lot, p, ints, h, scratch, g_hi):
             mid = 0.5 * (lo_f + hi_f)
         step(s, st, lo, lot, p, ints, mid * h, scratch)
         g_mid = event_value(kind, lo, lot, p, sign0)
-        if kind == EVENT_STICK:
-            g_mid = -g_mid
         lo_f, hi_f, g_lo, g_hi, side = illinois(lo_f, hi_f, g_lo, g_hi, side, mid, g_mid, g_mid < 0.0)
     return hi_f
 
@@ -435,10 +425,7 @@ def integrate(params, ints, out, history, stride):
             if indicator > 0.0 and row_ints[C.I_INTEGRATOR] == C.INTEGRATOR_PAPER:
                 kind = event_kind(s, st, o, ot, row_ints)
                 if kind != EVENT_NONE:                     # split the step at the event: smooth error in h
-                    lo[:] = o
-                    lot[:] = ot
-                    g_hi = event_value(kind, o, ot, p, 1.0)
-                    frac = locate_event(kind, s, st, lo, lot, p, row_ints, h, scratch, g_hi)
+                    frac = locate_event(kind, s, st, o, ot, lo, lot, p, row_ints, h, scratch)
                     if 0.0 < frac < 1.0:
                         step(s, st, at_event, at_event_t, p, row_ints, frac * h, scratch)
                         if kind == EVENT_TURN:              # alpha_max itself; F_max too when undamped

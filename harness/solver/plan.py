@@ -6,7 +6,6 @@ import numpy as np
 from ..stability import check_time_step
 from . import codes as C
 
-MIN_STEPS_PER_CONTACT = 5
 NORATCH_WALL_RADIUS = 1e8      # YADE's hertzian wall: reference radius 1e8 R (its noRatch slip factor uses it)
 
 

@@ -32,9 +32,7 @@ def run_kernel(batch, history_points=0, rows=None):
     return out, history, time.perf_counter() - start
 
 
-def _kept(out):
-    """The outcome columns the converged mode extrapolates."""
-    return out[:, [C.O_VZ, C.O_VX, C.O_W, C.O_TC, C.O_FMAX, C.O_AMAX]].copy()
+KEPT = [C.O_VZ, C.O_VX, C.O_W, C.O_TC, C.O_FMAX, C.O_AMAX]     # outcome columns the converged mode extrapolates
 
 
 def _change(a, b, scene, batch, rows):
@@ -60,30 +58,28 @@ def run_converged(law, scene, e_n, tolerance=CONVERGED_TOLERANCE, extrapolate=No
     n = CONVERGED_START
     batch = plan_batch(law, scene, e_n, n)
     out, _, wall = run_kernel(batch)
-    plain = _kept(out)
-    best = plain.copy()
+    plain = out[:, KEPT]
+    best = np.full_like(plain, np.nan)          # R needs two levels: nothing to compare with at the first
     levels = np.full(len(out), n)
     change = np.full(len(out), np.inf)
     pending = np.arange(len(out))
-    previous_best = np.full_like(best, np.nan)
     passes = np.zeros(len(out), dtype=int)
     while len(pending) and n < CONVERGED_LIMIT:
         n *= 2
         finer, _, seconds = run_kernel(plan_batch(law, scene, e_n, n), rows=pending)
         wall += seconds
-        new = _kept(finer)
+        new = finer[:, KEPT]
         estimate = new + (new - plain[pending]) / 3.0 if extrapolate else new
         out[pending] = finer
         plain[pending] = new
-        diff = _change(estimate, previous_best[pending], scene, batch, pending)
-        previous_best[pending] = estimate
+        diff = _change(estimate, best[pending], scene, batch, pending)
         best[pending] = estimate
         levels[pending] = n
         diff = np.where(np.isnan(diff), np.inf, diff)
         passes[pending] = np.where(diff < tolerance, passes[pending] + 1, 0)
         change[pending] = diff
         pending = pending[passes[pending] < 2]
-    out[:, [C.O_VZ, C.O_VX, C.O_W, C.O_TC, C.O_FMAX, C.O_AMAX]] = best
+    out[:, KEPT] = best
     dt = batch.dt * CONVERGED_START / levels
     return batch, out, levels, change, dt, wall
 
