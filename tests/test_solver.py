@@ -158,12 +158,15 @@ def test_psi_and_vt_scenes_hold_the_normal_speed():
 
 
 @pytest.mark.parametrize("name, e_n, angle", [("thornton", 0.5, 30.0), ("linear-spring-dashpot", 0.5, 85.0),
-                                               ("linear-spring-dashpot", 0.5, 30.0)])
+                                               ("linear-spring-dashpot", 0.5, 30.0), ("hertz-mindlin", 0.5, 25.0),
+                                               ("hertz-mindlin", 0.5, 41.0), ("partially-latching-spring", 0.9, 1.0),
+                                               ("stronge", 0.5, 30.0)])
 def test_regime_changes_located_in_their_step_make_the_error_smooth(name, e_n, angle):
-    """Turning point and stick-slip transitions are located inside their step, so the error is c h^2 + O(h^3)
-    and Richardson's R = f_N + (f_N - f_N/2)/3 is far closer than f_N (without the location, the transitions
-    leave an O(h^2) term that depends on where they fall in the step, and R gained less than 3x here). Not under
-    the alpha^p dashpots (Tsuji, Kuwabara-Kono), whose sliding start leaves an h^(1+p) term (README)."""
+    """Turning point, yield and stick-slip transitions (also inside the release step) are located inside their
+    step, so the error is c h^2 + O(h^3) and Richardson's R = f_N + (f_N - f_N/2)/3 is far closer than f_N
+    (without the location, the transitions leave an O(h^2) term that depends on where they fall in the step: R
+    gained less than 3x at Hertz-Mindlin 41 deg before the end of sliding was located where the spring leaves the
+    Coulomb cone rather than at the slip reversal)."""
     scene = Scene(e_n=(e_n,), angles_deg=(angle,))
     law = compose(name)
     cols = ["e_t", "omega_star"]
@@ -174,6 +177,71 @@ def test_regime_changes_located_in_their_step_make_the_error_smooth(name, e_n, a
     plain = np.abs(fine - truth)
     richardson = np.abs(fine + (fine - coarse) / 3 - truth)
     assert np.all(richardson < plain / 20), (plain, richardson)
+
+
+def test_graded_mesh_grows_like_s4_from_both_ends_and_covers_its_span():
+    """Phi(s) of the converged mode's mesh: 0 and 1 at the ends, increasing, Phi ~ c s^4 at first touch and
+    1 - Phi ~ c (1 - s)^4 at the end (so alpha^(1/4) ~ s there: smooth), uniform steps in the middle."""
+    from harness.solver.kernel import graded_step, graded_time
+    assert graded_time(0.0) == 0.0 and graded_time(1.0) == pytest.approx(1.0, abs=1e-15)
+    s = np.linspace(0.0, 1.0, 2001)
+    phi = np.array([graded_time(x) for x in s])
+    assert np.all(np.diff(phi) > 0.0)
+    for tiny in (1e-6, 1e-5):
+        assert graded_time(2 * tiny) / graded_time(tiny) == pytest.approx(16.0, rel=1e-3)
+    many = [graded_step(k, 10 ** 5, 1.0) for k in (0, 1, 10 ** 5 - 2, 10 ** 5 - 1)]
+    assert many[1] / many[0] == pytest.approx(15.0, rel=1e-3) and many[2] / many[3] == pytest.approx(15.0, rel=1e-3)
+    steps = np.array([graded_step(k, 1000, 2.0) for k in range(1000)])
+    assert steps == pytest.approx(steps[::-1], rel=1e-9)
+    assert steps.sum() == pytest.approx(2.0, rel=1e-12)
+    assert np.ptp(steps[300:700]) < 1e-12 and steps[500] == pytest.approx(2.0 / 1000 / 0.9142857, rel=1e-6)
+    assert graded_step(1000, 1000, 2.0) == 2.0 / 1000       # beyond the span: uniform
+
+
+HARD_ROWS = Scene(e_n=(0.9, 0.1), angles_deg=(1.0, 25.0, 41.0, 85.0, 89.0))
+
+
+@pytest.mark.parametrize("name", ["hertz-mindlin", "hertz-kuwabara-kono", "thornton"])
+def test_converged_mode_reaches_1e6_on_hard_rows(name):
+    """Grazing (a short stick at first touch), near-normal (e_t = v_t1/v_t0 magnifies) and stick-slip rows at high and
+    low e_n: the converged values are within 1e-6 of the extrapolated pair 2^16/2^15 uniform steps per contact
+    (e_n, e_t, Omega* absolute; t_c, F_max relative), and no row needs more than 4096 graded steps."""
+    law = compose(name)
+    conv = simulate(law, HARD_ROWS, converged=True)[0]
+    fine = simulate(law, HARD_ROWS, steps_per_contact=2 ** 16)[0]
+    half = simulate(law, HARD_ROWS, steps_per_contact=2 ** 15)[0]
+    for col in ("e_n", "e_t", "omega_star", "t_contact", "f_n_max"):
+        truth = fine[col] + (fine[col] - half[col]) / 3
+        scale = truth.abs() if col in ("t_contact", "f_n_max") else 1.0
+        error = ((conv[col] - truth).abs() / scale).fillna(0.0)
+        assert error.max() < 1e-6, (col, error.max())
+    assert conv.steps_per_contact.max() <= 4096
+
+
+def test_converged_mode_costs_a_fraction_of_brute_force_refinement():
+    """The same stopping rule (two successive values within 1e-6, twice) on plain doubling and on the graded,
+    extrapolated ladder: the ladder takes at most a quarter of the impact-steps (counted, not timed; the wall-time
+    ratio is benchmarks/bench_converged.py's)."""
+    from harness.solver import reference
+    scene = Scene(e_n=(0.9, 0.5, 0.1), angles_deg=tuple(np.arange(1.0, 90.0, 8.0)))
+    law = compose("hertz-mindlin")
+    counted = []
+    kernel = reference.run_kernel
+
+    def counting(batch, history_points=0, rows=None):
+        out, history, wall = kernel(batch, history_points, rows)
+        counted.append(out[:, C.O_STEPS].sum())
+        return out, history, wall
+    steps = {}
+    try:
+        reference.run_kernel = counting
+        for extrapolate in (False, True):
+            counted.clear()
+            simulate(law, scene, converged=True, extrapolate=extrapolate)
+            steps[extrapolate] = sum(counted)
+    finally:
+        reference.run_kernel = kernel
+    assert steps[True] * 4 <= steps[False], steps
 
 
 @pytest.mark.parametrize("engine", ["liggghts", "yade"])

@@ -43,7 +43,8 @@ P_VZ0, P_VX0, P_W0 = 16, 17, 18              # initial velocities (vz < 0 approa
 P_MAXSTEPS = 19
 P_SLIP_R1 = 20                               # slip form: 0 -> V_t - lever omega; r1 > 0 -> YADE noRatch
 P_BIG_R = 21                                 # > 0: the wall is a fixed sphere of this radius (YADE Luding set-up)
-N_PARAMS = 22
+P_GRADE_T, P_GRADE_N = 22, 23                # > 0: graded steps, N of them over [0, T] (paper scheme, converged mode)
+N_PARAMS = 24
 
 # per-impact integer slots
 I_NORMAL, I_END, I_TANGENTIAL, I_INTEGRATOR = 0, 1, 2, 3

@@ -14,7 +14,7 @@ from numba import njit, prange
 
 from . import codes as C
 from .normal_kernels import luding_yade, normal_elastic, thornton_ning
-from .tangential_kernels import N_TSTATE, T_MARGIN, after_cap, cap, spring_force, stiffness, viscous
+from .tangential_kernels import N_TSTATE, T_MARGIN, T_STEP, after_cap, cap, spring_force, stiffness, viscous
 
 S_ALPHA, S_VZ, S_VX, S_W, S_AMAX, S_FN, S_FT, S_FS, S_NOLD, S_U, S_FEL, S_C = 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11
 S_FMAX, S_YIELD, S_DETACH = 12, 13, 14      # incremental engine laws (thornton_ning): F_max, yielded, detached at
@@ -111,9 +111,27 @@ def tangential_update(s, st, o, ot, p, ints, h, scratch, alpha, a, f_n, in_conta
     w_half = s[S_W] - 0.5 * h * lever_old * s[S_FT] / inertia
     slip = slip_velocity(p, alpha, vx_half, w_half, lever)
     f_t, f_s = friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, in_contact, scheme, lever)
-    o[S_VX] = vx_half + 0.5 * h * f_t / m
-    o[S_W] = w_half - 0.5 * h * lever * f_t / inertia
+    kick = f_t
+    sliding = st[T_MARGIN] >= 0.0 and ot[T_MARGIN] > 0.0    # on the Coulomb cone at both ends of the step
+    if scheme == C.INTEGRATOR_PAPER and sliding and f_n > 0.0 and code < C.TANGENTIAL_VISCOUS_LINEAR:
+        kick = sliding_kick(s, o, m, h, f_t / f_n)
+    o[S_VX] = vx_half + 0.5 * h * kick / m
+    o[S_W] = w_half - 0.5 * h * lever * kick / inertia
     o[S_FT], o[S_FS], o[S_NOLD] = f_t, f_s, abs(f_n)
+    ot[T_STEP] = h
+
+
+@njit(cache=True, inline="always")
+def sliding_kick(s, o, m, h, ratio):
+    """Closing half kick of a sliding step (paper scheme) such that the friction impulse is -sign(V_s) mu times the
+    normal impulse of the step, h/2 (F_el0 + F_el1) + D(alpha_1) - D(alpha_0): the dashpot's impulse exact (its
+    force ~ t^p at first touch would make the trapezoid's error O(h^(1+p))); `ratio` = F_t/F_n = -sign mu."""
+    if h <= 0.0:                                      # a step of length 0 (an event at a step's end) kicks nothing
+        return 0.0
+    d_old = s[S_U] + m * s[S_VZ]                      # D = u - m alpha_dot, alpha_dot = -v_z
+    d_new = o[S_U] + m * o[S_VZ]
+    impulse = 0.5 * h * (s[S_FEL] + o[S_FEL]) + d_new - d_old
+    return 2.0 * ratio * impulse / h - s[S_FT]
 
 
 @njit(cache=True, inline="always")
@@ -295,16 +313,20 @@ def advance(s, st, o, ot, p, ints, h, scratch):
     return step(s, st, o, ot, p, ints, h, scratch)
 
 
-EVENT_NONE, EVENT_TURN, EVENT_SLIP, EVENT_STICK = 0, 1, 2, 3
+EVENT_NONE, EVENT_TURN, EVENT_SLIP, EVENT_STICK, EVENT_YIELD = 0, 1, 2, 3, 4
 EVENT_ITERATIONS = 60
 
 
 @njit(cache=True, inline="always")
-def event_kind(s, st, o, ot, ints):
-    """A change of regime inside the step (paper scheme): the normal motion turns (alpha_dot through 0), the contact
-    starts to slide (trial spring force reaches mu F_n) or stops sliding (its slip velocity reverses)."""
+def event_kind(s, st, o, ot, p, ints):
+    """A change of regime inside the step (paper scheme): the normal motion turns (alpha_dot through 0), the loading
+    curve's kink is passed (yield), the contact starts to slide (trial spring force reaches mu F_n) or stops sliding
+    (the spring leaves the Coulomb cone)."""
     if s[S_VZ] < 0.0 <= o[S_VZ] and s[S_ALPHA] > 0.0:
         return EVENT_TURN
+    kink = loading_kink(p, ints)
+    if s[S_ALPHA] < kink <= o[S_ALPHA] and s[S_ALPHA] >= s[S_AMAX]:
+        return EVENT_YIELD
     code = ints[C.I_TANGENTIAL]
     if code == C.TANGENTIAL_NONE or code >= C.TANGENTIAL_VISCOUS_LINEAR or s[S_FN] <= 0.0 or o[S_FN] <= 0.0:
         return EVENT_NONE
@@ -314,39 +336,77 @@ def event_kind(s, st, o, ot, ints):
         return EVENT_SLIP
     if st[T_MARGIN] > 0.0 >= ot[T_MARGIN]:
         return EVENT_STICK
+    if st[T_STEP] > 0.0 and ot[T_STEP] > 0.0:      # still sliding at the step's end, but the margin per unit time
+        rate, rate_before = ot[T_MARGIN] / ot[T_STEP], st[T_MARGIN] / st[T_STEP]   # falls fast: it may stick inside
+        if 0.0 < rate < 2.0 * (rate_before - rate):
+            return EVENT_STICK
     return EVENT_NONE
 
 
 @njit(cache=True, inline="always")
-def event_value(kind, a, at, p, sign0):
-    """The quantity that rises through zero at the event, in state (a, at): -alpha_dot, the spring margin, or the
-    slip velocity against its sign at the step's start (sign0)."""
-    if kind == EVENT_TURN:
-        return a[S_VZ]
-    if kind == EVENT_SLIP:
-        return at[T_MARGIN]
-    lever = p[C.P_RADIUS] - p[C.P_LEVER] * a[S_ALPHA]
-    return -sign0 * slip_velocity(p, a[S_ALPHA], a[S_VX], a[S_W], lever)
+def loading_kink(p, ints):
+    """Overlap at which the loading curve bends: the yield overlap of Stronge and Thornton, d_lim of LIGGGHTS'
+    hysteresis; 0 for the smooth curves."""
+    code = ints[C.I_NORMAL]
+    if code == C.NORMAL_STRONGE:
+        return p[C.P_N2]
+    if code == C.NORMAL_THORNTON or code == C.NORMAL_LUDING:
+        return p[C.P_N3]
+    return 0.0
+
+
+STICK_PROBE = 1e-4          # step fraction of the probe step that tells whether a contact on the cone still slides
 
 
 @njit(cache=True)
-def locate_event(kind, s, st, o, ot, lo, lot, p, ints, h, scratch):
-    """Step fraction at which the event happens between (s, st) and (o, ot) (Illinois false position on the event
-    value, trial steps in lo, lot); -1 if the value does not change sign over the step."""
-    lever = p[C.P_RADIUS] - p[C.P_LEVER] * s[S_ALPHA]
-    sign0 = 1.0 if slip_velocity(p, s[S_ALPHA], s[S_VX], s[S_W], lever) > 0.0 else -1.0
-    g_lo, g_hi = event_value(kind, s, st, p, sign0), event_value(kind, o, ot, p, sign0)
+def event_value(kind, f, s, st, lo, lot, probe, probe_t, p, ints, h, scratch):
+    """The quantity that rises through zero at the event, after a trial step of fraction f from (s, st) (into lo, lot):
+    -alpha_dot at the turn; alpha - alpha_y at yield; the trial spring margin |F_s| - mu F_n where sliding starts;
+    where sliding stops, minus the margin's rate for a contact that starts on the Coulomb cone at f (a short probe
+    step from there, into probe, probe_t): the spring leaves the cone when it moves inward faster than mu F_n
+    shrinks, at a slip reversal only when F_n is constant."""
+    if kind == EVENT_TURN or kind == EVENT_YIELD:
+        if f == 0.0:
+            lo[:] = s
+        else:
+            step(s, st, lo, lot, p, ints, f * h, scratch)
+        return lo[S_VZ] if kind == EVENT_TURN else lo[S_ALPHA] - loading_kink(p, ints)
+    if kind == EVENT_SLIP:
+        return st[T_MARGIN] if f == 0.0 else margin_at(f, s, st, lo, lot, p, ints, h, scratch)
+    if f == 0.0:
+        step(s, st, probe, probe_t, p, ints, STICK_PROBE * h, scratch)
+    else:
+        step(s, st, lo, lot, p, ints, f * h, scratch)
+        step(lo, lot, probe, probe_t, p, ints, STICK_PROBE * h, scratch)
+    return -probe_t[T_MARGIN] / STICK_PROBE
+
+
+@njit(cache=True)
+def margin_at(f, s, st, lo, lot, p, ints, h, scratch):
+    """|F_s| - mu F_n after a trial step of fraction f; at f = 0 the start's own (a step of length 0 would end the
+    contact at first touch, where alpha = 0 but a constant dashpot already pushes)."""
+    if f == 0.0:
+        return abs(s[S_FS]) - p[C.P_MU] * abs(s[S_FN])
+    step(s, st, lo, lot, p, ints, f * h, scratch)
+    return lot[T_MARGIN]
+
+
+@njit(cache=True)
+def locate_event(kind, s, st, lo, lot, probe, probe_t, p, ints, h, scratch):
+    """Step fraction at which the event happens in the step from (s, st) (Illinois false position on the event
+    value, trial steps in lo, lot and probe, probe_t); -1 if the value does not change sign over the step."""
+    g_lo = event_value(kind, 0.0, s, st, lo, lot, probe, probe_t, p, ints, h, scratch)
+    g_hi = event_value(kind, 1.0, s, st, lo, lot, probe, probe_t, p, ints, h, scratch)
     if not (g_lo < 0.0 < g_hi):
         return -1.0
     lo_f, hi_f, side = 0.0, 1.0, 0
     for _ in range(EVENT_ITERATIONS):
         if hi_f - lo_f <= 1e-14:
             break
-        mid = (lo_f * g_hi - hi_f * g_lo) / (g_hi - g_lo)
+        mid = (lo_f * g_hi - hi_f * g_lo) / (g_hi - g_lo) if g_hi > g_lo else 0.5 * (lo_f + hi_f)
         if not lo_f < mid < hi_f:
             mid = 0.5 * (lo_f + hi_f)
-        step(s, st, lo, lot, p, ints, mid * h, scratch)
-        g_mid = event_value(kind, lo, lot, p, sign0)
+        g_mid = event_value(kind, mid, s, st, lo, lot, probe, probe_t, p, ints, h, scratch)
         lo_f, hi_f, g_lo, g_hi, side = illinois(lo_f, hi_f, g_lo, g_hi, side, mid, g_mid, g_mid < 0.0)
     return hi_f
 
@@ -376,6 +436,126 @@ def parabola_peak(y0, y1, y2, h1, h2):
     return y1 - b * b / (4.0 * c)
 
 
+@njit(cache=True)
+def locate_release(s, st, lo, lot, p, ints, h, scratch, indicator):
+    """Step fraction of the release (alpha = 0, or F = 0 without tension) in the step from (s, st) whose end value is
+    `indicator` <= 0: Illinois false position; the fraction returned still has contact."""
+    frac_lo, frac_hi = 0.0, 1.0
+    g_lo, g_hi = s[S_ALPHA] if s[S_ALPHA] > 0.0 else 1.0, indicator
+    if ints[C.I_END] == C.END_FORCE:
+        g_lo = min(s[S_FN], s[S_ALPHA]) if s[S_ALPHA] > 0.0 else s[S_FN]
+    side = 0
+    for _ in range(RELEASE_ITERATIONS):
+        if frac_hi - frac_lo <= 1e-15:
+            break
+        mid = (frac_lo * g_hi - frac_hi * g_lo) / (g_hi - g_lo) if g_lo > 0.0 > g_hi else 0.5 * (frac_lo + frac_hi)
+        if not frac_lo < mid < frac_hi:
+            mid = 0.5 * (frac_lo + frac_hi)
+        g_mid = step(s, st, lo, lot, p, ints, mid * h, scratch)
+        frac_lo, frac_hi, g_lo, g_hi, side = illinois(frac_lo, frac_hi, g_lo, g_hi, side, mid, g_mid, g_mid > 0.0)
+    return frac_lo
+
+
+@njit(cache=True)
+def split_at_event(s, st, o, ot, lo, lot, at_event, at_event_t, p, ints, h, scratch, a_peak, f_peak, h_full,
+                   indicator):
+    """Redo the step (s, st) -> (o, ot) of length h in two at a change of regime inside it, so that the error stays
+    smooth in h. A step that ended at the release (h < h_full) is continued from the event to the release again,
+    within what is left of h_full. Returns alpha_max and F_max (found at a turn), the end indicator (`indicator`
+    if nothing happened) and the time the step took."""
+    kind = event_kind(s, st, o, ot, p, ints)
+    if kind == EVENT_NONE:
+        return a_peak, f_peak, indicator, h
+    frac = locate_event(kind, s, st, lo, lot, at_event, at_event_t, p, ints, h, scratch)
+    if not 0.0 < frac < 1.0:
+        return a_peak, f_peak, indicator, h
+    step(s, st, at_event, at_event_t, p, ints, frac * h, scratch)
+    if kind == EVENT_TURN:                  # alpha_max itself; F_max too when undamped
+        a_peak = max(a_peak, at_event[S_ALPHA])
+        if p[C.P_DAMP_C0] == 0.0:
+            f_peak = max(f_peak, at_event[S_FN])
+    rest = h_full - frac * h
+    indicator = step(at_event, at_event_t, o, ot, p, ints, rest, scratch)
+    if h < h_full and indicator <= 0.0:
+        rest *= locate_release(at_event, at_event_t, lo, lot, p, ints, rest, scratch, indicator)
+        step(at_event, at_event_t, o, ot, p, ints, rest, scratch)
+    return a_peak, f_peak, indicator, frac * h + rest
+
+
+GRADE_ZONE = 0.1            # share of the graded steps spent at each end of [0, T]
+RAMP_AREA = 4.0 / 7.0      # integral of the ramp over [0, 1]
+
+
+@njit(cache=True)
+def ramp_integral(x):
+    """Integral of the step-size ramp x^3 (20 - 45 x + 36 x^2 - 10 x^3), which rises from 0 like x^3 and meets 1 with
+    three vanishing derivatives."""
+    return x ** 4 * (5.0 + x * (-9.0 + x * (6.0 - x * (10.0 / 7.0))))
+
+
+@njit(cache=True)
+def graded_time(s):
+    """Time fraction Phi(s) of the graded mesh at uniform s in [0, 1]: Phi ~ s^4 at both ends, so that alpha^(1/4),
+    alpha^(1/2) and alpha^(3/2) at first touch and at release become smooth in s and the error expands in powers
+    of the step (Richardson), uniform in the middle."""
+    q = GRADE_ZONE
+    total = 1.0 - 2.0 * q + 2.0 * q * RAMP_AREA
+    if s <= q:
+        g = q * ramp_integral(s / q)
+    elif s >= 1.0 - q:
+        g = total - q * ramp_integral((1.0 - s) / q)
+    else:
+        g = q * RAMP_AREA + (s - q)
+    return g / total
+
+
+@njit(cache=True)
+def graded_step(k, n, span):
+    """Step k of n graded steps over [0, span]; beyond the span (a release later than foreseen), uniform span/n."""
+    if k >= n:
+        return span / n
+    if 2 * k < n:
+        return span * (graded_time((k + 1.0) / n) - graded_time(k / n))
+    return span * (graded_time((n - k) / n) - graded_time((n - k - 1.0) / n))   # mirrored: no cancellation near 1
+
+
+PEAK_POINTS = 5           # samples of F_n through which its peak is interpolated (paper scheme)
+
+
+@njit(cache=True)
+def newton_value(coef, x, u):
+    """Value and slope at u of the Newton-form polynomial with nodes x and divided differences coef."""
+    value, slope = coef[len(coef) - 1], 0.0
+    for i in range(len(coef) - 2, -1, -1):
+        slope = slope * (u - x[i]) + value
+        value = value * (u - x[i]) + coef[i]
+    return value, slope
+
+
+@njit(cache=True)
+def polynomial_peak(times, values):
+    """Largest value of the polynomial through the samples (times, values), the second newest sample being the
+    largest, between the third newest and the newest: O(h^5) where the parabola's error, O(h^3) with a phase that
+    jumps with h, would spoil the extrapolation of F_max."""
+    m = len(times)
+    x = times - times[m - 2]
+    coef = values.copy()
+    for j in range(1, m):
+        for i in range(m - 1, j - 1, -1):
+            coef[i] = (coef[i] - coef[i - 1]) / (x[i] - x[i - j])
+    lo, hi = x[m - 3], x[m - 1]
+    slope_lo = newton_value(coef, x, lo)[1]
+    if not (slope_lo > 0.0 and newton_value(coef, x, hi)[1] < 0.0):
+        return values[m - 2]
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        if newton_value(coef, x, mid)[1] > 0.0:
+            lo = mid
+        else:
+            hi = mid
+    return max(values[m - 2], newton_value(coef, x, 0.5 * (lo + hi))[0])
+
+
 @njit(cache=True, parallel=True)
 def integrate(params, ints, out, history, stride):
     """Integrate every row of `params`/`ints` (rows in parallel); fill `out` and, if stride > 0, `history`."""
@@ -401,6 +581,8 @@ def integrate(params, ints, out, history, stride):
         if p[C.P_DAMP_POWER] == 0.0:
             s[S_FN] = -p[C.P_DAMP_C0] * p[C.P_VZ0]   # a constant dashpot acts from first touch
             s[S_C] = p[C.P_DAMP_C0]
+        # the spring starts at 0, inside the Coulomb cone (strictly: a slide starting in the first step is an event)
+        st[T_MARGIN] = -p[C.P_MU] * abs(s[S_FN]) - 1e-300
         if row_ints[C.I_INTEGRATOR] == C.INTEGRATOR_VELOCITY_VERLET and row_ints[C.I_TANGENTIAL] != C.TANGENTIAL_NONE:
             # LIGGGHTS' setup force at first touch (gap 0 counts as contact): the tangential dashpot alone
             code = row_ints[C.I_TANGENTIAL]
@@ -411,6 +593,8 @@ def integrate(params, ints, out, history, stride):
                 s[S_FT] = -p[C.P_TDAMP] * math.sqrt(stiffness(code, p[C.P_T1], 0.0)) * slip0
         f_prev2, f_prev1 = 0.0, 0.0
         h_prev = h
+        sample_t = np.zeros(PEAK_POINTS)
+        sample_f = np.zeros(PEAK_POINTS)
         a_prev2, a_prev1 = 0.0, 0.0
         f_peak, a_peak = s[S_FN], 0.0
         status = C.STATUS_NO_SEPARATION
@@ -419,47 +603,39 @@ def integrate(params, ints, out, history, stride):
         steps = 0
         max_steps = int(p[C.P_MAXSTEPS])
         t_now = 0.0
-        frac_lo = 1.0
+        grade_n = int(p[C.P_GRADE_N])
         for k in range(max_steps):
+            if grade_n > 0:
+                h = graded_step(k, grade_n, p[C.P_GRADE_T])
             indicator = advance(s, st, o, ot, p, row_ints, h, scratch)
-            if indicator > 0.0 and row_ints[C.I_INTEGRATOR] == C.INTEGRATOR_PAPER:
-                kind = event_kind(s, st, o, ot, row_ints)
-                if kind != EVENT_NONE:                     # split the step at the event: smooth error in h
-                    frac = locate_event(kind, s, st, o, ot, lo, lot, p, row_ints, h, scratch)
-                    if 0.0 < frac < 1.0:
-                        step(s, st, at_event, at_event_t, p, row_ints, frac * h, scratch)
-                        if kind == EVENT_TURN:              # alpha_max itself; F_max too when undamped
-                            a_peak = max(a_peak, at_event[S_ALPHA])
-                            if p[C.P_DAMP_C0] == 0.0:
-                                f_peak = max(f_peak, at_event[S_FN])
-                        indicator = step(at_event, at_event_t, o, ot, p, row_ints, (1.0 - frac) * h, scratch)
+            paper = row_ints[C.I_INTEGRATOR] == C.INTEGRATOR_PAPER
+            h_last = h
+            if indicator > 0.0 and paper:
+                a_peak, f_peak, indicator, _ = split_at_event(s, st, o, ot, lo, lot, at_event, at_event_t, p, row_ints,
+                                                              h, scratch, a_peak, f_peak, h, indicator)
             steps = k + 1
-            if indicator <= 0.0 and row_ints[C.I_INTEGRATOR] != C.INTEGRATOR_PAPER:
+            if indicator <= 0.0 and not paper:
                 t_end = t_now + h                          # the engine ends contact at the step, not inside it
                 status = C.STATUS_OK
-            elif indicator <= 0.0:
-                frac_lo, frac_hi = 0.0, 1.0
-                g_lo, g_hi = s[S_ALPHA] if s[S_ALPHA] > 0.0 else 1.0, indicator
-                if row_ints[C.I_END] == C.END_FORCE:
-                    g_lo = min(s[S_FN], s[S_ALPHA]) if s[S_ALPHA] > 0.0 else s[S_FN]
-                side = 0
-                for _ in range(RELEASE_ITERATIONS):       # Illinois false position on the step fraction
-                    if frac_hi - frac_lo <= 1e-15:
-                        break
-                    mid = (frac_lo * g_hi - frac_hi * g_lo) / (g_hi - g_lo) if g_lo > 0.0 > g_hi else 0.5 * (frac_lo + frac_hi)
-                    if not frac_lo < mid < frac_hi:
-                        mid = 0.5 * (frac_lo + frac_hi)
-                    g_mid = step(s, st, lo, lot, p, row_ints, mid * h, scratch)
-                    frac_lo, frac_hi, g_lo, g_hi, side = illinois(frac_lo, frac_hi, g_lo, g_hi, side, mid, g_mid,
-                                                                  g_mid > 0.0)
-                step(s, st, o, ot, p, row_ints, frac_lo * h, scratch)
-                t_end = t_now + frac_lo * h
-                status = C.STATUS_OK
+            elif indicator <= 0.0:                         # release inside the step; a regime change before it too
+                h_release = h * locate_release(s, st, lo, lot, p, row_ints, h, scratch, indicator)
+                step(s, st, o, ot, p, row_ints, h_release, scratch)
+                a_peak, f_peak, indicator, h_last = split_at_event(s, st, o, ot, lo, lot, at_event, at_event_t, p,
+                                                                   row_ints, h_release, scratch, a_peak, f_peak, h,
+                                                                   -1.0)
+                if indicator <= 0.0:
+                    t_end = t_now + h_last
+                    status = C.STATUS_OK
             f_now, a_now = o[S_FN], o[S_ALPHA]
-            h_last = frac_lo * h if status == C.STATUS_OK and row_ints[C.I_INTEGRATOR] == C.INTEGRATOR_PAPER else h
-            if f_prev1 >= f_prev2 and f_prev1 > f_now and f_prev1 >= f_peak and k >= 2:
+            for j in range(PEAK_POINTS - 1):
+                sample_t[j], sample_f[j] = sample_t[j + 1], sample_f[j + 1]
+            sample_t[PEAK_POINTS - 1], sample_f[PEAK_POINTS - 1] = t_now + h_last, f_now
+            f_sampled = not (paper and p[C.P_DAMP_C0] == 0.0)      # else F_max is F at the turn, located
+            if f_sampled and f_prev1 >= f_prev2 and f_prev1 > f_now and f_prev1 >= f_peak and k >= PEAK_POINTS and paper:
+                f_peak = polynomial_peak(sample_t, sample_f)
+            elif f_sampled and f_prev1 >= f_prev2 and f_prev1 > f_now and f_prev1 >= f_peak and k >= 2:
                 f_peak = parabola_peak(f_prev2, f_prev1, f_now, h_prev, h_last)
-            if a_prev1 >= a_prev2 and a_prev1 > a_now and a_prev1 >= a_peak and k >= 2:
+            if not paper and a_prev1 >= a_prev2 and a_prev1 > a_now and a_prev1 >= a_peak and k >= 2:
                 a_peak = parabola_peak(a_prev2, a_prev1, a_now, h_prev, h_last)
             h_prev = h_last
             f_peak = max(f_peak, f_now)

@@ -9,6 +9,7 @@ from ..kinematics import rebound_quantities
 from ..results import impact_frame
 from . import codes as C
 from .kernel import integrate
+from ..stability import UnstableTimeStep
 from .plan import plan_batch
 
 CONVERGED_START = 64             # steps per contact of the first level of the converged ladder
@@ -48,25 +49,66 @@ def _change(a, b, scene, batch, rows):
     return np.column_stack([diff, relative]).max(axis=1)
 
 
+GRADE_MARGIN = 1e-4             # relative floor of the gap between the release and the graded mesh's end
+
+
+def release_bound(t_half, t_full):
+    """End of the graded mesh, just beyond the release: t_c extrapolated from uniform runs at n/2 and n steps per
+    contact, plus its change (an upper bound of its error) and a relative floor."""
+    change = np.abs(t_full - t_half) / 3.0
+    return t_full + (t_full - t_half) / 3.0 + change + GRADE_MARGIN * t_full
+
+
+def graded_rows(law, scene, e_n, n, span, rows):
+    """Integrate the given rows with n graded steps over [0, span] (kernel.graded_time): steps shrink like s^3 at
+    first touch and towards span, just beyond the release, so that the onset and release singularities
+    (alpha^(1/4), alpha^(1/2), alpha^(3/2)) become smooth in the step and the error expands in powers of 1/n."""
+    batch = plan_batch(law, scene, e_n, n)
+    batch.params[:, C.P_GRADE_T] = span
+    batch.params[:, C.P_GRADE_N] = n
+    return run_kernel(batch, rows=rows)
+
+
+def uses_extrapolation(law, extrapolate=None):
+    """The graded, extrapolated ladder for the paper scheme; plain doubling for the engines' first-order schemes."""
+    return law.integrator == "paper" if extrapolate is None else extrapolate
+
+
 def run_converged(law, scene, e_n, tolerance=CONVERGED_TOLERANCE, extrapolate=None):
-    """Richardson-extrapolated ladder: double the steps per contact from 64; the paper scheme's error is ~c h^2
-    (onset exact, release, turning point and stick-slip transitions located inside their steps), so
-    R_N = f_N + (f_N - f_N/2)/3 removes it; a row stops when R_N and R_N/2 differ by less than `tolerance`,
-    twice in a row (one agreement can be a crossing), which bounds the error of R_N/2 and so of R_N. Engine schemes
-    (first order) double without extrapolating (extrapolate=False does the same for any law: plain refinement)."""
-    extrapolate = law.integrator == "paper" if extrapolate is None else extrapolate
+    """Richardson-extrapolated ladder on graded meshes: two uniform runs (32 and 64 steps per contact) place the
+    release; then n graded steps over [0, span], n doubling from 64. The paper scheme's error is then ~c h^2 with
+    a smooth expansion (onset and release on the graded ends, turning point, yield and stick-slip transitions
+    located inside their steps), so R_n = f_n + (f_n - f_n/2)/3 removes it; a row stops when R_n and R_n/2 differ
+    by less than `tolerance`, twice in a row (one agreement can be a crossing). Engine schemes (first order) double
+    uniform steps without extrapolating (extrapolate=False does the same for any law: plain refinement)."""
+    extrapolate = uses_extrapolation(law, extrapolate)
     n = CONVERGED_START
     batch = plan_batch(law, scene, e_n, n)
     out, _, wall = run_kernel(batch)
+    every = np.arange(len(out))
+    span = None
+    if extrapolate:
+        try:
+            coarse, _, seconds = run_kernel(plan_batch(law, scene, e_n, n // 2))
+            span = release_bound(coarse[:, C.O_TC], out[:, C.O_TC])
+        except UnstableTimeStep:                # a stiff tangential spring: place the release from n and 2n
+            coarse, _, seconds = run_kernel(plan_batch(law, scene, e_n, 2 * n))
+            span = release_bound(out[:, C.O_TC], coarse[:, C.O_TC])
+        wall += seconds
+        out, _, seconds = graded_rows(law, scene, e_n, n, span, every)
+        wall += seconds
     plain = out[:, KEPT]
     best = np.full_like(plain, np.nan)          # R needs two levels: nothing to compare with at the first
     levels = np.full(len(out), n)
     change = np.full(len(out), np.inf)
-    pending = np.arange(len(out))
+    pending = every
     passes = np.zeros(len(out), dtype=int)
     while len(pending) and n < CONVERGED_LIMIT:
         n *= 2
-        finer, _, seconds = run_kernel(plan_batch(law, scene, e_n, n), rows=pending)
+        if extrapolate:
+            finer, _, seconds = graded_rows(law, scene, e_n, n, span, pending)
+        else:
+            finer, _, seconds = run_kernel(plan_batch(law, scene, e_n, n), rows=pending)
         wall += seconds
         new = finer[:, KEPT]
         estimate = new + (new - plain[pending]) / 3.0 if extrapolate else new
@@ -80,7 +122,7 @@ def run_converged(law, scene, e_n, tolerance=CONVERGED_TOLERANCE, extrapolate=No
         change[pending] = diff
         pending = pending[passes[pending] < 2]
     out[:, KEPT] = best
-    dt = batch.dt * CONVERGED_START / levels
+    dt = span / levels if extrapolate else batch.dt * CONVERGED_START / levels
     return batch, out, levels, change, dt, wall
 
 
@@ -90,7 +132,9 @@ def simulate(law, scene, steps_per_contact=1000, converged=False, history_points
     for e_n in scene.e_n:
         if converged:
             batch, out, levels, change, dt, wall = run_converged(law, scene, e_n, extrapolate=extrapolate)
-            messages = [f"converged: Richardson on {lv // 2} and {lv} steps/contact, last change {ch:.1e}"
+            how = ("Richardson on {} and {} graded steps/contact" if uses_extrapolation(law, extrapolate) else
+                   "{} and {} steps/contact agree")
+            messages = [f"converged: {how.format(lv // 2, lv)}, last change {ch:.1e}"
                         if ch <= CONVERGED_TOLERANCE else
                         f"not converged at {lv} steps/contact (change {ch:.1e})" for lv, ch in zip(levels, change)]
             steps = levels

@@ -11,7 +11,8 @@ from . import codes as C
 
 T_AUX1, T_AUX2, T_MODE, T_DIR, T_AOLD = 0, 1, 2, 3, 4
 T_MARGIN = 5          # |trial spring force| - mu F_n of the last step (> 0: capped, sliding); read by event location
-N_TSTATE = 6
+T_STEP = 6            # length of the last step, to compare margins of steps of unequal length
+N_TSTATE = 7
 
 
 @njit(cache=True)
@@ -108,6 +109,16 @@ def walton_braun(f_s, dd, k_t0, mu, n_new, n_old, st, t_eval):
 
 
 @njit(cache=True)
+def mean_radius(a_old, a):
+    """Mean of a = sqrt(R alpha) over a step in which alpha changes linearly: 2/3 (a1^3 - a0^3)/(a1^2 - a0^2); exact
+    at first touch (a ~ sqrt(t), where the trapezoid's error would sum to O(h^1.5)), second order elsewhere."""
+    total = a_old + a
+    if total <= 0.0:
+        return 0.0
+    return (2.0 / 3.0) * (a_old * a_old + a_old * a + a * a) / total
+
+
+@njit(cache=True)
 def spring_force(code, f_s, dd, a, p1, mu, n_new, n_old, st, scratch, midpoint):
     """Trial spring force after the increment dd, before the Coulomb cap; updates the history `st`.
 
@@ -116,12 +127,7 @@ def spring_force(code, f_s, dd, a, p1, mu, n_new, n_old, st, scratch, midpoint):
     predictor-corrector on T, so that every increment is a midpoint rule (second order); engines use the current a.
     """
     a_old = st[T_AOLD]
-    if not midpoint:
-        a_mid = a
-    elif a_old > 0.0:
-        a_mid = 0.5 * (a + a_old)
-    else:
-        a_mid = a * (2.0 / 3.0)                  # first step: a ~ sqrt(t), mean 2/3 a
+    a_mid = mean_radius(a_old, a) if midpoint else a
     st[T_AOLD] = a
     if code == C.TANGENTIAL_LINEAR or code == C.TANGENTIAL_MINDLIN_INCREMENTAL:
         return f_s - stiffness(code, p1, a_mid) * dd
