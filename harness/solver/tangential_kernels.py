@@ -119,6 +119,40 @@ def mean_radius(a_old, a):
 
 
 @njit(cache=True)
+def walton_braun_implicit(f_s, dd, k_t0, mu, n_new, n_old, st):
+    """Walton & Braun's rate form dT = k_t0 x^1/3 dd, x = (mu N - T)/(mu N - T*) rising ((mu N + T)/(mu N + T*)
+    falling), by the trapezoidal rule in x at the mean normal force: x1 = x0 - c (x0^1/3 + x1^1/3), c = k_t0 |dd| /
+    (2 (mu N -+ T*)), solved for z = x1^1/3 (z^3 + c z = x0 - c x0^1/3, increasing: Newton from the right). Implicit,
+    so x ~ 0 (the spring at full mobilisation under a rising mu N, where x^1/3 makes the explicit rule stiff) is
+    stable and second order; x1 = 0 when the step reaches full mobilisation."""
+    t = -f_s
+    direction = 1.0 if dd >= 0.0 else -1.0
+    if n_old > 0.0:
+        st[T_AUX1] *= n_new / n_old               # T* scaled with the normal force
+    if st[T_DIR] != 0.0 and direction != st[T_DIR]:
+        st[T_AUX1] = t                            # reversal
+    st[T_DIR] = direction
+    mu_n = 0.5 * mu * (n_new + n_old)
+    span = mu_n - direction * st[T_AUX1]
+    if span <= 0.0:
+        return f_s
+    x0 = (mu_n - direction * t) / span
+    if x0 <= 0.0:                                 # at or beyond mobilisation: k_t = 0
+        return f_s
+    c = 0.5 * k_t0 * abs(dd) / span
+    rest = x0 - c * x0 ** (1.0 / 3.0)
+    z = 0.0
+    if rest > 0.0:
+        z = rest ** (1.0 / 3.0)                   # f(z) = z^3 + c z - rest >= 0 here; convex: monotone from the right
+        for _ in range(60):
+            step = (z * z * z + c * z - rest) / (3.0 * z * z + c)
+            z -= step
+            if step <= 1e-15 * z:
+                break
+    return -direction * (mu_n - span * z * z * z)
+
+
+@njit(cache=True)
 def spring_force(code, f_s, dd, a, p1, mu, n_new, n_old, st, scratch, midpoint):
     """Trial spring force after the increment dd, before the Coulomb cap; updates the history `st`.
 
@@ -144,6 +178,8 @@ def spring_force(code, f_s, dd, a, p1, mu, n_new, n_old, st, scratch, midpoint):
     if code == C.TANGENTIAL_MINDLIN_DERESIEWICZ:
         predicted = mindlin_deresiewicz(f_s, dd, 8.0 * p1 * a_mid, mu, n_new, n_old, scratch, f_s)
         return mindlin_deresiewicz(f_s, dd, 8.0 * p1 * a_mid, mu, n_new, n_old, st, 0.5 * (f_s + predicted))
+    if midpoint:
+        return walton_braun_implicit(f_s, dd, p1, mu, n_new, n_old, st)
     predicted = walton_braun(f_s, dd, p1, mu, n_new, n_old, scratch, f_s)
     return walton_braun(f_s, dd, p1, mu, n_new, n_old, st, 0.5 * (f_s + predicted))
 
