@@ -1,8 +1,9 @@
 """The converged mode against brute-force refinement, side by side in one run, for every law on a 3 e_n x 45 angle
 sweep: brute force doubles the steps per contact from 64 until two successive results agree to 1e-6 twice in a row
-(the converged mode's own stopping rule, on plain results); the converged mode does the same on Richardson values.
-Printed: impact-steps taken, wall time, the error reached against the converged reference (harness.cost), and the
-cost ratios.
+(the converged mode's own stopping rule, on plain results); the converged mode does the same on Richardson values
+of graded meshes. Printed: impact-steps taken, wall time, the error reached against the converged reference
+(harness.cost), and the cost ratios. A second table compares the two at equal error reached (hertz-mindlin),
+the stopping tolerance of each swept.
 
     .venv/bin/python benchmarks/bench_converged.py
 """
@@ -24,7 +25,7 @@ def worst_error(frame, truth):
                for e in SCENE.e_n)
 
 
-def run(law, extrapolate):
+def run(law, extrapolate, tolerance=1e-6):
     """The ladder with or without extrapolation; (frame, impact-steps, seconds)."""
     counted = []
     kernel = reference.run_kernel
@@ -36,7 +37,7 @@ def run(law, extrapolate):
     reference.run_kernel = counting
     try:
         start = time.perf_counter()
-        frame, _ = simulate(law, SCENE, converged=True, extrapolate=extrapolate)
+        frame, _ = simulate(law, SCENE, converged=True, extrapolate=extrapolate, tolerance=tolerance)
         seconds = time.perf_counter() - start
     finally:
         reference.run_kernel = kernel
@@ -55,6 +56,16 @@ def main():
         print(f"{name:26s} {brute_steps:19.3g} {brute_s:7.3f} {worst_error(brute, truth):8.1e} | {conv_steps:16.3g} "
               f"{conv_s:7.3f} {worst_error(conv, truth):8.1e} | {brute_steps / conv_steps:11.2f} "
               f"{brute_s / conv_s:6.2f}")
+
+    law = compose("hertz-mindlin")
+    truth, _ = truth_of(law, SCENE)
+    print(f"\nhertz-mindlin at equal error: the stopping tolerance swept\n{'method':12s} {'tolerance':>9s} "
+          f"{'steps':>9s} {'wall':>7s} {'error':>8s}")
+    for extrapolate in (False, True):
+        for tolerance in (1e-4, 1e-5, 1e-6):
+            frame, steps, seconds = run(law, extrapolate, tolerance)
+            print(f"{'converged' if extrapolate else 'brute force':12s} {tolerance:9.0e} {steps:9.3g} {seconds:7.3f} "
+                  f"{worst_error(frame, truth):8.1e}")
 
 
 if __name__ == "__main__":

@@ -126,16 +126,17 @@ def run_converged(law, scene, e_n, tolerance=CONVERGED_TOLERANCE, extrapolate=No
     return batch, out, levels, change, dt, wall
 
 
-def simulate(law, scene, steps_per_contact=1000, converged=False, history_points=0, extrapolate=None):
+def simulate(law, scene, steps_per_contact=1000, converged=False, history_points=0, extrapolate=None,
+             tolerance=CONVERGED_TOLERANCE):
     """Results table of `law` over every (e_n, impact) of `scene`; histories {e_n: array} if points are asked for."""
     frames, histories = [], {}
     for e_n in scene.e_n:
         if converged:
-            batch, out, levels, change, dt, wall = run_converged(law, scene, e_n, extrapolate=extrapolate)
+            batch, out, levels, change, dt, wall = run_converged(law, scene, e_n, tolerance, extrapolate)
             how = ("Richardson on {} and {} graded steps/contact" if uses_extrapolation(law, extrapolate) else
                    "{} and {} steps/contact agree")
             messages = [f"converged: {how.format(lv // 2, lv)}, last change {ch:.1e}"
-                        if ch <= CONVERGED_TOLERANCE else
+                        if ch <= tolerance else
                         f"not converged at {lv} steps/contact (change {ch:.1e})" for lv, ch in zip(levels, change)]
             steps = levels
         else:
