@@ -86,6 +86,19 @@ def mindlin_deresiewicz(f_s, dd, k_t, mu, n_new, n_old, st, t_eval):
 
 
 @njit(cache=True)
+def walton_braun_history(t, dd, n_new, n_old, st):
+    """Walton & Braun's turning-point force T*: scaled with the normal force, reset to T at a reversal of the
+    displacement; returns the direction of this increment (+1, -1)."""
+    direction = 1.0 if dd >= 0.0 else -1.0
+    if n_old > 0.0:
+        st[T_AUX1] *= n_new / n_old
+    if st[T_DIR] != 0.0 and direction != st[T_DIR]:
+        st[T_AUX1] = t
+    st[T_DIR] = direction
+    return direction
+
+
+@njit(cache=True)
 def walton_braun(f_s, dd, k_t0, mu, n_new, n_old, st, t_eval):
     """Walton & Braun (1986): k_t = k_t0 [1 - (T - T*)/(mu N - T*)]^1/3 rising, [1 - (T* - T)/(mu N + T*)]^1/3 falling.
 
@@ -93,12 +106,7 @@ def walton_braun(f_s, dd, k_t0, mu, n_new, n_old, st, t_eval):
     """
     t = -f_s
     te = -t_eval
-    direction = 1.0 if dd >= 0.0 else -1.0
-    if n_old > 0.0:
-        st[T_AUX1] *= n_new / n_old               # T* scaled with the normal force
-    if st[T_DIR] != 0.0 and direction != st[T_DIR]:
-        st[T_AUX1] = t                            # reversal
-    st[T_DIR] = direction
+    direction = walton_braun_history(t, dd, n_new, n_old, st)
     t_star, mu_n = st[T_AUX1], 0.5 * mu * (n_new + n_old)
     if direction > 0.0:
         ratio = 1.0 - (te - t_star) / (mu_n - t_star) if mu_n > t_star else 0.0
@@ -126,12 +134,7 @@ def walton_braun_implicit(f_s, dd, k_t0, mu, n_new, n_old, st):
     so x ~ 0 (the spring at full mobilisation under a rising mu N, where x^1/3 makes the explicit rule stiff) is
     stable and second order; x1 = 0 when the step reaches full mobilisation."""
     t = -f_s
-    direction = 1.0 if dd >= 0.0 else -1.0
-    if n_old > 0.0:
-        st[T_AUX1] *= n_new / n_old               # T* scaled with the normal force
-    if st[T_DIR] != 0.0 and direction != st[T_DIR]:
-        st[T_AUX1] = t                            # reversal
-    st[T_DIR] = direction
+    direction = walton_braun_history(t, dd, n_new, n_old, st)
     mu_n = 0.5 * mu * (n_new + n_old)
     span = mu_n - direction * st[T_AUX1]
     if span <= 0.0:
