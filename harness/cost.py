@@ -9,7 +9,7 @@ import pandas as pd
 from .engines.runner import EngineFailure
 from .engines.sweep import TIMEOUT_FLOOR_S, run_sweep
 from .solver.plan import FixedTimeStep, plan_batch
-from .solver.reference import simulate
+from .solver.reference import CONVERGED_START, simulate, simulate_extrapolated
 from .stability import UnstableTimeStep
 
 LADDER = (5, 10, 20, 50, 100, 200, 500, 1000, 5000)
@@ -62,9 +62,9 @@ def contact_steps(frame):
     return float(np.ceil(frame.t_contact / frame.dt - 1e-9).sum(skipna=False))
 
 
-def measure(rows, law_name, engine, dialect, rung, frames_by_e, truth, startup=None):
+def measure(rows, law_name, engine, dialect, rung, frames_by_e, truth, startup=None, steps_per_impact=None):
     """Cost rows of one rung: per e_n the errors against the truth, wall time (and without the engine's start-up)
-    and contact steps."""
+    and contact steps (or `steps_per_impact` times the impacts, for a rung made of several runs)."""
     for e_n, frame in frames_by_e.items():
         exact = truth[truth.e_n_target == e_n]
         ok = frame.status == "ok"
@@ -72,7 +72,8 @@ def measure(rows, law_name, engine, dialect, rung, frames_by_e, truth, startup=N
         start = (startup or {}).get(e_n, 0.0)
         rows.append({"model": law_name, "engine": engine, "dialect": dialect, "e_n_target": e_n, "rung": rung,
                      "steps_per_contact": float(frame.steps_per_contact.iloc[0]), "dt": float(frame.dt.iloc[0]),
-                     "impacts": len(frame), "steps": contact_steps(frame), "wall_s": wall, "startup_s": start,
+                     "impacts": len(frame), "wall_s": wall, "startup_s": start,
+                     "steps": contact_steps(frame) if steps_per_impact is None else steps_per_impact * len(frame),
                      "net_wall_s": max(wall - start, 0.0) if np.isfinite(wall) else np.nan,
                      "status": "ok" if ok.all() else str(frame.status[~ok].iloc[0]),
                      "message": "" if ok.all() else str(frame.message[~ok].iloc[0]),
@@ -137,6 +138,23 @@ def engine_curve(rows, adapter, paper_law, dialect, scene, ladder, truth, option
                 {f.e_n_target.iloc[0]: f for f in frames}, truth, startup)
 
 
+EXTRAPOLATED = "paper, graded Richardson"       # the converged ladder's rungs as a curve of the reference
+
+
+def extrapolated_curve(rows, law, scene, ladder, truth):
+    """The paper law's converged ladder at each rung n >= 20 of the ladder: R_n from n/2 and n graded steps per
+    contact, its cost that of both runs and of the two uniform runs that place the release."""
+    for n in (n for n in ladder if n >= 20):
+        try:
+            frame = simulate_extrapolated(law, scene, n)
+        except UnstableTimeStep as exc:
+            refused(rows, law.name, "reference", EXTRAPOLATED, str(n), scene, str(exc))
+            continue
+        measure(rows, law.name, "reference", EXTRAPOLATED, str(n),
+                {e: g for e, g in frame.groupby("e_n_target", sort=False)}, truth,
+                steps_per_impact=n // 2 + n + CONVERGED_START // 2 + CONVERGED_START)
+
+
 def converged_point(rows, law, scene, truth):
     """The paper law in --converged mode: one point of cost and error per e_n."""
     frame, _ = simulate(law, scene, converged=True)
@@ -170,6 +188,7 @@ def cost_table(law, scene, adapters, ladder=LADDER, keep=None):
     rows, failures, uncertainty = Rows(keep), [], {}
     truth, uncertainty["paper"] = truth_of(law, scene)
     reference_curve(rows, law, scene, ladder, truth)
+    extrapolated_curve(rows, law, scene, ladder, truth)
     converged_point(rows, law, scene, truth)
     for name, (adapter, options) in adapters.items():
         dialect = adapter.dialect(law.name, options)

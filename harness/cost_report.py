@@ -1,16 +1,19 @@
 """The report's accuracy-against-cost section, from cost.csv alone: log-log figures and the tables."""
 import numpy as np
 
-from .cost import METRICS, TOLERANCES, convergence_orders, per_rung, recommendations
+from .cost import EXTRAPOLATED, METRICS, TOLERANCES, convergence_orders, per_rung, recommendations
 
 LABELS = {"e_n": "e_n", "e_t": "e_t", "omega_star": "Omega*", "t_contact": "contact time", "f_n_max": "peak force",
           "max": "worst metric"}
 
 
 def curve_style(engine, dialect):
-    """Engines solid with markers, the reference's dialects dashed, the paper law thick."""
+    """Engines solid with markers, the reference's dialects dashed, the paper law thick, its extrapolated ladder
+    thick and dotted."""
     if engine == "reference" and dialect == "paper":
         return {"lw": 2.2, "ls": "-", "marker": "o", "ms": 3}
+    if engine == "reference" and dialect == EXTRAPOLATED:
+        return {"lw": 2.2, "ls": ":", "marker": "^", "ms": 4}
     if engine == "reference":
         return {"lw": 1.2, "ls": "--", "marker": ".", "ms": 3}
     return {"lw": 1.4, "ls": "-", "marker": "s", "ms": 3}

@@ -509,6 +509,11 @@ def graded_time(s):
     return g / total
 
 
+def graded_largest_step(n, span):
+    """The largest of n graded steps over span: the uniform middle step, span / (n (1 - 2 q (1 - RAMP_AREA)))."""
+    return span / (n * (1.0 - 2.0 * GRADE_ZONE * (1.0 - RAMP_AREA)))
+
+
 @njit(cache=True)
 def graded_step(k, n, span):
     """Step k of n graded steps over [0, span]; beyond the span (a release later than foreseen), uniform span/n."""

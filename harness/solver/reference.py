@@ -7,10 +7,10 @@ import pandas as pd
 from .. import __version__
 from ..kinematics import rebound_quantities
 from ..results import impact_frame
-from . import codes as C
-from .kernel import integrate
 from ..stability import UnstableTimeStep
-from .plan import plan_batch
+from . import codes as C
+from .kernel import graded_largest_step, integrate
+from .plan import FixedTimeStep, plan_batch
 
 CONVERGED_START = 64             # steps per contact of the first level of the converged ladder
 CONVERGED_LIMIT = 2 ** 20        # finest level tried
@@ -62,11 +62,52 @@ def release_bound(t_half, t_full):
 def graded_rows(law, scene, e_n, n, span, rows):
     """Integrate the given rows with n graded steps over [0, span] (kernel.graded_time): steps shrink like s^3 at
     first touch and towards span, just beyond the release, so that the onset and release singularities
-    (alpha^(1/4), alpha^(1/2), alpha^(3/2)) become smooth in the step and the error expands in powers of 1/n."""
-    batch = plan_batch(law, scene, e_n, n)
+    (alpha^(1/4), alpha^(1/2), alpha^(3/2)) become smooth in the step and the error expands in powers of 1/n.
+    The stability limit is checked at the largest graded step."""
+    batch = plan_batch(law, scene, e_n, FixedTimeStep(float(np.max(graded_largest_step(n, span)))))
     batch.params[:, C.P_GRADE_T] = span
     batch.params[:, C.P_GRADE_N] = n
     return run_kernel(batch, rows=rows)
+
+
+def graded_span(law, scene, e_n):
+    """Where every impact's graded mesh ends: release_bound from uniform runs at 32 and 64 steps per contact (64 and
+    128 where 32 is above the stability limit); returns (the 64-step batch, spans, wall seconds)."""
+    n = CONVERGED_START
+    batch = plan_batch(law, scene, e_n, n)
+    out, _, wall = run_kernel(batch)
+    try:
+        coarse, _, seconds = run_kernel(plan_batch(law, scene, e_n, n // 2))
+        span = release_bound(coarse[:, C.O_TC], out[:, C.O_TC])
+    except UnstableTimeStep:                    # a stiff tangential spring: place the release from n and 2n
+        finer, _, seconds = run_kernel(plan_batch(law, scene, e_n, 2 * n))
+        span = release_bound(out[:, C.O_TC], finer[:, C.O_TC])
+    return batch, span, wall + seconds
+
+
+def simulate_extrapolated(law, scene, n):
+    """Results table of one rung of the converged ladder, R_n = f_n + (f_n - f_n/2)/3 on n/2 and n graded steps
+    per contact, for every impact (harness cost draws these as a curve). wall_s includes the runs that place the
+    release; `dt` is the mean graded step."""
+    frames = []
+    for e_n in scene.e_n:
+        batch, span, wall = graded_span(law, scene, e_n)
+        rows = np.arange(len(batch.v_n0))
+        half, _, seconds_half = graded_rows(law, scene, e_n, n // 2, span, rows)
+        out, _, seconds = graded_rows(law, scene, e_n, n, span, rows)
+        out[:, KEPT] += (out[:, KEPT] - half[:, KEPT]) / 3.0
+        frames.append(results_frame(law, scene, batch, out, wall + seconds_half + seconds, n, span / n,
+                                    [f"Richardson on {n // 2} and {n} graded steps/contact"] * len(out)))
+    return pd.concat(frames, ignore_index=True)
+
+
+def results_frame(law, scene, batch, out, wall, steps, dt, messages):
+    """The results table of one batch from the kernel's output rows (harness/results.py columns)."""
+    return impact_frame(
+        scene, batch, model=law.name, dialect=law.dialect, engine="reference", engine_version=__version__, dt=dt,
+        steps_per_contact=steps, v_n1=out[:, C.O_VZ], v_t1=out[:, C.O_VX], omega1=out[:, C.O_W],
+        t_contact=out[:, C.O_TC], f_n_max=out[:, C.O_FMAX], overlap_max=out[:, C.O_AMAX], wall_s=wall / len(out),
+        status=[STATUS_TEXT[int(s)] for s in out[:, C.O_STATUS]], message=messages)
 
 
 def uses_extrapolation(law, extrapolate=None):
@@ -83,20 +124,15 @@ def run_converged(law, scene, e_n, tolerance=CONVERGED_TOLERANCE, extrapolate=No
     uniform steps without extrapolating (extrapolate=False does the same for any law: plain refinement)."""
     extrapolate = uses_extrapolation(law, extrapolate)
     n = CONVERGED_START
-    batch = plan_batch(law, scene, e_n, n)
-    out, _, wall = run_kernel(batch)
-    every = np.arange(len(out))
     span = None
     if extrapolate:
-        try:
-            coarse, _, seconds = run_kernel(plan_batch(law, scene, e_n, n // 2))
-            span = release_bound(coarse[:, C.O_TC], out[:, C.O_TC])
-        except UnstableTimeStep:                # a stiff tangential spring: place the release from n and 2n
-            coarse, _, seconds = run_kernel(plan_batch(law, scene, e_n, 2 * n))
-            span = release_bound(out[:, C.O_TC], coarse[:, C.O_TC])
+        batch, span, wall = graded_span(law, scene, e_n)
+        out, _, seconds = graded_rows(law, scene, e_n, n, span, np.arange(len(batch.v_n0)))
         wall += seconds
-        out, _, seconds = graded_rows(law, scene, e_n, n, span, every)
-        wall += seconds
+    else:
+        batch = plan_batch(law, scene, e_n, n)
+        out, _, wall = run_kernel(batch)
+    every = np.arange(len(out))
     plain = out[:, KEPT]
     best = np.full_like(plain, np.nan)          # R needs two levels: nothing to compare with at the first
     levels = np.full(len(out), n)
@@ -148,9 +184,5 @@ def simulate(law, scene, steps_per_contact=1000, converged=False, history_points
                         f"{STATUS_TEXT[int(status)]} after {int(steps)} steps ({steps * batch.dt:.3g} s of contact)"
                         for status, steps in zip(out[:, C.O_STATUS], out[:, C.O_STEPS])]
             steps, dt = batch.steps_per_contact, batch.dt
-        frames.append(impact_frame(
-            scene, batch, model=law.name, dialect=law.dialect, engine="reference", engine_version=__version__, dt=dt,
-            steps_per_contact=steps, v_n1=out[:, C.O_VZ], v_t1=out[:, C.O_VX], omega1=out[:, C.O_W],
-            t_contact=out[:, C.O_TC], f_n_max=out[:, C.O_FMAX], overlap_max=out[:, C.O_AMAX], wall_s=wall / len(out),
-            status=[STATUS_TEXT[int(s)] for s in out[:, C.O_STATUS]], message=messages))
+        frames.append(results_frame(law, scene, batch, out, wall, steps, dt, messages))
     return pd.concat(frames, ignore_index=True), histories
