@@ -2,9 +2,11 @@
 
 Scheme (paper dialect): velocity Verlet (kick-drift-kick) on the normal momentum u = m alpha_dot + D(alpha), whose
 rate is the elastic force alone (D' = c, the dashpot), with a linearised implicit-midpoint drift and midpoint
-tangential increments: second order for the smooth laws, unconditionally stable in the dashpot. The release
-(alpha = 0, or F = 0 without tension) is located inside its step by false position on the step fraction. Only the branches a row
-needs run: rows with TANGENTIAL_NONE never touch the tangential model or the rotation, gravity 0 skips its term.
+tangential increments, a sliding step's friction impulse mu times its normal impulse: second order, unconditionally
+stable in the dashpot. The release (alpha = 0, or F = 0 without tension) and every change of regime (turn, yield,
+start and end of sliding) are located inside their step by false position on the step fraction, and the step is
+split there. Steps are uniform, or graded (graded_time) for the converged mode. Only the branches a row needs run:
+rows with TANGENTIAL_NONE never touch the tangential model or the rotation, gravity 0 skips its term.
 Frame: wall z = 0 below, sphere moving in x-z, spin omega_y; contact-point slip V_s = v_x - R omega_y.
 """
 import math
@@ -383,10 +385,8 @@ def event_value(kind, f, s, st, lo, lot, probe, probe_t, p, ints, h, scratch):
 
 @njit(cache=True)
 def margin_at(f, s, st, lo, lot, p, ints, h, scratch):
-    """|F_s| - mu F_n after a trial step of fraction f; at f = 0 the start's own (a step of length 0 would end the
-    contact at first touch, where alpha = 0 but a constant dashpot already pushes)."""
-    if f == 0.0:
-        return abs(s[S_FS]) - p[C.P_MU] * abs(s[S_FN])
+    """|F_s| - mu F_n after a trial step of fraction f > 0 (at f = 0 the start's own margin, st[T_MARGIN], holds:
+    a step of length 0 would end the contact at first touch, where a constant dashpot already pushes)."""
     step(s, st, lo, lot, p, ints, f * h, scratch)
     return lot[T_MARGIN]
 
