@@ -368,11 +368,11 @@ def event_value(kind, f, s, st, lo, lot, probe, probe_t, p, ints, h, scratch):
     step from there, into probe, probe_t): the spring leaves the cone when it moves inward faster than mu F_n
     shrinks, at a slip reversal only when F_n is constant."""
     if kind == EVENT_TURN or kind == EVENT_YIELD:
-        if f == 0.0:
-            lo[:] = s
-        else:
+        at = s
+        if f > 0.0:
             step(s, st, lo, lot, p, ints, f * h, scratch)
-        return lo[S_VZ] if kind == EVENT_TURN else lo[S_ALPHA] - loading_kink(p, ints)
+            at = lo
+        return at[S_VZ] if kind == EVENT_TURN else at[S_ALPHA] - loading_kink(p, ints)
     if kind == EVENT_SLIP:
         return st[T_MARGIN] if f == 0.0 else margin_at(f, s, st, lo, lot, p, ints, h, scratch)
     if f == 0.0:
@@ -609,11 +609,12 @@ def integrate(params, ints, out, history, stride):
         max_steps = int(p[C.P_MAXSTEPS])
         t_now = 0.0
         grade_n = int(p[C.P_GRADE_N])
+        paper = row_ints[C.I_INTEGRATOR] == C.INTEGRATOR_PAPER
+        f_sampled = not (paper and p[C.P_DAMP_C0] == 0.0)      # else F_max is F at the turn, located
         for k in range(max_steps):
             if grade_n > 0:
                 h = graded_step(k, grade_n, p[C.P_GRADE_T])
             indicator = advance(s, st, o, ot, p, row_ints, h, scratch)
-            paper = row_ints[C.I_INTEGRATOR] == C.INTEGRATOR_PAPER
             h_last = h
             if indicator > 0.0 and paper:
                 a_peak, f_peak, indicator, _ = split_at_event(s, st, o, ot, lo, lot, at_event, at_event_t, p, row_ints,
@@ -632,14 +633,15 @@ def integrate(params, ints, out, history, stride):
                     t_end = t_now + h_last
                     status = C.STATUS_OK
             f_now, a_now = o[S_FN], o[S_ALPHA]
-            for j in range(PEAK_POINTS - 1):
-                sample_t[j], sample_f[j] = sample_t[j + 1], sample_f[j + 1]
-            sample_t[PEAK_POINTS - 1], sample_f[PEAK_POINTS - 1] = t_now + h_last, f_now
-            f_sampled = not (paper and p[C.P_DAMP_C0] == 0.0)      # else F_max is F at the turn, located
-            if f_sampled and f_prev1 >= f_prev2 and f_prev1 > f_now and f_prev1 >= f_peak and k >= PEAK_POINTS and paper:
-                f_peak = polynomial_peak(sample_t, sample_f)
-            elif f_sampled and f_prev1 >= f_prev2 and f_prev1 > f_now and f_prev1 >= f_peak and k >= 2:
-                f_peak = parabola_peak(f_prev2, f_prev1, f_now, h_prev, h_last)
+            if paper:                                  # the last samples of F_n, for its interpolated peak
+                for j in range(PEAK_POINTS - 1):
+                    sample_t[j], sample_f[j] = sample_t[j + 1], sample_f[j + 1]
+                sample_t[PEAK_POINTS - 1], sample_f[PEAK_POINTS - 1] = t_now + h_last, f_now
+            if f_sampled and f_prev1 >= f_prev2 and f_prev1 > f_now and f_prev1 >= f_peak and k >= 2:
+                if paper and k >= PEAK_POINTS:
+                    f_peak = polynomial_peak(sample_t, sample_f)
+                else:
+                    f_peak = parabola_peak(f_prev2, f_prev1, f_now, h_prev, h_last)
             if not paper and a_prev1 >= a_prev2 and a_prev1 > a_now and a_prev1 >= a_peak and k >= 2:
                 a_peak = parabola_peak(a_prev2, a_prev1, a_now, h_prev, h_last)
             h_prev = h_last

@@ -59,6 +59,11 @@ def release_bound(t_half, t_full):
     return t_full + (t_full - t_half) / 3.0 + change + GRADE_MARGIN * t_full
 
 
+def richardson(fine, coarse):
+    """R = f_n + (f_n - f_n/2)/3: the c h^2 term of a second-order scheme removed (the converged mode's estimate)."""
+    return fine + (fine - coarse) / 3.0
+
+
 def graded_rows(law, scene, e_n, n, span, rows):
     """Integrate the given rows with n graded steps over [0, span] (kernel.graded_time): steps shrink like s^3 at
     first touch and towards span, just beyond the release, so that the onset and release singularities
@@ -95,7 +100,7 @@ def simulate_extrapolated(law, scene, n):
         rows = np.arange(len(batch.v_n0))
         half, _, seconds_half = graded_rows(law, scene, e_n, n // 2, span, rows)
         out, _, seconds = graded_rows(law, scene, e_n, n, span, rows)
-        out[:, KEPT] += (out[:, KEPT] - half[:, KEPT]) / 3.0
+        out[:, KEPT] = richardson(out[:, KEPT], half[:, KEPT])
         frames.append(results_frame(law, scene, batch, out, wall + seconds_half + seconds, n, span / n,
                                     [f"Richardson on {n // 2} and {n} graded steps/contact"] * len(out)))
     return pd.concat(frames, ignore_index=True)
@@ -147,7 +152,7 @@ def run_converged(law, scene, e_n, tolerance=CONVERGED_TOLERANCE, extrapolate=No
             finer, _, seconds = run_kernel(plan_batch(law, scene, e_n, n), rows=pending)
         wall += seconds
         new = finer[:, KEPT]
-        estimate = new + (new - plain[pending]) / 3.0 if extrapolate else new
+        estimate = richardson(new, plain[pending]) if extrapolate else new
         out[pending] = finer
         plain[pending] = new
         diff = _change(estimate, best[pending], scene, batch, pending)

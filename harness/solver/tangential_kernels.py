@@ -160,9 +160,9 @@ def spring_force(code, f_s, dd, a, p1, mu, n_new, n_old, st, scratch, midpoint):
     """Trial spring force after the increment dd, before the Coulomb cap; updates the history `st`.
 
     `a` is the contact radius at the end of the step, st[T_AOLD] the one at its start. With `midpoint` (the paper
-    scheme) stiffnesses use their mean, and the history-dependent springs (Mindlin-Deresiewicz, Walton-Braun) a
-    predictor-corrector on T, so that every increment is a midpoint rule (second order); engines use the current a.
-    """
+    scheme) stiffnesses use their mean over the step, Mindlin-Deresiewicz a predictor-corrector on T and
+    Walton-Braun its implicit trapezoid, so that every increment is second order; engines use the current a (and a
+    predictor-corrector for Walton-Braun)."""
     a_old = st[T_AOLD]
     a_mid = mean_radius(a_old, a) if midpoint else a
     st[T_AOLD] = a
@@ -176,13 +176,13 @@ def spring_force(code, f_s, dd, a, p1, mu, n_new, n_old, st, scratch, midpoint):
     if code == C.TANGENTIAL_MINDLIN_TOTAL:
         st[T_AUX1] += dd                          # xi: total tangential displacement
         return -8.0 * p1 * a * st[T_AUX1]
+    if code == C.TANGENTIAL_WALTON_BRAUN and midpoint:
+        return walton_braun_implicit(f_s, dd, p1, mu, n_new, n_old, st)
     for k in range(N_TSTATE):
         scratch[k] = st[k]
     if code == C.TANGENTIAL_MINDLIN_DERESIEWICZ:
         predicted = mindlin_deresiewicz(f_s, dd, 8.0 * p1 * a_mid, mu, n_new, n_old, scratch, f_s)
         return mindlin_deresiewicz(f_s, dd, 8.0 * p1 * a_mid, mu, n_new, n_old, st, 0.5 * (f_s + predicted))
-    if midpoint:
-        return walton_braun_implicit(f_s, dd, p1, mu, n_new, n_old, st)
     predicted = walton_braun(f_s, dd, p1, mu, n_new, n_old, scratch, f_s)
     return walton_braun(f_s, dd, p1, mu, n_new, n_old, st, 0.5 * (f_s + predicted))
 
