@@ -52,7 +52,8 @@ N_INTS = 4
 
 # outputs
 O_VZ, O_VX, O_W, O_TC, O_FMAX, O_AMAX, O_STEPS, O_STATUS = 0, 1, 2, 3, 4, 5, 6, 7
-N_OUT = 8
+O_ACCEPTED = 8              # adaptive integrator: accepted steps (O_STEPS counts its force evaluations)
+N_OUT = 9
 
 STATUS_OK = 0
 STATUS_NO_SEPARATION = 1

@@ -25,6 +25,16 @@ def walton_braun(k1, k2, radius, alpha, alpha_max):
 
 
 @njit(cache=True)
+def thornton_unloading(E_star, p_y, alpha_y, f_y, radius, alpha_max):
+    """Thornton's unloading from alpha_max > alpha_y: radius R_p = 4/3 E* a*^3/F* and residual overlap
+    alpha_max - a*^2/R_p, a*^2 = R alpha_max, F* = F_y + pi p_y R (alpha_max - alpha_y)."""
+    f_star = f_y + math.pi * p_y * radius * (alpha_max - alpha_y)
+    a_star_sq = radius * alpha_max
+    r_p = FOUR_THIRDS * E_star * a_star_sq * math.sqrt(a_star_sq) / f_star
+    return r_p, alpha_max - a_star_sq / r_p
+
+
+@njit(cache=True)
 def thornton(E_star, p_y, alpha_y, f_y, radius, alpha, alpha_max):
     """Thornton (1997): Hertz to alpha_y, F_y + pi p_y R (alpha - alpha_y), Hertz unloading with R_p (MODELS 2.6)."""
     if alpha >= alpha_max:
@@ -33,13 +43,21 @@ def thornton(E_star, p_y, alpha_y, f_y, radius, alpha, alpha_max):
         return f_y + math.pi * p_y * radius * (alpha - alpha_y), math.sqrt(radius * alpha)
     if alpha_max <= alpha_y:
         return hertz(E_star, radius, alpha)
-    f_star = f_y + math.pi * p_y * radius * (alpha_max - alpha_y)
-    a_star_sq = radius * alpha_max
-    r_p = FOUR_THIRDS * E_star * a_star_sq * math.sqrt(a_star_sq) / f_star
-    delta = alpha - (alpha_max - a_star_sq / r_p)
+    r_p, dent = thornton_unloading(E_star, p_y, alpha_y, f_y, radius, alpha_max)
+    delta = alpha - dent
     if delta <= 0.0:
         return delta, 0.0          # negative: below the residual indentation, the force has ended
     return hertz(E_star, r_p, delta)
+
+
+@njit(cache=True)
+def stronge_unloading(E_star, alpha_y, f_y, radius, alpha_max):
+    """Stronge's unloading from alpha_max > alpha_y: radius R_c = 4/3 E* a_c^3/F_c and residual overlap
+    alpha_max - a_c^2/R_c, F_c = F_y (2 alpha_max/alpha_y - 1), a_c = a_y (F_c/F_y)^1/2 (MODELS 2.5)."""
+    f_c = f_y * (2.0 * alpha_max / alpha_y - 1.0)
+    a_c_sq = radius * alpha_y * f_c / f_y
+    r_c = FOUR_THIRDS * E_star * a_c_sq * math.sqrt(a_c_sq) / f_c
+    return r_c, alpha_max - a_c_sq / r_c
 
 
 @njit(cache=True)
@@ -53,10 +71,8 @@ def stronge(E_star, alpha_y, f_y, radius, alpha, alpha_max):
         return f, a_y * math.sqrt(f / f_y)
     if alpha_max <= alpha_y:
         return hertz(E_star, radius, alpha)
-    f_c = f_y * (2.0 * alpha_max / alpha_y - 1.0)
-    a_c = a_y * math.sqrt(f_c / f_y)
-    r_c = FOUR_THIRDS * E_star * a_c * a_c * a_c / f_c
-    delta = alpha - (alpha_max - a_c * a_c / r_c)
+    r_c, dent = stronge_unloading(E_star, alpha_y, f_y, radius, alpha_max)
+    delta = alpha - dent
     if delta <= 0.0:
         return delta, 0.0
     return hertz(E_star, r_c, delta)
@@ -123,6 +139,18 @@ def luding_yade(k1, kp, delt_p_max, delt_p_null, delt, delt_max, delt_null, delt
     else:
         force = k2_delt
     return force, delt_max, delt_null
+
+
+@njit(cache=True)
+def residual_overlap(code, p1, p2, p3, p4, radius, alpha_max):
+    """Overlap at which the unloading force from alpha_max returns to 0 (0 for the elastic laws)."""
+    if code == C.NORMAL_WALTON_BRAUN:
+        return alpha_max * (1.0 - p1 / p2)
+    if code == C.NORMAL_THORNTON and alpha_max > p3:
+        return thornton_unloading(p1, p2, p3, p4, radius, alpha_max)[1]
+    if code == C.NORMAL_STRONGE and alpha_max > p2:
+        return stronge_unloading(p1, p2, p3, radius, alpha_max)[1]
+    return 0.0
 
 
 @njit(cache=True)

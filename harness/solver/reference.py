@@ -9,6 +9,7 @@ from ..kinematics import rebound_quantities
 from ..results import impact_frame
 from ..stability import UnstableTimeStep
 from . import codes as C
+from .adaptive import integrate_adaptive, supports
 from .kernel import graded_largest_step, integrate
 from .plan import FixedTimeStep, plan_batch
 
@@ -120,6 +121,69 @@ def uses_extrapolation(law, extrapolate=None):
     return law.integrator == "paper" if extrapolate is None else extrapolate
 
 
+ADAPTIVE_FIRST = 1e-2           # first tolerance of the adaptive integrator, relative to the converged tolerance
+ADAPTIVE_FLOOR = 1e-12          # tightest tolerance tried (round-off of the error estimate below)
+
+
+def adaptive_batch(law, scene, e_n):
+    """Kernel rows for the adaptive integrator (no time step to check) and which of them it covers."""
+    batch = plan_batch(law, scene, e_n, CONVERGED_START, check_stability=False)
+    return batch, supports(batch.ints, batch.params)
+
+
+def run_adaptive(batch, rows, tol):
+    """The adaptive integrator on the given rows at tolerance tol; returns (out, wall seconds)."""
+    out = np.zeros((len(rows), C.N_OUT))
+    t_ref = np.full(len(rows), batch.dt * batch.steps_per_contact)    # the contact-time estimate
+    start = time.perf_counter()
+    integrate_adaptive(batch.params[rows], batch.ints[rows], tol, t_ref, out)
+    return out, time.perf_counter() - start
+
+
+def adaptive_converged(batch, scene, rows, tolerance):
+    """The adaptive integrator at tol = tolerance/100 and tol/10: their change bounds the error of the first, so the
+    second is taken once it is below `tolerance`; rows still changing go on at tol/10 (down to ADAPTIVE_FLOOR).
+    Returns (out, change, last tol, force evaluations of all runs per row, wall seconds)."""
+    tol = tolerance * ADAPTIVE_FIRST
+    coarse, wall = run_adaptive(batch, rows, tol)
+    evaluations = coarse[:, C.O_STEPS].copy()
+    out, change, tols = coarse.copy(), np.full(len(rows), np.inf), np.full(len(rows), tol)
+    pending = np.arange(len(rows))
+    while len(pending) and tol > ADAPTIVE_FLOOR:
+        tol /= 10.0
+        fine, seconds = run_adaptive(batch, rows[pending], tol)
+        wall += seconds
+        evaluations[pending] += fine[:, C.O_STEPS]
+        diff = _change(fine[:, KEPT], coarse[pending][:, KEPT], scene, batch, rows[pending])
+        out[pending], coarse[pending], tols[pending] = fine, fine, tol
+        change[pending] = np.where(np.isnan(diff) | (fine[:, C.O_STATUS] != C.STATUS_OK), np.inf, diff)
+        pending = pending[~(change[pending] < tolerance)]
+    return out, change, tols, evaluations, wall
+
+
+def converged_batch(law, scene, e_n, tolerance=CONVERGED_TOLERANCE, extrapolate=None):
+    """Converged results of every impact at target e_n: the adaptive integrator on the rows it covers (the paper
+    scheme's laws), the ladder (run_converged) on the others; returns (batch, out, steps per contact, dt, messages,
+    wall seconds). Steps per contact count force evaluations for adaptive rows (a plain step costs one)."""
+    covered = None
+    if uses_extrapolation(law, extrapolate) and extrapolate is None:
+        batch, covered = adaptive_batch(law, scene, e_n)
+    if covered is not None and covered.all():
+        rows = np.arange(len(covered))
+        out, change, tols, evaluations, wall = adaptive_converged(batch, scene, rows, tolerance)
+        dt = out[:, C.O_TC] / np.maximum(out[:, C.O_ACCEPTED], 1.0)
+        messages = [f"converged: adaptive DP5(4) at tol {t:.0e} against {t * 10:.0e}, change {ch:.1e}"
+                    if ch < tolerance else f"not converged at tol {t:.0e} (change {ch:.1e})"
+                    for t, ch in zip(tols, change)]
+        return batch, out, evaluations, dt, messages, wall
+    batch, out, levels, change, dt, wall = run_converged(law, scene, e_n, tolerance, extrapolate)
+    how = ("Richardson on {} and {} graded steps/contact" if uses_extrapolation(law, extrapolate) else
+           "{} and {} steps/contact agree")
+    messages = [f"converged: {how.format(lv // 2, lv)}, last change {ch:.1e}" if ch <= tolerance else
+                f"not converged at {lv} steps/contact (change {ch:.1e})" for lv, ch in zip(levels, change)]
+    return batch, out, levels, dt, messages, wall
+
+
 def run_converged(law, scene, e_n, tolerance=CONVERGED_TOLERANCE, extrapolate=None):
     """Richardson-extrapolated ladder on graded meshes: two uniform runs (32 and 64 steps per contact) place the
     release; then n graded steps over [0, span], n doubling from 64. The paper scheme's error is then ~c h^2 with
@@ -173,13 +237,7 @@ def simulate(law, scene, steps_per_contact=1000, converged=False, history_points
     frames, histories = [], {}
     for e_n in scene.e_n:
         if converged:
-            batch, out, levels, change, dt, wall = run_converged(law, scene, e_n, tolerance, extrapolate)
-            how = ("Richardson on {} and {} graded steps/contact" if uses_extrapolation(law, extrapolate) else
-                   "{} and {} steps/contact agree")
-            messages = [f"converged: {how.format(lv // 2, lv)}, last change {ch:.1e}"
-                        if ch <= tolerance else
-                        f"not converged at {lv} steps/contact (change {ch:.1e})" for lv, ch in zip(levels, change)]
-            steps = levels
+            batch, out, steps, dt, messages, wall = converged_batch(law, scene, e_n, tolerance, extrapolate)
         else:
             batch = plan_batch(law, scene, e_n, steps_per_contact)
             out, history, wall = run_kernel(batch, history_points)
