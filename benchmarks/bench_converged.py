@@ -1,9 +1,12 @@
 """The converged mode against brute-force refinement, side by side in one run, for every law on a 3 e_n x 45 angle
-sweep: brute force doubles the steps per contact from 64 until two successive results agree to 1e-6 twice in a row
-(the converged mode's own stopping rule, on plain results); the converged mode does the same on Richardson values
-of graded meshes. Printed: impact-steps taken, wall time, the error reached against the converged reference
-(harness.cost), and the cost ratios. A second table compares the two at equal error reached (hertz-mindlin),
-the stopping tolerance of each swept.
+sweep. Three methods, one stopping rule (successive results within 1e-6):
+- brute force: uniform steps per contact doubled from 64 until two successive results agree, twice in a row;
+- graded Richardson: the same on Richardson values of graded meshes (the converged mode of the laws the adaptive
+  integrator does not cover);
+- adaptive: the converged mode, Dormand-Prince 5(4) at tolerance 1e-8 and 1e-9 (tighter while they differ).
+Printed: force evaluations (a kernel step costs one, plus its event location), wall time, the error reached
+against the converged reference (harness.cost, 2^16 uniform steps), and the wall-time ratios. A second table
+compares the methods at equal error reached (hertz-mindlin), the stopping tolerance of each swept.
 
     .venv/bin/python benchmarks/bench_converged.py
 """
@@ -25,8 +28,11 @@ def worst_error(frame, truth):
                for e in SCENE.e_n)
 
 
-def run(law, extrapolate, tolerance=1e-6):
-    """The ladder with or without extrapolation; (frame, impact-steps, seconds)."""
+METHODS = {"brute force": False, "graded Richardson": True, "adaptive": None}
+
+
+def run(law, method, tolerance=1e-6):
+    """One method of the converged mode; (frame, force evaluations, seconds)."""
     counted = []
     kernel = reference.run_kernel
 
@@ -37,35 +43,42 @@ def run(law, extrapolate, tolerance=1e-6):
     reference.run_kernel = counting
     try:
         start = time.perf_counter()
-        frame, _ = simulate(law, SCENE, converged=True, extrapolate=extrapolate, tolerance=tolerance)
+        frame, _ = simulate(law, SCENE, converged=True, extrapolate=METHODS[method], tolerance=tolerance)
         seconds = time.perf_counter() - start
     finally:
         reference.run_kernel = kernel
-    return frame, float(sum(counted)), seconds
+    adaptive = frame.message.str.contains("adaptive")
+    return frame, float(sum(counted)) + float(frame.steps_per_contact[adaptive].sum()), seconds
 
 
 def main():
-    simulate(compose("hertz-mindlin"), SCENE, steps_per_contact=20)
-    print(f"{'law':26s} {'brute force: steps':>19s} {'wall':>7s} {'error':>8s} | {'converged: steps':>16s} {'wall':>7s} "
-          f"{'error':>8s} | {'RATIO steps':>11s} {'wall':>6s}")
+    warm = Scene(e_n=(0.5,), angles_deg=(10.0,))
+    for method in METHODS:
+        run(compose("hertz-mindlin"), method)
+    simulate(compose("hertz-mindlin"), warm, steps_per_contact=20)
+    header = " | ".join(f"{m + ': evals':>24s} {'wall':>7s} {'error':>8s}" for m in METHODS)
+    print(f"{'law':26s} {header} | {'WALL RATIO brute/adaptive':>25s} {'ladder/adaptive':>15s}")
     for name in LAWS:
         law = compose(name)
         truth, _ = truth_of(law, SCENE)
-        brute, brute_steps, brute_s = run(law, extrapolate=False)
-        conv, conv_steps, conv_s = run(law, extrapolate=True)
-        print(f"{name:26s} {brute_steps:19.3g} {brute_s:7.3f} {worst_error(brute, truth):8.1e} | {conv_steps:16.3g} "
-              f"{conv_s:7.3f} {worst_error(conv, truth):8.1e} | {brute_steps / conv_steps:11.2f} "
-              f"{brute_s / conv_s:6.2f}")
+        cells, walls = [], {}
+        for method in METHODS:
+            frame, evaluations, seconds = run(law, method)
+            walls[method] = seconds
+            cells.append(f"{evaluations:24.3g} {seconds:7.3f} {worst_error(frame, truth):8.1e}")
+        print(f"{name:26s} {' | '.join(cells)} | {walls['brute force'] / walls['adaptive']:25.1f} "
+              f"{walls['graded Richardson'] / walls['adaptive']:15.1f}")
 
     law = compose("hertz-mindlin")
     truth, _ = truth_of(law, SCENE)
-    print(f"\nhertz-mindlin at equal error: the stopping tolerance swept\n{'method':12s} {'tolerance':>9s} "
-          f"{'steps':>9s} {'wall':>7s} {'error':>8s}")
-    for extrapolate in (False, True):
-        for tolerance in (1e-4, 1e-5, 1e-6):
-            frame, steps, seconds = run(law, extrapolate, tolerance)
-            print(f"{'converged' if extrapolate else 'brute force':12s} {tolerance:9.0e} {steps:9.3g} {seconds:7.3f} "
-                  f"{worst_error(frame, truth):8.1e}")
+    print(f"\nhertz-mindlin at equal error: the stopping tolerance swept\n{'method':18s} {'tolerance':>9s} "
+          f"{'evals':>9s} {'wall':>7s} {'error':>8s}")
+    for method in METHODS:
+        for tolerance in (1e-4, 1e-5, 1e-6, 1e-7):
+            if method != "adaptive" and tolerance < 1e-6:
+                continue                              # beyond brute force's reach in reasonable time
+            frame, evaluations, seconds = run(law, method, tolerance)
+            print(f"{method:18s} {tolerance:9.0e} {evaluations:9.3g} {seconds:7.3f} {worst_error(frame, truth):8.1e}")
 
 
 if __name__ == "__main__":

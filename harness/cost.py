@@ -9,7 +9,7 @@ import pandas as pd
 from .engines.runner import EngineFailure
 from .engines.sweep import TIMEOUT_FLOOR_S, run_sweep
 from .solver.plan import FixedTimeStep, plan_batch
-from .solver.reference import CONVERGED_START, simulate, simulate_extrapolated
+from .solver.reference import CONVERGED_START, adaptive_batch, simulate, simulate_adaptive, simulate_extrapolated
 from .stability import UnstableTimeStep
 
 LADDER = (5, 10, 20, 50, 100, 200, 500, 1000, 5000)
@@ -71,7 +71,7 @@ def measure(rows, law_name, engine, dialect, rung, frames_by_e, truth, startup=N
         wall = float(frame.wall_s.sum())
         start = (startup or {}).get(e_n, 0.0)
         rows.append({"model": law_name, "engine": engine, "dialect": dialect, "e_n_target": e_n, "rung": rung,
-                     "steps_per_contact": float(frame.steps_per_contact.iloc[0]), "dt": float(frame.dt.iloc[0]),
+                     "steps_per_contact": float(frame.steps_per_contact.mean()), "dt": float(frame.dt.mean()),
                      "impacts": len(frame), "wall_s": wall, "startup_s": start,
                      "steps": contact_steps(frame) if steps_per_impact is None else steps_per_impact * len(frame),
                      "net_wall_s": max(wall - start, 0.0) if np.isfinite(wall) else np.nan,
@@ -139,6 +139,26 @@ def engine_curve(rows, adapter, paper_law, dialect, scene, ladder, truth, option
 
 
 EXTRAPOLATED = "paper, graded Richardson"       # the converged ladder's rungs as a curve of the reference
+ADAPTIVE = "paper, adaptive DP5(4)"             # the adaptive integrator's tolerances as a curve of the reference
+ADAPTIVE_RUNGS = (1e-4, 1e-5, 1e-6, 1e-7, 1e-8)  # above the truth's own uncertainty (2^16 steps: ~1e-9)
+
+
+def converged_curve(rows, law, scene, ladder, truth):
+    """The converged mode's own rungs as a curve: the adaptive integrator's tolerances where it covers the law,
+    else the graded Richardson ladder."""
+    if law.integrator == "paper" and adaptive_batch(law, scene, scene.e_n[0])[1].all():
+        adaptive_curve(rows, law, scene, truth)
+    else:
+        extrapolated_curve(rows, law, scene, ladder, truth)
+
+
+def adaptive_curve(rows, law, scene, truth):
+    """The adaptive integrator at each tolerance of ADAPTIVE_RUNGS; its steps per contact are force evaluations."""
+    for tol in ADAPTIVE_RUNGS:
+        frame = simulate_adaptive(law, scene, tol)
+        measure(rows, law.name, "reference", ADAPTIVE, f"tol {tol:.0e}",
+                {e: g for e, g in frame.groupby("e_n_target", sort=False)}, truth,
+                steps_per_impact=float(frame.steps_per_contact.mean()))
 
 
 def extrapolated_curve(rows, law, scene, ladder, truth):
@@ -184,11 +204,13 @@ class Rows(list):
 def cost_table(law, scene, adapters, ladder=LADDER, keep=None):
     """Every curve of the study as one table (COLUMNS); adapters: {name: (adapter, options)} of the engines;
     `keep(table)` is called with the table so far after every row."""
-    simulate(law, scene.__class__(e_n=(0.5,), angles_deg=(10.0,)), steps_per_contact=10)   # compile outside timing
+    warm = scene.__class__(e_n=(0.5,), angles_deg=(10.0,))
+    simulate(law, warm, steps_per_contact=10)                 # compile outside timing: the kernel,
+    simulate(law, warm, converged=True)                       # and the adaptive integrator or graded ladder
     rows, failures, uncertainty = Rows(keep), [], {}
     truth, uncertainty["paper"] = truth_of(law, scene)
     reference_curve(rows, law, scene, ladder, truth)
-    extrapolated_curve(rows, law, scene, ladder, truth)
+    converged_curve(rows, law, scene, ladder, truth)
     converged_point(rows, law, scene, truth)
     for name, (adapter, options) in adapters.items():
         dialect = adapter.dialect(law.name, options)
@@ -230,20 +252,26 @@ def recommendations(cost):
     return pd.DataFrame(out)
 
 
+def ladder_rows(cost):
+    """Rows of the curves' rungs: steps per contact, or the adaptive integrator's tolerances."""
+    return cost[cost.rung.str.fullmatch(r"\d+") | cost.rung.str.startswith("tol ")]
+
+
 def convergence_orders(cost, floor=1e-12):
-    """Per curve and metric: slope of -log(error) against log(steps per contact) over the rungs of 20+ steps whose
-    error is above `floor` (least squares over every e_n)."""
+    """Per curve and metric: slope of -log(error) against log(steps per contact; force evaluations per contact for
+    the adaptive curve) over the rungs of 20+ whose error is above `floor` (least squares over every e_n)."""
     out = []
-    ladder = cost[cost.rung.str.fullmatch(r"\d+") & (cost.status == "ok")]
+    ladder = ladder_rows(cost)
+    ladder = ladder[ladder.status == "ok"]
     for (engine, dialect), curve in ladder.groupby(["engine", "dialect"], sort=False):
         row = {"engine": engine, "dialect": dialect}
         for metric in METRICS:
-            pts = curve[(curve.rung.astype(int) >= 20) & (curve[f"err_{metric}"] > floor)]
+            pts = curve[(curve.steps_per_contact >= 20) & (curve[f"err_{metric}"] > floor)]
             pts = pts[np.isfinite(pts[f"err_{metric}"])]
             if len(pts.rung.unique()) < 3:
                 row[metric] = np.nan
                 continue
-            slope = np.polyfit(np.log(pts.rung.astype(float)), np.log(pts[f"err_{metric}"]), 1)[0]
+            slope = np.polyfit(np.log(pts.steps_per_contact), np.log(pts[f"err_{metric}"]), 1)[0]
             row[metric] = -slope
         out.append(row)
     return pd.DataFrame(out)

@@ -93,7 +93,8 @@ def print_tables(table, uncertainty, law, scene, ladder, skipped, failures):
     rec = recommendations(table)
     cols = [c for c in rec.columns if c.startswith("dt for") or c.startswith("steps/contact")] + ["error at 20% Rayleigh"]
     print(text_table(rec, ["engine", "dialect", *cols], {c: "{:.3g}" for c in cols}))
-    print("\norder of convergence (slope of log error against log steps per contact, rungs >= 20):")
+    print("\norder of convergence (slope of log error against log steps per contact, rungs >= 20; the adaptive "
+          "curve: against force evaluations per contact):")
     orders = convergence_orders(table)
     print(text_table(orders, ["engine", "dialect", *METRICS], {m: "{:.2f}" for m in METRICS}))
     for failure in failures:

@@ -1,18 +1,19 @@
 """The report's accuracy-against-cost section, from cost.csv alone: log-log figures and the tables."""
 import numpy as np
 
-from .cost import EXTRAPOLATED, METRICS, TOLERANCES, convergence_orders, per_rung, recommendations
+from .cost import (ADAPTIVE, EXTRAPOLATED, METRICS, TOLERANCES, convergence_orders, ladder_rows, per_rung,
+                   recommendations)
 
 LABELS = {"e_n": "e_n", "e_t": "e_t", "omega_star": "Omega*", "t_contact": "contact time", "f_n_max": "peak force",
           "max": "worst metric"}
 
 
 def curve_style(engine, dialect):
-    """Engines solid with markers, the reference's dialects dashed, the paper law thick, its extrapolated ladder
-    thick and dotted."""
+    """Engines solid with markers, the reference's dialects dashed, the paper law thick, the converged mode's rungs
+    (adaptive or extrapolated) thick and dotted."""
     if engine == "reference" and dialect == "paper":
         return {"lw": 2.2, "ls": "-", "marker": "o", "ms": 3}
-    if engine == "reference" and dialect == EXTRAPOLATED:
+    if engine == "reference" and dialect in (EXTRAPOLATED, ADAPTIVE):
         return {"lw": 2.2, "ls": ":", "marker": "^", "ms": 4}
     if engine == "reference":
         return {"lw": 1.2, "ls": "--", "marker": ".", "ms": 3}
@@ -23,7 +24,7 @@ def _curves(cost):
     """(engine, dialect, ladder rows aggregated over e_n, Rayleigh row, converged row) per curve."""
     for (engine, dialect), per_curve in per_rung(cost).groupby(["engine", "dialect"], sort=False):
         per_curve = per_curve.rename(columns={"steps_per_contact": "n"})
-        ladder = per_curve[per_curve.rung.str.fullmatch(r"\d+")].sort_values("n")
+        ladder = ladder_rows(per_curve).sort_values("n")
         yield (engine, dialect, ladder, per_curve[per_curve.rung == "rayleigh"],
                per_curve[per_curve.rung == "converged"])
 
@@ -71,7 +72,7 @@ def cost_section(cost, model):
         (f"{model}: error of each metric against wall time (start-up excluded)",
          cost_figure(cost, "net_wall_s", "wall time [s]", METRICS)),
         (f"{model}: error of each metric against steps per contact",
-         cost_figure(cost, "n", "steps per contact", METRICS)),
+         cost_figure(cost, "n", "steps (adaptive: force evaluations) per contact", METRICS)),
     ]
     refused = cost[cost.status == "refused"].drop_duplicates(["engine", "dialect", "rung"])
     return {"figures": figures, "recommendations": records(recommendations(cost)),

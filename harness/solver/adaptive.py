@@ -24,12 +24,13 @@ from .tangential_kernels import stiffness
 Y_ALPHA, Y_RATE, Y_VX, Y_W, Y_FS = 0, 1, 2, 3, 4
 N_Y = 5
 M_LOADING, M_AMAX, M_TANGENTIAL, M_SIGN, M_DENT = 0, 1, 2, 3, 4   # mode: loading?, alpha_max once unloading,
-N_MODE = 5                                                       # stick/slide, its sign, residual overlap
+M_DIRECTION, M_TURNING = 5, 6                                    # stick/slide, its sign, residual overlap; Walton-
+N_MODE = 7                                                       # Braun: slip direction, T* / mu N at its reversal
 STICK, SLIDE = 1.0, 2.0
 A_FN, A_DFN, A_TRIAL, A_FT = 0, 1, 2, 3                  # forces at a state: F_n, dF_n/dt, trial dF_s/dt, F_t
 N_AUX = 4
-E_RELEASE, E_TURN, E_YIELD, E_PEAK, E_SLIP, E_STICK = 0, 1, 2, 3, 4, 5
-N_EVENTS = 6
+E_RELEASE, E_TURN, E_YIELD, E_PEAK, E_SLIP, E_STICK, E_REVERSAL = 0, 1, 2, 3, 4, 5, 6
+N_EVENTS = 7
 INACTIVE = -math.inf
 SUPPORTED_NORMAL = (C.NORMAL_LINEAR, C.NORMAL_HERTZ, C.NORMAL_WALTON_BRAUN, C.NORMAL_THORNTON, C.NORMAL_STRONGE)
 SUPPORTED_TANGENTIAL = (C.TANGENTIAL_NONE, C.TANGENTIAL_LINEAR, C.TANGENTIAL_MINDLIN_INCREMENTAL,
@@ -50,7 +51,9 @@ DP_E = np.array([71.0 / 57600.0, 0.0, -71.0 / 16695.0, 71.0 / 1920.0, -17253.0 /
 STAGES = 7
 SAFETY, GROW, SHRINK = 0.9, 5.0, 0.2
 LOCATE_ITERATIONS = 60
-EVENT_TOLERANCE = 1e-13     # |event function| (dimensionless) at which an event counts as located
+EVENT_ROUND_OFF = 1e-13     # |event function| (dimensionless) at which an event counts as located ...
+EVENT_SHARE = 1e-3          # ... or this share of the tolerance: its misplacement is then negligible
+STEP_CAP = 10 ** 7          # trial steps per impact at most (a stick that rings ~1000 times a contact needs 1e5)
 FIRST_STEP = 1e-6           # first trial step, in contact times
 RELEASE_TIE = 1e-9          # step fraction within which an event next to the release counts as the release
 ONSET_PROBE = 1e-9          # overlap, in alpha_ref, at which the first touch's stick-or-slide is decided
@@ -100,6 +103,18 @@ def coulomb_cone(p, ints, f_n):
 
 
 @njit(cache=True)
+def walton_braun_factor(t, cone, turning, direction):
+    """Walton & Braun's k_t/k_t0 = x^(1/3), x = (mu N - d T)/(mu N - d T*) the distance to full mobilisation in the
+    slip direction d, T* = turning mu N (scaled with the normal force since the last reversal); 0 at and beyond
+    full mobilisation (MODELS 3)."""
+    span = cone * (1.0 - direction * turning)
+    if span <= 0.0:
+        return 0.0
+    x = (cone - direction * t) / span
+    return x ** (1.0 / 3.0) if x > 0.0 else 0.0
+
+
+@njit(cache=True)
 def evaluate(p, ints, y, mode, dy, aux):
     """dy/dt at y in `mode`, and the forces the events read (aux: F_n, dF_n/dt, trial spring rate, F_t)."""
     m, inertia, radius = p[C.P_MASS], p[C.P_INERTIA], p[C.P_RADIUS]
@@ -125,7 +140,10 @@ def evaluate(p, ints, y, mode, dy, aux):
     lever = radius - p[C.P_LEVER] * alpha
     slide = mode[M_TANGENTIAL] == SLIDE
     f_t = mode[M_SIGN] * coulomb_cone(p, ints, f_n) if slide else y[Y_FS]
-    trial = -stiffness(code, p[C.P_T1], a) * (y[Y_VX] - lever * y[Y_W])
+    k_t = stiffness(code, p[C.P_T1], a)
+    if code == C.TANGENTIAL_WALTON_BRAUN:
+        k_t *= walton_braun_factor(-f_t, coulomb_cone(p, ints, f_n), mode[M_TURNING], mode[M_DIRECTION])
+    trial = -k_t * (y[Y_VX] - lever * y[Y_W])
     shrinking = rate < 0.0 and code == C.TANGENTIAL_MINDLIN_RESCALE
     if (shrinking or code == C.TANGENTIAL_MINDLIN_TOTAL) and f_t != 0.0:
         trial += f_t * log_slope * rate               # F_s a'/a
@@ -155,6 +173,10 @@ def events(p, ints, y, mode, aux, scale, g):
     g[E_SLIP] = (abs(y[Y_FS]) - cone) / f_ref if mode[M_TANGENTIAL] == STICK else INACTIVE
     cone_rate = p[C.P_MU] * (-aux[A_DFN] if f_n < 0.0 and ints[C.I_END] == C.END_ALPHA else aux[A_DFN])
     g[E_STICK] = (cone_rate - mode[M_SIGN] * aux[A_TRIAL]) * t_ref / f_ref if mode[M_TANGENTIAL] == SLIDE else INACTIVE
+    g[E_REVERSAL] = INACTIVE
+    if mode[M_DIRECTION] != 0.0 and mode[M_TANGENTIAL] != 0.0:    # Walton-Braun: the slip turns back
+        lever = p[C.P_RADIUS] - p[C.P_LEVER] * alpha
+        g[E_REVERSAL] = -mode[M_DIRECTION] * (y[Y_VX] - lever * y[Y_W]) / scale[1]
 
 
 @njit(cache=True)
@@ -182,30 +204,75 @@ def dp_step(p, ints, y, mode, h, k, y_new, stage, aux, scale, tol):
 
 
 @njit(cache=True)
-def locate(kind, p, ints, y, mode, h, k, y_new, stage, aux, scale, g_start, g_end, g, tol):
-    """Step fraction in (0, 1] at which event `kind` happens inside the step of length h from y (Illinois false
-    position on the event function after trial steps), and the number of trial steps taken."""
-    lo, hi, g_lo, g_hi = 0.0, 1.0, g_start, g_end
-    side, trials = 0, 0
+def hermite(y, y_end, f_start, f_end, h, theta, out):
+    """State at step fraction theta on the cubic Hermite interpolant of the step (values and rates at both ends)."""
+    h00, h10 = (1.0 + 2.0 * theta) * (1.0 - theta) ** 2, theta * (1.0 - theta) ** 2
+    h01, h11 = theta * theta * (3.0 - 2.0 * theta), theta * theta * (theta - 1.0)
+    for i in range(N_Y):
+        out[i] = h00 * y[i] + h10 * h * f_start[i] + h01 * y_end[i] + h11 * h * f_end[i]
+
+
+@njit(cache=True)
+def illinois(lo, hi, g_lo, g_hi, side, mid, value):
+    """One Illinois false-position update of the bracket [lo, hi] around a rise of the event function through 0:
+    the new point replaces the end on its side; the other end's value is halved when kept twice in a row."""
+    if value < 0.0:
+        if side == 1:
+            g_hi *= 0.5
+        return mid, hi, value, g_hi, 1
+    if side == -1:
+        g_lo *= 0.5
+    return lo, mid, g_lo, value, -1
+
+
+@njit(cache=True)
+def interpolated_root(kind, p, ints, y, y_end, f_start, f_end, mode, h, state, dy, aux, scale, g, g_start, g_end):
+    """Step fraction of event `kind` on the step's Hermite interpolant (one force evaluation per trial): a cheap,
+    O(h^4) first estimate for `locate`; returns (fraction, slope of the event function there, evaluations)."""
+    lo, hi, g_lo, g_hi, side, trials = 0.0, 1.0, g_start, g_end, 0, 0
+    mid = 1.0
     while trials < LOCATE_ITERATIONS and hi - lo > 1e-13 * hi:
         mid = (lo * g_hi - hi * g_lo) / (g_hi - g_lo)
         if not lo < mid < hi:
             mid = 0.5 * (lo + hi)
+        hermite(y, y_end, f_start, f_end, h, mid, state)
+        evaluate(p, ints, state, mode, dy, aux)
+        events(p, ints, state, mode, aux, scale, g)
+        trials += 1
+        if abs(g[kind]) <= EVENT_ROUND_OFF:
+            break
+        lo, hi, g_lo, g_hi, side = illinois(lo, hi, g_lo, g_hi, side, mid, g[kind])
+    return mid, (g_end - g_start) if hi - lo <= 0.0 else (g_hi - g_lo) / (hi - lo), trials
+
+
+@njit(cache=True)
+def locate(kind, p, ints, y, mode, h, k, y_new, stage, aux, scale, g_start, g_end, g, tol, guess, slope):
+    """Step fraction in (0, 1] at which event `kind` happens inside the step of length h from y: secant steps on the
+    event function after real trial steps, from `guess` with `slope` (the interpolant's), kept inside the bracket
+    (Illinois false position when a secant leaves it), until the function is within round-off or a share of the
+    tolerance of 0 and not below it (the rates after a kink must be the new ones); returns it and the number of
+    trial steps taken."""
+    lo, hi, g_lo, g_hi = 0.0, 1.0, g_start, g_end
+    side, trials = 0, 0
+    last, g_last = -1.0, 0.0
+    mid = guess
+    while trials < LOCATE_ITERATIONS and hi - lo > 1e-13 * hi:
+        if not lo < mid < hi:
+            mid = (lo * g_hi - hi * g_lo) / (g_hi - g_lo)
+            if not lo < mid < hi:
+                mid = 0.5 * (lo + hi)
         dp_step(p, ints, y, mode, mid * h, k, y_new, stage, aux, scale, tol)
         events(p, ints, y_new, mode, aux, scale, g)
         trials += 1
-        if abs(g[kind]) <= EVENT_TOLERANCE:           # the event, to round-off of its dimensionless function
+        value = g[kind]
+        close = abs(value) <= max(EVENT_ROUND_OFF, EVENT_SHARE * tol)
+        if close and value >= 0.0:                    # located, on or just past the event
             return mid, trials
-        if g[kind] < 0.0:
-            lo, g_lo = mid, g[kind]
-            if side == 1:
-                g_hi *= 0.5
-            side = 1
-        else:
-            hi, g_hi = mid, g[kind]
-            if side == -1:
-                g_lo *= 0.5
-            side = -1
+        lo, hi, g_lo, g_hi, side = illinois(lo, hi, g_lo, g_hi, side, mid, value)
+        if last >= 0.0 and mid != last:
+            slope = (value - g_last) / (mid - last)
+        last, g_last = mid, value
+        mid = mid - (2.0 if close else 1.0) * value / slope if slope > 0.0 else -1.0   # just short: step past it
     return hi, trials
 
 
@@ -241,6 +308,9 @@ def onset_mode(p, ints, y, mode, dy, aux, scale):
         mode[M_TANGENTIAL] = 0.0
         return
     mode[M_TANGENTIAL] = STICK
+    if ints[C.I_TANGENTIAL] == C.TANGENTIAL_WALTON_BRAUN:
+        slip = y[Y_VX] - (p[C.P_RADIUS] - p[C.P_LEVER] * y[Y_ALPHA]) * y[Y_W]
+        mode[M_DIRECTION] = 1.0 if slip > 0.0 else -1.0 if slip < 0.0 else 0.0
     evaluate(p, ints, y, mode, dy, aux)
     if p[C.P_MU] * abs(aux[A_FN]) > 0.0:
         return
@@ -257,15 +327,17 @@ def impact(p, ints, tol, t_ref, row_out):
     """One impact from first touch to release at tolerance `tol`; fills row_out like kernel.integrate, with O_STEPS
     the number of force evaluations."""
     m, radius = p[C.P_MASS], p[C.P_RADIUS]
-    v_ref = math.sqrt(p[C.P_VZ0] ** 2 + p[C.P_VX0] ** 2) + radius * abs(p[C.P_W0])
-    alpha_ref = v_ref * t_ref
-    f_ref = m * v_ref / t_ref
-    scale = np.array([alpha_ref, v_ref, f_ref, t_ref, alpha_ref, v_ref, v_ref, v_ref / radius, f_ref])
+    v_n = abs(p[C.P_VZ0])                            # the normalised outcomes divide by the incident normal and
+    v_t = abs(p[C.P_VX0]) + radius * abs(p[C.P_W0])  # tangential speeds: errors are measured against each
+    if v_t == 0.0:
+        v_t = v_n
+    alpha_ref, f_ref = v_n * t_ref, m * v_n / t_ref
+    scale = np.array([alpha_ref, v_n, f_ref, t_ref, alpha_ref, v_n, v_t, v_t / radius, m * v_t / t_ref])
     y = np.array([0.0, -p[C.P_VZ0], p[C.P_VX0], p[C.P_W0], 0.0])
     mode = np.zeros(N_MODE)
     mode[M_LOADING] = 1.0
     k = np.zeros((STAGES, N_Y))
-    y_new, stage, aux, aux_new = np.zeros(N_Y), np.zeros(N_Y), np.zeros(N_AUX), np.zeros(N_AUX)
+    y_new, stage, dy, aux, aux_new = np.zeros(N_Y), np.zeros(N_Y), np.zeros(N_Y), np.zeros(N_AUX), np.zeros(N_AUX)
     g_start, g_end, g = np.zeros(N_EVENTS), np.zeros(N_EVENTS), np.zeros(N_EVENTS)
     onset_mode(p, ints, y, mode, k[0], aux, scale)
     evaluate(p, ints, y, mode, k[0], aux)
@@ -274,7 +346,10 @@ def impact(p, ints, tol, t_ref, row_out):
     t, h = 0.0, FIRST_STEP * t_ref
     f_peak, a_peak = aux[A_FN], 0.0
     status = C.STATUS_NO_SEPARATION
-    for _ in range(int(p[C.P_MAXSTEPS])):
+    t_cap = p[C.P_MAXSTEPS] * p[C.P_DT]               # the kernel's time limit: the same slowed contact times
+    for _ in range(STEP_CAP):
+        if t >= t_cap:
+            break
         err = dp_step(p, ints, y, mode, h, k, y_new, stage, aux_new, scale, tol)
         evaluations += STAGES - 1
         if not err <= 1.0:
@@ -284,20 +359,23 @@ def impact(p, ints, tol, t_ref, row_out):
                 break
             continue
         events(p, ints, y_new, mode, aux_new, scale, g_end)
-        first, frac, release = -1, 1.0, 2.0
-        for e in range(N_EVENTS):
+        first, frac, slope, release, release_rise = -1, 1.0, 0.0, 2.0, 0.0
+        for e in range(N_EVENTS):                     # the first event of the step, on its interpolant
             if crosses(e, g_start[e], g_end[e]):
-                at, trials = locate(e, p, ints, y, mode, h, k, y_new, stage, aux_new, scale, g_start[e], g_end[e],
-                                    g, tol)
-                evaluations += trials * (STAGES - 1)
+                at, rise, trials = interpolated_root(e, p, ints, y, y_new, k[0], k[STAGES - 1], mode, h, stage, dy,
+                                                     aux, scale, g, g_start[e], g_end[e])
+                evaluations += trials
                 if e == E_RELEASE:
-                    release = at
+                    release, release_rise = at, rise
                 if first < 0 or at < frac:
-                    first, frac = e, at
+                    first, frac, slope = e, at, rise
         if release <= frac + RELEASE_TIE:             # an event at the release itself (F_n's sign) is none
-            first, frac = E_RELEASE, release
+            first, frac, slope = E_RELEASE, release, release_rise
         step = h
-        if first >= 0:                                # land on the first event of the step
+        if first >= 0:                                # land on it: located on real steps, then the landing step
+            frac, trials = locate(first, p, ints, y, mode, h, k, y_new, stage, aux_new, scale, g_start[first],
+                                  g_end[first], g, tol, frac, slope)
+            evaluations += trials * (STAGES - 1)
             step = frac * h
             err = dp_step(p, ints, y, mode, step, k, y_new, stage, aux_new, scale, tol)
             evaluations += STAGES - 1
@@ -322,7 +400,11 @@ def impact(p, ints, tol, t_ref, row_out):
         elif first == E_STICK:
             mode[M_TANGENTIAL] = STICK
             y[Y_FS] = mode[M_SIGN] * coulomb_cone(p, ints, f_n)
-        if first == E_TURN or first == E_SLIP or first == E_STICK:
+        elif first == E_REVERSAL:                     # Walton-Braun: T* = T at the reversal
+            cone = coulomb_cone(p, ints, f_n)
+            mode[M_TURNING] = -aux_new[A_FT] / cone if cone > 0.0 else 0.0
+            mode[M_DIRECTION] = -mode[M_DIRECTION]
+        if first == E_TURN or first == E_SLIP or first == E_STICK or first == E_REVERSAL:
             evaluate(p, ints, y, mode, k[0], aux)     # the new regime's rates
             evaluations += 1
         else:
@@ -333,8 +415,6 @@ def impact(p, ints, tol, t_ref, row_out):
             evaluate(p, ints, y, mode, k[0], aux)
             events(p, ints, y, mode, aux, scale, g_start)
             evaluations += 1
-        if first >= 0:                                # located to round-off, maybe just short: it has happened
-            g_start[first] = max(g_start[first], 0.0)
         h *= min(GROW, SAFETY * err ** -0.2) if err > 0.0 else GROW
     row_out[C.O_VZ], row_out[C.O_VX], row_out[C.O_W] = -y[Y_RATE], y[Y_VX], y[Y_W]
     row_out[C.O_TC], row_out[C.O_FMAX], row_out[C.O_AMAX] = t, f_peak, a_peak

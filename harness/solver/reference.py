@@ -140,6 +140,25 @@ def run_adaptive(batch, rows, tol):
     return out, time.perf_counter() - start
 
 
+def simulate_adaptive(law, scene, tol):
+    """Results table of one adaptive run at tolerance tol for every impact (harness cost draws these as a curve);
+    steps_per_contact counts force evaluations, dt is the mean accepted step."""
+    frames = []
+    for e_n in scene.e_n:
+        batch, covered = adaptive_batch(law, scene, e_n)
+        if not covered.all():
+            raise ValueError(f"{law.name}: the adaptive integrator does not cover these sub-models")
+        out, wall = run_adaptive(batch, np.arange(len(covered)), tol)
+        frames.append(results_frame(law, scene, batch, out, wall, out[:, C.O_STEPS], adaptive_dt(out),
+                                    [f"adaptive DP5(4) at tol {tol:.0e}"] * len(out)))
+    return pd.concat(frames, ignore_index=True)
+
+
+def adaptive_dt(out):
+    """Mean accepted step of adaptive rows."""
+    return out[:, C.O_TC] / np.maximum(out[:, C.O_ACCEPTED], 1.0)
+
+
 def adaptive_converged(batch, scene, rows, tolerance):
     """The adaptive integrator at tol = tolerance/100 and tol/10: their change bounds the error of the first, so the
     second is taken once it is below `tolerance`; rows still changing go on at tol/10 (down to ADAPTIVE_FLOOR).
@@ -149,15 +168,17 @@ def adaptive_converged(batch, scene, rows, tolerance):
     evaluations = coarse[:, C.O_STEPS].copy()
     out, change, tols = coarse.copy(), np.full(len(rows), np.inf), np.full(len(rows), tol)
     pending = np.arange(len(rows))
-    while len(pending) and tol > ADAPTIVE_FLOOR:
+    while len(pending) and tol / 10.0 >= ADAPTIVE_FLOOR:
         tol /= 10.0
         fine, seconds = run_adaptive(batch, rows[pending], tol)
         wall += seconds
         evaluations[pending] += fine[:, C.O_STEPS]
         diff = _change(fine[:, KEPT], coarse[pending][:, KEPT], scene, batch, rows[pending])
+        failed = fine[:, C.O_STATUS] != C.STATUS_OK
+        settled = failed & (fine[:, C.O_STATUS] == coarse[pending][:, C.O_STATUS])   # e.g. no release, twice
         out[pending], coarse[pending], tols[pending] = fine, fine, tol
-        change[pending] = np.where(np.isnan(diff) | (fine[:, C.O_STATUS] != C.STATUS_OK), np.inf, diff)
-        pending = pending[~(change[pending] < tolerance)]
+        change[pending] = np.where(np.isnan(diff) | failed, np.inf, diff)
+        pending = pending[~((change[pending] < tolerance) | settled)]
     return out, change, tols, evaluations, wall
 
 
@@ -171,10 +192,12 @@ def converged_batch(law, scene, e_n, tolerance=CONVERGED_TOLERANCE, extrapolate=
     if covered is not None and covered.all():
         rows = np.arange(len(covered))
         out, change, tols, evaluations, wall = adaptive_converged(batch, scene, rows, tolerance)
-        dt = out[:, C.O_TC] / np.maximum(out[:, C.O_ACCEPTED], 1.0)
-        messages = [f"converged: adaptive DP5(4) at tol {t:.0e} against {t * 10:.0e}, change {ch:.1e}"
+        dt = adaptive_dt(out)
+        messages = [f"{STATUS_TEXT[int(s)]}: no release within {tc:.3g} s (adaptive DP5(4) at tol {t:.0e})"
+                    if s != C.STATUS_OK else
+                    f"converged: adaptive DP5(4) at tol {t:.0e} against {t * 10:.0e}, change {ch:.1e}"
                     if ch < tolerance else f"not converged at tol {t:.0e} (change {ch:.1e})"
-                    for t, ch in zip(tols, change)]
+                    for t, ch, s, tc in zip(tols, change, out[:, C.O_STATUS], out[:, C.O_TC])]
         return batch, out, evaluations, dt, messages, wall
     batch, out, levels, change, dt, wall = run_converged(law, scene, e_n, tolerance, extrapolate)
     how = ("Richardson on {} and {} graded steps/contact" if uses_extrapolation(law, extrapolate) else
