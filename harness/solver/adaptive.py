@@ -24,13 +24,12 @@ from .tangential_kernels import stiffness
 Y_ALPHA, Y_RATE, Y_VX, Y_W, Y_FS = 0, 1, 2, 3, 4
 N_Y = 5
 M_LOADING, M_AMAX, M_TANGENTIAL, M_SIGN, M_DENT = 0, 1, 2, 3, 4   # mode: loading?, alpha_max once unloading,
-M_DIRECTION, M_TURNING = 5, 6                                    # stick/slide, its sign, residual overlap; Walton-
-N_MODE = 7                                                       # Braun: slip direction, T* / mu N at its reversal
+N_MODE = 5                                                       # stick/slide, its sign, residual overlap
 STICK, SLIDE = 1.0, 2.0
 A_FN, A_DFN, A_TRIAL, A_FT = 0, 1, 2, 3                  # forces at a state: F_n, dF_n/dt, trial dF_s/dt, F_t
 N_AUX = 4
-E_RELEASE, E_TURN, E_YIELD, E_PEAK, E_SLIP, E_STICK, E_REVERSAL = 0, 1, 2, 3, 4, 5, 6
-N_EVENTS = 7
+E_RELEASE, E_TURN, E_YIELD, E_PEAK, E_SLIP, E_STICK = 0, 1, 2, 3, 4, 5
+N_EVENTS = 6
 INACTIVE = -math.inf
 SUPPORTED_NORMAL = (C.NORMAL_LINEAR, C.NORMAL_HERTZ, C.NORMAL_WALTON_BRAUN, C.NORMAL_THORNTON, C.NORMAL_STRONGE)
 SUPPORTED_TANGENTIAL = (C.TANGENTIAL_NONE, C.TANGENTIAL_LINEAR, C.TANGENTIAL_MINDLIN_INCREMENTAL,
@@ -61,7 +60,10 @@ ONSET_PROBE = 1e-9          # overlap, in alpha_ref, at which the first touch's 
 
 def supports(ints, params):
     """Rows this integrator covers: the paper scheme with the normal laws and tangential springs it models, without
-    a tangential dashpot or an engine's slip form (the rest stays on the graded Richardson ladder)."""
+    a tangential dashpot or an engine's slip form (the rest stays on the graded Richardson ladder). Walton-Braun's
+    spring is not among them: its stiffness k_t0 x^(1/3) rides just under a rising mu N at x ~ (mu N'/k_t0 V_s)^3,
+    a relaxation so stiff at grazing incidence (rate ~ x^(-2/3)) that explicit steps take 10^5-10^8 evaluations,
+    and its cube root at x = 0 defeats Newton in an implicit (Radau IIA) step."""
     return (np.isin(ints[:, C.I_NORMAL], SUPPORTED_NORMAL) & np.isin(ints[:, C.I_TANGENTIAL], SUPPORTED_TANGENTIAL)
             & (ints[:, C.I_INTEGRATOR] == C.INTEGRATOR_PAPER) & (params[:, C.P_TDAMP] == 0.0)
             & (params[:, C.P_SLIP_R1] == 0.0) & (params[:, C.P_BIG_R] == 0.0))
@@ -103,18 +105,6 @@ def coulomb_cone(p, ints, f_n):
 
 
 @njit(cache=True)
-def walton_braun_factor(t, cone, turning, direction):
-    """Walton & Braun's k_t/k_t0 = x^(1/3), x = (mu N - d T)/(mu N - d T*) the distance to full mobilisation in the
-    slip direction d, T* = turning mu N (scaled with the normal force since the last reversal); 0 at and beyond
-    full mobilisation (MODELS 3)."""
-    span = cone * (1.0 - direction * turning)
-    if span <= 0.0:
-        return 0.0
-    x = (cone - direction * t) / span
-    return x ** (1.0 / 3.0) if x > 0.0 else 0.0
-
-
-@njit(cache=True)
 def evaluate(p, ints, y, mode, dy, aux):
     """dy/dt at y in `mode`, and the forces the events read (aux: F_n, dF_n/dt, trial spring rate, F_t)."""
     m, inertia, radius = p[C.P_MASS], p[C.P_INERTIA], p[C.P_RADIUS]
@@ -140,10 +130,7 @@ def evaluate(p, ints, y, mode, dy, aux):
     lever = radius - p[C.P_LEVER] * alpha
     slide = mode[M_TANGENTIAL] == SLIDE
     f_t = mode[M_SIGN] * coulomb_cone(p, ints, f_n) if slide else y[Y_FS]
-    k_t = stiffness(code, p[C.P_T1], a)
-    if code == C.TANGENTIAL_WALTON_BRAUN:
-        k_t *= walton_braun_factor(-f_t, coulomb_cone(p, ints, f_n), mode[M_TURNING], mode[M_DIRECTION])
-    trial = -k_t * (y[Y_VX] - lever * y[Y_W])
+    trial = -stiffness(code, p[C.P_T1], a) * (y[Y_VX] - lever * y[Y_W])
     shrinking = rate < 0.0 and code == C.TANGENTIAL_MINDLIN_RESCALE
     if (shrinking or code == C.TANGENTIAL_MINDLIN_TOTAL) and f_t != 0.0:
         trial += f_t * log_slope * rate               # F_s a'/a
@@ -173,10 +160,6 @@ def events(p, ints, y, mode, aux, scale, g):
     g[E_SLIP] = (abs(y[Y_FS]) - cone) / f_ref if mode[M_TANGENTIAL] == STICK else INACTIVE
     cone_rate = p[C.P_MU] * (-aux[A_DFN] if f_n < 0.0 and ints[C.I_END] == C.END_ALPHA else aux[A_DFN])
     g[E_STICK] = (cone_rate - mode[M_SIGN] * aux[A_TRIAL]) * t_ref / f_ref if mode[M_TANGENTIAL] == SLIDE else INACTIVE
-    g[E_REVERSAL] = INACTIVE
-    if mode[M_DIRECTION] != 0.0 and mode[M_TANGENTIAL] != 0.0:    # Walton-Braun: the slip turns back
-        lever = p[C.P_RADIUS] - p[C.P_LEVER] * alpha
-        g[E_REVERSAL] = -mode[M_DIRECTION] * (y[Y_VX] - lever * y[Y_W]) / scale[1]
 
 
 @njit(cache=True)
@@ -308,9 +291,6 @@ def onset_mode(p, ints, y, mode, dy, aux, scale):
         mode[M_TANGENTIAL] = 0.0
         return
     mode[M_TANGENTIAL] = STICK
-    if ints[C.I_TANGENTIAL] == C.TANGENTIAL_WALTON_BRAUN:
-        slip = y[Y_VX] - (p[C.P_RADIUS] - p[C.P_LEVER] * y[Y_ALPHA]) * y[Y_W]
-        mode[M_DIRECTION] = 1.0 if slip > 0.0 else -1.0 if slip < 0.0 else 0.0
     evaluate(p, ints, y, mode, dy, aux)
     if p[C.P_MU] * abs(aux[A_FN]) > 0.0:
         return
@@ -400,11 +380,7 @@ def impact(p, ints, tol, t_ref, row_out):
         elif first == E_STICK:
             mode[M_TANGENTIAL] = STICK
             y[Y_FS] = mode[M_SIGN] * coulomb_cone(p, ints, f_n)
-        elif first == E_REVERSAL:                     # Walton-Braun: T* = T at the reversal
-            cone = coulomb_cone(p, ints, f_n)
-            mode[M_TURNING] = -aux_new[A_FT] / cone if cone > 0.0 else 0.0
-            mode[M_DIRECTION] = -mode[M_DIRECTION]
-        if first == E_TURN or first == E_SLIP or first == E_STICK or first == E_REVERSAL:
+        if first == E_TURN or first == E_SLIP or first == E_STICK:
             evaluate(p, ints, y, mode, k[0], aux)     # the new regime's rates
             evaluations += 1
         else:
