@@ -5,7 +5,6 @@ dialect, harness.cost) is <= 1e-4; the wall time of that run is its cost (engine
 
     .venv/bin/python benchmarks/bench_accuracy_cost.py
 """
-import tempfile
 import time
 
 import numpy as np

@@ -1,6 +1,8 @@
-"""Test configuration: make tests/oracles.py importable as `oracles`."""
+"""Test configuration: make tests/oracles.py importable as `oracles`; shared helpers and fixtures."""
 import sys
 from pathlib import Path
+
+import pytest
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
@@ -12,3 +14,27 @@ def fake_executable(directory, body, name="fake-engine"):
     path.write_text("#!/bin/sh\n" + body + "\n")
     path.chmod(path.stat().st_mode | stat.S_IEXEC)
     return str(path)
+
+
+@pytest.fixture
+def count_kernel_steps(monkeypatch):
+    """A function (law, scene, **simulate options) -> (results table, steps the reference kernel took), each step
+    one force evaluation: cost counted, not timed."""
+    from harness.solver import codes as C
+    from harness.solver import reference
+    kernel = reference.run_kernel
+
+    def run(law, scene, **options):
+        counted = []
+
+        def counting(batch, history_points=0, rows=None):
+            out, history, wall = kernel(batch, history_points, rows)
+            counted.append(out[:, C.O_STEPS].sum())
+            return out, history, wall
+        monkeypatch.setattr(reference, "run_kernel", counting)
+        try:
+            frame = reference.simulate(law, scene, **options)[0]
+        finally:
+            monkeypatch.setattr(reference, "run_kernel", kernel)
+        return frame, float(sum(counted))
+    return run

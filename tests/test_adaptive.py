@@ -8,7 +8,6 @@ import oracles
 from harness.laws import compose
 from harness.scene import Scene
 from harness.solver import codes as C
-from harness.solver import reference
 from harness.solver.reference import adaptive_batch, run_adaptive, simulate
 
 ADAPTIVE_LAWS = ["linear-spring-dashpot", "hertz-mindlin", "hertz-kuwabara-kono", "stronge", "thornton",
@@ -115,27 +114,16 @@ def test_error_is_proportional_to_the_tolerance():
     assert evaluations[1] < 2.5 * evaluations[0] and evaluations[2] < 2.5 * evaluations[1], evaluations
 
 
-def test_adaptive_costs_a_fraction_of_brute_force_refinement():
+def test_adaptive_costs_a_fraction_of_brute_force_refinement(count_kernel_steps):
     """The converged mode on a 3 e_n x 12 angle sweep, with the same stopping rule as plain doubling of uniform
     steps (successive results within 1e-6): the adaptive integrator's force evaluations, both tolerances, are at
     most a fifth of brute force's steps (each one force evaluation); counted, not timed (benchmarks/
     bench_converged.py times both, and the graded Richardson ladder)."""
     law = compose("hertz-mindlin")
-    counted = []
-    kernel = reference.run_kernel
-
-    def counting(batch, history_points=0, rows=None):
-        out, history, wall = kernel(batch, history_points, rows)
-        counted.append(out[:, C.O_STEPS].sum())
-        return out, history, wall
-    try:
-        reference.run_kernel = counting
-        brute = simulate(law, SWEEP, converged=True, extrapolate=False)[0]
-    finally:
-        reference.run_kernel = kernel
+    brute, brute_steps = count_kernel_steps(law, SWEEP, converged=True, extrapolate=False)
     adaptive = simulate(law, SWEEP, converged=True)[0]
     assert brute.message.str.contains("steps/contact agree").all() and adaptive.message.str.contains("adaptive").all()
-    assert adaptive.steps_per_contact.sum() * 5 <= sum(counted), (adaptive.steps_per_contact.sum(), sum(counted))
+    assert adaptive.steps_per_contact.sum() * 5 <= brute_steps, (adaptive.steps_per_contact.sum(), brute_steps)
 
 
 def test_walton_braun_tangential_spring_stays_on_the_ladder():

@@ -220,29 +220,15 @@ def test_converged_mode_reaches_1e6_on_hard_rows(name):
     assert conv.steps_per_contact.max() <= 10 ** 4
 
 
-def test_converged_mode_costs_a_fraction_of_brute_force_refinement():
+def test_graded_ladder_costs_a_fraction_of_brute_force_refinement(count_kernel_steps):
     """The same stopping rule (two successive values within 1e-6, twice) on plain doubling and on the graded,
-    extrapolated ladder: the ladder takes at most a quarter of the impact-steps (counted, not timed; the wall-time
-    ratio is benchmarks/bench_converged.py's)."""
-    from harness.solver import reference
+    extrapolated ladder (the converged mode of the rows the adaptive integrator does not cover): the ladder takes
+    at most a quarter of the impact-steps (counted, not timed; the wall-time ratio is benchmarks/
+    bench_converged.py's)."""
     scene = Scene(e_n=(0.9, 0.5, 0.1), angles_deg=tuple(np.arange(1.0, 90.0, 8.0)))
     law = compose("hertz-mindlin")
-    counted = []
-    kernel = reference.run_kernel
-
-    def counting(batch, history_points=0, rows=None):
-        out, history, wall = kernel(batch, history_points, rows)
-        counted.append(out[:, C.O_STEPS].sum())
-        return out, history, wall
-    steps = {}
-    try:
-        reference.run_kernel = counting
-        for extrapolate in (False, True):
-            counted.clear()
-            simulate(law, scene, converged=True, extrapolate=extrapolate)
-            steps[extrapolate] = sum(counted)
-    finally:
-        reference.run_kernel = kernel
+    steps = {extrapolate: count_kernel_steps(law, scene, converged=True, extrapolate=extrapolate)[1]
+             for extrapolate in (False, True)}
     assert steps[True] * 4 <= steps[False], steps
 
 
