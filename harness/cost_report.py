@@ -71,8 +71,8 @@ def cost_section(cost, model):
          cost_figure(cost, "net_wall_s", "wall time [s]", ("max",))),
         (f"{model}: error of each metric against wall time (start-up excluded)",
          cost_figure(cost, "net_wall_s", "wall time [s]", METRICS)),
-        (f"{model}: error of each metric against steps per contact",
-         cost_figure(cost, "n", "steps (adaptive: force evaluations) per contact", METRICS)),
+        (f"{model}: error of each metric against steps per contact (the adaptive curve: force evaluations)",
+         cost_figure(cost, "n", "steps or evaluations/contact", METRICS)),
     ]
     refused = cost[cost.status == "refused"].drop_duplicates(["engine", "dialect", "rung"])
     return {"figures": figures, "recommendations": records(recommendations(cost)),
