@@ -63,7 +63,7 @@ def supports(ints, params):
     a tangential dashpot or an engine's slip form (the rest stays on the graded Richardson ladder). Walton-Braun's
     spring is not among them: its stiffness k_t0 x^(1/3) rides just under a rising mu N at x ~ (mu N'/k_t0 V_s)^3,
     a relaxation so stiff at grazing incidence (rate ~ x^(-2/3)) that explicit steps take 10^5-10^8 evaluations,
-    and its cube root at x = 0 defeats Newton in an implicit (Radau IIA) step."""
+    and its cube root at x = 0 defeats Newton in an implicit (Radau IIA) step (README, Design notes)."""
     return (np.isin(ints[:, C.I_NORMAL], SUPPORTED_NORMAL) & np.isin(ints[:, C.I_TANGENTIAL], SUPPORTED_TANGENTIAL)
             & (ints[:, C.I_INTEGRATOR] == C.INTEGRATOR_PAPER) & (params[:, C.P_TDAMP] == 0.0)
             & (params[:, C.P_SLIP_R1] == 0.0) & (params[:, C.P_BIG_R] == 0.0))
