@@ -117,7 +117,8 @@ def results_frame(law, scene, batch, out, wall, steps, dt, messages):
 
 
 def uses_extrapolation(law, extrapolate=None):
-    """The graded, extrapolated ladder for the paper scheme; plain doubling for the engines' first-order schemes."""
+    """The graded, extrapolated ladder for the paper scheme (where the adaptive integrator does not cover a row, or
+    when asked for: extrapolate=True); plain doubling for the engines' first-order schemes (or extrapolate=False)."""
     return law.integrator == "paper" if extrapolate is None else extrapolate
 
 
@@ -182,6 +183,16 @@ def adaptive_converged(batch, scene, rows, tolerance):
     return out, change, tols, evaluations, wall
 
 
+def adaptive_message(row, tol, change, tolerance):
+    """What the converged mode says of one adaptive row."""
+    if row[C.O_STATUS] != C.STATUS_OK:
+        status = STATUS_TEXT[int(row[C.O_STATUS])]
+        return f"{status}: no release within {row[C.O_TC]:.3g} s (adaptive DP5(4) at tol {tol:.0e})"
+    if change < tolerance:
+        return f"converged: adaptive DP5(4) at tol {tol:.0e} against {tol * 10:.0e}, change {change:.1e}"
+    return f"not converged at tol {tol:.0e} (change {change:.1e})"
+
+
 def converged_batch(law, scene, e_n, tolerance=CONVERGED_TOLERANCE, extrapolate=None):
     """Converged results of every impact at target e_n: the adaptive integrator on the rows it covers (the paper
     scheme's laws), the ladder (run_converged) on the others; returns (batch, out, steps per contact, dt, messages,
@@ -193,11 +204,7 @@ def converged_batch(law, scene, e_n, tolerance=CONVERGED_TOLERANCE, extrapolate=
         rows = np.arange(len(covered))
         out, change, tols, evaluations, wall = adaptive_converged(batch, scene, rows, tolerance)
         dt = adaptive_dt(out)
-        messages = [f"{STATUS_TEXT[int(s)]}: no release within {tc:.3g} s (adaptive DP5(4) at tol {t:.0e})"
-                    if s != C.STATUS_OK else
-                    f"converged: adaptive DP5(4) at tol {t:.0e} against {t * 10:.0e}, change {ch:.1e}"
-                    if ch < tolerance else f"not converged at tol {t:.0e} (change {ch:.1e})"
-                    for t, ch, s, tc in zip(tols, change, out[:, C.O_STATUS], out[:, C.O_TC])]
+        messages = [adaptive_message(row, tol, ch, tolerance) for row, tol, ch in zip(out, tols, change)]
         return batch, out, evaluations, dt, messages, wall
     batch, out, levels, change, dt, wall = run_converged(law, scene, e_n, tolerance, extrapolate)
     how = ("Richardson on {} and {} graded steps/contact" if uses_extrapolation(law, extrapolate) else
