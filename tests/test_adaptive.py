@@ -3,6 +3,8 @@
 and its cost."""
 import numpy as np
 import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
 import oracles
 from harness.laws import compose
@@ -142,3 +144,30 @@ def test_a_row_that_never_separates_is_not_called_converged():
     scene = Scene(e_n=(0.1,), angles_deg=(0.0,), speed=1e-4, gravity=9.81)
     row = simulate(compose("hertz-mindlin"), scene, converged=True)[0].iloc[0]
     assert row.status == "no-separation" and row.message.startswith("no-separation: no release"), row.message
+
+
+@settings(max_examples=100, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.sampled_from(ADAPTIVE_LAWS), st.floats(0.05, 0.95), st.one_of(st.just(0.0), st.floats(1e-6, 89.5)),
+       st.floats(0.05, 1.5))
+def test_two_independent_converged_methods_agree_anywhere(name, e_n, angle, mu):
+    """Random law, e_n, angle and friction: the adaptive integrator and the graded Richardson ladder (each claims
+    1e-6) agree within 2e-6 on e_n, e_t and Omega*, and both end with a release."""
+    scene = Scene(e_n=(e_n,), angles_deg=(angle,), mu=mu)
+    law = compose(name)
+    adaptive = simulate(law, scene, converged=True)[0].iloc[0]
+    ladder = simulate(law, scene, converged=True, extrapolate=True)[0].iloc[0]
+    assert adaptive.status == "ok" and ladder.status == "ok", (adaptive.message, ladder.message)
+    for col in ("e_n", "e_t", "omega_star"):
+        if not np.isnan(ladder[col]):
+            assert abs(adaptive[col] - ladder[col]) < 2e-6, (col, adaptive[col], ladder[col], adaptive.message)
+
+
+def test_a_stick_that_lasts_to_the_release_falls_back_to_the_ladder():
+    """A tangential speed 1e-49 of the normal one (Stronge, mu 1): the spring sticks until the force is ~1e-27 of
+    its peak, where the adaptive step underflows; that row is taken from the ladder and says so, and its e_t is
+    the same linear-response value as at a tangential speed 1e-22 of the normal one."""
+    scene = Scene(e_n=(0.5,), angles_deg=(1.1080192333773765e-47, 1e-20), mu=1.0)
+    frame = simulate(compose("stronge"), scene, converged=True)[0]
+    assert frame.message[0].endswith("(the adaptive step underflowed)") and frame.status[0] == "ok"
+    assert frame.message[1].startswith("converged: adaptive")
+    assert frame.e_t[0] == pytest.approx(frame.e_t[1], abs=1e-6)

@@ -195,17 +195,30 @@ def adaptive_message(row, tol, change, tolerance):
 
 def converged_batch(law, scene, e_n, tolerance=CONVERGED_TOLERANCE, extrapolate=None):
     """Converged results of every impact at target e_n: the adaptive integrator on the rows it covers (the paper
-    scheme's laws), the ladder (run_converged) on the others; returns (batch, out, steps per contact, dt, messages,
-    wall seconds). Steps per contact count force evaluations for adaptive rows (a plain step costs one)."""
+    scheme's laws), the ladder (run_converged) on the others and on rows whose adaptive step underflowed;
+    returns (batch, out, steps per contact, dt, messages, wall seconds). Steps per contact count force evaluations
+    for adaptive rows (a plain step costs one)."""
     covered = None
     if uses_extrapolation(law, extrapolate) and extrapolate is None:
         batch, covered = adaptive_batch(law, scene, e_n)
-    if covered is not None and covered.all():
-        rows = np.arange(len(covered))
-        out, change, tols, evaluations, wall = adaptive_converged(batch, scene, rows, tolerance)
-        dt = adaptive_dt(out)
-        messages = [adaptive_message(row, tol, ch, tolerance) for row, tol, ch in zip(out, tols, change)]
-        return batch, out, evaluations, dt, messages, wall
+    if covered is None or not covered.all():
+        return ladder_batch(law, scene, e_n, tolerance, extrapolate)
+    rows = np.arange(len(covered))
+    out, change, tols, evaluations, wall = adaptive_converged(batch, scene, rows, tolerance)
+    dt = adaptive_dt(out)
+    messages = [adaptive_message(row, tol, ch, tolerance) for row, tol, ch in zip(out, tols, change)]
+    stuck = out[:, C.O_STATUS] == C.STATUS_NONFINITE
+    if stuck.any():             # e.g. a stick under a tangential speed 1e-20 of the normal one, up to the release
+        _, ladder_out, levels, ladder_dt, ladder_messages, seconds = ladder_batch(law, scene, e_n, tolerance, True)
+        out[stuck], evaluations[stuck], dt[stuck] = ladder_out[stuck], levels[stuck], ladder_dt[stuck]
+        for i in np.flatnonzero(stuck):
+            messages[i] = f"{ladder_messages[i]} (the adaptive step underflowed)"
+        wall += seconds
+    return batch, out, evaluations, dt, messages, wall
+
+
+def ladder_batch(law, scene, e_n, tolerance, extrapolate):
+    """run_converged's results with their messages; (batch, out, steps per contact, dt, messages, wall)."""
     batch, out, levels, change, dt, wall = run_converged(law, scene, e_n, tolerance, extrapolate)
     how = ("Richardson on {} and {} graded steps/contact" if uses_extrapolation(law, extrapolate) else
            "{} and {} steps/contact agree")
