@@ -17,7 +17,7 @@ import numpy as np
 from numba import njit, prange
 
 from . import codes as C
-from .kernel import damping_power, loading_kink
+from .kernel import damping_power, illinois, loading_kink
 from .normal_kernels import normal_elastic, residual_overlap
 from .tangential_kernels import stiffness
 
@@ -196,19 +196,6 @@ def hermite(y, y_end, f_start, f_end, h, theta, out):
 
 
 @njit(cache=True)
-def illinois(lo, hi, g_lo, g_hi, side, mid, value):
-    """One Illinois false-position update of the bracket [lo, hi] around a rise of the event function through 0:
-    the new point replaces the end on its side; the other end's value is halved when kept twice in a row."""
-    if value < 0.0:
-        if side == 1:
-            g_hi *= 0.5
-        return mid, hi, value, g_hi, 1
-    if side == -1:
-        g_lo *= 0.5
-    return lo, mid, g_lo, value, -1
-
-
-@njit(cache=True)
 def interpolated_root(kind, p, ints, y, y_end, f_start, f_end, mode, h, state, dy, aux, scale, g, g_start, g_end):
     """Step fraction of event `kind` on the step's Hermite interpolant (one force evaluation per trial): a cheap,
     O(h^4) first estimate for `locate`; returns (fraction, slope of the event function there, evaluations)."""
@@ -224,7 +211,7 @@ def interpolated_root(kind, p, ints, y, y_end, f_start, f_end, mode, h, state, d
         trials += 1
         if abs(g[kind]) <= EVENT_ROUND_OFF:
             break
-        lo, hi, g_lo, g_hi, side = illinois(lo, hi, g_lo, g_hi, side, mid, g[kind])
+        lo, hi, g_lo, g_hi, side = illinois(lo, hi, g_lo, g_hi, side, mid, g[kind], g[kind] < 0.0)
     return mid, (g_end - g_start) if hi - lo <= 0.0 else (g_hi - g_lo) / (hi - lo), trials
 
 
@@ -251,7 +238,7 @@ def locate(kind, p, ints, y, mode, h, k, y_new, stage, aux, scale, g_start, g_en
         close = abs(value) <= max(EVENT_ROUND_OFF, EVENT_SHARE * tol)
         if close and value >= 0.0:                    # located, on or just past the event
             return mid, trials
-        lo, hi, g_lo, g_hi, side = illinois(lo, hi, g_lo, g_hi, side, mid, value)
+        lo, hi, g_lo, g_hi, side = illinois(lo, hi, g_lo, g_hi, side, mid, value, value < 0.0)
         if last >= 0.0 and mid != last:
             slope = (value - g_last) / (mid - last)
         last, g_last = mid, value
@@ -274,13 +261,25 @@ def settle_friction(p, ints, y, mode, g, f_n):
     slides. Needed after events at which the rates jump (the yield kink: no crossing to locate); elsewhere a safety
     net. Returns whether the mode changed."""
     if mode[M_TANGENTIAL] == SLIDE and g[E_STICK] > 0.0:
-        mode[M_TANGENTIAL] = STICK
-        y[Y_FS] = mode[M_SIGN] * coulomb_cone(p, ints, f_n)
+        start_stick(p, ints, y, mode, f_n)
         return True
     if mode[M_TANGENTIAL] == STICK and g[E_SLIP] > 0.0:
-        mode[M_TANGENTIAL], mode[M_SIGN] = SLIDE, (1.0 if y[Y_FS] > 0.0 else -1.0)
+        start_slide(y, mode)
         return True
     return False
+
+
+@njit(cache=True, inline="always")
+def start_slide(y, mode):
+    """The spring reaches the Coulomb cone: slide, on the side of the spring force."""
+    mode[M_TANGENTIAL], mode[M_SIGN] = SLIDE, (1.0 if y[Y_FS] > 0.0 else -1.0)
+
+
+@njit(cache=True, inline="always")
+def start_stick(p, ints, y, mode, f_n):
+    """The spring leaves the Coulomb cone: stick, the spring starting on the cone."""
+    mode[M_TANGENTIAL] = STICK
+    y[Y_FS] = mode[M_SIGN] * coulomb_cone(p, ints, f_n)
 
 
 @njit(cache=True)
@@ -376,10 +375,9 @@ def impact(p, ints, tol, t_ref, row_out):
             mode[M_DENT] = residual_overlap(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], radius,
                                             y[Y_ALPHA])
         elif first == E_SLIP:
-            mode[M_TANGENTIAL], mode[M_SIGN] = SLIDE, (1.0 if y[Y_FS] > 0.0 else -1.0)
+            start_slide(y, mode)
         elif first == E_STICK:
-            mode[M_TANGENTIAL] = STICK
-            y[Y_FS] = mode[M_SIGN] * coulomb_cone(p, ints, f_n)
+            start_stick(p, ints, y, mode, f_n)
         if first == E_TURN or first == E_SLIP or first == E_STICK:
             evaluate(p, ints, y, mode, k[0], aux)     # the new regime's rates
             evaluations += 1
