@@ -1,4 +1,5 @@
 """YADE adapter: runs as a Python module without network servers; precision flavours; failure modes."""
+import glob
 import subprocess
 import sys
 
@@ -82,6 +83,16 @@ def test_float128_agrees_with_double_on_a_smooth_case(tmp_path):
     rel = np.abs(double[:, 1:] - quad[:, 1:]) / np.maximum(np.abs(quad[:, 1:]), 1e-9 * scale)
     assert rel.max() < 1e-9
     assert rel.max() > 0.0                                      # the flavours really are different arithmetic
+
+
+@needs_yade
+def test_a_yade_run_leaves_nothing_in_tmp(tmp_path):
+    """YADE makes /tmp/yade-XXXXXX at import whatever TMPDIR says; a run must not leave it behind."""
+    before = set(glob.glob("/tmp/yade-*"))
+    _, _, text = batch_and_script(Scene(e_n=(0.5,), angles_deg=(30.0,)))
+    rows, _, _ = yade.run_script(text, 1, 120, str(tmp_path))
+    assert rows[0, 0]                                            # the run did happen and the sphere left the wall
+    assert set(glob.glob("/tmp/yade-*")) <= before
 
 
 def test_crash_hang_truncation_give_clear_failures(tmp_path, monkeypatch):
