@@ -1,0 +1,118 @@
+"""The paper scheme's contact ODE in its h -> 0 limit, for the adaptive integrator: rates and event functions.
+
+Between changes of regime the impact is a smooth ODE in y = (alpha, alpha_dot, v_x, omega_y, F_s):
+m alpha'' = m g - F_n with F_n = F_el(alpha, alpha_max) + c0 alpha^p alpha_dot (MODELS 2); m v_x' = F_t and
+I omega' = -R F_t; while sticking F_t = F_s with F_s' = -k_t(a) V_s (+ F_s a'/a for Mindlin's eq. 18b rescale while
+a shrinks, always for the total form), V_s = v_x - R omega; while sliding F_t = sigma mu |F_n| (MODELS 3).
+"""
+import math
+
+from numba import njit
+
+from . import codes as C
+from .kernel import damping_power, loading_kink
+from .normal_kernels import normal_elastic
+from .tangential_kernels import stiffness
+
+Y_ALPHA, Y_RATE, Y_VX, Y_W, Y_FS = 0, 1, 2, 3, 4
+N_Y = 5
+M_LOADING, M_AMAX, M_TANGENTIAL, M_SIGN, M_DENT = 0, 1, 2, 3, 4   # mode: loading?, alpha_max once unloading,
+N_MODE = 5                                                       # stick/slide, its sign, residual overlap
+STICK, SLIDE = 1.0, 2.0
+A_FN, A_DFN, A_TRIAL, A_FT = 0, 1, 2, 3                  # forces at a state: F_n, dF_n/dt, trial dF_s/dt, F_t
+N_AUX = 4
+E_RELEASE, E_TURN, E_YIELD, E_PEAK, E_SLIP, E_STICK = 0, 1, 2, 3, 4, 5
+N_EVENTS = 6
+INACTIVE = -math.inf
+
+@njit(cache=True)
+def normal_ode(ints, p, alpha, amax):
+    """F_el, dF_el/dalpha and the contact radius a with d(ln a)/dalpha, on the branch (alpha, alpha_max) selects:
+    a ~ F^(1/3) on Hertz branches (original or unloading radius), a = a_y (F/F_y)^(1/2) on Stronge's plastic line,
+    a = sqrt(R alpha) otherwise (MODELS 2). At the yield overlap itself the slope is the plastic one: the loading
+    curve's kink is an event that lands on or just past it, and the rates must be those that follow."""
+    code, radius = ints[C.I_NORMAL], p[C.P_RADIUS]
+    if alpha <= 0.0:
+        return (p[C.P_N1] * alpha if code == C.NORMAL_LINEAR else 0.0), 0.0, 0.0, 0.0
+    f, a = normal_elastic(code, p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], radius, alpha, amax)
+    if a <= 0.0:                                      # below the residual dent: normal_elastic returns F = delta < 0
+        return f, 1.0, 0.0, 0.0
+    plain = 0.5 / alpha                               # a = sqrt(R alpha)
+    loading = alpha >= amax
+    if code == C.NORMAL_LINEAR:
+        return f, p[C.P_N1], a, plain
+    if code == C.NORMAL_WALTON_BRAUN:
+        return f, (p[C.P_N1] if loading else p[C.P_N2]), a, plain
+    hertz_slope = 2.0 * p[C.P_N1] * a
+    if code == C.NORMAL_THORNTON and loading and alpha >= p[C.P_N3]:
+        return f, math.pi * p[C.P_N2] * radius, a, plain
+    if code == C.NORMAL_STRONGE and loading and alpha >= p[C.P_N2]:
+        slope = 2.0 * p[C.P_N3] / p[C.P_N2]
+        return f, slope, a, slope / (2.0 * f)
+    return f, hertz_slope, a, hertz_slope / (3.0 * f)
+
+
+@njit(cache=True)
+def coulomb_cone(p, ints, f_n):
+    """mu |F_n|; without tension mu max(F_n, 0), so that the cone stays closed beyond the release."""
+    if ints[C.I_END] == C.END_FORCE and f_n < 0.0:
+        return 0.0
+    return p[C.P_MU] * abs(f_n)
+
+
+@njit(cache=True)
+def evaluate(p, ints, y, mode, dy, aux):
+    """dy/dt at y in `mode`, and the forces the events read (aux: F_n, dF_n/dt, trial spring rate, F_t)."""
+    m, inertia, radius = p[C.P_MASS], p[C.P_INERTIA], p[C.P_RADIUS]
+    alpha, rate = y[Y_ALPHA], y[Y_RATE]
+    amax = alpha if mode[M_LOADING] > 0.0 else mode[M_AMAX]
+    f_el, slope, a, log_slope = normal_ode(ints, p, alpha, amax)
+    c0, power = p[C.P_DAMP_C0], p[C.P_DAMP_POWER]
+    c, c_slope = 0.0, 0.0
+    if c0 != 0.0 and power == 0.0:
+        c = c0                                        # a constant dashpot acts from first touch
+    elif c0 != 0.0 and alpha > 0.0:
+        c = c0 * damping_power(alpha, power)
+        c_slope = power * c / alpha
+    f_n = f_el + c * rate
+    accel = p[C.P_GRAVITY] - f_n / m
+    aux[A_FN] = f_n
+    aux[A_DFN] = slope * rate + c_slope * rate * rate + c * accel
+    dy[Y_ALPHA], dy[Y_RATE] = rate, accel
+    dy[Y_VX], dy[Y_W], dy[Y_FS], aux[A_TRIAL], aux[A_FT] = 0.0, 0.0, 0.0, 0.0, 0.0
+    if mode[M_TANGENTIAL] == 0.0:
+        return
+    code = ints[C.I_TANGENTIAL]
+    lever = radius - p[C.P_LEVER] * alpha
+    slide = mode[M_TANGENTIAL] == SLIDE
+    f_t = mode[M_SIGN] * coulomb_cone(p, ints, f_n) if slide else y[Y_FS]
+    trial = -stiffness(code, p[C.P_T1], a) * (y[Y_VX] - lever * y[Y_W])
+    shrinking = rate < 0.0 and code == C.TANGENTIAL_MINDLIN_RESCALE
+    if (shrinking or code == C.TANGENTIAL_MINDLIN_TOTAL) and f_t != 0.0:
+        trial += f_t * log_slope * rate               # F_s a'/a
+    aux[A_TRIAL], aux[A_FT] = trial, f_t
+    dy[Y_VX], dy[Y_W] = f_t / m, -lever * f_t / inertia
+    dy[Y_FS] = 0.0 if slide else trial
+
+
+@njit(cache=True)
+def events(p, ints, y, mode, aux, scale, g):
+    """Event functions at y, each rising through 0 at its event (INACTIVE where it cannot happen in this mode);
+    scale = (alpha_ref, V_ref, F_ref, t_ref) makes them dimensionless."""
+    alpha_ref, v_ref, f_ref, t_ref = scale[0], scale[1], scale[2], scale[3]
+    f_n, alpha = aux[A_FN], y[Y_ALPHA]
+    loading = mode[M_LOADING] > 0.0
+    if ints[C.I_END] == C.END_ALPHA:
+        g[E_RELEASE] = -alpha / alpha_ref
+    elif p[C.P_DAMP_C0] == 0.0:                       # F_el ~ (alpha - dent)^3/2: the overlap crosses, F is flat
+        g[E_RELEASE] = INACTIVE if loading else (mode[M_DENT] - alpha) / alpha_ref
+    else:
+        g[E_RELEASE] = -min(f_n / f_ref, alpha / alpha_ref)
+    g[E_TURN] = -y[Y_RATE] / v_ref if loading else INACTIVE
+    kink = loading_kink(p, ints)
+    g[E_YIELD] = (alpha - kink) / alpha_ref if loading and kink > 0.0 else INACTIVE
+    g[E_PEAK] = -aux[A_DFN] * t_ref / f_ref if p[C.P_DAMP_C0] != 0.0 else INACTIVE
+    cone = coulomb_cone(p, ints, f_n)
+    g[E_SLIP] = (abs(y[Y_FS]) - cone) / f_ref if mode[M_TANGENTIAL] == STICK else INACTIVE
+    cone_rate = p[C.P_MU] * (-aux[A_DFN] if f_n < 0.0 and ints[C.I_END] == C.END_ALPHA else aux[A_DFN])
+    g[E_STICK] = (cone_rate - mode[M_SIGN] * aux[A_TRIAL]) * t_ref / f_ref if mode[M_TANGENTIAL] == SLIDE else INACTIVE
