@@ -139,7 +139,7 @@ def engine_curve(rows, adapter, paper_law, dialect, scene, ladder, truth, option
 
 
 EXTRAPOLATED = "paper, graded Richardson"       # the converged ladder's rungs as a curve of the reference
-ADAPTIVE = "paper, adaptive DP5(4)"             # the adaptive integrator's tolerances as a curve of the reference
+ADAPTIVE = "paper, adaptive"                    # the adaptive integrator's tolerances as a curve of the reference
 ADAPTIVE_RUNGS = (1e-4, 1e-5, 1e-6, 1e-7, 1e-8)  # above the truth's own uncertainty (2^16 steps: ~1e-9)
 
 

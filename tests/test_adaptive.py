@@ -128,16 +128,6 @@ def test_adaptive_costs_a_fraction_of_brute_force_refinement(count_kernel_steps)
     assert adaptive.steps_per_contact.sum() * 5 <= brute_steps, (adaptive.steps_per_contact.sum(), brute_steps)
 
 
-def test_walton_braun_tangential_spring_stays_on_the_ladder():
-    """Walton-Braun's tangential stiffness ~ x^(1/3) is stiff at full mobilisation: those rows keep the ladder, and
-    the same law with a linear tangential spring takes the adaptive integrator."""
-    scene = Scene(e_n=(0.5,), angles_deg=(30.0,))
-    assert simulate(compose("walton-braun"), scene, converged=True)[0].message.iloc[0].startswith(
-        "converged: Richardson")
-    assert simulate(compose("walton-braun", {"tangential": "linear:2/7"}), scene, converged=True)[0].message.iloc[
-        0].startswith("converged: adaptive")
-
-
 def test_a_row_that_never_separates_is_not_called_converged():
     """A sphere resting on the wall under gravity (speed 1e-4 m/s, g = 9.81) never leaves within the step cap: its
     status says so and its message does not claim convergence."""

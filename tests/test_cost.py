@@ -103,16 +103,31 @@ def test_adaptive_curve_is_far_cheaper_than_the_plain_curve(reference_cost):
     assert affordable.err_max.min() * 100 < plain.err_max, (affordable.err_max.min(), plain.err_max)
 
 
-def test_walton_braun_keeps_the_graded_richardson_curve():
-    """Walton-Braun's tangential spring stays on the graded Richardson ladder: that curve is drawn instead, its
-    e_n at order > 2.5 (the normal law is smooth), and at 500 steps per contact 5x closer than the plain scheme."""
+def test_a_tangential_dashpot_keeps_the_graded_richardson_curve():
+    """A tangential dashpot is not in the adaptive integrator: the graded Richardson ladder's curve is drawn instead,
+    its e_n at order > 2.5 (the normal law is smooth), and at 500 steps per contact 5x closer than the plain
+    scheme."""
     scene = Scene(e_n=(0.9, 0.4), angles_deg=(0.0, 30.0, 60.0))
-    table, _, _ = cost_table(compose("walton-braun"), scene, {}, ladder=(20, 50, 100, 200, 500))
+    law = compose("linear-spring-dashpot", {"tangential-damping": "0.5"})
+    table, _, _ = cost_table(law, scene, {}, ladder=(20, 50, 100, 200, 500))
     assert set(table.dialect) == {"paper", EXTRAPOLATED}
     orders = convergence_orders(table).set_index(["engine", "dialect"]).loc[("reference", EXTRAPOLATED)]
     assert orders["e_n"] > 2.5, orders
     at_500 = table[table.rung == "500"].groupby("dialect").err_max.max()
     assert at_500[EXTRAPOLATED] * 5 < at_500["paper"], at_500
+
+
+def test_walton_braun_draws_the_adaptive_curve():
+    """Walton-Braun's spring takes the implicit adaptive stepper: that curve is drawn, and within 5x the
+    evaluations of the plain curve's 500 steps per contact it is 30x closer to the truth."""
+    scene = Scene(e_n=(0.9, 0.4), angles_deg=(0.0, 30.0, 60.0))
+    table, _, _ = cost_table(compose("walton-braun"), scene, {}, ladder=(20, 50, 100, 200, 500))
+    assert set(table.dialect) == {"paper", ADAPTIVE}
+    curve = table[table.rung != "converged"]
+    plain = curve[(curve.dialect == "paper") & (curve.rung == "500")].err_max.max()
+    adaptive = curve[curve.dialect == ADAPTIVE]
+    affordable = adaptive[adaptive.steps_per_contact <= 5 * 500]
+    assert affordable.err_max.min() * 30 < plain, (affordable.err_max.min(), plain)
 
 
 def test_converged_mode_is_a_point_below_1e6(reference_cost):

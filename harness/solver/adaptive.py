@@ -3,9 +3,12 @@
 Every change of regime is an event on which a step lands (Illinois false position on the length of the step): the
 turn (alpha' = 0: unloading from alpha_max), the yield kink of the loading curve, the start of sliding (|F_s|
 reaches mu |F_n|), its end (the trial spring moves inward faster than mu |F_n| shrinks), the peak of a damped F_n
-and the release (alpha = 0, or F_n = 0 without tension). The step size is controlled by the embedded error of a
-Dormand-Prince 5(4) pair (steppers.py), which also refines towards the power-law singularities at first touch and
-release. This is the h -> 0 limit of kernel.step, the second-order paper scheme, integrated at fifth order.
+and the release (alpha = 0, or F_n = 0 without tension); under Walton-Braun's spring also each reversal of the slip
+(T* = T). The step size is controlled by the embedded error of a Dormand-Prince 5(4) pair, or for Walton-Braun's
+spring of the L-stable SDIRK4(3) (steppers.py): that spring rides just under a rising mu N at
+x ~ (mu N'/(k_t0 V_s))^3 and relaxes there at a rate ~ x^(-2/3), far too stiff for explicit steps at grazing
+incidence. The error control also refines towards the power-law singularities at first touch and release. This is
+the h -> 0 limit of kernel.step, the second-order paper scheme, integrated at fifth (fourth) order.
 """
 import math
 
@@ -13,16 +16,16 @@ import numpy as np
 from numba import njit, prange
 
 from . import codes as C
-from .contact_ode import (A_DFN, A_FN, A_TRIAL, E_RELEASE, E_SLIP, E_STICK, E_TURN, M_AMAX, M_DENT, M_LOADING,
-                          M_SIGN, M_TANGENTIAL, N_AUX, N_EVENTS, N_MODE, N_Y, SLIDE, STICK, Y_ALPHA, Y_FS, Y_RATE,
-                          Y_VX, Y_W, coulomb_cone, evaluate, events)
+from .contact_ode import (A_DFN, A_FN, A_TRIAL, E_RELEASE, E_REVERSAL, E_SLIP, E_STICK, E_TURN, M_AMAX, M_DENT,
+                          M_DIR, M_LOADING, M_SIGN, M_STAR, M_TANGENTIAL, N_AUX, N_EVENTS, N_MODE, N_Y, SLIDE, STICK,
+                          Y_ALPHA, Y_FS, Y_RATE, Y_VX, Y_W, cone_rate, coulomb_cone, evaluate, events)
 from .kernel import illinois
 from .normal_kernels import residual_overlap
-from .steppers import STAGES, dp_step, hermite
+from .steppers import J_END, J_START, STAGES, dp_step, hermite, sdirk_step
 
 SUPPORTED_NORMAL = (C.NORMAL_LINEAR, C.NORMAL_HERTZ, C.NORMAL_WALTON_BRAUN, C.NORMAL_THORNTON, C.NORMAL_STRONGE)
 SUPPORTED_TANGENTIAL = (C.TANGENTIAL_NONE, C.TANGENTIAL_LINEAR, C.TANGENTIAL_MINDLIN_INCREMENTAL,
-                        C.TANGENTIAL_MINDLIN_RESCALE, C.TANGENTIAL_MINDLIN_TOTAL)
+                        C.TANGENTIAL_MINDLIN_RESCALE, C.TANGENTIAL_MINDLIN_TOTAL, C.TANGENTIAL_WALTON_BRAUN)
 
 SAFETY, GROW, SHRINK = 0.9, 5.0, 0.2
 LOCATE_ITERATIONS = 60
@@ -31,18 +34,22 @@ EVENT_SHARE = 1e-3          # ... or this share of the tolerance: its misplaceme
 STEP_CAP = 10 ** 7          # trial steps per impact at most (a stick that rings ~1000 times a contact needs 1e5)
 FIRST_STEP = 1e-6           # first trial step, in contact times
 RELEASE_TIE = 1e-9          # step fraction within which an event next to the release counts as the release
+CONE_ROUND_OFF = 1e-12      # relative band of |F_s| around mu |F_n| within which the spring counts as on the cone
+SETTLE_ROUNDS = 3           # changes of regime settled at one step's start at most (a turn, a slip, a reversal)
 ONSET_PROBE = 1e-9          # overlap, in alpha_ref, at which the first touch's stick-or-slide is decided
 
 
 def supports(ints, params):
     """Rows this integrator covers: the paper scheme with the normal laws and tangential springs it models, without
-    a tangential dashpot or an engine's slip form (the rest stays on the graded Richardson ladder). Walton-Braun's
-    spring is not among them: its stiffness k_t0 x^(1/3) rides just under a rising mu N at x ~ (mu N'/k_t0 V_s)^3,
-    a relaxation so stiff at grazing incidence (rate ~ x^(-2/3)) that explicit steps take 10^5-10^8 evaluations,
-    and its cube root at x = 0 defeats Newton in an implicit (Radau IIA) step (README, Design notes)."""
+    a tangential dashpot or an engine's slip form (the rest stays on the graded Richardson ladder)."""
     return (np.isin(ints[:, C.I_NORMAL], SUPPORTED_NORMAL) & np.isin(ints[:, C.I_TANGENTIAL], SUPPORTED_TANGENTIAL)
             & (ints[:, C.I_INTEGRATOR] == C.INTEGRATOR_PAPER) & (params[:, C.P_TDAMP] == 0.0)
             & (params[:, C.P_SLIP_R1] == 0.0) & (params[:, C.P_BIG_R] == 0.0))
+
+
+def stepper_names(ints):
+    """Which stepper each row takes: the implicit one for Walton-Braun's spring, Dormand-Prince otherwise."""
+    return np.where(ints[:, C.I_TANGENTIAL] == C.TANGENTIAL_WALTON_BRAUN, "SDIRK4(3)", "DP5(4)")
 
 
 @njit(cache=True)
@@ -56,7 +63,7 @@ def interpolated_root(kind, p, ints, y, y_end, f_start, f_end, mode, h, state, d
         if not lo < mid < hi:
             mid = 0.5 * (lo + hi)
         hermite(y, y_end, f_start, f_end, h, mid, state)
-        evaluate(p, ints, state, mode, dy, aux)
+        evaluate(p, ints, state, mode, math.nan, dy, aux)
         events(p, ints, state, mode, aux, scale, g)
         trials += 1
         if abs(g[kind]) <= EVENT_ROUND_OFF:
@@ -66,14 +73,25 @@ def interpolated_root(kind, p, ints, y, y_end, f_start, f_end, mode, h, state, d
 
 
 @njit(cache=True)
-def locate(kind, p, ints, y, mode, h, k, y_new, stage, aux, scale, g_start, g_end, g, tol, guess, slope):
+def advance(implicit, p, ints, y, mode, h, k, y_new, stage, aux, scale, tol, work, jac, lu, pivot, spring):
+    """One step of length h with the row's stepper (spring[0]: w at y, spring[1]: at y_new); returns (error norm,
+    force evaluations)."""
+    if implicit:
+        return sdirk_step(p, ints, y, spring[0], mode, h, k, y_new, work, jac, lu, pivot, aux, scale, tol,
+                          spring[1:])
+    return dp_step(p, ints, y, mode, h, k, y_new, stage, aux, scale, tol), STAGES - 1
+
+
+@njit(cache=True)
+def locate(kind, implicit, p, ints, y, mode, h, k, y_new, stage, aux, scale, g_start, g_end, g, tol, guess, slope,
+           work, jac, lu, pivot, spring):
     """Step fraction in (0, 1] at which event `kind` happens inside the step of length h from y: secant steps on the
     event function after real trial steps, from `guess` with `slope` (the interpolant's), kept inside the bracket
     (Illinois false position when a secant leaves it), until the function is within round-off or a share of the
     tolerance of 0 and not below it (the rates after a kink must be the new ones); returns it and the number of
-    trial steps taken."""
+    force evaluations."""
     lo, hi, g_lo, g_hi = 0.0, 1.0, g_start, g_end
-    side, trials = 0, 0
+    side, trials, evaluations = 0, 0, 0
     last, g_last = -1.0, 0.0
     mid = guess
     while trials < LOCATE_ITERATIONS and hi - lo > 1e-13 * hi:
@@ -81,19 +99,21 @@ def locate(kind, p, ints, y, mode, h, k, y_new, stage, aux, scale, g_start, g_en
             mid = (lo * g_hi - hi * g_lo) / (g_hi - g_lo)
             if not lo < mid < hi:
                 mid = 0.5 * (lo + hi)
-        dp_step(p, ints, y, mode, mid * h, k, y_new, stage, aux, scale, tol)
+        _, spent = advance(implicit, p, ints, y, mode, mid * h, k, y_new, stage, aux, scale, tol, work, jac, lu,
+                           pivot, spring)
         events(p, ints, y_new, mode, aux, scale, g)
         trials += 1
+        evaluations += spent
         value = g[kind]
         close = abs(value) <= max(EVENT_ROUND_OFF, EVENT_SHARE * tol)
         if close and value >= 0.0:                    # located, on or just past the event
-            return mid, trials
+            return mid, evaluations
         lo, hi, g_lo, g_hi, side = illinois(lo, hi, g_lo, g_hi, side, mid, value, value < 0.0)
         if last >= 0.0 and mid != last:
             slope = (value - g_last) / (mid - last)
         last, g_last = mid, value
         mid = mid - (2.0 if close else 1.0) * value / slope if slope > 0.0 else -1.0   # just short: step past it
-    return hi, trials
+    return hi, evaluations
 
 
 @njit(cache=True, inline="always")
@@ -106,17 +126,38 @@ def crosses(e, g_start, g_end):
 
 
 @njit(cache=True)
-def settle_friction(p, ints, y, mode, g, f_n):
-    """At a step's start: a slide whose cone outgrows the spring sticks, a stick whose spring is beyond the cone
-    slides. Needed after events at which the rates jump (the yield kink: no crossing to locate); elsewhere a safety
-    net. Returns whether the mode changed."""
-    if mode[M_TANGENTIAL] == SLIDE and g[E_STICK] > 0.0:
-        start_stick(p, ints, y, mode, f_n)
+def settle(p, ints, y, mode, g, aux, spring):
+    """At a step's start: a turn already passed unloads; a slide whose cone outgrows the spring sticks, a stick
+    whose spring is beyond the cone, or on it within round-off and moving out, slides; a
+    Walton-Braun spring whose slip has turned reverses. Needed after events at which the rates jump (the yield
+    kink: no crossing to locate) or that come with another (a Walton-Braun spring riding the cone slips at the
+    turn, where mu N' changes sign: landing on one passes or all but reaches the other); elsewhere a safety net.
+    Returns whether the mode changed."""
+    f_n = aux[A_FN]
+    if g[E_TURN] > 0.0:
+        start_unloading(p, ints, y, mode)
         return True
-    if mode[M_TANGENTIAL] == STICK and g[E_SLIP] > 0.0:
+    if mode[M_TANGENTIAL] == SLIDE and g[E_STICK] > 0.0:
+        start_stick(p, ints, y, mode, f_n, spring)
+        return True
+    cone, held = coulomb_cone(p, ints, f_n), abs(y[Y_FS])    # on the cone within round-off: slides if moving out
+    outward = cone_rate(p, ints, aux) < (1.0 if y[Y_FS] > 0.0 else -1.0) * aux[A_TRIAL]
+    beyond, on = held > cone * (1.0 + CONE_ROUND_OFF), held >= cone * (1.0 - CONE_ROUND_OFF)
+    if mode[M_TANGENTIAL] == STICK and (beyond or on and outward):
         start_slide(y, mode)
         return True
+    if g[E_REVERSAL] > 0.0:
+        reverse(p, ints, y, mode, f_n, spring)
+        return True
     return False
+
+
+@njit(cache=True, inline="always")
+def start_unloading(p, ints, y, mode):
+    """The normal motion turns: unloading from alpha_max, towards its residual dent."""
+    mode[M_LOADING], mode[M_AMAX] = 0.0, y[Y_ALPHA]
+    mode[M_DENT] = residual_overlap(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], p[C.P_RADIUS],
+                                    y[Y_ALPHA])
 
 
 @njit(cache=True, inline="always")
@@ -126,35 +167,85 @@ def start_slide(y, mode):
 
 
 @njit(cache=True, inline="always")
-def start_stick(p, ints, y, mode, f_n):
-    """The spring leaves the Coulomb cone: stick, the spring starting on the cone."""
+def start_stick(p, ints, y, mode, f_n, spring):
+    """The spring leaves the Coulomb cone: stick, the spring starting on the cone (Walton-Braun's at its x there)."""
     mode[M_TANGENTIAL] = STICK
     y[Y_FS] = mode[M_SIGN] * coulomb_cone(p, ints, f_n)
+    share = 1.0 - mode[M_DIR] * mode[M_STAR]
+    spring[0] = np.cbrt((1.0 + mode[M_DIR] * mode[M_SIGN]) / share) if share > 0.0 else 0.0
+
+
+@njit(cache=True, inline="always")
+def reverse(p, ints, y, mode, f_n, spring):
+    """Walton-Braun: the slip turns: T* = T (sigma* = T/(mu N)), the direction flips; x = 1 while sticking."""
+    cone = coulomb_cone(p, ints, f_n)
+    f_t = mode[M_SIGN] * cone if mode[M_TANGENTIAL] == SLIDE else y[Y_FS]
+    mode[M_STAR] = -f_t / cone if cone > 0.0 else 0.0
+    mode[M_DIR] = -mode[M_DIR]
+    spring[0] = 1.0
 
 
 @njit(cache=True)
-def onset_mode(p, ints, y, mode, dy, aux, scale):
+def walton_braun_onset(p, ints, y, mode, dy, aux, scale, spring):
+    """Walton-Braun's spring at first touch: sticking in the direction of V_s from T* = 0. Where mu N starts from 0
+    at a finite rate, x starts at its self-similar value, 1 - x = beta x^(1/3) with beta = k_t0 |V_s|/(mu N'):
+    the h -> 0 limit of the scheme's first steps; from 0 where N' starts from 0 (the spring rides the cone)."""
+    v_s = y[Y_VX] - p[C.P_RADIUS] * y[Y_W]
+    mode[M_TANGENTIAL], mode[M_DIR], mode[M_STAR] = STICK, (1.0 if v_s >= 0.0 else -1.0), 0.0
+    evaluate(p, ints, y, mode, 1.0, dy, aux)
+    w = 1.0
+    if coulomb_cone(p, ints, aux[A_FN]) == 0.0 and v_s != 0.0:
+        probe = y.copy()                              # N' just after first touch (0 at alpha = 0 itself)
+        probe[Y_ALPHA] = ONSET_PROBE * scale[0]
+        evaluate(p, ints, probe, mode, 1.0, dy, aux)
+        rise = p[C.P_MU] * aux[A_DFN]
+        w = 0.0
+        if rise > 0.0:
+            beta = p[C.P_T1] * abs(v_s) / rise
+            w = min(1.0, 1.0 / beta)
+            for _ in range(60):                       # w^3 + beta w - 1 = 0: increasing and convex for w > 0
+                step = (w * w * w + beta * w - 1.0) / (3.0 * w * w + beta)
+                w -= step
+                if abs(step) <= 1e-16 * w:
+                    break
+    spring[0] = w
+
+
+@njit(cache=True)
+def onset_mode(p, ints, y, mode, dy, aux, scale, spring):
     """Stick or slide at first touch: stick while mu |F_n| > 0 there; where both start from 0 (undamped laws, whose
     spring and cone grow alike), slide if the trial spring outgrows the cone, judged at a tiny overlap."""
-    if ints[C.I_TANGENTIAL] == C.TANGENTIAL_NONE:
+    if ints[C.I_TANGENTIAL] == C.TANGENTIAL_NONE or p[C.P_MU] == 0.0:
         mode[M_TANGENTIAL] = 0.0
         return
+    if ints[C.I_TANGENTIAL] == C.TANGENTIAL_WALTON_BRAUN:
+        walton_braun_onset(p, ints, y, mode, dy, aux, scale, spring)
+        return
     mode[M_TANGENTIAL] = STICK
-    evaluate(p, ints, y, mode, dy, aux)
+    evaluate(p, ints, y, mode, math.nan, dy, aux)
     if p[C.P_MU] * abs(aux[A_FN]) > 0.0:
         return
     probe = y.copy()
     probe[Y_ALPHA] = ONSET_PROBE * scale[0]
-    evaluate(p, ints, probe, mode, dy, aux)
+    evaluate(p, ints, probe, mode, math.nan, dy, aux)
     if abs(aux[A_TRIAL]) > p[C.P_MU] * aux[A_DFN]:
         mode[M_TANGENTIAL] = SLIDE
         mode[M_SIGN] = 1.0 if aux[A_TRIAL] > 0.0 else -1.0
 
 
+@njit(cache=True, inline="always")
+def spring_w(ints, mode, spring):
+    """w to evaluate with: the sticking Walton-Braun spring's own, NaN (read from F_s) otherwise."""
+    if ints[C.I_TANGENTIAL] == C.TANGENTIAL_WALTON_BRAUN and mode[M_TANGENTIAL] == STICK:
+        return spring[0]
+    return math.nan
+
+
 @njit(cache=True)
 def impact(p, ints, tol, t_ref, row_out):
     """One impact from first touch to release at tolerance `tol`; fills row_out like kernel.integrate, with O_STEPS
-    the number of force evaluations."""
+    the number of force evaluations. Walton-Braun's spring takes the implicit stepper (stiff where it rides the
+    cone), every other row Dormand-Prince."""
     m, radius = p[C.P_MASS], p[C.P_RADIUS]
     v_n = abs(p[C.P_VZ0])                            # the normalised outcomes divide by the incident normal and
     v_t = abs(p[C.P_VX0]) + radius * abs(p[C.P_W0])  # tangential speeds: errors are measured against each
@@ -168,8 +259,13 @@ def impact(p, ints, tol, t_ref, row_out):
     k = np.zeros((STAGES, N_Y))
     y_new, stage, dy, aux, aux_new = np.zeros(N_Y), np.zeros(N_Y), np.zeros(N_Y), np.zeros(N_AUX), np.zeros(N_AUX)
     g_start, g_end, g = np.zeros(N_EVENTS), np.zeros(N_EVENTS), np.zeros(N_EVENTS)
-    onset_mode(p, ints, y, mode, k[0], aux, scale)
-    evaluate(p, ints, y, mode, k[0], aux)
+    implicit = ints[C.I_TANGENTIAL] == C.TANGENTIAL_WALTON_BRAUN
+    exponent = -0.25 if implicit else -0.2            # 1/(order + 1) of the embedded estimate
+    work, jac = np.zeros((9, N_Y)), np.zeros((3, 3, N_Y, N_Y))      # the implicit stepper's: see sdirk_step
+    lu, pivot = np.zeros((N_Y, N_Y)), np.zeros(N_Y, dtype=np.int64)
+    spring = np.full(2, math.nan)                     # w = x^(1/3) of Walton-Braun's sticking spring: now, step's end
+    onset_mode(p, ints, y, mode, k[0], aux, scale, spring)
+    evaluate(p, ints, y, mode, spring_w(ints, mode, spring), k[0], aux)
     events(p, ints, y, mode, aux, scale, g_start)
     evaluations, accepted = 2, 0
     t, h = 0.0, FIRST_STEP * t_ref
@@ -179,10 +275,11 @@ def impact(p, ints, tol, t_ref, row_out):
     for _ in range(STEP_CAP):
         if t >= t_cap:
             break
-        err = dp_step(p, ints, y, mode, h, k, y_new, stage, aux_new, scale, tol)
-        evaluations += STAGES - 1
+        err, spent = advance(implicit, p, ints, y, mode, h, k, y_new, stage, aux_new, scale, tol, work, jac, lu,
+                             pivot, spring)
+        evaluations += spent
         if not err <= 1.0:
-            h *= max(SHRINK, SAFETY * err ** -0.2) if err < math.inf else SHRINK
+            h *= max(SHRINK, SAFETY * err ** exponent) if err < math.inf else SHRINK
             if h < 1e-15 * t_ref:
                 status = C.STATUS_NONFINITE
                 break
@@ -202,18 +299,21 @@ def impact(p, ints, tol, t_ref, row_out):
             first, frac, slope = E_RELEASE, release, release_rise
         step = h
         if first >= 0:                                # land on it: located on real steps, then the landing step
-            frac, trials = locate(first, p, ints, y, mode, h, k, y_new, stage, aux_new, scale, g_start[first],
-                                  g_end[first], g, tol, frac, slope)
-            evaluations += trials * (STAGES - 1)
+            frac, spent = locate(first, implicit, p, ints, y, mode, h, k, y_new, stage, aux_new, scale,
+                                 g_start[first], g_end[first], g, tol, frac, slope, work, jac, lu, pivot, spring)
+            evaluations += spent
             step = frac * h
-            err = dp_step(p, ints, y, mode, step, k, y_new, stage, aux_new, scale, tol)
-            evaluations += STAGES - 1
+            err, spent = advance(implicit, p, ints, y, mode, step, k, y_new, stage, aux_new, scale, tol, work, jac,
+                                 lu, pivot, spring)
+            evaluations += spent
             if not err <= 1.0:                        # a singular end (alpha^3/2 at release): refine towards it
-                h = step * max(SHRINK, SAFETY * err ** -0.2) if err < math.inf else step * SHRINK
+                h = step * max(SHRINK, SAFETY * err ** exponent) if err < math.inf else step * SHRINK
                 continue
         t += step
         accepted += 1
         y[:] = y_new
+        spring[0] = spring[1]
+        jac[J_START] = jac[J_END]                     # the implicit stepper's Jacobian at the new start
         f_n = aux_new[A_FN]
         f_peak = max(f_peak, f_n)                     # exact at the located turn (undamped) or peak (damped)
         a_peak = max(a_peak, y[Y_ALPHA])
@@ -221,25 +321,29 @@ def impact(p, ints, tol, t_ref, row_out):
             status = C.STATUS_OK
             break
         if first == E_TURN:
-            mode[M_LOADING], mode[M_AMAX] = 0.0, y[Y_ALPHA]
-            mode[M_DENT] = residual_overlap(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], radius,
-                                            y[Y_ALPHA])
+            start_unloading(p, ints, y, mode)
         elif first == E_SLIP:
             start_slide(y, mode)
         elif first == E_STICK:
-            start_stick(p, ints, y, mode, f_n)
-        if first == E_TURN or first == E_SLIP or first == E_STICK:
-            evaluate(p, ints, y, mode, k[0], aux)     # the new regime's rates
+            start_stick(p, ints, y, mode, f_n, spring)
+        elif first == E_REVERSAL:
+            reverse(p, ints, y, mode, f_n, spring)
+        if first == E_TURN or first == E_SLIP or first == E_STICK or first == E_REVERSAL:
+            jac[J_START, 2, 0, 0] = 0.0               # a new regime: a new Jacobian
+            evaluate(p, ints, y, mode, spring_w(ints, mode, spring), k[0], aux)     # the new regime's rates
             evaluations += 1
         else:
             k[0, :] = k[STAGES - 1, :]
             aux[:] = aux_new
         events(p, ints, y, mode, aux, scale, g_start)
-        if settle_friction(p, ints, y, mode, g_start, aux[A_FN]):
-            evaluate(p, ints, y, mode, k[0], aux)
+        for _ in range(SETTLE_ROUNDS):
+            if not settle(p, ints, y, mode, g_start, aux, spring):
+                break
+            jac[J_START, 2, 0, 0] = 0.0
+            evaluate(p, ints, y, mode, spring_w(ints, mode, spring), k[0], aux)
             events(p, ints, y, mode, aux, scale, g_start)
             evaluations += 1
-        h *= min(GROW, SAFETY * err ** -0.2) if err > 0.0 else GROW
+        h *= min(GROW, SAFETY * err ** exponent) if err > 0.0 else GROW
     row_out[C.O_VZ], row_out[C.O_VX], row_out[C.O_W] = -y[Y_RATE], y[Y_VX], y[Y_W]
     row_out[C.O_TC], row_out[C.O_FMAX], row_out[C.O_AMAX] = t, f_peak, a_peak
     row_out[C.O_STEPS], row_out[C.O_STATUS], row_out[C.O_ACCEPTED] = evaluations, status, accepted

@@ -4,9 +4,14 @@ Between changes of regime the impact is a smooth ODE in y = (alpha, alpha_dot, v
 m alpha'' = m g - F_n with F_n = F_el(alpha, alpha_max) + c0 alpha^p alpha_dot (MODELS 2); m v_x' = F_t and
 I omega' = -R F_t; while sticking F_t = F_s with F_s' = -k_t(a) V_s (+ F_s a'/a for Mindlin's eq. 18b rescale while
 a shrinks, always for the total form), V_s = v_x - R omega; while sliding F_t = sigma mu |F_n| (MODELS 3).
+Walton-Braun's spring (MODELS 3): T = -F_s rises in the direction d = sign(V_s) as T' = k_t0 x^(1/3) V_s with
+x = (mu N - d T)/(mu N - d T*), T* = sigma* mu N (T* scales with N) and sigma* set to T/(mu N) at each reversal
+of V_s. Its state is also known by w = x^(1/3): F_s = -d mu N (1 - (1 - d sigma*) w^3) and F_s' = -k_t0 w V_s,
+smooth in w where they are singular in F_s (the implicit step solves for w).
 """
 import math
 
+import numpy as np
 from numba import njit
 
 from . import codes as C
@@ -17,12 +22,13 @@ from .tangential_kernels import stiffness
 Y_ALPHA, Y_RATE, Y_VX, Y_W, Y_FS = 0, 1, 2, 3, 4
 N_Y = 5
 M_LOADING, M_AMAX, M_TANGENTIAL, M_SIGN, M_DENT = 0, 1, 2, 3, 4   # mode: loading?, alpha_max once unloading,
-N_MODE = 5                                                       # stick/slide, its sign, residual overlap
+M_DIR, M_STAR = 5, 6                                             # stick/slide, its sign, residual overlap;
+N_MODE = 7                                                       # Walton-Braun: d and sigma* = T*/(mu N)
 STICK, SLIDE = 1.0, 2.0
 A_FN, A_DFN, A_TRIAL, A_FT = 0, 1, 2, 3                  # forces at a state: F_n, dF_n/dt, trial dF_s/dt, F_t
 N_AUX = 4
-E_RELEASE, E_TURN, E_YIELD, E_PEAK, E_SLIP, E_STICK = 0, 1, 2, 3, 4, 5
-N_EVENTS = 6
+E_RELEASE, E_TURN, E_YIELD, E_PEAK, E_SLIP, E_STICK, E_REVERSAL = 0, 1, 2, 3, 4, 5, 6
+N_EVENTS = 7
 INACTIVE = -math.inf
 
 @njit(cache=True)
@@ -61,8 +67,9 @@ def coulomb_cone(p, ints, f_n):
 
 
 @njit(cache=True)
-def evaluate(p, ints, y, mode, dy, aux):
-    """dy/dt at y in `mode`, and the forces the events read (aux: F_n, dF_n/dt, trial spring rate, F_t)."""
+def evaluate(p, ints, y, mode, w, dy, aux):
+    """dy/dt at y in `mode`, and the forces the events read (aux: F_n, dF_n/dt, trial spring rate, F_t). For
+    Walton-Braun's sticking spring a given w (not NaN) sets y's F_s; otherwise w is read from it."""
     m, inertia, radius = p[C.P_MASS], p[C.P_INERTIA], p[C.P_RADIUS]
     alpha, rate = y[Y_ALPHA], y[Y_RATE]
     amax = alpha if mode[M_LOADING] > 0.0 else mode[M_AMAX]
@@ -85,8 +92,12 @@ def evaluate(p, ints, y, mode, dy, aux):
     code = ints[C.I_TANGENTIAL]
     lever = radius - p[C.P_LEVER] * alpha
     slide = mode[M_TANGENTIAL] == SLIDE
+    v_s = y[Y_VX] - lever * y[Y_W]
+    if code == C.TANGENTIAL_WALTON_BRAUN:
+        trial = walton_braun_rate(p, y, mode, w, coulomb_cone(p, ints, f_n), v_s)
+    else:
+        trial = -stiffness(code, p[C.P_T1], a) * v_s
     f_t = mode[M_SIGN] * coulomb_cone(p, ints, f_n) if slide else y[Y_FS]
-    trial = -stiffness(code, p[C.P_T1], a) * (y[Y_VX] - lever * y[Y_W])
     shrinking = rate < 0.0 and code == C.TANGENTIAL_MINDLIN_RESCALE
     if (shrinking or code == C.TANGENTIAL_MINDLIN_TOTAL) and f_t != 0.0:
         trial += f_t * log_slope * rate               # F_s a'/a
@@ -95,10 +106,43 @@ def evaluate(p, ints, y, mode, dy, aux):
     dy[Y_FS] = 0.0 if slide else trial
 
 
+@njit(cache=True, inline="always")
+def walton_braun_rate(p, y, mode, w, cone, v_s):
+    """Walton-Braun's trial dF_s/dt = -k_t0 w V_s. Sticking: w given sets F_s = -d cone (1 - (1 - d sigma*) w^3),
+    else w = x^(1/3) from F_s. Sliding: x at the cone's edge T = -sigma cone, (1 + d sigma)/(1 - d sigma*): 0 on
+    the loading side, more on the far one."""
+    d = mode[M_DIR]
+    share = 1.0 - d * mode[M_STAR]
+    if mode[M_TANGENTIAL] == SLIDE:
+        x = (1.0 + d * mode[M_SIGN]) / share if share > 0.0 else 0.0
+        return -p[C.P_T1] * np.cbrt(x) * v_s
+    if w == w:
+        y[Y_FS] = -d * cone * (1.0 - share * w * w * w)
+    else:
+        w = walton_braun_w(y, mode, cone)
+    return -p[C.P_T1] * w * v_s
+
+
+@njit(cache=True, inline="always")
+def walton_braun_w(y, mode, cone):
+    """w = x^(1/3) of the sticking spring from F_s: x = (mu N + d F_s)/((1 - d sigma*) mu N); 1 where mu N = 0."""
+    d = mode[M_DIR]
+    share = 1.0 - d * mode[M_STAR]
+    if cone > 0.0 and share > 0.0:
+        return np.cbrt((cone + d * y[Y_FS]) / (share * cone))
+    return 1.0
+
+
+@njit(cache=True, inline="always")
+def cone_rate(p, ints, aux):
+    """d(mu |F_n|)/dt."""
+    return p[C.P_MU] * (-aux[A_DFN] if aux[A_FN] < 0.0 and ints[C.I_END] == C.END_ALPHA else aux[A_DFN])
+
+
 @njit(cache=True)
 def events(p, ints, y, mode, aux, scale, g):
     """Event functions at y, each rising through 0 at its event (INACTIVE where it cannot happen in this mode);
-    scale = (alpha_ref, V_ref, F_ref, t_ref) makes them dimensionless."""
+    scale = (alpha_ref, V_n, F_ref, t_ref, then the error scales, V_t at 6) makes them dimensionless."""
     alpha_ref, v_ref, f_ref, t_ref = scale[0], scale[1], scale[2], scale[3]
     f_n, alpha = aux[A_FN], y[Y_ALPHA]
     loading = mode[M_LOADING] > 0.0
@@ -114,5 +158,8 @@ def events(p, ints, y, mode, aux, scale, g):
     g[E_PEAK] = -aux[A_DFN] * t_ref / f_ref if p[C.P_DAMP_C0] != 0.0 else INACTIVE
     cone = coulomb_cone(p, ints, f_n)
     g[E_SLIP] = (abs(y[Y_FS]) - cone) / f_ref if mode[M_TANGENTIAL] == STICK else INACTIVE
-    cone_rate = p[C.P_MU] * (-aux[A_DFN] if f_n < 0.0 and ints[C.I_END] == C.END_ALPHA else aux[A_DFN])
-    g[E_STICK] = (cone_rate - mode[M_SIGN] * aux[A_TRIAL]) * t_ref / f_ref if mode[M_TANGENTIAL] == SLIDE else INACTIVE
+    v_s = y[Y_VX] - (p[C.P_RADIUS] - p[C.P_LEVER] * alpha) * y[Y_W]
+    reversible = ints[C.I_TANGENTIAL] == C.TANGENTIAL_WALTON_BRAUN and mode[M_TANGENTIAL] != 0.0
+    g[E_REVERSAL] = -mode[M_DIR] * v_s / scale[6] if reversible else INACTIVE
+    inward = cone_rate(p, ints, aux) - mode[M_SIGN] * aux[A_TRIAL]
+    g[E_STICK] = inward * t_ref / f_ref if mode[M_TANGENTIAL] == SLIDE else INACTIVE

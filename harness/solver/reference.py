@@ -9,7 +9,7 @@ from ..kinematics import rebound_quantities
 from ..results import impact_frame
 from ..stability import UnstableTimeStep
 from . import codes as C
-from .adaptive import integrate_adaptive, supports
+from .adaptive import integrate_adaptive, stepper_names, supports
 from .kernel import graded_largest_step, integrate
 from .plan import FixedTimeStep, plan_batch
 
@@ -151,7 +151,7 @@ def simulate_adaptive(law, scene, tol):
             raise ValueError(f"{law.name}: the adaptive integrator does not cover these sub-models")
         out, wall = run_adaptive(batch, np.arange(len(covered)), tol)
         frames.append(results_frame(law, scene, batch, out, wall, out[:, C.O_STEPS], adaptive_dt(out),
-                                    [f"adaptive DP5(4) at tol {tol:.0e}"] * len(out)))
+                                    [f"adaptive {name} at tol {tol:.0e}" for name in stepper_names(batch.ints)]))
     return pd.concat(frames, ignore_index=True)
 
 
@@ -183,13 +183,13 @@ def adaptive_converged(batch, scene, rows, tolerance):
     return out, change, tols, evaluations, wall
 
 
-def adaptive_message(row, tol, change, tolerance):
+def adaptive_message(row, stepper, tol, change, tolerance):
     """What the converged mode says of one adaptive row."""
     if row[C.O_STATUS] != C.STATUS_OK:
         status = STATUS_TEXT[int(row[C.O_STATUS])]
-        return f"{status}: no release within {row[C.O_TC]:.3g} s (adaptive DP5(4) at tol {tol:.0e})"
+        return f"{status}: no release within {row[C.O_TC]:.3g} s (adaptive {stepper} at tol {tol:.0e})"
     if change < tolerance:
-        return f"converged: adaptive DP5(4) at tol {tol:.0e} against {tol * 10:.0e}, change {change:.1e}"
+        return f"converged: adaptive {stepper} at tol {tol:.0e} against {tol * 10:.0e}, change {change:.1e}"
     return f"not converged at tol {tol:.0e} (change {change:.1e})"
 
 
@@ -206,7 +206,8 @@ def converged_batch(law, scene, e_n, tolerance=CONVERGED_TOLERANCE, extrapolate=
     rows = np.arange(len(covered))
     out, change, tols, evaluations, wall = adaptive_converged(batch, scene, rows, tolerance)
     dt = adaptive_dt(out)
-    messages = [adaptive_message(row, tol, ch, tolerance) for row, tol, ch in zip(out, tols, change)]
+    messages = [adaptive_message(row, stepper, tol, ch, tolerance)
+                for row, stepper, tol, ch in zip(out, stepper_names(batch.ints), tols, change)]
     stuck = out[:, C.O_STATUS] == C.STATUS_NONFINITE
     if stuck.any():             # e.g. a stick under a tangential speed 1e-20 of the normal one, up to the release
         _, ladder_out, levels, ladder_dt, ladder_messages, seconds = ladder_batch(law, scene, e_n, tolerance, True)
