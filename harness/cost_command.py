@@ -76,7 +76,8 @@ def print_tables(table, uncertainty, law, scene, ladder, skipped, failures):
           "wall time summed over e_n, engine start-up excluded")
     for curve, per_e in uncertainty.items():
         worst = max(errs["err_max"] for errs in per_e.values())
-        print(f"  converged reference of the {curve} dialect: uncertainty {worst:.1e}"
+        truth = next(iter(per_e.values())).get("truth", "")
+        print(f"  converged reference of the {curve} dialect: {truth}, uncertainty {worst:.1e}"
               + (" (errors below this are not resolved)" if worst > 1e-6 else ""))
     for name, reason in skipped:
         print(f"skipped {name}: {reason}")

@@ -10,7 +10,7 @@ import pytest
 from scipy.optimize import brentq
 
 from harness.cost import (ADAPTIVE, ADAPTIVE_RUNGS, EXTRAPOLATED, TOLERANCES, convergence_orders, cost_table,
-                          per_rung, rayleigh_time, recommendations, relative_errors)
+                          per_rung, rayleigh_time, recommendations, relative_errors, truth_of)
 from harness.engines import ADAPTERS
 from harness.laws import compose
 from harness.scene import Scene
@@ -128,6 +128,20 @@ def test_walton_braun_draws_the_adaptive_curve():
     adaptive = curve[curve.dialect == ADAPTIVE]
     affordable = adaptive[adaptive.steps_per_contact <= 5 * 500]
     assert affordable.err_max.min() * 30 < plain, (affordable.err_max.min(), plain)
+
+
+def test_an_uncertain_paper_truth_is_taken_from_the_adaptive_integrator(reference_cost):
+    """Hertz-Mindlin keeps 2^16 uniform steps as its truth (uncertain to ~1e-9); under Walton-Braun's spring at
+    89 deg those steps are uncertain beyond 1e-7 (order 1.5), so the truth is the adaptive integrator at tol 1e-11,
+    it says so, and it is certain to 1e-8."""
+    assert all(errs["truth"] == "65536 steps/contact" for errs in reference_cost[1]["paper"].values())
+    scene = Scene(e_n=(0.5,), angles_deg=(30.0, 89.0))
+    truth, uncertainty = truth_of(compose("walton-braun"), scene)
+    errs = uncertainty[0.5]
+    assert errs["truth"].startswith("adaptive at tol 1e-11 (65536 steps/contact: "), errs["truth"]
+    assert float(errs["truth"].split(": ")[1].rstrip(")")) > 1e-7
+    assert errs["err_max"] < 1e-8, errs
+    assert truth.message.str.startswith("adaptive SDIRK4(3) at tol 1e-11").all()
 
 
 def test_converged_mode_is_a_point_below_1e6(reference_cost):
