@@ -158,6 +158,6 @@ def test_a_stick_that_lasts_to_the_release_falls_back_to_the_ladder():
     the same linear-response value as at a tangential speed 1e-22 of the normal one."""
     scene = Scene(e_n=(0.5,), angles_deg=(1.1080192333773765e-47, 1e-20), mu=1.0)
     frame = simulate(compose("stronge"), scene, converged=True)[0]
-    assert frame.message[0].endswith("(the adaptive step underflowed)") and frame.status[0] == "ok"
+    assert frame.message[0].endswith("(the adaptive step underflowed or stalled)") and frame.status[0] == "ok"
     assert frame.message[1].startswith("converged: adaptive")
     assert frame.e_t[0] == pytest.approx(frame.e_t[1], abs=1e-6)

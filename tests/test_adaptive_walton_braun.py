@@ -109,3 +109,15 @@ def test_the_kernel_keeps_a_tiny_tangential_load_to_round_off():
     adaptive = simulate(law, scene, converged=True)[0].e_t.iloc[0]
     for k in (16, 19):
         assert abs(deep_ladder(law, scene, k).e_t.iloc[0] - adaptive) < 1e-7, k
+
+
+def test_a_stalled_row_whose_ladder_is_refused_says_both():
+    """Found by a random search: Thornton under this spring, e_n 0.0117, a normal impact with a little spin. At tol
+    1e-9 Newton converges only on steps ~1e-13 of the contact; such a creeping run is stopped (not run to the time
+    limit, ~1 min), and the ladder it falls back to refuses 64 steps per contact there (stability). The row is
+    non-finite, its message names both, and nothing is raised."""
+    scene = Scene(e_n=(0.01171875,), angles_deg=(0.0,), mu=1.0, omega0=0.015625 / 0.005)
+    row = simulate(compose("thornton", {"tangential": "walton-braun:2/7"}), scene, converged=True)[0].iloc[0]
+    assert row.status == "non-finite"
+    assert row.message.startswith("non-finite: the adaptive step underflowed or stalled, and the ladder is refused")
+    assert "stability limit" in row.message

@@ -35,6 +35,7 @@ STEP_CAP = 10 ** 7          # trial steps per impact at most (a stick that rings
 FIRST_STEP = 1e-6           # first trial step, in contact times
 RELEASE_TIE = 1e-9          # step fraction within which an event next to the release counts as the release
 CONE_ROUND_OFF = 1e-12      # relative band of |F_s| around mu |F_n| within which the spring counts as on the cone
+STALL_STEP, STALL_COUNT = 1e-9, 10 ** 4   # that many accepted steps in a row below this share of a contact: stalled
 SETTLE_ROUNDS = 3           # changes of regime settled at one step's start at most (a turn, a slip, a reversal)
 ONSET_PROBE = 1e-9          # overlap, in alpha_ref, at which the first touch's stick-or-slide is decided
 
@@ -267,7 +268,7 @@ def impact(p, ints, tol, t_ref, row_out):
     onset_mode(p, ints, y, mode, k[0], aux, scale, spring)
     evaluate(p, ints, y, mode, spring_w(ints, mode, spring), k[0], aux)
     events(p, ints, y, mode, aux, scale, g_start)
-    evaluations, accepted = 2, 0
+    evaluations, accepted, stalled = 2, 0, 0
     t, h = 0.0, FIRST_STEP * t_ref
     f_peak, a_peak = aux[A_FN], 0.0
     status = C.STATUS_NO_SEPARATION
@@ -311,6 +312,10 @@ def impact(p, ints, tol, t_ref, row_out):
                 continue
         t += step
         accepted += 1
+        stalled = stalled + 1 if step < STALL_STEP * t_ref else 0
+        if stalled > STALL_COUNT:                     # creeping: the step cannot grow (an implicit stage that
+            status = C.STATUS_NONFINITE               # Newton solves only at ~1e-13 of a contact); the converged
+            break                                     # mode takes such a row from the ladder
         y[:] = y_new
         spring[0] = spring[1]
         jac[J_START] = jac[J_END]                     # the implicit stepper's Jacobian at the new start

@@ -210,10 +210,16 @@ def converged_batch(law, scene, e_n, tolerance=CONVERGED_TOLERANCE, extrapolate=
                 for row, stepper, tol, ch in zip(out, stepper_names(batch.ints), tols, change)]
     stuck = out[:, C.O_STATUS] == C.STATUS_NONFINITE
     if stuck.any():             # e.g. a stick under a tangential speed 1e-20 of the normal one, up to the release
-        _, ladder_out, levels, ladder_dt, ladder_messages, seconds = ladder_batch(law, scene, e_n, tolerance, True)
+        try:
+            _, ladder_out, levels, ladder_dt, ladder_messages, seconds = ladder_batch(law, scene, e_n, tolerance,
+                                                                                      True)
+        except UnstableTimeStep as exc:
+            for i in np.flatnonzero(stuck):
+                messages[i] = f"non-finite: the adaptive step underflowed or stalled, and the ladder is refused: {exc}"
+            return batch, out, evaluations, dt, messages, wall
         out[stuck], evaluations[stuck], dt[stuck] = ladder_out[stuck], levels[stuck], ladder_dt[stuck]
         for i in np.flatnonzero(stuck):
-            messages[i] = f"{ladder_messages[i]} (the adaptive step underflowed)"
+            messages[i] = f"{ladder_messages[i]} (the adaptive step underflowed or stalled)"
         wall += seconds
     return batch, out, evaluations, dt, messages, wall
 
