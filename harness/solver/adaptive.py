@@ -18,9 +18,11 @@ from numba import njit, prange
 from . import codes as C
 from .contact_ode import (A_DFN, A_FN, A_TRIAL, E_RELEASE, E_REVERSAL, E_SLIP, E_STICK, E_TURN, M_AMAX, M_DENT,
                           M_DIR, M_LOADING, M_SIGN, M_STAR, M_TANGENTIAL, N_AUX, N_EVENTS, N_MODE, N_Y, SLIDE, STICK,
-                          Y_ALPHA, Y_FS, Y_RATE, Y_VX, Y_W, cone_rate, coulomb_cone, evaluate, events)
+                          Y_ALPHA, Y_FS, Y_RATE, Y_VX, Y_W, cone_rate, coulomb_cone, edge_w, evaluate, events,
+                          slip_velocity)
 from .kernel import illinois
 from .normal_kernels import residual_overlap
+from .tangential_kernels import cubic_root
 from .steppers import J_END, J_START, STAGES, dp_step, hermite, sdirk_step
 
 SUPPORTED_NORMAL = (C.NORMAL_LINEAR, C.NORMAL_HERTZ, C.NORMAL_WALTON_BRAUN, C.NORMAL_THORNTON, C.NORMAL_STRONGE)
@@ -141,16 +143,23 @@ def settle(p, ints, y, mode, g, aux, spring):
     if mode[M_TANGENTIAL] == SLIDE and g[E_STICK] > 0.0:
         start_stick(p, ints, y, mode, f_n, spring)
         return True
-    cone, held = coulomb_cone(p, ints, f_n), abs(y[Y_FS])    # on the cone within round-off: slides if moving out
-    outward = cone_rate(p, ints, aux) < (1.0 if y[Y_FS] > 0.0 else -1.0) * aux[A_TRIAL]
-    beyond, on = held > cone * (1.0 + CONE_ROUND_OFF), held >= cone * (1.0 - CONE_ROUND_OFF)
-    if mode[M_TANGENTIAL] == STICK and (beyond or on and outward):
+    if mode[M_TANGENTIAL] == STICK and beyond_cone(p, ints, y, aux):
         start_slide(y, mode)
         return True
     if g[E_REVERSAL] > 0.0:
         reverse(p, ints, y, mode, f_n, spring)
         return True
     return False
+
+
+@njit(cache=True, inline="always")
+def beyond_cone(p, ints, y, aux):
+    """The sticking spring is beyond the Coulomb cone, or on it within round-off and moving out."""
+    cone, held = coulomb_cone(p, ints, aux[A_FN]), abs(y[Y_FS])
+    if held > cone * (1.0 + CONE_ROUND_OFF):
+        return True
+    outward = cone_rate(p, ints, aux) < (1.0 if y[Y_FS] > 0.0 else -1.0) * aux[A_TRIAL]
+    return held >= cone * (1.0 - CONE_ROUND_OFF) and outward
 
 
 @njit(cache=True, inline="always")
@@ -172,8 +181,7 @@ def start_stick(p, ints, y, mode, f_n, spring):
     """The spring leaves the Coulomb cone: stick, the spring starting on the cone (Walton-Braun's at its x there)."""
     mode[M_TANGENTIAL] = STICK
     y[Y_FS] = mode[M_SIGN] * coulomb_cone(p, ints, f_n)
-    share = 1.0 - mode[M_DIR] * mode[M_STAR]
-    spring[0] = np.cbrt((1.0 + mode[M_DIR] * mode[M_SIGN]) / share) if share > 0.0 else 0.0
+    spring[0] = edge_w(mode)
 
 
 @njit(cache=True, inline="always")
@@ -191,25 +199,23 @@ def walton_braun_onset(p, ints, y, mode, dy, aux, scale, spring):
     """Walton-Braun's spring at first touch: sticking in the direction of V_s from T* = 0. Where mu N starts from 0
     at a finite rate, x starts at its self-similar value, 1 - x = beta x^(1/3) with beta = k_t0 |V_s|/(mu N'):
     the h -> 0 limit of the scheme's first steps; from 0 where N' starts from 0 (the spring rides the cone)."""
-    v_s = y[Y_VX] - p[C.P_RADIUS] * y[Y_W]
+    v_s = slip_velocity(p, y)
     mode[M_TANGENTIAL], mode[M_DIR], mode[M_STAR] = STICK, (1.0 if v_s >= 0.0 else -1.0), 0.0
     evaluate(p, ints, y, mode, 1.0, dy, aux)
     w = 1.0
     if coulomb_cone(p, ints, aux[A_FN]) == 0.0 and v_s != 0.0:
-        probe = y.copy()                              # N' just after first touch (0 at alpha = 0 itself)
-        probe[Y_ALPHA] = ONSET_PROBE * scale[0]
-        evaluate(p, ints, probe, mode, 1.0, dy, aux)
+        evaluate_just_after_touch(p, ints, y, mode, 1.0, dy, aux, scale)   # N' (0 at alpha = 0 itself)
         rise = p[C.P_MU] * aux[A_DFN]
-        w = 0.0
-        if rise > 0.0:
-            beta = p[C.P_T1] * abs(v_s) / rise
-            w = min(1.0, 1.0 / beta)
-            for _ in range(60):                       # w^3 + beta w - 1 = 0: increasing and convex for w > 0
-                step = (w * w * w + beta * w - 1.0) / (3.0 * w * w + beta)
-                w -= step
-                if abs(step) <= 1e-16 * w:
-                    break
+        w = cubic_root(p[C.P_T1] * abs(v_s) / rise, 1.0) if rise > 0.0 else 0.0     # w^3 + beta w = 1
     spring[0] = w
+
+
+@njit(cache=True, inline="always")
+def evaluate_just_after_touch(p, ints, y, mode, w, dy, aux, scale):
+    """The rates at a tiny overlap (ONSET_PROBE), where first touch's stick-or-slide is decided."""
+    probe = y.copy()
+    probe[Y_ALPHA] = ONSET_PROBE * scale[0]
+    evaluate(p, ints, probe, mode, w, dy, aux)
 
 
 @njit(cache=True)
@@ -226,9 +232,7 @@ def onset_mode(p, ints, y, mode, dy, aux, scale, spring):
     evaluate(p, ints, y, mode, math.nan, dy, aux)
     if p[C.P_MU] * abs(aux[A_FN]) > 0.0:
         return
-    probe = y.copy()
-    probe[Y_ALPHA] = ONSET_PROBE * scale[0]
-    evaluate(p, ints, probe, mode, math.nan, dy, aux)
+    evaluate_just_after_touch(p, ints, y, mode, math.nan, dy, aux, scale)
     if abs(aux[A_TRIAL]) > p[C.P_MU] * aux[A_DFN]:
         mode[M_TANGENTIAL] = SLIDE
         mode[M_SIGN] = 1.0 if aux[A_TRIAL] > 0.0 else -1.0
@@ -318,7 +322,8 @@ def impact(p, ints, tol, t_ref, row_out):
             break                                     # mode takes such a row from the ladder
         y[:] = y_new
         spring[0] = spring[1]
-        jac[J_START] = jac[J_END]                     # the implicit stepper's Jacobian at the new start
+        if implicit:
+            jac[J_START] = jac[J_END]                 # the implicit stepper's Jacobian at the new start
         f_n = aux_new[A_FN]
         f_peak = max(f_peak, f_n)                     # exact at the located turn (undamped) or peak (damped)
         a_peak = max(a_peak, y[Y_ALPHA])

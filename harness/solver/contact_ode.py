@@ -92,7 +92,7 @@ def evaluate(p, ints, y, mode, w, dy, aux):
     code = ints[C.I_TANGENTIAL]
     lever = radius - p[C.P_LEVER] * alpha
     slide = mode[M_TANGENTIAL] == SLIDE
-    v_s = y[Y_VX] - lever * y[Y_W]
+    v_s = slip_velocity(p, y)
     if code == C.TANGENTIAL_WALTON_BRAUN:
         trial = walton_braun_rate(p, y, mode, w, coulomb_cone(p, ints, f_n), v_s)
     else:
@@ -111,16 +111,23 @@ def walton_braun_rate(p, y, mode, w, cone, v_s):
     """Walton-Braun's trial dF_s/dt = -k_t0 w V_s. Sticking: w given sets F_s = -d cone (1 - (1 - d sigma*) w^3),
     else w = x^(1/3) from F_s. Sliding: x at the cone's edge T = -sigma cone, (1 + d sigma)/(1 - d sigma*): 0 on
     the loading side, more on the far one."""
+    if mode[M_TANGENTIAL] == SLIDE:
+        return -p[C.P_T1] * edge_w(mode) * v_s
     d = mode[M_DIR]
     share = 1.0 - d * mode[M_STAR]
-    if mode[M_TANGENTIAL] == SLIDE:
-        x = (1.0 + d * mode[M_SIGN]) / share if share > 0.0 else 0.0
-        return -p[C.P_T1] * np.cbrt(x) * v_s
     if w == w:
         y[Y_FS] = -d * cone * (1.0 - share * w * w * w)
     else:
         w = walton_braun_w(y, mode, cone)
     return -p[C.P_T1] * w * v_s
+
+
+@njit(cache=True, inline="always")
+def edge_w(mode):
+    """w = x^(1/3) of Walton-Braun's spring held on the cone's edge F_s = sigma mu N: x = (1 + d sigma)/(1 - d
+    sigma*), 0 on the loading side; 0 too where T* itself is at full mobilisation."""
+    share = 1.0 - mode[M_DIR] * mode[M_STAR]
+    return np.cbrt((1.0 + mode[M_DIR] * mode[M_SIGN]) / share) if share > 0.0 else 0.0
 
 
 @njit(cache=True, inline="always")
@@ -131,6 +138,12 @@ def walton_braun_w(y, mode, cone):
     if cone > 0.0 and share > 0.0:
         return np.cbrt((cone + d * y[Y_FS]) / (share * cone))
     return 1.0
+
+
+@njit(cache=True, inline="always")
+def slip_velocity(p, y):
+    """V_s = v_x - (R - c alpha) omega: the lever R, shortened by the overlap in engine dialects (c = P_LEVER)."""
+    return y[Y_VX] - (p[C.P_RADIUS] - p[C.P_LEVER] * y[Y_ALPHA]) * y[Y_W]
 
 
 @njit(cache=True, inline="always")
@@ -158,7 +171,7 @@ def events(p, ints, y, mode, aux, scale, g):
     g[E_PEAK] = -aux[A_DFN] * t_ref / f_ref if p[C.P_DAMP_C0] != 0.0 else INACTIVE
     cone = coulomb_cone(p, ints, f_n)
     g[E_SLIP] = (abs(y[Y_FS]) - cone) / f_ref if mode[M_TANGENTIAL] == STICK else INACTIVE
-    v_s = y[Y_VX] - (p[C.P_RADIUS] - p[C.P_LEVER] * alpha) * y[Y_W]
+    v_s = slip_velocity(p, y)
     reversible = ints[C.I_TANGENTIAL] == C.TANGENTIAL_WALTON_BRAUN and mode[M_TANGENTIAL] != 0.0
     g[E_REVERSAL] = -mode[M_DIR] * v_s / scale[6] if reversible else INACTIVE
     inward = cone_rate(p, ints, aux) - mode[M_SIGN] * aux[A_TRIAL]

@@ -127,6 +127,21 @@ def mean_radius(a_old, a):
 
 
 @njit(cache=True)
+def cubic_root(c, rest):
+    """The root z >= 0 of z^3 + c z = rest (c >= 0; 0 if rest <= 0): Newton from z = rest^(1/3), where
+    f(z) = z^3 + c z - rest >= 0; f is increasing and convex there, so the iterates fall monotonically onto it."""
+    z = 0.0
+    if rest > 0.0:
+        z = rest ** (1.0 / 3.0)
+        for _ in range(60):
+            step = (z * z * z + c * z - rest) / (3.0 * z * z + c)
+            z -= step
+            if step <= 1e-15 * z:
+                break
+    return z
+
+
+@njit(cache=True)
 def walton_braun_implicit(f_s, dd, k_t0, mu, n_new, n_old, st):
     """Walton & Braun's rate form dT = k_t0 x^1/3 dd, x = (mu N - T)/(mu N - T*) rising ((mu N + T)/(mu N + T*)
     falling), by the trapezoidal rule in x at the mean normal force: x1 = x0 - c (x0^1/3 + x1^1/3), c = k_t0 |dd| /
@@ -147,14 +162,7 @@ def walton_braun_implicit(f_s, dd, k_t0, mu, n_new, n_old, st):
     c = 0.5 * k_t0 * abs(dd) / span
     root0 = x0 ** (1.0 / 3.0)
     rest = x0 - c * root0
-    z = 0.0
-    if rest > 0.0:
-        z = rest ** (1.0 / 3.0)                   # f(z) = z^3 + c z - rest >= 0 here; convex: monotone from the right
-        for _ in range(60):
-            step = (z * z * z + c * z - rest) / (3.0 * z * z + c)
-            z -= step
-            if step <= 1e-15 * z:
-                break
+    z = cubic_root(c, rest)
     if x0 > 0.5 and z > 0.0:                      # far from the cone: the increment k_t0 |dd| (x0^1/3 + x1^1/3)/2,
         return f_s - direction * 0.5 * k_t0 * abs(dd) * (root0 + z)   # exact, without mu N - span x1's cancellation
     return -direction * (mu_n - span * z * z * z)
