@@ -17,7 +17,7 @@ from numba import njit, prange
 
 from . import codes as C
 from .contact_ode import (A_DFN, A_FN, A_TRIAL, E_RELEASE, E_REVERSAL, E_SLIP, E_STICK, E_TURN, M_AMAX, M_DENT,
-                          M_DIR, M_LOADING, M_SIGN, M_STAR, M_TANGENTIAL, N_AUX, N_EVENTS, N_MODE, N_Y, SLIDE, STICK,
+                          M_DIR, M_LOADING, M_SIGN, M_STAR, M_STICKS, M_TANGENTIAL, N_AUX, N_EVENTS, N_MODE, N_Y, SLIDE, STICK,
                           Y_ALPHA, Y_FS, Y_RATE, Y_VX, Y_W, cone_rate, coulomb_cone, edge_w, evaluate, events,
                           slip_velocity)
 from .kernel import illinois
@@ -180,6 +180,7 @@ def start_slide(y, mode):
 def start_stick(p, ints, y, mode, f_n, spring):
     """The spring leaves the Coulomb cone: stick, the spring starting on the cone (Walton-Braun's at its x there)."""
     mode[M_TANGENTIAL] = STICK
+    mode[M_STICKS] += 1.0
     y[Y_FS] = mode[M_SIGN] * coulomb_cone(p, ints, f_n)
     spring[0] = edge_w(mode)
 
@@ -231,11 +232,14 @@ def onset_mode(p, ints, y, mode, dy, aux, scale, spring):
     mode[M_TANGENTIAL] = STICK
     evaluate(p, ints, y, mode, math.nan, dy, aux)
     if p[C.P_MU] * abs(aux[A_FN]) > 0.0:
+        mode[M_STICKS] = 1.0
         return
     evaluate_just_after_touch(p, ints, y, mode, math.nan, dy, aux, scale)
     if abs(aux[A_TRIAL]) > p[C.P_MU] * aux[A_DFN]:
         mode[M_TANGENTIAL] = SLIDE
         mode[M_SIGN] = 1.0 if aux[A_TRIAL] > 0.0 else -1.0
+    else:
+        mode[M_STICKS] = 1.0
 
 
 @njit(cache=True, inline="always")
@@ -357,6 +361,7 @@ def impact(p, ints, tol, t_ref, row_out):
     row_out[C.O_VZ], row_out[C.O_VX], row_out[C.O_W] = -y[Y_RATE], y[Y_VX], y[Y_W]
     row_out[C.O_TC], row_out[C.O_FMAX], row_out[C.O_AMAX] = t, f_peak, a_peak
     row_out[C.O_STEPS], row_out[C.O_STATUS], row_out[C.O_ACCEPTED] = evaluations, status, accepted
+    row_out[C.O_STICKING] = mode[M_STICKS] + (1.0 if ints[C.I_TANGENTIAL] == C.TANGENTIAL_WALTON_BRAUN else 0.0)
 
 
 @njit(cache=True, parallel=True)

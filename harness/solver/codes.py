@@ -53,7 +53,9 @@ N_INTS = 4
 # outputs
 O_VZ, O_VX, O_W, O_TC, O_FMAX, O_AMAX, O_STEPS, O_STATUS = 0, 1, 2, 3, 4, 5, 6, 7
 O_ACCEPTED = 8              # adaptive integrator: accepted steps (O_STEPS counts its force evaluations)
-N_OUT = 9
+O_STICKING = 9              # kernel: steps ending with |F_t| strictly inside the Coulomb cone (F_n > 0); adaptive:
+                            # stick phases begun, first touch included (Walton-Braun's spring: one more, never on it)
+N_OUT = 10
 
 STATUS_OK = 0
 STATUS_NO_SEPARATION = 1

@@ -23,7 +23,8 @@ Y_ALPHA, Y_RATE, Y_VX, Y_W, Y_FS = 0, 1, 2, 3, 4
 N_Y = 5
 M_LOADING, M_AMAX, M_TANGENTIAL, M_SIGN, M_DENT = 0, 1, 2, 3, 4   # mode: loading?, alpha_max once unloading,
 M_DIR, M_STAR = 5, 6                                             # stick/slide, its sign, residual overlap;
-N_MODE = 7                                                       # Walton-Braun: d and sigma* = T*/(mu N)
+M_STICKS = 7                                                     # Walton-Braun: d and sigma* = T*/(mu N);
+N_MODE = 8                                                       # stick phases begun (onset included)
 STICK, SLIDE = 1.0, 2.0
 A_FN, A_DFN, A_TRIAL, A_FT = 0, 1, 2, 3                  # forces at a state: F_n, dF_n/dt, trial dF_s/dt, F_t
 N_AUX = 4

@@ -16,7 +16,7 @@ from numba import njit, prange
 
 from . import codes as C
 from .normal_kernels import luding_yade, normal_elastic, thornton_ning
-from .tangential_kernels import N_TSTATE, T_MARGIN, T_STEP, after_cap, cap, spring_force, stiffness, viscous
+from .tangential_kernels import N_TSTATE, T_HELD, T_MARGIN, T_STEP, after_cap, cap, spring_force, stiffness, viscous
 
 S_ALPHA, S_VZ, S_VX, S_W, S_AMAX, S_FN, S_FT, S_FS, S_NOLD, S_U, S_FEL, S_C = 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11
 S_FMAX, S_YIELD, S_DETACH = 12, 13, 14      # incremental engine laws (thornton_ning): F_max, yielded, detached at
@@ -65,24 +65,37 @@ def friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, in_contact, scheme
     elif in_contact:
         limit = p[C.P_MU] * abs(f_n)
         f_s = spring_force(code, s[S_FS], slip * h, a, p[C.P_T1], p[C.P_MU], abs(f_n), s[S_NOLD], ot, scratch, paper)
-        ot[T_MARGIN] = abs(f_s) - limit
-        if abs(f_s) > limit:
+        ot[T_MARGIN] = ot[T_HELD] = abs(f_s) - limit
+        if paper and p[C.P_TDAMP] != 0.0:
+            f_t, f_s = damped_friction(ot, p, code, h, a, f_s, slip, limit, lever)
+        elif abs(f_s) > limit:
             f_s = cap(f_s, limit)
             after_cap(code, f_s, p[C.P_T1], a, ot)
             f_t = f_s
         elif p[C.P_TDAMP] == 0.0:
             f_t = f_s
         else:
-            c_t = p[C.P_TDAMP] * math.sqrt(stiffness(code, p[C.P_T1], a))
-            if paper:
-                m, inertia = p[C.P_MASS], p[C.P_INERTIA]
-                f_t = cap((f_s - c_t * slip) / (1.0 + 0.5 * h * c_t * (1.0 / m + lever * lever / inertia)), limit)
-            else:
-                f_t = f_s - c_t * slip
+            f_t = f_s - p[C.P_TDAMP] * math.sqrt(stiffness(code, p[C.P_T1], a)) * slip
     else:
         for k in range(N_TSTATE):
             ot[k] = 0.0
     return f_t, f_s
+
+
+@njit(cache=True, inline="always")
+def damped_friction(ot, p, code, h, a, f_s, slip, limit, lever):
+    """The paper scheme's spring and tangential dashpot: the spring is held within the Coulomb cone, and the total
+    F_s - c_t V_s, with V_s at the step's end (implicit: V_s(end) = V_s(half) + h/2 F_t (1/m + lever^2/I)), is the
+    tangential force clipped to mu F_n: the dashpot acts while the contact sticks, and its share shrinks
+    continuously to nothing in gross sliding (docs/laws.md#tangential-dashpot). Returns (F_t, F_s); T_HELD =
+    |total| - mu F_n."""
+    if abs(f_s) > limit:
+        f_s = cap(f_s, limit)
+        after_cap(code, f_s, p[C.P_T1], a, ot)
+    c_t = p[C.P_TDAMP] * math.sqrt(stiffness(code, p[C.P_T1], a))
+    trial = (f_s - c_t * slip) / (1.0 + 0.5 * h * c_t * (1.0 / p[C.P_MASS] + lever * lever / p[C.P_INERTIA]))
+    ot[T_HELD] = abs(trial) - limit
+    return cap(trial, limit), f_s
 
 
 @njit(cache=True, inline="always")
@@ -114,7 +127,8 @@ def tangential_update(s, st, o, ot, p, ints, h, scratch, alpha, a, f_n, in_conta
     slip = slip_velocity(p, alpha, vx_half, w_half, lever)
     f_t, f_s = friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, in_contact, scheme, lever)
     kick = f_t
-    sliding = st[T_MARGIN] >= 0.0 and ot[T_MARGIN] > 0.0    # on the Coulomb cone at both ends of the step
+    sliding = (st[T_HELD] >= 0.0 and ot[T_HELD] > 0.0        # on the same side of the Coulomb cone at both ends
+               and s[S_FT] * f_t >= 0.0)                     # (a dashpot-held force may cross to the other side)
     if scheme == C.INTEGRATOR_PAPER and sliding and f_n > 0.0 and code < C.TANGENTIAL_VISCOUS_LINEAR:
         kick = sliding_kick(s, o, m, h, f_t / f_n)
     o[S_VX] = vx_half + 0.5 * h * kick / m
@@ -315,7 +329,7 @@ def advance(s, st, o, ot, p, ints, h, scratch):
     return step(s, st, o, ot, p, ints, h, scratch)
 
 
-EVENT_NONE, EVENT_TURN, EVENT_SLIP, EVENT_STICK, EVENT_YIELD = 0, 1, 2, 3, 4
+EVENT_NONE, EVENT_TURN, EVENT_SLIP, EVENT_STICK, EVENT_YIELD, EVENT_SATURATE = 0, 1, 2, 3, 4, 5
 EVENT_ITERATIONS = 60
 
 
@@ -334,12 +348,14 @@ def event_kind(s, st, o, ot, p, ints):
         return EVENT_NONE
     if code == C.TANGENTIAL_WALTON_BRAUN:     # k_t -> 0 at full mobilisation: the trial force meets mu F_n
         return EVENT_NONE                     # tangentially, and locating that only amplifies round-off
+    if st[T_HELD] < 0.0 < ot[T_HELD] and p[C.P_TDAMP] != 0.0:   # spring and tangential dashpot reach the cone
+        return EVENT_SATURATE
     if st[T_MARGIN] < 0.0 < ot[T_MARGIN]:
         return EVENT_SLIP
-    if st[T_MARGIN] > 0.0 >= ot[T_MARGIN]:
+    if st[T_HELD] > 0.0 >= ot[T_HELD]:
         return EVENT_STICK
     if st[T_STEP] > 0.0 and ot[T_STEP] > 0.0:      # still sliding at the step's end, but the margin per unit time
-        rate, rate_before = ot[T_MARGIN] / ot[T_STEP], st[T_MARGIN] / st[T_STEP]   # falls fast: it may stick inside
+        rate, rate_before = ot[T_HELD] / ot[T_STEP], st[T_HELD] / st[T_STEP]       # falls fast: it may stick inside
         if 0.0 < rate < 2.0 * (rate_before - rate):
             return EVENT_STICK
     return EVENT_NONE
@@ -373,22 +389,24 @@ def event_value(kind, f, s, st, lo, lot, probe, probe_t, p, ints, h, scratch):
             step(s, st, lo, lot, p, ints, f * h, scratch)
             at = lo
         return at[S_VZ] if kind == EVENT_TURN else at[S_ALPHA] - loading_kink(p, ints)
-    if kind == EVENT_SLIP:
-        return st[T_MARGIN] if f == 0.0 else margin_at(f, s, st, lo, lot, p, ints, h, scratch)
+    if kind == EVENT_SLIP or kind == EVENT_SATURATE:
+        which = T_MARGIN if kind == EVENT_SLIP else T_HELD
+        return st[which] if f == 0.0 else margin_at(f, s, st, lo, lot, p, ints, h, scratch, which)
     if f == 0.0:
         step(s, st, probe, probe_t, p, ints, STICK_PROBE * h, scratch)
     else:
         step(s, st, lo, lot, p, ints, f * h, scratch)
         step(lo, lot, probe, probe_t, p, ints, STICK_PROBE * h, scratch)
-    return -probe_t[T_MARGIN] / STICK_PROBE
+    return -probe_t[T_HELD] / STICK_PROBE
 
 
 @njit(cache=True)
-def margin_at(f, s, st, lo, lot, p, ints, h, scratch):
-    """|F_s| - mu F_n after a trial step of fraction f > 0 (at f = 0 the start's own margin, st[T_MARGIN], holds:
-    a step of length 0 would end the contact at first touch, where a constant dashpot already pushes)."""
+def margin_at(f, s, st, lo, lot, p, ints, h, scratch, which):
+    """The margin `which` (T_MARGIN: |F_s| - mu F_n; T_HELD: what holds the cone) after a trial step of fraction
+    f > 0 (at f = 0 the start's own margin holds: a step of length 0 would end the contact at first touch, where a
+    constant dashpot already pushes)."""
     step(s, st, lo, lot, p, ints, f * h, scratch)
-    return lot[T_MARGIN]
+    return lot[which]
 
 
 @njit(cache=True)
@@ -525,6 +543,26 @@ def graded_step(k, n, span):
 
 
 PEAK_POINTS = 5           # samples of F_n through which its peak is interpolated (paper scheme)
+CONE_BAND = 1e-9          # relative: a tangential force this close to mu F_n counts as on the Coulomb cone
+ONSET_OVERLAP = 1e-12     # overlap, in units of V_n dt, at which first touch's friction is judged
+
+
+@njit(cache=True)
+def paper_first_touch(s, st, p, ints):
+    """The paper scheme's tangential force at first touch with a tangential dashpot: -c_t V_s capped by mu F_n
+    (finite where both start finite: a constant normal dashpot and a constant k_t), and whether spring and dashpot
+    start on the Coulomb cone, judged at a tiny overlap where both rise from 0 (Tsuji's c ~ alpha^1/4 against
+    Mindlin's c_t ~ alpha^1/4): a contact that slides from first touch starts with margin 0 and gets the exact
+    friction impulse (sliding_kick) from its first step, where the trapezoid of a force ~ t^p loses an order."""
+    code, radius, mu = ints[C.I_TANGENTIAL], p[C.P_RADIUS], p[C.P_MU]
+    slip0 = p[C.P_VX0] - radius * p[C.P_W0]
+    v_n = -p[C.P_VZ0]
+    s[S_FT] = cap(-p[C.P_TDAMP] * math.sqrt(stiffness(code, p[C.P_T1], 0.0)) * slip0, mu * abs(s[S_FN]))
+    alpha = ONSET_OVERLAP * v_n * p[C.P_DT]
+    f_el, a = normal_elastic(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], radius, alpha, alpha)
+    f_n = f_el + p[C.P_DAMP_C0] * damping_power(alpha, p[C.P_DAMP_POWER]) * v_n
+    if p[C.P_TDAMP] * math.sqrt(stiffness(code, p[C.P_T1], a)) * abs(slip0) > mu * f_n:
+        st[T_HELD] = 0.0
 
 
 @njit(cache=True)
@@ -587,7 +625,7 @@ def integrate(params, ints, out, history, stride):
             s[S_FN] = -p[C.P_DAMP_C0] * p[C.P_VZ0]   # a constant dashpot acts from first touch
             s[S_C] = p[C.P_DAMP_C0]
         # the spring starts at 0, inside the Coulomb cone (strictly: a slide starting in the first step is an event)
-        st[T_MARGIN] = -p[C.P_MU] * abs(s[S_FN]) - 1e-300
+        st[T_MARGIN] = st[T_HELD] = -p[C.P_MU] * abs(s[S_FN]) - 1e-300
         if row_ints[C.I_INTEGRATOR] == C.INTEGRATOR_VELOCITY_VERLET and row_ints[C.I_TANGENTIAL] != C.TANGENTIAL_NONE:
             # LIGGGHTS' setup force at first touch (gap 0 counts as contact): the tangential dashpot alone
             code = row_ints[C.I_TANGENTIAL]
@@ -596,6 +634,10 @@ def integrate(params, ints, out, history, stride):
                 s[S_FT] = viscous(code, p[C.P_T1], 0.0, p[C.P_TDAMP], slip0, p[C.P_MU] * abs(s[S_FN]))
             else:
                 s[S_FT] = -p[C.P_TDAMP] * math.sqrt(stiffness(code, p[C.P_T1], 0.0)) * slip0
+        elif (row_ints[C.I_INTEGRATOR] == C.INTEGRATOR_PAPER and p[C.P_TDAMP] != 0.0
+              and C.TANGENTIAL_NONE < row_ints[C.I_TANGENTIAL] < C.TANGENTIAL_VISCOUS_LINEAR):
+            paper_first_touch(s, st, p, row_ints)
+        stick_steps = 0
         f_prev2, f_prev1 = 0.0, 0.0
         h_prev = h
         sample_t = np.zeros(PEAK_POINTS)
@@ -633,6 +675,9 @@ def integrate(params, ints, out, history, stride):
                     t_end = t_now + h_last
                     status = C.STATUS_OK
             f_now, a_now = o[S_FN], o[S_ALPHA]
+            if row_ints[C.I_TANGENTIAL] != C.TANGENTIAL_NONE and f_now > 0.0 and \
+                    abs(o[S_FT]) < (1.0 - CONE_BAND) * p[C.P_MU] * f_now:
+                stick_steps += 1
             if paper:                                  # the last samples of F_n, for its interpolated peak
                 for j in range(PEAK_POINTS - 1):
                     sample_t[j], sample_f[j] = sample_t[j + 1], sample_f[j + 1]
@@ -665,6 +710,6 @@ def integrate(params, ints, out, history, stride):
         out[i, C.O_VZ], out[i, C.O_VX], out[i, C.O_W] = s[S_VZ], s[S_VX], s[S_W]
         out[i, C.O_TC] = t_end if status == C.STATUS_OK else t_now
         out[i, C.O_FMAX], out[i, C.O_AMAX] = f_peak, a_peak
-        out[i, C.O_STEPS], out[i, C.O_STATUS] = steps, status
+        out[i, C.O_STEPS], out[i, C.O_STATUS], out[i, C.O_STICKING] = steps, status, stick_steps
         for k in range(k_rec, n_hist):
             history[i, k, 0] = math.nan

@@ -12,7 +12,8 @@ from . import codes as C
 T_AUX1, T_AUX2, T_MODE, T_DIR, T_AOLD = 0, 1, 2, 3, 4
 T_MARGIN = 5          # |trial spring force| - mu F_n of the last step (> 0: capped, sliding); read by event location
 T_STEP = 6            # length of the last step, to compare margins of steps of unequal length
-N_TSTATE = 7
+T_HELD = 7            # the margin of what holds the contact on the cone: T_MARGIN, or in the paper scheme with a
+N_TSTATE = 8          # tangential dashpot the larger of it and |spring + dashpot| - mu F_n
 
 
 @njit(cache=True)
