@@ -71,15 +71,21 @@ def add_scene_options(parser, resolution=True):
     where.add_argument("--angles", type=angle_list, metavar="A,B,..|A:B:STEP",
                        help="impact angles from the normal in degrees (default 1:89:2, 45 angles)")
     where.add_argument("--psi", type=number_list, metavar="LIST",
-                       help="normalised impact angles Psi1* = kappa V_s/(mu V_n (1+e_n)); --speed is then V_n")
+                       help="the paper's normalised impact angles Psi1* = 2 V_t/(mu (1 + e_n) V_n) at normal speed V_n")
     where.add_argument("--vt", type=number_list, metavar="LIST",
-                       help="tangential speeds V_t [m/s]; --speed is then the normal speed V_n")
-    g.add_argument("--mu", type=number, help="friction coefficient (default: the material's, else 0.3)")
-    g.add_argument("--material", default="paper", help="material preset (see `harness models`), default paper")
+                       help="tangential speeds V_t [m/s] at normal speed V_n")
+    g.add_argument("--mu", type=number, help="friction coefficient (default: the material's)")
+    g.add_argument("--material", default="tcc13",
+                   help="material preset (see `harness models`); default tcc13, the paper's sphere and wall")
     for name, unit in (("radius", "m"), ("E", "Pa"), ("nu", "-"), ("rho", "kg/m^3")):
         g.add_argument(f"--{name}", type=number, help=f"override the material's {name} [{unit}]")
-    g.add_argument("--speed", type=number, default=1.0,
-                   help="impact speed V [m/s] with --angles; normal speed V_n with --psi or --vt (default 1)")
+    speed = g.add_mutually_exclusive_group()
+    speed.add_argument("--speed", type=number, metavar="V",
+                       help="impact speed [m/s]: the resultant with --angles, the normal speed with --psi or --vt "
+                            "(default 5, the paper's)")
+    speed.add_argument("--normal-speed", type=number, metavar="V",
+                       help="hold the normal speed V_n [m/s] fixed, V_t = V_n tan(angle) (Kratos' way of drawing the "
+                            "paper's figures)")
     g.add_argument("--omega0", type=number, default=0.0, help="initial spin omega_y [rad/s] (default 0)")
     g.add_argument("--gravity", type=number, default=0.0, help="gravity towards the wall [m/s^2] (default 0)")
     g.add_argument("--wall", default="same", metavar="same|rigid|MATERIAL",
@@ -113,9 +119,14 @@ def scene_from_args(args):
     if args.psi is None and angles is None and args.vt is None:
         from .scene import DEFAULT_ANGLES
         angles = DEFAULT_ANGLES
+    speed, speed_is = args.speed, "resultant"
+    if args.normal_speed is not None:
+        speed, speed_is = args.normal_speed, "normal"
+    from .scene import DEFAULT_SPEED
     return from_material(args.material, radius=args.radius, E=args.E, nu=args.nu, rho=args.rho, mu=args.mu,
-                         speed=args.speed, e_n=tuple(args.en), angles_deg=angles, psi1_star=args.psi, v_t=args.vt,
-                         omega0=args.omega0, gravity=args.gravity, **wall_from_args(args.wall))
+                         speed=DEFAULT_SPEED if speed is None else speed, speed_is=speed_is, e_n=tuple(args.en),
+                         angles_deg=angles, psi1_star=args.psi, v_t=args.vt, omega0=args.omega0,
+                         gravity=args.gravity, **wall_from_args(args.wall))
 
 
 def wall_from_args(text):

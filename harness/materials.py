@@ -20,9 +20,13 @@ class Material:
 # independent reproductions of its tests (YADE 2023 scripts, LIGGGHTS-PFM tests/contact_models/chung,
 # PySPH DEM examples, Kratos DEM3D_chung_ooi_tests), not from the paper's tables directly.
 _PRESETS = (
-    Material("paper", 70e9, 0.3, 2650.0, 5e-3, 0.3, None,
-             "harness MODELS.md section 5 worked example; Thornton et al. 2013 values not confirmed "
-             "[unconfirmed]"),
+    Material("tcc13", 70e9, 0.3, 2650.0, 25e-3, 0.1, None,
+             "Thornton, Cummins & Cleary (2013), Table 1, as both re-implementations of the paper give it (Kratos "
+             "DEMApplication 'Thornton' benchmarks 10/11, LIGGGHTS-PFM contact_models/thornton): R 25 mm, E 70 GPa, "
+             "nu 0.3, rho 2650 kg/m^3, mu 0.1, wall of the same material, impact at 5 m/s"),
+    Material("example-5mm", 70e9, 0.3, 2650.0, 5e-3, 0.3, None,
+             "the smaller sphere of the engine notes' attribution example (R 5 mm, mu 0.3, impacts at 1 m/s); "
+             "not a scene of the paper"),
     Material("alumina", 3.8e11, 0.23, 4000.0, 2.5e-3, 0.092, 0.98,
              "C&O 2011 Test 4 (also Test 3, mu=0, e_n swept), after Kharaz et al. 2001; "
              "as reproduced in YADE, LIGGGHTS-PFM, Kratos"),

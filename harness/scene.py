@@ -8,14 +8,16 @@ import numpy as np
 from .errors import UserError
 from .materials import get_material
 
-DEFAULT_EN = (0.9, 0.7, 0.5, 0.3, 0.1)
+DEFAULT_EN = (0.25, 0.5, 0.75, 0.9)                         # the paper's e_n
 DEFAULT_ANGLES = tuple(float(a) for a in range(1, 90, 2))   # 45 impact angles, 1..89 deg
+DEFAULT_SPEED = 5.0                                         # the paper's impact speed [m/s]
 WALLS = ("same", "rigid")
+SPEEDS = ("resultant", "normal")                            # what --speed holds fixed across impact angles
 
 
 @dataclass(frozen=True)
 class Contact:
-    """Effective sphere-wall properties: E* and G* (MODELS 1), R* = R, m* = m, I = 2/5 m R^2."""
+    """Effective sphere-wall properties: E* and G* (docs/laws.md#contact), R* = R, m* = m, I = 2/5 m R^2."""
     radius: float
     mass: float
     inertia: float
@@ -27,25 +29,27 @@ class Contact:
 
     @property
     def kappa(self):
-        """kappa = 4 G*/E* (Mindlin tangential to Hertz normal stiffness ratio, MODELS 1)."""
+        """kappa = 4 G*/E*: Mindlin tangential to Hertz normal stiffness, 2(1 - nu)/(2 - nu) for one material."""
         return 4.0 * self.G_star / self.E_star
 
     @property
     def chi(self):
-        """chi = 3.5 (1 - nu)/(2 - nu) for a solid sphere (Maw-Barber-Fawcett, MODELS 1)."""
+        """chi = 3.5 (1 - nu)/(2 - nu) for a solid sphere (Maw, Barber & Fawcett 1976)."""
         return 3.5 * (1.0 - self.nu) / (2.0 - self.nu)
 
 
 @dataclass(frozen=True)
 class Scene:
-    """A sphere of radius R hitting a wall: at speed V and the listed angles (deg from the normal), or at normal
-    speed V with the listed Psi1* values or tangential speeds v_t (the paper's way: V_n fixed, V_t varied)."""
-    radius: float = 5e-3
+    """A sphere of radius R hitting a wall: at the listed angles (deg from the normal) with speed V the resultant
+    (speed_is 'resultant', LIGGGHTS-PFM's way) or the normal speed (speed_is 'normal', Kratos' way: V_t = V tan
+    theta), or at normal speed V with the listed Psi1* values or tangential speeds v_t. Defaults: the paper's scene
+    (material tcc13, 5 m/s, e_n 0.25/0.5/0.75/0.9)."""
+    radius: float = 25e-3
     E: float = 70e9
     nu: float = 0.3
     rho: float = 2650.0
-    mu: float = 0.3
-    speed: float = 1.0
+    mu: float = 0.1
+    speed: float = DEFAULT_SPEED
     e_n: tuple = DEFAULT_EN
     angles_deg: tuple | None = DEFAULT_ANGLES
     psi1_star: tuple | None = None
@@ -55,7 +59,8 @@ class Scene:
     wall_E: float | None = None
     wall_nu: float | None = None
     gravity: float = 0.0
-    material: str = "paper"
+    material: str = "tcc13"
+    speed_is: str = "resultant"
     extra: dict = field(default_factory=dict, compare=False)
 
     def __post_init__(self):
@@ -66,15 +71,18 @@ class Scene:
         return contact_properties(self)
 
     def impacts(self, e_n):
-        """Incident (v_n, v_t, omega, theta_deg) arrays for one target e_n (Psi1* needs e_n: MODELS 4)."""
+        """Incident (v_n, v_t, omega, theta_deg) arrays for one target e_n (Psi1* needs e_n: docs/laws.md)."""
         if self.angles_deg is not None:
             theta_deg = np.asarray(self.angles_deg, dtype=float)
-            v_n = self.speed * np.cos(np.radians(theta_deg))
-            v_t = self.speed * np.sin(np.radians(theta_deg))
+            theta = np.radians(theta_deg)
+            if self.speed_is == "normal":
+                v_n, v_t = np.full_like(theta, self.speed), self.speed * np.tan(theta)
+            else:
+                v_n, v_t = self.speed * np.cos(theta), self.speed * np.sin(theta)
         else:
-            if self.psi1_star is not None:      # Psi1 = kappa (V_t - R omega0)/(mu V_n), Psi1* = Psi1/(1 + e_n)
-                psi1 = np.asarray(self.psi1_star, dtype=float) * (1.0 + e_n)
-                v_t = psi1 * self.mu * self.speed / self.contact.kappa + self.radius * self.omega0
+            if self.psi1_star is not None:      # Psi1* = 2 (V_t - R omega0)/(mu (1 + e_n) V_n)
+                psi = np.asarray(self.psi1_star, dtype=float)
+                v_t = psi * 0.5 * self.mu * (1.0 + e_n) * self.speed + self.radius * self.omega0
             else:
                 v_t = np.asarray(self.v_t, dtype=float)
             v_n = np.full_like(v_t, self.speed)
@@ -125,6 +133,8 @@ def validate(scene):
         raise UserError(f"mu must be >= 0, got {scene.mu!r}")
     if not math.isfinite(scene.omega0) or not math.isfinite(scene.gravity) or scene.gravity < 0:
         raise UserError("omega0 must be finite and gravity >= 0")
+    if scene.speed_is not in SPEEDS:
+        raise UserError(f"speed_is must be one of {', '.join(SPEEDS)}, got {scene.speed_is!r}")
     if scene.wall not in WALLS + ("other",):
         raise UserError(f"wall must be one of {', '.join(WALLS)}, got {scene.wall!r}")
     if scene.wall == "other":
@@ -149,7 +159,7 @@ def validate(scene):
                 raise UserError(f"impact angle must lie in [0, 90) degrees, got {a!r}")
     elif scene.psi1_star is not None:
         if scene.mu == 0:
-            raise UserError("Psi1* is undefined for mu = 0 (Psi1 = kappa V_s/(mu V_n)); give angles instead")
+            raise UserError("Psi1* is undefined for mu = 0 (Psi1* = 2 V_s/(mu (1 + e) V_n)); give angles instead")
         for psi in scene.psi1_star:
             if not (math.isfinite(psi) and psi >= 0):
                 raise UserError(f"Psi1* must be >= 0, got {psi!r}")

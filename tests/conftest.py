@@ -6,6 +6,11 @@ import pytest
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
+# The scene many tests were calibrated on before the paper's scene became the default: the engine notes' example
+# (R 5 mm, mu 0.3, impacts at 1 m/s). Tests whose expectations are specific to that scene (a finding measured at
+# a given angle, a stick-slip row) pin it; everything else runs on the paper's scene (harness.scene.Scene()).
+EXAMPLE = dict(radius=5e-3, mu=0.3, speed=1.0, material="example-5mm")
+
 
 def fake_executable(directory, body, name="fake-engine"):
     """A small shell script standing in for an engine that crashes, hangs or writes a truncated result."""

@@ -13,9 +13,9 @@ from harness.solver import codes as C
 from harness.solver.reference import adaptive_batch, run_adaptive, simulate, simulate_extrapolated
 
 WALTON_BRAUN_SPRINGS = [("walton-braun", None),
-                        ("hertz-mindlin", {"tangential": "walton-braun:2/7"}),
+                        ("hertz-mindlin", {"tangential": "walton-braun:2/7", "tangential-damping": "none"}),
                         ("thornton", {"tangential": "walton-braun:2/7"}),
-                        ("linear-spring-dashpot", {"tangential": "walton-braun:2/7"})]
+                        ("linear-spring-dashpot", {"tangential": "walton-braun:2/7", "tangential-damping": "none"})]
 OBLIQUE = (5.0, 15.0, 30.0, 45.0, 60.0, 75.0, 85.0, 89.5)
 DEEP = 19
 

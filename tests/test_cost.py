@@ -45,10 +45,14 @@ def test_relative_errors_are_scaled_by_the_sweeps_largest_value():
     assert np.isnan(relative_errors(got, truth)["err_t_contact"])
 
 
+NO_DASHPOT = {"tangential-damping": "none"}
+
+
 @pytest.fixture(scope="module")
 def reference_cost():
     scene = Scene(e_n=(0.9, 0.4), angles_deg=(0.0, 30.0, 60.0))
-    table, failures, uncertainty = cost_table(compose("hertz-mindlin"), scene, {}, ladder=(5, 10, 20, 50, 100, 200))
+    law = compose("hertz-mindlin", NO_DASHPOT)     # the adaptive integrator's coverage; see the dashpot test below
+    table, failures, uncertainty = cost_table(law, scene, {}, ladder=(5, 10, 20, 50, 100, 200))
     return table, uncertainty
 
 
@@ -101,6 +105,21 @@ def test_adaptive_curve_is_far_cheaper_than_the_plain_curve(reference_cost):
     plain = curve[(curve.dialect == "paper") & (curve.rung == "200")].iloc[0]
     affordable = adaptive[adaptive.steps_per_contact <= 3 * 200]
     assert affordable.err_max.min() * 100 < plain.err_max, (affordable.err_max.min(), plain.err_max)
+
+
+def test_the_papers_tangential_dashpot_is_accurate_if_not_smooth_in_h():
+    """Hertz-Mindlin and the linear spring-dashpot with the paper's tangential dashpot on the paper's scene: at 1000
+    steps per contact every metric of a 3 e_n x 12 angle sweep is within 3e-4 of 2^17 steps (relative to its
+    sweep's scale), and 2000 steps are at least 2x closer; where a contact sticks and slides again against a
+    reversed slip the error is not smooth in h (docs/numerics.md), which this bound tolerates."""
+    from harness.solver.reference import simulate
+    scene = Scene(e_n=(0.9, 0.5, 0.25), angles_deg=tuple(np.linspace(5.0, 85.0, 12)))
+    for name in ("hertz-mindlin", "linear-spring-dashpot"):
+        law = compose(name)
+        truth = simulate(law, scene, steps_per_contact=2 ** 17)[0]
+        errors = {n: relative_errors(simulate(law, scene, steps_per_contact=n)[0], truth)["err_max"]
+                  for n in (1000, 2000)}
+        assert errors[1000] < 3e-4 and errors[2000] * 2 < errors[1000], (name, errors)
 
 
 def test_a_tangential_dashpot_keeps_the_graded_richardson_curve():
@@ -222,8 +241,8 @@ def test_an_interrupted_study_keeps_its_rows_and_reports(tmp_path, monkeypatch):
                  "--ladder", "20,100", "-o", str(out)])
     assert code == 130
     table = pd.read_csv(out / "cost.csv", dtype={"rung": str})
-    adaptive_rungs = {f"tol {t:.0e}" for t in ADAPTIVE_RUNGS}
-    assert set(table.rung) == {"20", "100", "rayleigh", "converged"} | adaptive_rungs
+    assert set(table.rung) == {"20", "100", "rayleigh", "converged"}     # the paper's dashpot: the ladder's rungs
+    assert set(table.dialect) == {"paper", EXTRAPOLATED}                 # start at 20 and 100 too
     assert set(table.engine) == {"reference"}
     assert "what accuracy costs in time" in open(rebuild(str(out))).read()
 

@@ -15,13 +15,13 @@ from scipy.optimize import brentq
 
 from harness.comparison import findings
 from harness.engines import ADAPTERS
-from harness.hard_cases import CATALOGUE, HardCase, get_case, material_key, run_engine, run_reference
+from harness.hard_cases import BASE_SCENE, CATALOGUE, HardCase, get_case, material_key, run_engine, run_reference
 from harness.invariants import (PARAMETER_METRICS, discontinuities, invariant_breaks, jump_floor, max_jump)
 from harness.laws import LAWS, compose
 from harness.scene import Scene
 from harness.solver.reference import simulate
 
-PAPER = Scene()
+PAPER = Scene(**BASE_SCENE)
 FINE_ANGLES = tuple(float(a) for a in np.round(89.5 - 0.5 * np.arange(179)[::-1], 6))    # 0.5 .. 89.5, h = 0.5 deg
 SWEEP = HardCase("angle sweep", {"angles_deg": FINE_ANGLES})
 
@@ -156,13 +156,13 @@ def test_deep_plastic_thornton_at_e_n_005_matches_an_independent_integration(ref
 def test_unloading_400_times_stiffer_matches_the_closed_form(name, reference_frames):
     """K2 = K1/e^2 = 400 K1 at e_n = 0.05: e = sqrt(K1/K2), F_max = V sqrt(m K1), t_c = pi/2 sqrt(m/K1) (1 + e)
     (MODELS 2.4); K1 from Hertz's peak overlap at V [prov] or pi p_y R (PLS, MODELS 2.7)."""
-    c = PAPER.contact
+    c, v = PAPER.contact, PAPER.speed
     if name == "walton-braun":
         root_r = math.sqrt(c.radius)
-        k1 = 16.0 / 15.0 * root_r * c.E_star * (15.0 * c.mass / (16.0 * root_r * c.E_star)) ** 0.2
+        k1 = 16.0 / 15.0 * root_r * c.E_star * (15.0 * c.mass * v * v / (16.0 * root_r * c.E_star)) ** 0.2
     else:
         r = thornton_yield_speed_ratio(0.05)
-        k1 = math.pi * (r * r * c.E_star ** 4 * c.rho * 40.0 / math.pi ** 4) ** 0.2 * c.radius
+        k1 = math.pi * (r * r * v * v * c.E_star ** 4 * c.rho * 40.0 / math.pi ** 4) ** 0.2 * c.radius
     oracle = walton_braun_closed(k1, 0.05, c.mass, PAPER.speed)
     frame = reference_frames[name]
     row = frame[(frame.case == "K2 = 400 K1") & (frame.theta_deg == 0)].iloc[0]
@@ -198,7 +198,7 @@ def test_each_invariant_check_sees_the_break_it_is_given(reference_frames):
 def test_angle_sweeps_up_to_grazing_are_continuous():
     """0.5 .. 89.5 deg every 0.5 deg, e_n 0.05 / 0.5 / 1, every law: the largest neighbour jump of v_n1, v_t1 and
     R omega1 (per V) halves with the spacing (the every-other-point grid against the full one)."""
-    scene = Scene(e_n=(0.05, 0.5, 1.0), angles_deg=FINE_ANGLES)
+    scene = Scene(**BASE_SCENE, e_n=(0.05, 0.5, 1.0), angles_deg=FINE_ANGLES)
     frame = pd.concat([simulate(compose(name), scene)[0] for name in LAWS], ignore_index=True)
     assert discontinuities(frame, floor=1e-9).empty, discontinuities(frame, floor=1e-9).to_string()
 
@@ -206,7 +206,7 @@ def test_angle_sweeps_up_to_grazing_are_continuous():
 def test_the_continuity_check_sees_a_jump_it_is_given():
     """Negative control: the same sweep with v_t1 shifted by 1% of V above 45 deg is flagged there. (The check sees
     jumps above about the largest smooth neighbour step, here 0.9% of V: v_t1 = V sin(theta) e_t, h = 0.5 deg.)"""
-    frame = simulate(compose("hertz-mindlin"), Scene(e_n=(0.5,), angles_deg=FINE_ANGLES))[0]
+    frame = simulate(compose("hertz-mindlin"), Scene(**BASE_SCENE, e_n=(0.5,), angles_deg=FINE_ANGLES))[0]
     frame.loc[frame.theta_deg > 45.0, "v_t1"] += 1e-2 * PAPER.speed
     found = discontinuities(frame, floor=1e-9)
     assert list(found.kind) == ["discontinuity in v_t1"] and found.theta_deg.iloc[0] == 45.0
@@ -226,9 +226,9 @@ def neighbour_frame(name, parameter, value):
     frames = []
     for p in value * (1.0 + DELTA / 2.0 * steps):
         if parameter == "e_n_target":
-            scene = Scene(e_n=(float(p),), angles_deg=(0.0, 45.0, 89.5))
+            scene = Scene(**BASE_SCENE, e_n=(float(p),), angles_deg=(0.0, 45.0, 89.5))
         else:
-            scene = Scene(**{parameter: float(p)}, e_n=(0.5,), angles_deg=(0.0, 45.0, 89.5))
+            scene = Scene(**{**BASE_SCENE, parameter: float(p)}, e_n=(0.5,), angles_deg=(0.0, 45.0, 89.5))
         frames.append(simulate(compose(name), scene)[0])
     return pd.concat(frames, ignore_index=True)
 
@@ -264,7 +264,7 @@ def test_neighbouring_inputs_give_neighbouring_outputs(parameter, value):
 def test_mu_down_to_zero_is_continuous():
     """mu = 0 and its neighbours 1e-6 .. 4e-6: rebound velocities approach the frictionless ones linearly."""
     for name in LAWS:
-        frame = pd.concat([simulate(compose(name), Scene(mu=mu, e_n=(0.5,), angles_deg=(45.0, 89.5)))[0]
+        frame = pd.concat([simulate(compose(name), Scene(**{**BASE_SCENE, "mu": mu}, e_n=(0.5,), angles_deg=(45.0, 89.5)))[0]
                            for mu in (0.0, 1e-6, 2e-6, 3e-6, 4e-6)], ignore_index=True)
         assert discontinuities(frame, "mu", floor=1e-12).empty, name
         assert np.abs(frame.v_t1 - frame.v_t0).max() < 1e-4 * PAPER.speed
@@ -437,7 +437,7 @@ def test_liggghts_hooke_jump_is_the_law_not_the_time_step():
     """The same jump in the LIGGGHTS hooke dialect does not shrink with dt (1000 -> 8000 steps per contact): a
     discontinuity of the engine's tangential law itself, about 0.9% of V in v_t1."""
     from harness.engines import liggghts
-    scene = Scene(e_n=(0.5,), angles_deg=tuple(float(a) for a in np.arange(62.0, 65.01, 0.125)))
+    scene = Scene(**BASE_SCENE, e_n=(0.5,), angles_deg=tuple(float(a) for a in np.arange(62.0, 65.01, 0.125)))
     jumps = []
     for steps in (1000, 8000):
         v_t1 = simulate(liggghts.dialect("linear-spring-dashpot"), scene, steps_per_contact=steps)[0].v_t1

@@ -6,6 +6,7 @@ import sys
 
 import numpy as np
 import pytest
+from conftest import EXAMPLE
 from conftest import fake_executable
 
 from harness.engines import liggghts
@@ -214,7 +215,7 @@ def test_thornton_ning_energy_gain_is_reported_as_a_finding():
     tangential + rotational energy than it had; compare must say so, for the engine itself."""
     from harness.comparison import findings
     from harness.engines.sweep import run_sweep
-    scene = Scene(e_n=(0.5,), angles_deg=(10.0, 20.0, 60.0))
+    scene = Scene(**EXAMPLE, e_n=(0.5,), angles_deg=(10.0, 20.0, 60.0))   # mu 0.3: at 10 deg it sticks
     frames, failures = run_sweep(liggghts, compose("thornton"), scene, 200)
     assert not failures
     found = findings(frames[0])

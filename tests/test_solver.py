@@ -3,6 +3,7 @@ import math
 
 import numpy as np
 import pytest
+from conftest import EXAMPLE
 
 from harness.laws import LAWS, compose
 from harness.scene import Scene
@@ -110,10 +111,12 @@ def test_force_history_only_when_asked_and_consistent():
 
 
 def test_psi_scene_hits_requested_normalised_angle():
-    """Psi1* input: the achieved Psi1 = kappa V_t/(mu V_n) over (1 + e_target) equals the request."""
+    """Psi1* input: 2 V_t/(mu (1 + e_target) V_n) equals the request (the paper's normalisation); Maw's form is
+    kappa (1 + e)/2 times it."""
     scene = Scene(e_n=(0.5,), angles_deg=None, psi1_star=(0.5, 2.0, 8.0))
     frame = simulate(compose("walton-braun"), scene, steps_per_contact=200)[0]
-    assert np.allclose(frame.psi1 / (1 + 0.5), [0.5, 2.0, 8.0], rtol=1e-12)
+    assert np.allclose(2 * frame.v_t0 / (frame.mu * 1.5 * frame.v_n0), [0.5, 2.0, 8.0], rtol=1e-12)
+    assert np.allclose(frame.psi1_maw, scene.contact.kappa * 1.5 / 2 * np.array([0.5, 2.0, 8.0]), rtol=1e-12)
 
 
 def test_rigid_wall_is_stiffer_than_same_material():
@@ -157,18 +160,24 @@ def test_psi_and_vt_scenes_hold_the_normal_speed():
     assert np.allclose(frame.v_t0, [0.0, 0.5, 3.0]) and np.allclose(frame.theta_deg, np.degrees(np.arctan2([0, .5, 3], 2)))
 
 
-@pytest.mark.parametrize("name, e_n, angle", [("thornton", 0.5, 30.0), ("linear-spring-dashpot", 0.5, 85.0),
-                                               ("linear-spring-dashpot", 0.5, 30.0), ("hertz-mindlin", 0.5, 25.0),
-                                               ("hertz-mindlin", 0.5, 41.0), ("partially-latching-spring", 0.9, 1.0),
-                                               ("stronge", 0.5, 30.0)])
-def test_regime_changes_located_in_their_step_make_the_error_smooth(name, e_n, angle):
+NO_DASHPOT = {"tangential-damping": "none"}
+
+
+@pytest.mark.parametrize("name, overrides, e_n, angle", [
+    ("thornton", {}, 0.5, 30.0), ("linear-spring-dashpot", {}, 0.5, 85.0), ("linear-spring-dashpot", {}, 0.5, 30.0),
+    ("hertz-mindlin", {}, 0.5, 25.0), ("hertz-mindlin", NO_DASHPOT, 0.5, 25.0), ("hertz-mindlin", NO_DASHPOT, 0.5, 41.0),
+    ("partially-latching-spring", {}, 0.9, 1.0), ("stronge", {}, 0.5, 30.0)])
+def test_regime_changes_located_in_their_step_make_the_error_smooth(name, overrides, e_n, angle):
     """Turning point, yield and stick-slip transitions (also inside the release step) are located inside their
     step, so the error is c h^2 + O(h^3) and Richardson's R = f_N + (f_N - f_N/2)/3 is far closer than f_N
     (without the location, the transitions leave an O(h^2) term that depends on where they fall in the step: R
     gained less than 3x at Hertz-Mindlin 41 deg before the end of sliding was located where the spring leaves the
-    Coulomb cone rather than at the slip reversal)."""
-    scene = Scene(e_n=(e_n,), angles_deg=(angle,))
-    law = compose(name)
+    Coulomb cone rather than at the slip reversal). The rows are stick-slip rows of the 5 mm example scene; with the
+    paper's tangential dashpot the transitions where spring and dashpot together reach the cone are located too.
+    (Where such a contact slides again against a reversed slip, e.g. Hertz-Mindlin at 41 deg, the dashpot-held
+    force chatters between the cone's sides for a few steps: the error stays O(h^2) but is not smooth in h.)"""
+    scene = Scene(**EXAMPLE, e_n=(e_n,), angles_deg=(angle,))
+    law = compose(name, overrides)
     cols = ["e_t", "omega_star"]
     def values(n):
         return simulate(law, scene, steps_per_contact=n)[0][cols].to_numpy()[0]
@@ -176,7 +185,7 @@ def test_regime_changes_located_in_their_step_make_the_error_smooth(name, e_n, a
     coarse, fine = values(320), values(640)
     plain = np.abs(fine - truth)
     richardson = np.abs(fine + (fine - coarse) / 3 - truth)
-    assert np.all(richardson < plain / 20), (plain, richardson)
+    assert np.all((richardson < plain / 20) | (plain < 1e-11)), (plain, richardson)   # Omega* exact when sliding
 
 
 def test_graded_mesh_grows_like_s4_from_both_ends_and_covers_its_span():
@@ -207,7 +216,7 @@ def test_converged_mode_reaches_1e6_on_hard_rows(name):
     low e_n: the converged values are within 1e-6 of the extrapolated pair 2^16/2^15 uniform steps per contact
     (e_n, e_t, Omega* absolute; t_c, F_max relative), and no row needs more than 10^4 force evaluations (the
     adaptive integrator's, both tolerances)."""
-    law = compose(name)
+    law = compose(name, NO_DASHPOT if name == "hertz-mindlin" else None)   # the adaptive integrator's coverage
     conv = simulate(law, HARD_ROWS, converged=True)[0]
     fine = simulate(law, HARD_ROWS, steps_per_contact=2 ** 16)[0]
     half = simulate(law, HARD_ROWS, steps_per_contact=2 ** 15)[0]
@@ -224,9 +233,10 @@ def test_graded_ladder_costs_a_fraction_of_brute_force_refinement(count_kernel_s
     """The same stopping rule (two successive values within 1e-6, twice) on plain doubling and on the graded,
     extrapolated ladder (the converged mode of the rows the adaptive integrator does not cover): the ladder takes
     at most a quarter of the impact-steps (counted, not timed; the wall-time ratio is benchmarks/
-    bench_converged.py's)."""
+    bench_converged.py's). Without the tangential dashpot: where a dashpot-held force chatters at a slip reversal
+    the error is not smooth in h and the ladder gains nothing over doubling (same impact-steps within 3%)."""
     scene = Scene(e_n=(0.9, 0.5, 0.1), angles_deg=tuple(np.arange(1.0, 90.0, 8.0)))
-    law = compose("hertz-mindlin")
+    law = compose("hertz-mindlin", NO_DASHPOT)
     steps = {extrapolate: count_kernel_steps(law, scene, converged=True, extrapolate=extrapolate)[1]
              for extrapolate in (False, True)}
     assert steps[True] * 4 <= steps[False], steps
@@ -243,7 +253,8 @@ def test_hysteresis_dialects_leave_their_latched_dent_at_low_e_n(engine):
     row = simulate(ADAPTERS[engine].dialect("walton-braun"), scene, steps_per_contact=1000)[0].iloc[0]
     assert row.status == "ok", row.message
     c = scene.contact
-    k1 = 16.0 / 15.0 * math.sqrt(c.radius) * c.E_star * (15.0 * c.mass / (16.0 * math.sqrt(c.radius) * c.E_star)) ** 0.2
+    v = scene.speed
+    k1 = 16.0 / 15.0 * math.sqrt(c.radius) * c.E_star * (15.0 * c.mass * v * v / (16.0 * math.sqrt(c.radius) * c.E_star)) ** 0.2
     t_c = math.sqrt(c.mass / k1) * (math.pi / 2.0 * (1.0 + e) + (1.0 - e * e) / e)
     assert row.t_contact == pytest.approx(t_c, rel=5e-3)        # the exit time inherits e_n's 3e-3 at 1000 steps
     assert row.e_n == pytest.approx(e, rel=1e-2)

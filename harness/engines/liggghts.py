@@ -125,6 +125,12 @@ def law_stiffness(scene):
     return hertz_equivalent_stiffness(c.E_star, c.radius, c.mass, scene.speed)
 
 
+def characteristic_velocity(k_n, contact):
+    """V_c at which LIGGGHTS hooke's k_n = 16/15 sqrt(R) E* (15 m V_c^2/(16 sqrt(R) E*))^1/5 equals the law's k_n."""
+    base = 16.0 / 15.0 * math.sqrt(contact.radius) * contact.E_star
+    return math.sqrt((k_n / base) ** 5 * 16.0 * math.sqrt(contact.radius) * contact.E_star / (15.0 * contact.mass))
+
+
 def settings(law, scene, e_n, options=None):
     """Model, tangential model, options and extra global properties that express `law` at e_n in LIGGGHTS."""
     model = MODELS[law.name]
@@ -132,7 +138,10 @@ def settings(law, scene, e_n, options=None):
     tangential = options.pop("tangential", "history")
     properties = []
     restitution = e_n
-    if model in ("hooke", "hooke/hysteresis"):
+    if model == "hooke":
+        k_n = law.normal.parameters(scene.contact, e_n, scene.speed).values[0]
+        properties.append(("characteristicVelocity", "scalar", characteristic_velocity(k_n, scene.contact)))
+    if model == "hooke/hysteresis":
         properties.append(("characteristicVelocity", "scalar", scene.speed))
     if model == "hooke/hysteresis":
         restitution = 1.0                               # no viscous part: all dissipation by hysteresis

@@ -135,7 +135,16 @@ def hertz_equivalent_stiffness(E_star, radius, mass, speed):
     return 16.0 / 15.0 * math.sqrt(radius) * E_star * (15.0 * mass * speed ** 2 / (16.0 * math.sqrt(radius) * E_star)) ** 0.2
 
 
+HERTZ_DURATION = 2.0 * math.sqrt(math.pi) * math.gamma(1.4) / math.gamma(0.9) * (15.0 / 16.0) ** 0.4   # 2.868...
+
+
 def hertz_contact_time(E_star, radius, mass, speed):
-    """t_c = 2.86827 (m^2/(R E*^2 V))^1/5 (elastic Hertz, MODELS 4)."""
-    return 2.86827 * (mass ** 2 / (radius * E_star ** 2 * speed)) ** 0.2
+    """t_H = 2 sqrt(pi) G(7/5)/G(9/10) (15/16)^2/5 (m^2/(R E*^2 V))^1/5 = 2.8683 (...)^1/5: elastic Hertz (Johnson 1985)."""
+    return HERTZ_DURATION * (mass ** 2 / (radius * E_star ** 2 * speed)) ** 0.2
+
+
+def hertz_duration_stiffness(E_star, radius, mass, speed):
+    """k_n = m (pi/t_H)^2: a linear spring whose undamped contact lasts as long as an elastic Hertz impact at V
+    (the paper's equal-collision-time calibration of the linear spring-dashpot)."""
+    return mass * (math.pi / hertz_contact_time(E_star, radius, mass, speed)) ** 2
 

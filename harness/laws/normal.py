@@ -2,6 +2,7 @@
 import math
 from dataclasses import dataclass
 
+from ..errors import UserError
 from ..solver import codes as C
 from . import calibration as cal
 
@@ -14,12 +15,36 @@ class NormalParameters:
     contact_time: float
 
 
-class LinearSpring:
-    """F = k_n alpha, k_n = 16/15 sqrt(R) E* (15 m V^2/(16 sqrt(R) E*))^1/5 (Hertz's peak overlap at V) [prov]."""
+class NormalModel:
+    """Shared face of the normal sub-models: the label `harness models` prints."""
+    name = ""
+
+    def label(self):
+        return self.name
+
+
+class LinearSpring(NormalModel):
+    """F = k_n alpha; k_n = m (pi/t_H)^2, the elastic Hertz contact duration at V ('duration', the paper's), or
+    16/15 sqrt(R) E* (15 m V^2/(16 sqrt(R) E*))^1/5, Hertz's peak overlap at V ('peak-overlap', LIGGGHTS hooke's)."""
     name, code, plastic = "linear", C.NORMAL_LINEAR, False
+    CALIBRATIONS = ("duration", "peak-overlap")
+
+    def __init__(self, calibration="duration"):
+        if calibration not in self.CALIBRATIONS:
+            raise UserError(f"the linear spring's calibration is one of {', '.join(self.CALIBRATIONS)}, "
+                            f"got {calibration!r}")
+        self.calibration = calibration
+
+    def label(self):
+        return f"{self.name}:{self.calibration}"
+
+    def stiffness(self, contact, speed):
+        if self.calibration == "duration":
+            return cal.hertz_duration_stiffness(contact.E_star, contact.radius, contact.mass, speed)
+        return cal.hertz_equivalent_stiffness(contact.E_star, contact.radius, contact.mass, speed)
 
     def parameters(self, contact, e_n, speed):
-        k = cal.hertz_equivalent_stiffness(contact.E_star, contact.radius, contact.mass, speed)
+        k = self.stiffness(contact, speed)
         return NormalParameters((k, 0.0, 0.0, 0.0), k, math.pi * math.sqrt(contact.mass / k))
 
     def peak(self, contact, e_n, speed):
@@ -28,7 +53,7 @@ class LinearSpring:
         return k, speed * math.sqrt(contact.mass / k)
 
 
-class Hertz:
+class Hertz(NormalModel):
     """F = 4/3 E* R^1/2 alpha^3/2 (paper eq. 1)."""
     name, code, plastic = "hertz", C.NORMAL_HERTZ, False
 
@@ -43,7 +68,7 @@ class Hertz:
         return 2.0 * contact.E_star * math.sqrt(contact.radius * alpha), alpha
 
 
-class WaltonBraun:
+class WaltonBraun(NormalModel):
     """K1 alpha loading, K2 (alpha - alpha0) unloading, K2 = K1/e^2 so that e = sqrt(K1/K2) (MODELS 2.4)."""
     name, code, plastic = "walton-braun", C.NORMAL_WALTON_BRAUN, True
 
@@ -81,7 +106,7 @@ def yield_point(E_star, p_y, radius):
     return (math.pi * p_y / (2.0 * E_star)) ** 2 * radius, math.pi ** 3 * p_y ** 3 * radius ** 2 / (6.0 * E_star ** 2)
 
 
-class Thornton:
+class Thornton(NormalModel):
     """Thornton (1997): Hertz to p_y, F_y + pi p_y R (alpha - alpha_y), Hertz unloading, R_p; p_y gives e_n at V."""
     name, code, plastic, law = "thornton", C.NORMAL_THORNTON, True, "thornton"
 
@@ -133,7 +158,7 @@ class Stronge(Thornton):
 NORMAL_MODELS = {cls.name: cls for cls in (LinearSpring, Hertz, WaltonBraun, PartiallyLatchingSpring, Thornton, Stronge)}
 
 
-class LudingHysteresis:
+class LudingHysteresis(NormalModel):
     """LIGGGHTS hooke/hysteresis (engine dialect): k1 as the linear spring; d_lim = 2 x the undamped normal
     peak overlap at V and k2max = k1 (2/e^2 - 1), so that at the scene speed the unloading stiffness is K1/e^2."""
     name, code, plastic = "liggghts-hysteresis", C.NORMAL_LUDING, True
@@ -167,6 +192,9 @@ class CundallStrackSpring(LinearSpring):
     """YADE FrictPhys against a wall (default geometry, wall radius R): K_n = 2 E R E R/(E R + E R) = E R, with E
     Young's modulus, whatever the impact speed (engine dialect)."""
     name = "yade-cundall-strack"
+
+    def label(self):
+        return self.name
 
     def parameters(self, contact, e_n, speed):
         k = contact.E * contact.radius

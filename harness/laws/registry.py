@@ -34,7 +34,7 @@ class Law:
     def describe(self):
         """Sub-model names as {key: label}, the form `harness models` prints."""
         damping = self.damping.name + (f":{self.damping.calibration}" if self.damping.calibration else "")
-        return {"normal": self.normal.name, "damping": damping, "end": self.end,
+        return {"normal": self.normal.label(), "damping": damping, "end": self.end,
                 "tangential": self.tangential.label(), "tangential-damping": self.tangential_damping.label(),
                 "integrator": self.integrator, "lever": f"R - {self.lever:g} alpha", "slip": self.slip}
 
@@ -43,33 +43,39 @@ class Law:
         return self.normal.name in ("stronge", "partially-latching-spring")
 
 
+PAPER_TANGENTIAL_DASHPOT = TangentialDashpot("normal-ratio")   # c_t = 2 g sqrt(m k_t), g of the normal dashpot
+
 LAWS = {
     "linear-spring-dashpot": Law(
-        "linear-spring-dashpot", LinearSpring(), LinearDashpot(), "no-tension", LinearTangential("2/7"),
-        summary="Walton's linear spring-dashpot; k_n from Hertz's peak overlap at V [prov], no tension, "
-                "g exact (Schwager & Poeschel 2007), tangential spring k_t/k_n = 2/7 [prov]"),
+        "linear-spring-dashpot", LinearSpring("duration"), LinearDashpot(), "no-tension", LinearTangential("kappa"),
+        PAPER_TANGENTIAL_DASHPOT,
+        summary="Walton's linear spring-dashpot as the paper uses it: k_n gives the elastic Hertz contact duration "
+                "at V, no tension, g exact (Schwager & Poeschel 2007), k_t/k_n = kappa, tangential dashpot "
+                "c_t = 2 g sqrt(m k_t) while sticking"),
     "hertz-mindlin": Law(
         "hertz-mindlin", Hertz(), TsujiDashpot("appendix-b"), "no-tension", Mindlin("rescale"),
-        summary="Hertz + Tsuji-type dashpot calibrated by Thornton et al. (2013) App. B, no tension; "
-                "Mindlin 8G*a with the eq. 18b unloading rescale"),
+        PAPER_TANGENTIAL_DASHPOT,
+        summary="Hertz + Tsuji-type dashpot calibrated by Thornton et al. (2013) App. B on the tangent stiffness "
+                "2E*a, no tension; Mindlin 8G*a with the eq. 18b unloading rescale; tangential dashpot "
+                "c_t = 2 g sqrt(m 8G*a) while sticking"),
     "hertz-kuwabara-kono": Law(
         "hertz-kuwabara-kono", Hertz(), KuwabaraKonoDashpot(), "no-tension", Mindlin("rescale"),
         summary="Hertz + Kuwabara-Kono dashpot (Zhou et al. 1999 form), A calibrated at the scene speed; "
                 "Mindlin eq. 18b"),
     "walton-braun": Law(
         "walton-braun", WaltonBraun(), NoDamping(), "no-tension", WaltonBraunTangential("2/7"),
-        summary="Walton & Braun (1986) linear hysteretic K2 = K1/e^2, K1 from Hertz at V [prov]; "
+        summary="Walton & Braun (1986) linear hysteretic K2 = K1/e^2, K1 from Hertz's peak overlap at V [prov]; "
                 "Walton-Braun tangential k_t0/K1 = 2/7 [prov]"),
     "stronge": Law(
         "stronge", Stronge(), NoDamping(), "no-tension", Mindlin("rescale"),
-        summary="PROVISIONAL reconstruction of Stronge's elastic-plastic law (MODELS 2.5); Mindlin eq. 18b"),
+        summary="PROVISIONAL reconstruction of Stronge's elastic-plastic law (docs/laws.md#stronge); Mindlin eq. 18b"),
     "thornton": Law(
         "thornton", Thornton(), NoDamping(), "no-tension", Mindlin("rescale"),
         summary="Thornton (1997) elastoplastic, p_y calibrated for e_n at the scene speed; Mindlin eq. 18b"),
     "partially-latching-spring": Law(
         "partially-latching-spring", PartiallyLatchingSpring(), NoDamping(), "no-tension", LinearTangential("2/7"),
         summary="PROVISIONAL: Walton-Braun spring with K1 = pi p_y R (Thornton's plastic stiffness), "
-                "K2 = K1/e^2 (MODELS 2.7); tangential spring 2/7 K1 [prov]"),
+                "K2 = K1/e^2 (docs/laws.md#partially-latching-spring); tangential spring 2/7 K1 [prov]"),
 }
 
 
@@ -119,9 +125,12 @@ def replace_submodels(law, overrides, dialect=None):
     for key, spec in (overrides or {}).items():
         if key == "normal":
             models = {**NORMAL_MODELS, **ENGINE_NORMAL_MODELS}
-            if spec not in models:
-                raise UserError(f"unknown normal model {spec!r}; known: {', '.join(models)}")
-            changes["normal"] = models[spec]()
+            name, option = _split(spec)
+            if name not in models:
+                raise UserError(f"unknown normal model {name!r}; known: {', '.join(models)}")
+            if option and not hasattr(models[name], "CALIBRATIONS"):
+                raise UserError(f"the {name} normal model takes no option, got {spec!r}")
+            changes["normal"] = models[name](option) if option else models[name]()
         elif key == "damping":
             changes["damping"] = _damping(spec)
         elif key == "end":

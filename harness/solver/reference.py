@@ -38,12 +38,12 @@ KEPT = [C.O_VZ, C.O_VX, C.O_W, C.O_TC, C.O_FMAX, C.O_AMAX]     # outcome columns
 
 
 def _change(a, b, scene, batch, rows):
-    """Largest difference per row of the paper's normalised outcomes e_n, e_t, Omega* (absolute; they are O(1) and
-    amplify velocity errors at grazing and near-normal angles) and of t_c and F_max (relative)."""
+    """Largest difference per row of the normalised outcomes e_n, e_t, R omega/(mu (1 + e) V_n) (absolute; they are
+    O(1) and amplify velocity errors at grazing and near-normal angles) and of t_c and F_max (relative)."""
     def normalised(x):
         q = rebound_quantities(scene.contact, scene.mu, batch.v_n0[rows], batch.v_t0[rows], batch.omega0[rows],
                                x[:, 0], x[:, 1], x[:, 2])
-        return np.column_stack([q["e_n"], q["e_t"], q["omega_star"]])
+        return np.column_stack([q["e_n"], q["e_t"], 0.5 * q["omega_star"]])   # R omega/(mu (1 + e) V_n)
     diff = np.abs(normalised(a) - normalised(b))
     diff = np.where(np.isnan(normalised(b)) & np.isnan(normalised(a)), 0.0, diff)   # e_t of a normal impact
     relative = np.abs(a[:, 3:5] - b[:, 3:5]) / np.abs(b[:, 3:5])
