@@ -1,0 +1,84 @@
+"""The sliding-throughout threshold: found from simulation (located stick events) against the conditions derived in
+docs/laws.md#sliding-throughout, and against the rigid-body impulse it implies."""
+import math
+
+import numpy as np
+import pytest
+
+from harness.laws import compose
+from harness.scene import Scene
+from harness.sliding import derived_threshold, impulse_deficit, sliding_thresholds
+from harness.solver.reference import simulate
+
+PAPER_EN = (0.25, 0.5, 0.75, 0.9)
+KAPPA = 2 * 0.7 / 1.7          # 2(1 - nu)/(2 - nu) at nu = 0.3
+
+
+def hand_formula(name, overrides, e):
+    """The derived conditions written out again here, by hand, for the paper's nu = 0.3."""
+    tangential = (overrides or {}).get("tangential", "")
+    if name in ("linear-spring-dashpot", "hertz-mindlin") and not overrides:
+        return 7.0
+    if name in ("thornton", "stronge"):
+        lam = 1.0 if tangential == "mindlin:incremental" else 2.0 / 3.0
+        return 7.0 - 2.0 * lam * e / (KAPPA * (1 + e))
+    q = KAPPA if tangential == "linear:kappa" else 2.0 / 7.0          # the latching spring's k_t = q K1
+    return max(2 * max(3.5, 1 / q) / (1 + e), 7 - 2 / (q * e * (1 + e)))
+
+
+@pytest.mark.parametrize("name, overrides", [
+    ("thornton", None), ("thornton", {"tangential": "mindlin:incremental"}), ("stronge", None),
+    ("partially-latching-spring", None), ("partially-latching-spring", {"tangential": "linear:kappa"}),
+    ("walton-braun", {"tangential": "linear:kappa"}), ("hertz-mindlin", None), ("linear-spring-dashpot", None)])
+def test_simulated_threshold_meets_the_derived_condition(name, overrides):
+    """At the paper's e_n the threshold found from simulation is within its bracket (+1e-5) of the condition,
+    which the code computes and this test writes out by hand."""
+    law = compose(name, overrides)
+    scene = Scene(e_n=PAPER_EN)
+    for found in sliding_thresholds(law, scene):
+        expected = hand_formula(name, overrides, found.e_n)
+        assert found.derived == pytest.approx(expected, abs=1e-12)
+        assert abs(found.simulated - expected) <= found.resolution + 1e-5, (found, expected)
+
+
+@pytest.mark.parametrize("form, lam", [("mindlin:rescale", 2.0 / 3.0), ("mindlin:incremental", 1.0)])
+def test_elastic_limit_is_maws(form, lam):
+    """e = 1 (elastic Hertz-Mindlin): 7 - 2 lam/(2 kappa); with the incremental spring Maw, Barber & Fawcett's
+    elastic 7 - 1/kappa (their 4 chi - 1 in the paper's normalisation)."""
+    law = compose("hertz-mindlin", {"damping": "none", "tangential-damping": "none", "tangential": form})
+    found = sliding_thresholds(law, Scene(e_n=(1.0,)))[0]
+    assert abs(found.simulated - (7.0 - lam / KAPPA)) <= found.resolution + 1e-5
+    if form == "mindlin:incremental":
+        chi = 3.5 * 0.7 / 1.7
+        assert 7.0 - 1.0 / KAPPA == pytest.approx((4 * chi - 1) * 2 / (KAPPA * 2))
+
+
+def test_threshold_separates_full_and_partial_coulomb_impulse():
+    """Independent of the stick events: just above the threshold the tangential impulse is mu times the normal one
+    (to round-off), just below it falls short."""
+    law = compose("thornton")
+    found = sliding_thresholds(law, Scene(e_n=(0.5,)))[0]
+    above, below = found.simulated * (1 + 1e-3), found.simulated * (1 - 2e-2)
+    frame = simulate(law, Scene(e_n=(0.5,), angles_deg=None, psi1_star=(below, above)), converged=True)[0]
+    deficit = impulse_deficit(frame)
+    assert abs(deficit[1]) < 1e-9 and deficit[0] > 1e-6, deficit
+
+
+def test_viscous_law_without_tangential_dashpot_never_slides_throughout():
+    """The documented dashpot lag: without the tangential dashpot the normal dashpot loads the cone before the
+    spring does, so no Psi1* up to 40 slides throughout, and no condition is claimed."""
+    law = compose("hertz-mindlin", {"tangential-damping": "none"})
+    found = sliding_thresholds(law, Scene(e_n=(0.5,)))[0]
+    assert math.isnan(found.simulated) and math.isnan(found.derived) and found.formula == ""
+
+
+def test_no_condition_is_claimed_for_engine_dialects():
+    from harness.engines import liggghts
+    assert math.isnan(derived_threshold(liggghts.dialect("hertz-mindlin"), Scene().contact, 0.5)[0])
+
+
+def test_impulse_deficit_is_zero_for_a_rigid_sliding_row():
+    import pandas as pd
+    row = pd.DataFrame({"v_t0": [3.0], "v_t1": [3.0 - 0.1 * 1.5 * 2.0], "v_n0": [2.0], "v_n1": [1.0], "mu": [0.1]})
+    assert impulse_deficit(row)[0] == pytest.approx(0.0, abs=1e-15)
+    assert np.isfinite(impulse_deficit(row)).all()
