@@ -179,16 +179,18 @@ def cmd_models(args):
                            "submodels": law.describe(), "engines": {"reference": "paper", **support(law.name)}}
                           for law in LAWS.values()], indent=2))
         return EXIT_OK
-    rows = [("model", "normal", "damping", "end", "tangential", "engines")]
+    rows = [("law", "normal", "damping", "end", "tangential", "tangential dashpot", "engines")]
     for law in LAWS.values():
         d = law.describe()
         engines = ", ".join(["reference"] + [f"{e} ({m})" for e, m in support(law.name).items() if m])
         rows.append((law.name + (" [provisional]" if law.provisional else ""), d["normal"], d["damping"], d["end"],
-                     d["tangential"], engines))
-    widths = [max(len(row[i]) for row in rows) for i in range(5)]
+                     d["tangential"], d["tangential-damping"], engines))
+    widths = [max(len(row[i]) for row in rows) for i in range(6)]
     for row in rows:
-        print("  ".join(cell.ljust(w) for cell, w in zip(row, widths)) + "  " + row[5])
-    print("\nmaterials: " + ", ".join(MATERIALS))
+        print("  ".join(cell.ljust(w) for cell, w in zip(row, widths)) + "  " + row[6])
+    print("\n[provisional]: the paper defines the law but its equations are not available; harness runs a "
+          "reconstruction (docs/laws.md).")
+    print("materials: " + ", ".join(MATERIALS) + " (default tcc13: the paper's sphere and wall)")
     return EXIT_OK
 
 
@@ -280,6 +282,40 @@ def cmd_report(args):
     return EXIT_OK
 
 
+def cmd_paper(args):
+    """The paper's figure set: paper.csv, paper-normal.csv, paper-sliding.csv and paper.html in DIR."""
+    import os
+    from .laws import LAWS
+    from .paper import figure_set
+    from .paper_report import NORMAL, OBLIQUE, SLIDING, write_paper_report
+    from .results import write_csv
+    laws = tuple(LAWS) if args.laws is None else tuple(n.strip() for n in args.laws.split(",") if n.strip())
+    unknown = [n for n in laws if n not in LAWS]
+    if unknown or not laws:
+        raise UserError(f"unknown law(s) {', '.join(unknown) or args.laws!r}; known: {', '.join(LAWS)}")
+    if args.steps_per_contact < 100:
+        raise UserError(f"--steps-per-contact must be >= 100 for the paper's figures, got {args.steps_per_contact}")
+    if os.path.exists(args.output) and not os.path.isdir(args.output):
+        raise UserError(f"output {args.output} exists and is not a directory")
+    report = (lambda what: None) if args.quiet else (lambda what: print(f"  done: {what}", file=sys.stderr))
+    oblique, normal, sliding = figure_set(laws, args.steps_per_contact, progress=report)
+    os.makedirs(args.output, exist_ok=True)
+    write_csv(oblique, os.path.join(args.output, OBLIQUE))
+    for table, name in ((normal, NORMAL), (sliding, SLIDING)):
+        write_csv(table, os.path.join(args.output, name))
+    path = write_paper_report(args.output, oblique, normal, sliding, "harness " + " ".join(sys.argv[1:]))
+    if not args.quiet:
+        print(text_table(sliding, ["model", "e_n_target", "simulated", "derived", "difference"],
+                         {"simulated": "{:.4f}", "derived": "{:.4f}", "difference": "{:+.1e}"}))
+    print(f"wrote {path}")
+    return EXIT_OK
+
+
+def text_table(frame, columns, formats):
+    from .compare import text_table as table
+    return table(frame, columns, formats)
+
+
 def cmd_compare(args):
     from .compare import compare
     return compare(args)
@@ -331,6 +367,13 @@ def build_parser():
     p.add_argument("-o", "--output", default="harness-out", metavar="DIR", help="output directory (default %(default)s)")
     p.add_argument("--quiet", action="store_true", help="print only where the files are")
     p.set_defaults(func=cmd_cost)
+    p = sub.add_parser("paper", help="the paper's figure set: Psi2*, Omega*, e_t against Psi1* per law at its e_n, "
+                                     "contact duration and peak force against e_n, where each law slides throughout")
+    p.add_argument("--laws", default=None, metavar="LIST", help="comma-separated laws (default: every law)")
+    p.add_argument("--steps-per-contact", type=int, default=2000, metavar="N", help="resolution (default 2000)")
+    p.add_argument("-o", "--output", default="harness-paper", metavar="DIR", help="output directory (default %(default)s)")
+    p.add_argument("--quiet", action="store_true", help="print only where the page is")
+    p.set_defaults(func=cmd_paper)
     p = sub.add_parser("compare", help="reference vs every available engine; tables, results.csv, report.html")
     p.add_argument("--model", required=True, help="law name (see `harness models`)")
     p.add_argument("--engines", default=None, help="comma-separated engines (default: all that support the law)")

@@ -10,6 +10,7 @@ from .engines.runner import EngineFailure
 from .engines.sweep import precision_gap, run_sweep
 from .errors import UserError
 from .results import write_csv
+from .sliding import sliding_thresholds, threshold_table
 from .solver.plan import plan_batch
 
 
@@ -85,6 +86,7 @@ def compare(args):
         write_csv(pd.concat(frames, ignore_index=True), results_path)
 
     keep(simulate(law, scene, steps_per_contact=steps, converged=args.converged)[0])
+    sliding = threshold_table(law.name, sliding_thresholds(law, scene)) if scene.mu > 0 else None
     failures, attributions, dialects, precision = [], {}, {}, None
     for status in statuses:
         if not status.available:
@@ -115,12 +117,16 @@ def compare(args):
     skipped = [(s.name, s.reason) for s in statuses if not s.available]
     save_extras(out_dir, law.name, dict(args.overrides), scene, skipped, attributions, failures, precision,
                 normal_histories(law, scene, steps),
-                {s.name: engine_options(args, s.name) for s in statuses if s.available})
+                {s.name: engine_options(args, s.name) for s in statuses if s.available}, sliding)
     report = rebuild(out_dir)
     ok = bool(agree["pass"].all()) if not agree.empty else True
     if not args.quiet:
         print(f"{law.name}: paper law on the reference engine, {sum(frame.engine == 'reference')} rows")
         print("\n".join(summary_lines(frame[(frame.engine == "reference") & (frame.dialect == "paper")])))
+        if sliding is not None:
+            print("\nsliding throughout (paper law: the smallest Psi1* found, and the condition derived for it):")
+            print(text_table(sliding, ["e_n_target", "simulated", "derived", "difference", "formula"],
+                             {"simulated": "{:.5f}", "derived": "{:.5f}", "difference": "{:+.1e}"}))
         for name, reason in skipped:
             print(f"skipped {name}: {reason}")
         if ran:

@@ -15,11 +15,12 @@ from .results import read_csv
 
 RUN, ATTRIBUTION, HISTORIES, FAILURES, PRECISION = ("run.json", "attribution.csv", "histories.csv", "failures.csv",
                                                     "precision.csv")
+SLIDING = "sliding.csv"
 COST, COST_RUN, COST_TRUTH = "cost.csv", "cost.json", "cost-truth.csv"
 
 
 def save_extras(out_dir, law_name, overrides, scene, skipped, attributions, failures, precision, histories,
-                engine_options=None):
+                engine_options=None, sliding=None):
     """Write everything beyond results.csv that the report shows."""
     scene_fields = {k: v for k, v in asdict(scene).items() if k != "extra"}
     with open(os.path.join(out_dir, RUN), "w") as handle:
@@ -35,6 +36,7 @@ def save_extras(out_dir, law_name, overrides, scene, skipped, attributions, fail
     pd.DataFrame([vars(f) for f in failures], columns=["engine", "e_n", "message", "log_tail"]).to_csv(
         os.path.join(out_dir, FAILURES), index=False)
     pd.DataFrame([precision] if precision else []).to_csv(os.path.join(out_dir, PRECISION), index=False)
+    (sliding if sliding is not None else pd.DataFrame()).to_csv(os.path.join(out_dir, SLIDING), index=False)
 
 
 def _remove(out_dir, name):
@@ -89,7 +91,8 @@ def compare_part(out_dir):
     failures = [FailedRun(r.engine, r.e_n, r.message, "" if pd.isna(r.log_tail) else r.log_tail)
                 for r in failure_table.itertuples()] if not failure_table.empty else []
     precision = _read(out_dir, PRECISION)
-    return dict(frame=frame, law=law, scene=scene, skipped=[tuple(s) for s in run["skipped"]],
+    sliding = _read(out_dir, SLIDING)
+    return dict(frame=frame, law=law, scene=scene, skipped=[tuple(s) for s in run["skipped"]], sliding=sliding,
                 agreement=agree, deviation=devs, cross=cross, attributions=attributions,
                 findings=findings(frame), failures=failures,
                 precision=precision if not precision.empty else None, histories=histories,

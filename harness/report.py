@@ -49,43 +49,48 @@ def run_facts(frame, arithmetic):
     return pd.DataFrame(rows)
 
 
-PANELS = (   # (title, x column, y columns, sliding-line kind)
-    ("Psi2* against Psi1*", "psi1_star", ("psi2_star",), "psi2"),
-    ("Omega* against Psi1*", "psi1_star", ("omega_star",), "omega"),
-    ("e_t against impact angle", "theta_deg", ("e_t",), None),
-    ("rebound angles (centre, contact point) against impact angle", "theta_deg",
-     ("theta_r_com_deg", "theta_r_cp_deg"), None),
-)
-
-
-def series_figure(frame, title, x, ys, sliding, chi):
-    """One panel per e_n; one curve per (engine, dialect) and y column, with the rigid-body sliding line."""
+def series_figure(frame, title, x, ys, thresholds=None):
+    """One panel per e_n; one curve per (engine, dialect) and y column. Against Psi1* the paper's axes, the rigid
+    body's curve and, where known, the sliding-throughout threshold of the paper law (dotted)."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+    from .paper_axes import PANELS, draw_rigid_body, in_window, set_paper_axes
+    paper = x == "psi1_star"
+    if paper:
+        frame = in_window(frame)
     groups = list(frame.groupby("e_n_target", sort=False))
     fig, axes = plt.subplots(1, len(groups), figsize=(3.6 * len(groups), 3.4), squeeze=False)
-    top = min(float(frame.psi1_star.max()), 5.0 * chi) if x == "psi1_star" else None
     for ax, (e_n, group) in zip(axes[0], groups):
         for (engine, dialect), series in group.groupby(["engine", "dialect"], sort=False):
             series = series.sort_values(x)
             for y in ys:
                 suffix = "" if len(ys) == 1 else (" centre" if "com" in y else " contact pt")
                 ax.plot(series[x], series[y], marker=".", ms=3, lw=1, label=f"{engine}/{dialect}{suffix}")
-        if sliding == "psi2" and top:
-            ax.plot([2 * chi, top], [0.0, top - 2 * chi], "k--", lw=1, label="rigid sliding")
-        if sliding == "omega":
-            ax.axhline(2.5, color="k", ls="--", lw=1, label="rigid sliding")
-        if top:
-            ax.set_xlim(0.0, top)
-        ax.set(title=f"e_n = {e_n:g}", xlabel=x.replace("_star", "*").replace("_deg", " [deg]"))
-        ax.grid(alpha=0.3)
-    axes[0][0].set_ylabel(", ".join(ys))
+        if paper:
+            draw_rigid_body(ax, ys[0])
+            set_paper_axes(ax, ys[0], dict((c, label) for c, label, _ in PANELS)[ys[0]])
+            threshold = (thresholds or {}).get(e_n)
+            if threshold is not None and np.isfinite(threshold):
+                ax.axvline(threshold, color="0.4", ls=":", lw=1, label=f"slides throughout (Psi1* >= {threshold:.3f})")
+        else:
+            ax.set(xlabel=x.replace("_deg", " [deg]"))
+            ax.grid(alpha=0.3)
+        ax.set_title(f"e_n = {e_n:g}")
     axes[0][-1].legend(fontsize=7)
-    fig.suptitle(title)
+    fig.suptitle(title, y=1.02)
     png = figure_png(fig)
     plt.close(fig)
     return png
+
+
+PANELS = (   # (title, x column, y columns)
+    ("Psi2* against Psi1*", "psi1_star", ("psi2_star",)),
+    ("Omega* against Psi1*", "psi1_star", ("omega_star",)),
+    ("e_t against Psi1*", "psi1_star", ("e_t",)),
+    ("rebound angles (centre, contact point) against impact angle", "theta_deg",
+     ("theta_r_com_deg", "theta_r_cp_deg")),
+)
 
 
 def force_figure(histories, contact, speed):
@@ -135,16 +140,23 @@ def write_report(out_dir, compare=None, cost=None):
     return path
 
 
+def sliding_lines(sliding):
+    """{e_n: simulated threshold} of the paper law, from the sliding table (None when there is none)."""
+    if sliding is None or sliding.empty:
+        return None
+    return dict(zip(sliding.e_n_target, sliding.simulated))
+
+
 def compare_context(frame, law, scene, skipped, agreement=None, deviation=None, cross=None, attributions=None,
-                    findings=None, failures=(), precision=None, histories=None, arithmetic=None):
+                    findings=None, failures=(), precision=None, histories=None, arithmetic=None, sliding=None):
     """Figures and tables of the compare sections."""
     figures = []
     paper = frame[(frame.engine == "reference") & (frame.dialect == "paper")]
     oblique = frame[frame.psi1_star > 0]
     if not oblique.empty:
-        for title, x, ys, sliding in PANELS:
+        for title, x, ys in PANELS:
             figures.append((f"{law.name}: {title}, every engine and dialect",
-                            series_figure(oblique, title, x, ys, sliding, scene.contact.chi)))
+                            series_figure(oblique, title, x, ys, sliding_lines(sliding))))
     normal_rows = paper[paper.theta_deg == 0.0]
     ratios = records(hertz_ratios(normal_rows, scene.contact, scene.speed)) if not normal_rows.empty else None
     if histories:
@@ -158,5 +170,5 @@ def compare_context(frame, law, scene, skipped, agreement=None, deviation=None, 
                 summary=summary.to_dict("records"), skipped=skipped, rows=len(frame), ran=engines_ran(frame),
                 facts=records(run_facts(frame, arithmetic or {})), agreement=records(agreement),
                 deviation=records(deviation), cross=records(cross), findings=records(findings), failures=failures,
-                precision=records(precision), ratios=ratios,
+                precision=records(precision), ratios=ratios, sliding=records(sliding),
                 attributions=[(name, records(table)) for name, table in (attributions or {}).items()])

@@ -138,3 +138,11 @@ def sliding_thresholds(law, scene):
         derived, formula = derived_threshold(law, scene.contact, e_n)
         out.append(Threshold(e_n, found, width, method(law, scene, e_n), derived, formula))
     return out
+
+
+def threshold_table(law_name, thresholds):
+    """The thresholds as a table: model, e_n_target, simulated, resolution, derived, difference, formula, method."""
+    import pandas as pd
+    return pd.DataFrame([{"model": law_name, "e_n_target": t.e_n, "simulated": t.simulated,
+                          "resolution": t.resolution, "derived": t.derived, "difference": t.difference,
+                          "formula": t.formula, "method": t.method} for t in thresholds])

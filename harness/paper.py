@@ -1,0 +1,69 @@
+"""The paper's figure set as data: for each law, Psi2*, Omega* and e_t against Psi1* at the paper's e_n on its scene
+(normal speed held at 5 m/s, as Kratos draws them), elastic Hertz-Mindlin beside them, contact duration and peak
+force of the normal impact against e_n relative to elastic Hertz, and where each law slides throughout."""
+from dataclasses import replace
+
+import numpy as np
+import pandas as pd
+
+from .laws import LAWS, compose
+from .laws.calibration import hertz_contact_time
+from .laws.normal import hertz_peak_overlap
+from .scene import DEFAULT_EN, Scene
+from .sliding import sliding_thresholds, threshold_table
+from .solver.reference import simulate
+
+PSI1_GRID = tuple(float(x) for x in np.round(np.arange(0.25, 14.0001, 0.25), 6))   # the paper's Psi1* axis
+NORMAL_EN = tuple(sorted(set(np.round(np.arange(0.1, 0.951, 0.05), 6)) | set(DEFAULT_EN)))
+ELASTIC = "hertz-mindlin (elastic)"        # e = 1, no dashpots: the elastic companion paper's reference curve
+
+
+def paper_scene(e_n=DEFAULT_EN):
+    """The paper's scene with its Psi1* axis at the normal speed of 5 m/s."""
+    return Scene(e_n=tuple(e_n), angles_deg=None, psi1_star=PSI1_GRID)
+
+
+def elastic_law():
+    """Hertz-Mindlin without dashpots (the elastic curve every inelastic one is read against)."""
+    return compose("hertz-mindlin", {"damping": "none", "tangential-damping": "none"})
+
+
+def oblique_curves(laws, scene, steps_per_contact):
+    """Results rows of every law over the Psi1* axis at each e_n, and the elastic curve at e = 1."""
+    frames = [simulate(compose(name), scene, steps_per_contact=steps_per_contact)[0] for name in laws]
+    elastic = simulate(elastic_law(), replace(scene, e_n=(1.0,)), steps_per_contact=steps_per_contact)[0]
+    return pd.concat(frames + [elastic.assign(model=ELASTIC)], ignore_index=True)
+
+
+def normal_impacts(laws, scene, steps_per_contact):
+    """Contact duration and peak force of each law's normal impact at the scene speed over NORMAL_EN, and both
+    against elastic Hertz at the same speed: t_H = 2.8683 (m^2/(R E*^2 V))^1/5, F_H = 4/3 E* R^1/2 alpha_max^3/2."""
+    normal = replace(scene, e_n=NORMAL_EN, angles_deg=(0.0,), psi1_star=None, v_t=None)
+    contact = normal.contact
+    t_h = hertz_contact_time(contact.E_star, contact.radius, contact.mass, normal.speed)
+    f_h = 4.0 / 3.0 * contact.E_star * np.sqrt(contact.radius) * hertz_peak_overlap(contact, normal.speed) ** 1.5
+    rows = []
+    for name in laws:
+        frame = simulate(compose(name), normal, steps_per_contact=steps_per_contact)[0]
+        rows.append(pd.DataFrame({"model": name, "e_n_target": frame.e_n_target, "e_n": frame.e_n,
+                                  "t_contact": frame.t_contact, "f_n_max": frame.f_n_max,
+                                  "t_c/t_Hertz": frame.t_contact / t_h, "F_max/F_Hertz": frame.f_n_max / f_h,
+                                  "provisional": LAWS[name].provisional}))
+    return pd.concat(rows, ignore_index=True)
+
+
+def figure_set(laws=tuple(LAWS), steps_per_contact=2000, progress=None):
+    """(oblique rows, normal-impact table, sliding thresholds) of the paper's figures for `laws`."""
+    scene = paper_scene()
+    oblique = oblique_curves(laws, scene, steps_per_contact)
+    if progress:
+        progress("oblique impacts")
+    normal = normal_impacts(laws, scene, steps_per_contact)
+    if progress:
+        progress("normal impacts")
+    sliding = []
+    for name in laws:
+        sliding.append(threshold_table(name, sliding_thresholds(compose(name), scene)))
+        if progress:
+            progress(f"sliding threshold of {name}")
+    return oblique, normal, pd.concat(sliding, ignore_index=True)

@@ -1,0 +1,82 @@
+"""The paper's figure set as one HTML page, from the three tables `harness paper` writes (paper.py)."""
+import datetime
+import os
+
+import numpy as np
+
+from . import __version__
+from .kinematics import CONVENTIONS
+from .laws import LAWS
+from .paper import ELASTIC, PSI1_GRID
+from .paper_axes import PANELS, draw_rigid_body, set_paper_axes
+from .render import environment
+from .report import figure_png, records
+
+OBLIQUE, NORMAL, SLIDING = "paper.csv", "paper-normal.csv", "paper-sliding.csv"
+COLOURS = ("#1b9e77", "#d95f02", "#7570b3", "#e7298a", "#66a61e", "#e6ab02")    # one per e_n, in every figure
+
+
+def law_figure(oblique, sliding, name):
+    """Psi2*, Omega* and e_t against Psi1* for one law: one curve per e_n, elastic Hertz-Mindlin and the rigid body
+    dashed, the simulated sliding-throughout thresholds dotted in each e_n's colour."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    rows = oblique[oblique.model == name]
+    elastic = oblique[oblique.model == ELASTIC].sort_values("psi1_star")
+    thresholds = dict(zip(sliding[sliding.model == name].e_n_target, sliding[sliding.model == name].simulated))
+    fig, axes = plt.subplots(1, len(PANELS), figsize=(4.2 * len(PANELS), 3.8), constrained_layout=True)
+    for ax, (column, label, _) in zip(axes, PANELS):
+        for colour, (e_n, group) in zip(COLOURS, rows.groupby("e_n_target", sort=True)):
+            group = group.sort_values("psi1_star")
+            ax.plot(group.psi1_star, group[column], color=colour, lw=1.4, label=f"e_n = {e_n:g}")
+            if np.isfinite(thresholds.get(e_n, np.nan)):
+                ax.axvline(thresholds[e_n], color=colour, ls=":", lw=1)
+        ax.plot(elastic.psi1_star, elastic[column], color="0.55", ls="-.", lw=1.1, label="elastic Hertz-Mindlin")
+        draw_rigid_body(ax, column)
+        set_paper_axes(ax, column, label)
+    axes[-1].legend(fontsize=7, loc="lower right")
+    fig.suptitle(f"{name}{' (provisional)' if LAWS[name].provisional else ''}: dotted, where it slides throughout")
+    png = figure_png(fig)
+    plt.close(fig)
+    return png
+
+
+def normal_figure(normal):
+    """Contact duration and peak force of the normal impact against e_n, relative to elastic Hertz, per law."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4), constrained_layout=True)
+    for ax, column, label in zip(axes, ("t_c/t_Hertz", "F_max/F_Hertz"),
+                                 ("contact duration / elastic Hertz", "peak force / elastic Hertz")):
+        for name, group in normal.groupby("model", sort=False):
+            ax.plot(group.e_n_target, group[column], marker="o", ms=3,
+                    ls="--" if LAWS[name].provisional else "-", label=name)
+        ax.axhline(1.0, color="k", lw=0.8)
+        ax.set(xlabel="target e_n", ylabel=label)
+        ax.grid(alpha=0.3)
+    axes[0].legend(fontsize=7)
+    fig.suptitle("normal impact at 5 m/s (dashed: provisional laws)")
+    png = figure_png(fig)
+    plt.close(fig)
+    return png
+
+
+def write_paper_report(out_dir, oblique, normal, sliding, command):
+    """DIR/paper.html from the three tables; returns its path."""
+    names = [n for n in oblique.model.unique() if n != ELASTIC]
+    figures = [(name, law_figure(oblique, sliding, name)) for name in names]
+    figures.append(("contact duration and peak force against e_n", normal_figure(normal)))
+    at_paper_en = normal[normal.e_n_target.isin(sorted(set(oblique.e_n_target) - {1.0}))]
+    html = environment(autoescape=True).get_template("paper.html.j2").render(
+        figures=figures, laws=[LAWS[n] for n in names], sliding=records(sliding.drop(columns=["method"])),
+        methods=sorted(set(sliding.method)), normal=records(at_paper_en.round(4)), conventions=CONVENTIONS,
+        psi_points=len(PSI1_GRID), command=command, version=__version__,
+        date=datetime.datetime.now().strftime("%Y-%m-%d %H:%M"), files=(OBLIQUE, NORMAL, SLIDING))
+    path = os.path.join(out_dir, "paper.html")
+    tmp = path + ".tmp"
+    with open(tmp, "w", encoding="utf-8") as handle:
+        handle.write(html)
+    os.replace(tmp, path)
+    return path

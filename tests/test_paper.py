@@ -1,0 +1,113 @@
+"""The paper's setting by default: the tcc13 scene, its normalisation, the linear law's equal-duration calibration,
+--normal-speed, and `harness paper` (its tables against closed forms and independent integrations)."""
+import math
+import subprocess
+import sys
+
+import numpy as np
+import pandas as pd
+import pytest
+from scipy.optimize import brentq
+
+import oracles
+from harness.laws import compose
+from harness.materials import get_material
+from harness.scene import Scene
+from harness.solver.reference import simulate
+
+
+def test_the_paper_scene_is_the_default():
+    """Thornton, Cummins & Cleary (2013) as Kratos and LIGGGHTS-PFM give it: R 25 mm, E 70 GPa, nu 0.3, rho 2650,
+    mu 0.1, a wall of the same material, 5 m/s, e_n 0.25/0.5/0.75/0.9."""
+    scene, preset = Scene(), get_material("tcc13")
+    assert (scene.radius, scene.E, scene.nu, scene.rho, scene.mu, scene.speed) == (0.025, 70e9, 0.3, 2650.0, 0.1, 5.0)
+    assert (preset.radius, preset.E, preset.nu, preset.rho, preset.mu) == (0.025, 70e9, 0.3, 2650.0, 0.1)
+    assert scene.e_n == (0.25, 0.5, 0.75, 0.9) and scene.wall == "same" and scene.material == "tcc13"
+    assert scene.contact.E_star == pytest.approx(70e9 / (2 * (1 - 0.09)), rel=1e-15)
+
+
+def test_linear_law_lasts_as_long_as_elastic_hertz():
+    """k_n = m (pi/t_H)^2: at e_n = 1 the linear spring's contact equals the elastic Hertz duration at the scene
+    speed (closed form, oracles.hertz_elastic), and its damped contacts end as Schwager & Poeschel's no-tension
+    oscillator does (oracles.lsd_notension_t_c)."""
+    scene = Scene(e_n=(1.0, 0.5), angles_deg=(0.0,))
+    c = scene.contact
+    hertz = oracles.hertz_elastic(c.mass, c.radius, c.E_star, scene.speed)
+    frame = simulate(compose("linear-spring-dashpot"), scene, converged=True)[0]
+    assert frame.t_contact.iloc[0] == pytest.approx(hertz["t_c"], rel=1e-6)
+    w0 = math.pi / hertz["t_c"]
+    g = oracles.lsd_notension_g(0.5)
+    assert frame.t_contact.iloc[1] == pytest.approx(oracles.lsd_notension_t_c(g, w0), rel=1e-6)
+
+
+def test_kt_over_kn_is_kappa_with_the_normal_dashpots_ratio():
+    """The paper's linear law: k_t = kappa k_n (0.8235 at nu 0.3), c_t = 2 g sqrt(m k_t) with the normal g."""
+    from harness.solver import codes as C
+    from harness.solver.plan import plan_batch
+    scene = Scene(e_n=(0.5,), angles_deg=(30.0,))
+    params = plan_batch(compose("linear-spring-dashpot"), scene, 0.5, 1000).params[0]
+    k_n, c_n = params[C.P_N1], params[C.P_DAMP_C0]
+    assert params[C.P_T1] == pytest.approx(2 * 0.7 / 1.7 * k_n, rel=1e-15)
+    g = c_n / (2 * math.sqrt(scene.contact.mass * k_n))
+    assert params[C.P_TDAMP] * math.sqrt(params[C.P_T1]) == pytest.approx(2 * g * math.sqrt(scene.contact.mass * params[C.P_T1]))
+
+
+def test_normal_speed_holds_v_n_as_kratos_does():
+    scene = Scene(e_n=(0.5,), angles_deg=(0.0, 30.0, 60.0), speed_is="normal")
+    v_n, v_t, _, theta = scene.impacts(0.5)
+    assert np.all(v_n == 5.0) and np.allclose(v_t, 5.0 * np.tan(np.radians([0, 30, 60])), rtol=1e-15)
+    assert list(theta) == [0.0, 30.0, 60.0]
+    resultant = Scene(e_n=(0.5,), angles_deg=(60.0,))
+    assert np.hypot(*resultant.impacts(0.5)[:2])[0] == pytest.approx(5.0)
+
+
+def harness(*args, cwd=None):
+    return subprocess.run([sys.executable, "-m", "harness.cli", *args], capture_output=True, text=True, cwd=cwd,
+                          timeout=600)
+
+
+@pytest.fixture(scope="module")
+def paper_dir(tmp_path_factory):
+    out = tmp_path_factory.mktemp("paper")
+    proc = harness("paper", "--laws", "thornton,linear-spring-dashpot,partially-latching-spring",
+                   "--steps-per-contact", "1000", "-o", str(out), "--quiet")
+    assert proc.returncode == 0, proc.stderr
+    return out
+
+
+def test_paper_writes_its_tables_and_page(paper_dir):
+    oblique = pd.read_csv(paper_dir / "paper.csv")
+    assert set(oblique.model) == {"thornton", "linear-spring-dashpot", "partially-latching-spring",
+                                  "hertz-mindlin (elastic)"}
+    assert (oblique.v_n0 == 5.0).all() and oblique.psi1_star.max() == pytest.approx(14.0, rel=1e-3)
+    assert set(oblique[oblique.model == "thornton"].e_n_target) == {0.25, 0.5, 0.75, 0.9}
+    html = (paper_dir / "paper.html").read_text()
+    assert html.count("data:image/png;base64,") == 4 and "provisional" in html
+    assert "partially-latching-spring</b>" in html                 # named among the reconstructed laws
+
+
+def test_paper_normal_impacts_match_independent_integrations(paper_dir):
+    """Thornton's contact duration and peak force against elastic Hertz, from oracles.thornton_impact (scipy, no
+    harness code), at e_n 0.5 and 0.25."""
+    normal = pd.read_csv(paper_dir / "paper-normal.csv")
+    c, v = Scene().contact, 5.0
+    hertz = oracles.hertz_elastic(c.mass, c.radius, c.E_star, v)
+    for e in (0.5, 0.25):
+        r = brentq(lambda x: oracles.thornton_e(1.0, x) - e, 1e-12, 1.0 - 1e-12, xtol=1e-15)   # V_y/V
+        p_y = (r * r * v * v * c.E_star ** 4 * c.rho * 40.0 / math.pi ** 4) ** 0.2
+        oracle = oracles.thornton_impact(p_y, c.E_star, c.radius, c.mass, v)
+        row = normal[(normal.model == "thornton") & (normal.e_n_target == e)].iloc[0]
+        assert row["t_c/t_Hertz"] == pytest.approx(oracle["t_c"] / hertz["t_c"], rel=1e-4)
+        assert row["F_max/F_Hertz"] == pytest.approx(oracle["f_max"] / hertz["f_max"], rel=1e-4)
+
+
+def test_paper_sliding_table_agrees_with_its_conditions(paper_dir):
+    sliding = pd.read_csv(paper_dir / "paper-sliding.csv")
+    assert len(sliding) == 12
+    assert (sliding.difference.abs() <= sliding.resolution + 1e-5).all()
+
+
+def test_paper_refuses_an_unknown_law(tmp_path):
+    proc = harness("paper", "--laws", "nonsense", "-o", str(tmp_path / "p"))
+    assert proc.returncode == 2 and proc.stderr.count("\n") == 1 and "unknown law" in proc.stderr
+    assert not (tmp_path / "p").exists()
