@@ -7,8 +7,8 @@ import numpy as np
 import pandas as pd
 
 from .laws import LAWS, compose
-from .laws.calibration import hertz_contact_time
-from .laws.normal import hertz_peak_overlap
+from .submodels.calibration import hertz_contact_time
+from .submodels.normal.hertz import hertz_peak_overlap
 from .scene import DEFAULT_EN, Scene
 from .sliding import sliding_thresholds, threshold_table
 from .solver.reference import simulate

@@ -12,9 +12,6 @@ from dataclasses import dataclass
 from .errors import UserError
 from .solver import codes as C
 
-MINDLIN_CODES = (C.TANGENTIAL_MINDLIN_INCREMENTAL, C.TANGENTIAL_MINDLIN_RESCALE, C.TANGENTIAL_MINDLIN_TOTAL,
-                 C.TANGENTIAL_MINDLIN_DERESIEWICZ, C.TANGENTIAL_VISCOUS_MINDLIN)
-
 
 @dataclass(frozen=True)
 class Limit:
@@ -56,11 +53,12 @@ def stability_limit(law, scene, e_n, params, tangential=True):
     modes = [("normal", k_n, c_n, mass)]
     code = law.tangential.code
     if tangential and scene.mu > 0.0:
+        from .solver.dispatch import TANGENTIAL_VISCOUS, tangential_stiffness
         p1 = law.tangential.parameter(contact, law.normal.parameters(contact, e_n, scene.speed).linear_stiffness)
-        k_t = abs(8.0 * p1 * math.sqrt(contact.radius * alpha) if code in MINDLIN_CODES else p1)   # |k_s| = |nu| k_n
-        c_t = abs(params[C.P_TDAMP]) * math.sqrt(k_t)                          # for YADE CundallStrack with nu < 0
+        k_t = abs(tangential_stiffness(code, p1, math.sqrt(contact.radius * alpha)))   # |k_s| = |nu| k_n for YADE
+        c_t = abs(params[C.P_TDAMP]) * math.sqrt(k_t)                               # CundallStrack with nu < 0
         m_t = 1.0 / (1.0 / mass + contact.radius ** 2 / contact.inertia)
-        spring = 0.0 if code in (C.TANGENTIAL_VISCOUS_LINEAR, C.TANGENTIAL_VISCOUS_MINDLIN) else k_t
+        spring = 0.0 if TANGENTIAL_VISCOUS[code] else k_t
         modes.append(("tangential", spring, c_t, m_t))
     limits = []
     for mode, k, c, m in modes:

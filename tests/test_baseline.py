@@ -46,7 +46,7 @@ def test_engine_rows_have_a_looser_tolerance(now, tmp_path):
 
 def test_deliberately_broken_damping_is_caught(now, monkeypatch):
     """Scale the Appendix-B damping by 1.01: the hertz-mindlin paper rows move and the check names them."""
-    from harness.laws import calibration
+    from harness.submodels import calibration
     original = calibration.thornton_appendix_b_g
     monkeypatch.setattr(calibration, "thornton_appendix_b_g", lambda e: 1.01 * original(e))
     broken = simulate(compose("hertz-mindlin"), baseline.matrix_scene(), steps_per_contact=baseline.STEPS_PER_CONTACT)[0]

@@ -41,7 +41,7 @@ def app_b_achieved(e):
 
 def law_with_ratio(name, ratio):
     """The law with k_t/k_n = ratio where its tangential spring takes one (linear, Walton-Braun); Mindlin laws keep
-    k_t/k_n = kappa(nu), which the scene's nu moves (harness/laws/tangential.py)."""
+    k_t/k_n = kappa(nu), which the scene's nu moves (harness/submodels/tangential/ratio.py)."""
     law = compose(name)
     if law.tangential.name in ("linear", "walton-braun"):
         return compose(name, {"tangential": f"{law.tangential.name}:{ratio!r}"})

@@ -8,6 +8,7 @@ from conftest import EXAMPLE
 from harness.laws import LAWS, compose
 from harness.scene import Scene
 from harness.solver import codes as C
+from harness.solver import dispatch as D
 from harness.solver.plan import plan_batch
 from harness.solver.reference import simulate
 
@@ -60,7 +61,7 @@ def test_plastic_laws_error_falls_like_dt_squared(name):
 def test_normal_impact_skips_tangential_model_and_rotation():
     scene = Scene(e_n=(0.5,), angles_deg=(0.0, 30.0))
     batch = plan_batch(compose("hertz-mindlin"), scene, 0.5, 100)
-    assert list(batch.ints[:, C.I_TANGENTIAL]) == [C.TANGENTIAL_NONE, C.TANGENTIAL_MINDLIN_RESCALE]
+    assert list(batch.ints[:, C.I_TANGENTIAL]) == [D.TANGENTIAL_NONE, D.TANGENTIAL_MINDLIN_RESCALE]
     frame = simulate(compose("hertz-mindlin"), scene, steps_per_contact=100)[0]
     assert frame.omega1.iloc[0] == 0.0 and frame.v_t1.iloc[0] == 0.0
 
@@ -68,7 +69,7 @@ def test_normal_impact_skips_tangential_model_and_rotation():
 def test_frictionless_scene_needs_no_tangential_model():
     scene = Scene(e_n=(0.5,), angles_deg=(30.0, 60.0), mu=0.0)
     batch = plan_batch(compose("thornton"), scene, 0.5, 100)
-    assert (batch.ints[:, C.I_TANGENTIAL] == C.TANGENTIAL_NONE).all()
+    assert (batch.ints[:, C.I_TANGENTIAL] == D.TANGENTIAL_NONE).all()
     frame = simulate(compose("thornton"), scene, steps_per_contact=100)[0]
     assert (frame.v_t1 == frame.v_t0).all() and (frame.omega1 == 0.0).all()
 
@@ -76,7 +77,7 @@ def test_frictionless_scene_needs_no_tangential_model():
 def test_spin_alone_switches_the_tangential_model_on():
     scene = Scene(e_n=(0.5,), angles_deg=(0.0,), omega0=100.0)
     batch = plan_batch(compose("thornton"), scene, 0.5, 100)
-    assert batch.ints[0, C.I_TANGENTIAL] != C.TANGENTIAL_NONE
+    assert batch.ints[0, C.I_TANGENTIAL] != D.TANGENTIAL_NONE
     row = simulate(compose("thornton"), scene, steps_per_contact=400)[0].iloc[0]
     assert row.omega1 < 100.0 and row.v_t1 > 0.0     # friction converts spin into forward motion
 

@@ -75,7 +75,7 @@ def dialect(law_name, options=None):
     Coulomb test; options change what the model honours (limitForce clips; tangential_damping off removes c_t;
     ktToKnUser gives k_t = 0.285714286 k_n; no_history replaces the spring by capped viscous friction)."""
     from ..laws import compose
-    from ..laws.registry import replace_submodels
+    from ..laws.law import replace_submodels
     options = dict(options or {})
     check_options(law_name, options)
     overrides = dict(DIALECTS[law_name])
@@ -120,7 +120,7 @@ def supports(law_name):
 
 def law_stiffness(scene):
     """k_n of LIGGGHTS hooke: 16/15 sqrt(R) E* (15 m V_c^2/(16 sqrt(R) E*))^1/5 with V_c = the scene speed."""
-    from ..laws.calibration import hertz_equivalent_stiffness
+    from ..submodels.calibration import hertz_equivalent_stiffness
     c = scene.contact
     return hertz_equivalent_stiffness(c.E_star, c.radius, c.mass, scene.speed)
 
@@ -145,7 +145,7 @@ def settings(law, scene, e_n, options=None):
         properties.append(("characteristicVelocity", "scalar", scene.speed))
     if model == "hooke/hysteresis":
         restitution = 1.0                               # no viscous part: all dissipation by hysteresis
-        from ..laws.normal import LudingHysteresis
+        from ..submodels.normal.liggghts_hysteresis import LudingHysteresis
         k1 = law_stiffness(scene)
         k2max, d_lim = LudingHysteresis.stiffness_and_limit(k1, scene.contact, e_n, scene.speed)
         depth = d_lim * (k2max - k1) / (k2max * 2 * scene.radius)

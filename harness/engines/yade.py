@@ -44,7 +44,7 @@ def dialect(law_name, options=None):
     overlap >= 0 until the first negative overlap, App. B damping with the normal force clipped at 0, incremental
     8G*a shear spring (not reduced as a falls), dashpot after the Coulomb test, torque lever R - d, noRatch slip."""
     from ..laws import compose
-    from ..laws.registry import replace_submodels
+    from ..laws.law import replace_submodels
     options = dict(options or {})
     unknown = set(options) - {"precision", "linear"}
     if unknown:
@@ -120,7 +120,7 @@ def script(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps
                   friction_angle=math.atan(scene.mu), radius=radius, spheres=spheres, ig2="Ig2_Wall_Sphere_ScGeom",
                   hertzian=True, dt=dt, chunk=chunk, max_chunks=max(1, max_steps // chunk + 1), observe=bool(observe))
     if law.name == "walton-braun":
-        from ..laws.normal import YadeLuding
+        from ..submodels.normal.yade_luding import YadeLuding
         luding = YadeLuding()
         k1, kp, d_p_max, _ = luding.parameters(scene.contact, e_n, scene.speed).values
         if not kp > k1:             # YADE throws 'k1 have to be less as kp!' and the interpreter aborts (signal 6)

@@ -21,13 +21,9 @@ from .contact_ode import (A_DFN, A_FN, A_TRIAL, E_RELEASE, E_REVERSAL, E_SLIP, E
                           Y_ALPHA, Y_FS, Y_RATE, Y_VX, Y_W, cone_rate, coulomb_cone, edge_w, evaluate, events,
                           slip_velocity)
 from .kernel import illinois
-from .normal_kernels import residual_overlap
-from .tangential_kernels import cubic_root
+from .dispatch import TANGENTIAL_IMPLICIT, TANGENTIAL_NONE, normal_residual, tangential_onset_w
 from .steppers import J_END, J_START, STAGES, dp_step, hermite, sdirk_step
 
-SUPPORTED_NORMAL = (C.NORMAL_LINEAR, C.NORMAL_HERTZ, C.NORMAL_WALTON_BRAUN, C.NORMAL_THORNTON, C.NORMAL_STRONGE)
-SUPPORTED_TANGENTIAL = (C.TANGENTIAL_NONE, C.TANGENTIAL_LINEAR, C.TANGENTIAL_MINDLIN_INCREMENTAL,
-                        C.TANGENTIAL_MINDLIN_RESCALE, C.TANGENTIAL_MINDLIN_TOTAL, C.TANGENTIAL_WALTON_BRAUN)
 
 SAFETY, GROW, SHRINK = 0.9, 5.0, 0.2
 LOCATE_ITERATIONS = 60
@@ -45,18 +41,21 @@ ONSET_PROBE = 1e-9          # overlap, in alpha_ref, at which the first touch's 
 def supports(ints, params):
     """Rows this integrator covers: the paper scheme with the normal laws and tangential springs it models, without
     a tangential dashpot or an engine's slip form (the rest stays on the graded Richardson ladder)."""
-    return (np.isin(ints[:, C.I_NORMAL], SUPPORTED_NORMAL) & np.isin(ints[:, C.I_TANGENTIAL], SUPPORTED_TANGENTIAL)
+    from ..submodels.registry import kernels
+    normal = np.array([k.adaptive for k in kernels("normal")])
+    tangential = np.array([k.adaptive for k in kernels("tangential")])
+    return (normal[ints[:, C.I_NORMAL]] & tangential[ints[:, C.I_TANGENTIAL]]
             & (ints[:, C.I_INTEGRATOR] == C.INTEGRATOR_PAPER) & (params[:, C.P_TDAMP] == 0.0)
             & (params[:, C.P_SLIP_R1] == 0.0) & (params[:, C.P_BIG_R] == 0.0))
 
 
 def stepper_names(ints):
     """Which stepper each row takes: the implicit one for Walton-Braun's spring, Dormand-Prince otherwise."""
-    return np.where(ints[:, C.I_TANGENTIAL] == C.TANGENTIAL_WALTON_BRAUN, "SDIRK4(3)", "DP5(4)")
+    return np.where(TANGENTIAL_IMPLICIT[ints[:, C.I_TANGENTIAL]], "SDIRK4(3)", "DP5(4)")
 
 
 @njit(cache=True)
-def interpolated_root(kind, p, ints, y, y_end, f_start, f_end, mode, h, state, dy, aux, scale, g, g_start, g_end):
+def interpolated_root(kind, p, ints, y, y_end, f_start, f_end, mode, h, state, dy, aux, scale, g, g_start, g_end, ext):
     """Step fraction of event `kind` on the step's Hermite interpolant (one force evaluation per trial): a cheap,
     O(h^4) first estimate for `locate`; returns (fraction, slope of the event function there, evaluations)."""
     lo, hi, g_lo, g_hi, side, trials = 0.0, 1.0, g_start, g_end, 0, 0
@@ -66,8 +65,8 @@ def interpolated_root(kind, p, ints, y, y_end, f_start, f_end, mode, h, state, d
         if not lo < mid < hi:
             mid = 0.5 * (lo + hi)
         hermite(y, y_end, f_start, f_end, h, mid, state)
-        evaluate(p, ints, state, mode, math.nan, dy, aux)
-        events(p, ints, state, mode, aux, scale, g)
+        evaluate(p, ints, state, mode, math.nan, dy, aux, ext)
+        events(p, ints, state, mode, aux, scale, g, ext)
         trials += 1
         if abs(g[kind]) <= EVENT_ROUND_OFF:
             break
@@ -76,18 +75,18 @@ def interpolated_root(kind, p, ints, y, y_end, f_start, f_end, mode, h, state, d
 
 
 @njit(cache=True)
-def advance(implicit, p, ints, y, mode, h, k, y_new, stage, aux, scale, tol, work, jac, lu, pivot, spring):
+def advance(implicit, p, ints, y, mode, h, k, y_new, stage, aux, scale, tol, work, jac, lu, pivot, spring, ext):
     """One step of length h with the row's stepper (spring[0]: w at y, spring[1]: at y_new); returns (error norm,
     force evaluations)."""
     if implicit:
         return sdirk_step(p, ints, y, spring[0], mode, h, k, y_new, work, jac, lu, pivot, aux, scale, tol,
-                          spring[1:])
-    return dp_step(p, ints, y, mode, h, k, y_new, stage, aux, scale, tol), STAGES - 1
+                          spring[1:], ext)
+    return dp_step(p, ints, y, mode, h, k, y_new, stage, aux, scale, tol, ext), STAGES - 1
 
 
 @njit(cache=True)
 def locate(kind, implicit, p, ints, y, mode, h, k, y_new, stage, aux, scale, g_start, g_end, g, tol, guess, slope,
-           work, jac, lu, pivot, spring):
+           work, jac, lu, pivot, spring, ext):
     """Step fraction in (0, 1] at which event `kind` happens inside the step of length h from y: secant steps on the
     event function after real trial steps, from `guess` with `slope` (the interpolant's), kept inside the bracket
     (Illinois false position when a secant leaves it), until the function is within round-off or a share of the
@@ -103,8 +102,8 @@ def locate(kind, implicit, p, ints, y, mode, h, k, y_new, stage, aux, scale, g_s
             if not lo < mid < hi:
                 mid = 0.5 * (lo + hi)
         _, spent = advance(implicit, p, ints, y, mode, mid * h, k, y_new, stage, aux, scale, tol, work, jac, lu,
-                           pivot, spring)
-        events(p, ints, y_new, mode, aux, scale, g)
+                           pivot, spring, ext)
+        events(p, ints, y_new, mode, aux, scale, g, ext)
         trials += 1
         evaluations += spent
         value = g[kind]
@@ -129,7 +128,7 @@ def crosses(e, g_start, g_end):
 
 
 @njit(cache=True)
-def settle(p, ints, y, mode, g, aux, spring):
+def settle(p, ints, y, mode, g, aux, spring, ext):
     """At a step's start: a turn already passed unloads; a slide whose cone outgrows the spring sticks, a stick
     whose spring is beyond the cone, or on it within round-off and moving out, slides; a
     Walton-Braun spring whose slip has turned reverses. Needed after events at which the rates jump (the yield
@@ -138,7 +137,7 @@ def settle(p, ints, y, mode, g, aux, spring):
     Returns whether the mode changed."""
     f_n = aux[A_FN]
     if g[E_TURN] > 0.0:
-        start_unloading(p, ints, y, mode)
+        start_unloading(p, ints, y, mode, ext)
         return True
     if mode[M_TANGENTIAL] == SLIDE and g[E_STICK] > 0.0:
         start_stick(p, ints, y, mode, f_n, spring)
@@ -163,11 +162,11 @@ def beyond_cone(p, ints, y, aux):
 
 
 @njit(cache=True, inline="always")
-def start_unloading(p, ints, y, mode):
+def start_unloading(p, ints, y, mode, ext):
     """The normal motion turns: unloading from alpha_max, towards its residual dent."""
     mode[M_LOADING], mode[M_AMAX] = 0.0, y[Y_ALPHA]
-    mode[M_DENT] = residual_overlap(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], p[C.P_RADIUS],
-                                    y[Y_ALPHA])
+    mode[M_DENT] = normal_residual(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], p[C.P_RADIUS],
+                                    y[Y_ALPHA], ext)
 
 
 @njit(cache=True, inline="always")
@@ -182,7 +181,7 @@ def start_stick(p, ints, y, mode, f_n, spring):
     mode[M_TANGENTIAL] = STICK
     mode[M_STICKS] += 1.0
     y[Y_FS] = mode[M_SIGN] * coulomb_cone(p, ints, f_n)
-    spring[0] = edge_w(mode)
+    spring[0] = edge_w(ints[C.I_TANGENTIAL], mode)
 
 
 @njit(cache=True, inline="always")
@@ -196,45 +195,45 @@ def reverse(p, ints, y, mode, f_n, spring):
 
 
 @njit(cache=True)
-def walton_braun_onset(p, ints, y, mode, dy, aux, scale, spring):
-    """Walton-Braun's spring at first touch: sticking in the direction of V_s from T* = 0. Where mu N starts from 0
+def implicit_onset(p, ints, y, mode, dy, aux, scale, spring, ext):
+    """An implicit spring (Walton-Braun's) at first touch: sticking in the direction of V_s from T* = 0. Where mu N starts from 0
     at a finite rate, x starts at its self-similar value, 1 - x = beta x^(1/3) with beta = k_t0 |V_s|/(mu N'):
     the h -> 0 limit of the scheme's first steps; from 0 where N' starts from 0 (the spring rides the cone)."""
     v_s = slip_velocity(p, y)
     mode[M_TANGENTIAL], mode[M_DIR], mode[M_STAR] = STICK, (1.0 if v_s >= 0.0 else -1.0), 0.0
-    evaluate(p, ints, y, mode, 1.0, dy, aux)
+    evaluate(p, ints, y, mode, 1.0, dy, aux, ext)
     w = 1.0
     if coulomb_cone(p, ints, aux[A_FN]) == 0.0 and v_s != 0.0:
-        evaluate_just_after_touch(p, ints, y, mode, 1.0, dy, aux, scale)   # N' (0 at alpha = 0 itself)
+        evaluate_just_after_touch(p, ints, y, mode, 1.0, dy, aux, scale, ext)   # N' (0 at alpha = 0 itself)
         rise = p[C.P_MU] * aux[A_DFN]
-        w = cubic_root(p[C.P_T1] * abs(v_s) / rise, 1.0) if rise > 0.0 else 0.0     # w^3 + beta w = 1
+        w = tangential_onset_w(ints[C.I_TANGENTIAL], p[C.P_T1], v_s, rise)           # w^3 + beta w = 1
     spring[0] = w
 
 
 @njit(cache=True, inline="always")
-def evaluate_just_after_touch(p, ints, y, mode, w, dy, aux, scale):
+def evaluate_just_after_touch(p, ints, y, mode, w, dy, aux, scale, ext):
     """The rates at a tiny overlap (ONSET_PROBE), where first touch's stick-or-slide is decided."""
     probe = y.copy()
     probe[Y_ALPHA] = ONSET_PROBE * scale[0]
-    evaluate(p, ints, probe, mode, w, dy, aux)
+    evaluate(p, ints, probe, mode, w, dy, aux, ext)
 
 
 @njit(cache=True)
-def onset_mode(p, ints, y, mode, dy, aux, scale, spring):
+def onset_mode(p, ints, y, mode, dy, aux, scale, spring, ext):
     """Stick or slide at first touch: stick while mu |F_n| > 0 there; where both start from 0 (undamped laws, whose
     spring and cone grow alike), slide if the trial spring outgrows the cone, judged at a tiny overlap."""
-    if ints[C.I_TANGENTIAL] == C.TANGENTIAL_NONE or p[C.P_MU] == 0.0:
+    if ints[C.I_TANGENTIAL] == TANGENTIAL_NONE or p[C.P_MU] == 0.0:
         mode[M_TANGENTIAL] = 0.0
         return
-    if ints[C.I_TANGENTIAL] == C.TANGENTIAL_WALTON_BRAUN:
-        walton_braun_onset(p, ints, y, mode, dy, aux, scale, spring)
+    if TANGENTIAL_IMPLICIT[ints[C.I_TANGENTIAL]]:
+        implicit_onset(p, ints, y, mode, dy, aux, scale, spring, ext)
         return
     mode[M_TANGENTIAL] = STICK
-    evaluate(p, ints, y, mode, math.nan, dy, aux)
+    evaluate(p, ints, y, mode, math.nan, dy, aux, ext)
     if p[C.P_MU] * abs(aux[A_FN]) > 0.0:
         mode[M_STICKS] = 1.0
         return
-    evaluate_just_after_touch(p, ints, y, mode, math.nan, dy, aux, scale)
+    evaluate_just_after_touch(p, ints, y, mode, math.nan, dy, aux, scale, ext)
     if abs(aux[A_TRIAL]) > p[C.P_MU] * aux[A_DFN]:
         mode[M_TANGENTIAL] = SLIDE
         mode[M_SIGN] = 1.0 if aux[A_TRIAL] > 0.0 else -1.0
@@ -245,13 +244,13 @@ def onset_mode(p, ints, y, mode, dy, aux, scale, spring):
 @njit(cache=True, inline="always")
 def spring_w(ints, mode, spring):
     """w to evaluate with: the sticking Walton-Braun spring's own, NaN (read from F_s) otherwise."""
-    if ints[C.I_TANGENTIAL] == C.TANGENTIAL_WALTON_BRAUN and mode[M_TANGENTIAL] == STICK:
+    if TANGENTIAL_IMPLICIT[ints[C.I_TANGENTIAL]] and mode[M_TANGENTIAL] == STICK:
         return spring[0]
     return math.nan
 
 
 @njit(cache=True)
-def impact(p, ints, tol, t_ref, row_out):
+def impact(p, ints, tol, t_ref, row_out, ext):
     """One impact from first touch to release at tolerance `tol`; fills row_out like kernel.integrate, with O_STEPS
     the number of force evaluations. Walton-Braun's spring takes the implicit stepper (stiff where it rides the
     cone), every other row Dormand-Prince."""
@@ -268,14 +267,14 @@ def impact(p, ints, tol, t_ref, row_out):
     k = np.zeros((STAGES, N_Y))
     y_new, stage, dy, aux, aux_new = np.zeros(N_Y), np.zeros(N_Y), np.zeros(N_Y), np.zeros(N_AUX), np.zeros(N_AUX)
     g_start, g_end, g = np.zeros(N_EVENTS), np.zeros(N_EVENTS), np.zeros(N_EVENTS)
-    implicit = ints[C.I_TANGENTIAL] == C.TANGENTIAL_WALTON_BRAUN
+    implicit = TANGENTIAL_IMPLICIT[ints[C.I_TANGENTIAL]]
     exponent = -0.25 if implicit else -0.2            # 1/(order + 1) of the embedded estimate
     work, jac = np.zeros((9, N_Y)), np.zeros((3, 3, N_Y, N_Y))      # the implicit stepper's: see sdirk_step
     lu, pivot = np.zeros((N_Y, N_Y)), np.zeros(N_Y, dtype=np.int64)
     spring = np.full(2, math.nan)                     # w = x^(1/3) of Walton-Braun's sticking spring: now, step's end
-    onset_mode(p, ints, y, mode, k[0], aux, scale, spring)
-    evaluate(p, ints, y, mode, spring_w(ints, mode, spring), k[0], aux)
-    events(p, ints, y, mode, aux, scale, g_start)
+    onset_mode(p, ints, y, mode, k[0], aux, scale, spring, ext)
+    evaluate(p, ints, y, mode, spring_w(ints, mode, spring), k[0], aux, ext)
+    events(p, ints, y, mode, aux, scale, g_start, ext)
     evaluations, accepted, stalled = 2, 0, 0
     t, h = 0.0, FIRST_STEP * t_ref
     f_peak, a_peak = aux[A_FN], 0.0
@@ -285,7 +284,7 @@ def impact(p, ints, tol, t_ref, row_out):
         if t >= t_cap:
             break
         err, spent = advance(implicit, p, ints, y, mode, h, k, y_new, stage, aux_new, scale, tol, work, jac, lu,
-                             pivot, spring)
+                             pivot, spring, ext)
         evaluations += spent
         if not err <= 1.0:
             h *= max(SHRINK, SAFETY * err ** exponent) if err < math.inf else SHRINK
@@ -293,12 +292,12 @@ def impact(p, ints, tol, t_ref, row_out):
                 status = C.STATUS_NONFINITE
                 break
             continue
-        events(p, ints, y_new, mode, aux_new, scale, g_end)
+        events(p, ints, y_new, mode, aux_new, scale, g_end, ext)
         first, frac, slope, release, release_rise = -1, 1.0, 0.0, 2.0, 0.0
         for e in range(N_EVENTS):                     # the first event of the step, on its interpolant
             if crosses(e, g_start[e], g_end[e]):
                 at, rise, trials = interpolated_root(e, p, ints, y, y_new, k[0], k[STAGES - 1], mode, h, stage, dy,
-                                                     aux, scale, g, g_start[e], g_end[e])
+                                                     aux, scale, g, g_start[e], g_end[e], ext)
                 evaluations += trials
                 if e == E_RELEASE:
                     release, release_rise = at, rise
@@ -309,11 +308,11 @@ def impact(p, ints, tol, t_ref, row_out):
         step = h
         if first >= 0:                                # land on it: located on real steps, then the landing step
             frac, spent = locate(first, implicit, p, ints, y, mode, h, k, y_new, stage, aux_new, scale,
-                                 g_start[first], g_end[first], g, tol, frac, slope, work, jac, lu, pivot, spring)
+                                 g_start[first], g_end[first], g, tol, frac, slope, work, jac, lu, pivot, spring, ext)
             evaluations += spent
             step = frac * h
             err, spent = advance(implicit, p, ints, y, mode, step, k, y_new, stage, aux_new, scale, tol, work, jac,
-                                 lu, pivot, spring)
+                                 lu, pivot, spring, ext)
             evaluations += spent
             if not err <= 1.0:                        # a singular end (alpha^3/2 at release): refine towards it
                 h = step * max(SHRINK, SAFETY * err ** exponent) if err < math.inf else step * SHRINK
@@ -335,7 +334,7 @@ def impact(p, ints, tol, t_ref, row_out):
             status = C.STATUS_OK
             break
         if first == E_TURN:
-            start_unloading(p, ints, y, mode)
+            start_unloading(p, ints, y, mode, ext)
         elif first == E_SLIP:
             start_slide(y, mode)
         elif first == E_STICK:
@@ -344,28 +343,28 @@ def impact(p, ints, tol, t_ref, row_out):
             reverse(p, ints, y, mode, f_n, spring)
         if first == E_TURN or first == E_SLIP or first == E_STICK or first == E_REVERSAL:
             jac[J_START, 2, 0, 0] = 0.0               # a new regime: a new Jacobian
-            evaluate(p, ints, y, mode, spring_w(ints, mode, spring), k[0], aux)     # the new regime's rates
+            evaluate(p, ints, y, mode, spring_w(ints, mode, spring), k[0], aux, ext)     # the new regime's rates
             evaluations += 1
         else:
             k[0, :] = k[STAGES - 1, :]
             aux[:] = aux_new
-        events(p, ints, y, mode, aux, scale, g_start)
+        events(p, ints, y, mode, aux, scale, g_start, ext)
         for _ in range(SETTLE_ROUNDS):
-            if not settle(p, ints, y, mode, g_start, aux, spring):
+            if not settle(p, ints, y, mode, g_start, aux, spring, ext):
                 break
             jac[J_START, 2, 0, 0] = 0.0
-            evaluate(p, ints, y, mode, spring_w(ints, mode, spring), k[0], aux)
-            events(p, ints, y, mode, aux, scale, g_start)
+            evaluate(p, ints, y, mode, spring_w(ints, mode, spring), k[0], aux, ext)
+            events(p, ints, y, mode, aux, scale, g_start, ext)
             evaluations += 1
         h *= min(GROW, SAFETY * err ** exponent) if err > 0.0 else GROW
     row_out[C.O_VZ], row_out[C.O_VX], row_out[C.O_W] = -y[Y_RATE], y[Y_VX], y[Y_W]
     row_out[C.O_TC], row_out[C.O_FMAX], row_out[C.O_AMAX] = t, f_peak, a_peak
     row_out[C.O_STEPS], row_out[C.O_STATUS], row_out[C.O_ACCEPTED] = evaluations, status, accepted
-    row_out[C.O_STICKING] = mode[M_STICKS] + (1.0 if ints[C.I_TANGENTIAL] == C.TANGENTIAL_WALTON_BRAUN else 0.0)
+    row_out[C.O_STICKING] = mode[M_STICKS] + (1.0 if implicit else 0.0)   # an implicit spring is never on the cone
 
 
 @njit(cache=True, parallel=True)
-def integrate_adaptive(params, ints, tol, t_ref, out):
+def integrate_adaptive(params, ints, tol, t_ref, out, ext):
     """Every row of params/ints at tolerance tol (rows in parallel); t_ref per row: the contact-time estimate."""
     for i in prange(params.shape[0]):
-        impact(params[i], ints[i], tol, t_ref[i], out[i])
+        impact(params[i], ints[i], tol, t_ref[i], out[i], ext)

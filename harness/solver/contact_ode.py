@@ -1,10 +1,10 @@
 """The paper scheme's contact ODE in its h -> 0 limit, for the adaptive integrator: rates and event functions.
 
 Between changes of regime the impact is a smooth ODE in y = (alpha, alpha_dot, v_x, omega_y, F_s):
-m alpha'' = m g - F_n with F_n = F_el(alpha, alpha_max) + c0 alpha^p alpha_dot (MODELS 2); m v_x' = F_t and
+m alpha'' = m g - F_n with F_n = F_el(alpha, alpha_max) + c0 alpha^p alpha_dot; m v_x' = F_t and
 I omega' = -R F_t; while sticking F_t = F_s with F_s' = -k_t(a) V_s (+ F_s a'/a for Mindlin's eq. 18b rescale while
-a shrinks, always for the total form), V_s = v_x - R omega; while sliding F_t = sigma mu |F_n| (MODELS 3).
-Walton-Braun's spring (MODELS 3): T = -F_s rises in the direction d = sign(V_s) as T' = k_t0 x^(1/3) V_s with
+a shrinks, always for the total form), V_s = v_x - R omega; while sliding F_t = sigma mu |F_n|.
+Walton-Braun's spring (docs/laws.md): T = -F_s rises in the direction d = sign(V_s) as T' = k_t0 x^(1/3) V_s with
 x = (mu N - d T)/(mu N - d T*), T* = sigma* mu N (T* scales with N) and sigma* set to T/(mu N) at each reversal
 of V_s. Its state is also known by w = x^(1/3): F_s = -d mu N (1 - (1 - d sigma*) w^3) and F_s' = -k_t0 w V_s,
 smooth in w where they are singular in F_s (the implicit step solves for w).
@@ -15,9 +15,9 @@ import numpy as np
 from numba import njit
 
 from . import codes as C
+from .dispatch import (TANGENTIAL_IMPLICIT, TANGENTIAL_LOG_RATE, normal_below, normal_force, normal_slope,
+                       tangential_edge_w, tangential_force_from_w, tangential_stiffness, tangential_w_from_force)
 from .kernel import damping_power, loading_kink
-from .normal_kernels import normal_elastic
-from .tangential_kernels import stiffness
 
 Y_ALPHA, Y_RATE, Y_VX, Y_W, Y_FS = 0, 1, 2, 3, 4
 N_Y = 5
@@ -33,30 +33,20 @@ N_EVENTS = 7
 INACTIVE = -math.inf
 
 @njit(cache=True)
-def normal_ode(ints, p, alpha, amax):
-    """F_el, dF_el/dalpha and the contact radius a with d(ln a)/dalpha, on the branch (alpha, alpha_max) selects:
-    a ~ F^(1/3) on Hertz branches (original or unloading radius), a = a_y (F/F_y)^(1/2) on Stronge's plastic line,
-    a = sqrt(R alpha) otherwise (MODELS 2). At the yield overlap itself the slope is the plastic one: the loading
-    curve's kink is an event that lands on or just past it, and the rates must be those that follow."""
+def normal_ode(ints, p, alpha, amax, ext):
+    """F_el, dF_el/dalpha and the contact radius a with d(ln a)/dalpha, on the branch (alpha, alpha_max) selects
+    (the kernel's slope: a ~ F^(1/3) on Hertzian branches, a = sqrt(R alpha) on linear ones). At the yield overlap
+    itself the slope is the plastic one: the loading curve's kink is an event that lands on or just past it, and
+    the rates must be those that follow."""
     code, radius = ints[C.I_NORMAL], p[C.P_RADIUS]
+    p1, p2, p3, p4 = p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4]
     if alpha <= 0.0:
-        return (p[C.P_N1] * alpha if code == C.NORMAL_LINEAR else 0.0), 0.0, 0.0, 0.0
-    f, a = normal_elastic(code, p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], radius, alpha, amax)
-    if a <= 0.0:                                      # below the residual dent: normal_elastic returns F = delta < 0
+        return normal_below(code, p1, p2, p3, p4, alpha, ext), 0.0, 0.0, 0.0
+    f, a = normal_force(code, p1, p2, p3, p4, radius, alpha, amax, ext)
+    if a <= 0.0:                                      # below the residual dent: the force is delta < 0
         return f, 1.0, 0.0, 0.0
-    plain = 0.5 / alpha                               # a = sqrt(R alpha)
-    loading = alpha >= amax
-    if code == C.NORMAL_LINEAR:
-        return f, p[C.P_N1], a, plain
-    if code == C.NORMAL_WALTON_BRAUN:
-        return f, (p[C.P_N1] if loading else p[C.P_N2]), a, plain
-    hertz_slope = 2.0 * p[C.P_N1] * a
-    if code == C.NORMAL_THORNTON and loading and alpha >= p[C.P_N3]:
-        return f, math.pi * p[C.P_N2] * radius, a, plain
-    if code == C.NORMAL_STRONGE and loading and alpha >= p[C.P_N2]:
-        slope = 2.0 * p[C.P_N3] / p[C.P_N2]
-        return f, slope, a, slope / (2.0 * f)
-    return f, hertz_slope, a, hertz_slope / (3.0 * f)
+    slope, log_slope = normal_slope(code, p1, p2, p3, p4, radius, alpha, alpha >= amax, f, a, ext)
+    return f, slope, a, log_slope
 
 
 @njit(cache=True)
@@ -68,13 +58,13 @@ def coulomb_cone(p, ints, f_n):
 
 
 @njit(cache=True)
-def evaluate(p, ints, y, mode, w, dy, aux):
+def evaluate(p, ints, y, mode, w, dy, aux, ext):
     """dy/dt at y in `mode`, and the forces the events read (aux: F_n, dF_n/dt, trial spring rate, F_t). For
     Walton-Braun's sticking spring a given w (not NaN) sets y's F_s; otherwise w is read from it."""
     m, inertia, radius = p[C.P_MASS], p[C.P_INERTIA], p[C.P_RADIUS]
     alpha, rate = y[Y_ALPHA], y[Y_RATE]
     amax = alpha if mode[M_LOADING] > 0.0 else mode[M_AMAX]
-    f_el, slope, a, log_slope = normal_ode(ints, p, alpha, amax)
+    f_el, slope, a, log_slope = normal_ode(ints, p, alpha, amax, ext)
     c0, power = p[C.P_DAMP_C0], p[C.P_DAMP_POWER]
     c, c_slope = 0.0, 0.0
     if c0 != 0.0 and power == 0.0:
@@ -94,51 +84,42 @@ def evaluate(p, ints, y, mode, w, dy, aux):
     lever = radius - p[C.P_LEVER] * alpha
     slide = mode[M_TANGENTIAL] == SLIDE
     v_s = slip_velocity(p, y)
-    if code == C.TANGENTIAL_WALTON_BRAUN:
-        trial = walton_braun_rate(p, y, mode, w, coulomb_cone(p, ints, f_n), v_s)
+    if TANGENTIAL_IMPLICIT[code]:
+        trial = implicit_rate(code, p, y, mode, w, coulomb_cone(p, ints, f_n), v_s)
     else:
-        trial = -stiffness(code, p[C.P_T1], a) * v_s
+        trial = -tangential_stiffness(code, p[C.P_T1], a) * v_s
     f_t = mode[M_SIGN] * coulomb_cone(p, ints, f_n) if slide else y[Y_FS]
-    shrinking = rate < 0.0 and code == C.TANGENTIAL_MINDLIN_RESCALE
-    if (shrinking or code == C.TANGENTIAL_MINDLIN_TOTAL) and f_t != 0.0:
-        trial += f_t * log_slope * rate               # F_s a'/a
+    log_rate = TANGENTIAL_LOG_RATE[code]                # F_s a'/a: eq. 18b while a shrinks, the total form always
+    if ((log_rate == 1 and rate < 0.0) or log_rate == 2) and f_t != 0.0:
+        trial += f_t * log_slope * rate
     aux[A_TRIAL], aux[A_FT] = trial, f_t
     dy[Y_VX], dy[Y_W] = f_t / m, -lever * f_t / inertia
     dy[Y_FS] = 0.0 if slide else trial
 
 
 @njit(cache=True, inline="always")
-def walton_braun_rate(p, y, mode, w, cone, v_s):
-    """Walton-Braun's trial dF_s/dt = -k_t0 w V_s. Sticking: w given sets F_s = -d cone (1 - (1 - d sigma*) w^3),
-    else w = x^(1/3) from F_s. Sliding: x at the cone's edge T = -sigma cone, (1 + d sigma)/(1 - d sigma*): 0 on
-    the loading side, more on the far one."""
+def implicit_rate(code, p, y, mode, w, cone, v_s):
+    """A spring integrated in its hidden variable w (Walton-Braun's x^(1/3)): trial dF_s/dt = -k_t0 w V_s. Sticking:
+    w given sets F_s, else w from F_s; sliding: w of the spring held on the cone's edge."""
     if mode[M_TANGENTIAL] == SLIDE:
-        return -p[C.P_T1] * edge_w(mode) * v_s
-    d = mode[M_DIR]
-    share = 1.0 - d * mode[M_STAR]
+        return -p[C.P_T1] * edge_w(code, mode) * v_s
     if w == w:
-        y[Y_FS] = -d * cone * (1.0 - share * w * w * w)
+        y[Y_FS] = tangential_force_from_w(code, mode[M_DIR], mode[M_STAR], cone, w)
     else:
-        w = walton_braun_w(y, mode, cone)
+        w = spring_w_of(code, y, mode, cone)
     return -p[C.P_T1] * w * v_s
 
 
 @njit(cache=True, inline="always")
-def edge_w(mode):
-    """w = x^(1/3) of Walton-Braun's spring held on the cone's edge F_s = sigma mu N: x = (1 + d sigma)/(1 - d
-    sigma*), 0 on the loading side; 0 too where T* itself is at full mobilisation."""
-    share = 1.0 - mode[M_DIR] * mode[M_STAR]
-    return np.cbrt((1.0 + mode[M_DIR] * mode[M_SIGN]) / share) if share > 0.0 else 0.0
+def edge_w(code, mode):
+    """w of the implicit spring held on the cone's edge (0 on the loading side)."""
+    return tangential_edge_w(code, mode[M_DIR], mode[M_STAR], mode[M_SIGN])
 
 
 @njit(cache=True, inline="always")
-def walton_braun_w(y, mode, cone):
-    """w = x^(1/3) of the sticking spring from F_s: x = (mu N + d F_s)/((1 - d sigma*) mu N); 1 where mu N = 0."""
-    d = mode[M_DIR]
-    share = 1.0 - d * mode[M_STAR]
-    if cone > 0.0 and share > 0.0:
-        return np.cbrt((cone + d * y[Y_FS]) / (share * cone))
-    return 1.0
+def spring_w_of(code, y, mode, cone):
+    """w of the sticking implicit spring from its F_s."""
+    return tangential_w_from_force(code, mode[M_DIR], mode[M_STAR], cone, y[Y_FS])
 
 
 @njit(cache=True, inline="always")
@@ -154,7 +135,7 @@ def cone_rate(p, ints, aux):
 
 
 @njit(cache=True)
-def events(p, ints, y, mode, aux, scale, g):
+def events(p, ints, y, mode, aux, scale, g, ext):
     """Event functions at y, each rising through 0 at its event (INACTIVE where it cannot happen in this mode);
     scale = (alpha_ref, V_n, F_ref, t_ref, then the error scales, V_t at 6) makes them dimensionless."""
     alpha_ref, v_ref, f_ref, t_ref = scale[0], scale[1], scale[2], scale[3]
@@ -167,13 +148,13 @@ def events(p, ints, y, mode, aux, scale, g):
     else:
         g[E_RELEASE] = -min(f_n / f_ref, alpha / alpha_ref)
     g[E_TURN] = -y[Y_RATE] / v_ref if loading else INACTIVE
-    kink = loading_kink(p, ints)
+    kink = loading_kink(p, ints, ext)
     g[E_YIELD] = (alpha - kink) / alpha_ref if loading and kink > 0.0 else INACTIVE
     g[E_PEAK] = -aux[A_DFN] * t_ref / f_ref if p[C.P_DAMP_C0] != 0.0 else INACTIVE
     cone = coulomb_cone(p, ints, f_n)
     g[E_SLIP] = (abs(y[Y_FS]) - cone) / f_ref if mode[M_TANGENTIAL] == STICK else INACTIVE
     v_s = slip_velocity(p, y)
-    reversible = ints[C.I_TANGENTIAL] == C.TANGENTIAL_WALTON_BRAUN and mode[M_TANGENTIAL] != 0.0
+    reversible = TANGENTIAL_IMPLICIT[ints[C.I_TANGENTIAL]] and mode[M_TANGENTIAL] != 0.0
     g[E_REVERSAL] = -mode[M_DIR] * v_s / scale[6] if reversible else INACTIVE
     inward = cone_rate(p, ints, aux) - mode[M_SIGN] * aux[A_TRIAL]
     g[E_STICK] = inward * t_ref / f_ref if mode[M_TANGENTIAL] == SLIDE else INACTIVE

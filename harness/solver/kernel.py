@@ -14,15 +14,19 @@ import math
 import numpy as np
 from numba import njit, prange
 
+from ..submodels.tangential.state import N_TSTATE, T_AOLD, T_HELD, T_MARGIN, T_STEP
+from ..submodels.tangential.viscous import friction as viscous_friction
 from . import codes as C
-from .normal_kernels import luding_yade, normal_elastic, thornton_ning
-from .tangential_kernels import N_TSTATE, T_HELD, T_MARGIN, T_STEP, after_cap, cap, spring_force, stiffness, viscous
+from .dispatch import (N_NORMAL, NORMAL_HISTORY, NORMAL_RESET, TANGENTIAL_IMPLICIT, TANGENTIAL_NONE,
+                       TANGENTIAL_VISCOUS, normal_force, normal_kink, normal_step, tangential_after_cap,
+                       tangential_stiffness)
+from .spring import cap, spring_force
 
 S_ALPHA, S_VZ, S_VX, S_W, S_AMAX, S_FN, S_FT, S_FS, S_NOLD, S_U, S_FEL, S_C = 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11
-S_FMAX, S_YIELD, S_DETACH = 12, 13, 14      # incremental engine laws (thornton_ning): F_max, yielded, detached at
-S_DNULL, S_DPREV = 15, 16                    # YADE Luding: plastic overlap DeltNull, previous overlap DeltPrev
-S_X, S_Z, S_NX, S_NZ, S_SX, S_SZ = 17, 18, 19, 20, 21, 22   # stand-in sphere: position, normal, shear force
-N_STATE = 23
+S_HISTORY = 12                               # an incremental normal law's history (NORMAL_HISTORY slots)
+S_X = S_HISTORY + NORMAL_HISTORY             # stand-in sphere: position, normal, shear force
+S_Z, S_NX, S_NZ, S_SX, S_SZ = S_X + 1, S_X + 2, S_X + 3, S_X + 4, S_X + 5
+N_STATE = S_X + 6
 RELEASE_ITERATIONS = 100
 
 
@@ -60,8 +64,8 @@ def friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, in_contact, scheme
     and added after the Coulomb test only (LIGGGHTS and YADE alike, MODELS 5). History cleared out of contact."""
     paper = scheme == C.INTEGRATOR_PAPER
     f_t, f_s = 0.0, 0.0
-    if code >= C.TANGENTIAL_VISCOUS_LINEAR and alpha > 0.0:
-        f_t = viscous(code, p[C.P_T1], a, p[C.P_TDAMP], slip, p[C.P_MU] * abs(f_n))
+    if TANGENTIAL_VISCOUS[code] and alpha > 0.0:
+        f_t = viscous_friction(tangential_stiffness(code, p[C.P_T1], a), p[C.P_TDAMP], slip, p[C.P_MU] * abs(f_n))
     elif in_contact:
         limit = p[C.P_MU] * abs(f_n)
         f_s = spring_force(code, s[S_FS], slip * h, a, p[C.P_T1], p[C.P_MU], abs(f_n), s[S_NOLD], ot, scratch, paper)
@@ -70,12 +74,12 @@ def friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, in_contact, scheme
             f_t, f_s = damped_friction(ot, p, code, h, a, f_s, slip, limit, lever)
         elif abs(f_s) > limit:
             f_s = cap(f_s, limit)
-            after_cap(code, f_s, p[C.P_T1], a, ot)
+            tangential_after_cap(code, f_s, p[C.P_T1], a, ot)
             f_t = f_s
         elif p[C.P_TDAMP] == 0.0:
             f_t = f_s
         else:
-            f_t = f_s - p[C.P_TDAMP] * math.sqrt(stiffness(code, p[C.P_T1], a)) * slip
+            f_t = f_s - p[C.P_TDAMP] * math.sqrt(tangential_stiffness(code, p[C.P_T1], a)) * slip
     else:
         for k in range(N_TSTATE):
             ot[k] = 0.0
@@ -91,8 +95,8 @@ def damped_friction(ot, p, code, h, a, f_s, slip, limit, lever):
     |total| - mu F_n."""
     if abs(f_s) > limit:
         f_s = cap(f_s, limit)
-        after_cap(code, f_s, p[C.P_T1], a, ot)
-    c_t = p[C.P_TDAMP] * math.sqrt(stiffness(code, p[C.P_T1], a))
+        tangential_after_cap(code, f_s, p[C.P_T1], a, ot)
+    c_t = p[C.P_TDAMP] * math.sqrt(tangential_stiffness(code, p[C.P_T1], a))
     trial = (f_s - c_t * slip) / (1.0 + 0.5 * h * c_t * (1.0 / p[C.P_MASS] + lever * lever / p[C.P_INERTIA]))
     ot[T_HELD] = abs(trial) - limit
     return cap(trial, limit), f_s
@@ -116,7 +120,7 @@ def tangential_update(s, st, o, ot, p, ints, h, scratch, alpha, a, f_n, in_conta
     for k in range(N_TSTATE):
         ot[k] = st[k]
     code = ints[C.I_TANGENTIAL]
-    if code == C.TANGENTIAL_NONE:                     # normal impact without spin, or mu = 0: nothing to do
+    if code == TANGENTIAL_NONE:                       # normal impact without spin, or mu = 0: nothing to do
         o[S_VX], o[S_W], o[S_FT], o[S_FS], o[S_NOLD] = s[S_VX], s[S_W], 0.0, 0.0, f_n
         return
     m, inertia, radius = p[C.P_MASS], p[C.P_INERTIA], p[C.P_RADIUS]
@@ -129,7 +133,7 @@ def tangential_update(s, st, o, ot, p, ints, h, scratch, alpha, a, f_n, in_conta
     kick = f_t
     sliding = (st[T_HELD] >= 0.0 and ot[T_HELD] > 0.0        # on the same side of the Coulomb cone at both ends
                and s[S_FT] * f_t >= 0.0)                     # (a dashpot-held force may cross to the other side)
-    if scheme == C.INTEGRATOR_PAPER and sliding and f_n > 0.0 and code < C.TANGENTIAL_VISCOUS_LINEAR:
+    if scheme == C.INTEGRATOR_PAPER and sliding and f_n > 0.0 and not TANGENTIAL_VISCOUS[code]:
         kick = sliding_kick(s, o, m, h, f_t / f_n)
     o[S_VX] = vx_half + 0.5 * h * kick / m
     o[S_W] = w_half - 0.5 * h * lever * kick / inertia
@@ -151,7 +155,7 @@ def sliding_kick(s, o, m, h, ratio):
 
 
 @njit(cache=True, inline="always")
-def step_leapfrog(s, st, o, ot, p, ints, h, scratch):
+def step_leapfrog(s, st, o, ot, p, ints, h, scratch, ext):
     """YADE NewtonIntegrator: forces from the overlap at x(t) and the half-step velocities v(t - h/2), then
     v(t + h/2) = v(t - h/2) + h F/m and x(t + h) = x(t) + h v(t + h/2). A contact exists while the overlap is
     >= 0 (a sphere placed touching starts in contact with zero force); the first step with a negative overlap
@@ -161,16 +165,12 @@ def step_leapfrog(s, st, o, ot, p, ints, h, scratch):
     amax = s[S_AMAX] if s[S_AMAX] > alpha else alpha
     in_contact = alpha >= 0.0
     f_n, a = 0.0, 0.0
-    o[S_DNULL], o[S_DPREV] = s[S_DNULL], alpha
-    if in_contact and ints[C.I_NORMAL] == C.NORMAL_LUDING_YADE:
-        f_el, amax, o[S_DNULL] = luding_yade(p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], alpha, s[S_AMAX],
-                                             s[S_DNULL], s[S_DPREV])
-        a = math.sqrt(radius * alpha)
-        f_n = f_el - (p[C.P_DAMP_C0] * s[S_VZ] if p[C.P_DAMP_C0] != 0.0 else 0.0)
-        if f_n < 0.0 and ints[C.I_END] == C.END_FORCE:
-            f_n = 0.0
-    elif in_contact:                                  # from overlap 0: a constant dashpot acts at first touch
-        f_el, a = normal_elastic(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], radius, alpha, amax)
+    for k in range(NORMAL_HISTORY):
+        o[S_HISTORY + k] = s[S_HISTORY + k]
+    if in_contact:                                    # from overlap 0: a constant dashpot acts at first touch
+        f_el, a = normal_step(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], radius, alpha, s[S_ALPHA],
+                              s[S_FEL], amax, s[S_HISTORY:S_HISTORY + NORMAL_HISTORY],
+                              o[S_HISTORY:S_HISTORY + NORMAL_HISTORY], ext)
         c = p[C.P_DAMP_C0] * damping_power(alpha, p[C.P_DAMP_POWER]) if p[C.P_DAMP_C0] != 0.0 else 0.0
         f_n = f_el - c * s[S_VZ]
         if f_n < 0.0 and ints[C.I_END] == C.END_FORCE:
@@ -180,7 +180,7 @@ def step_leapfrog(s, st, o, ot, p, ints, h, scratch):
     code = ints[C.I_TANGENTIAL]
     f_t, f_s = 0.0, 0.0
     lever = radius - p[C.P_LEVER] * alpha
-    if code != C.TANGENTIAL_NONE:
+    if code != TANGENTIAL_NONE:
         slip = slip_velocity(p, alpha, s[S_VX], s[S_W], lever)
         f_t, f_s = friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, in_contact, C.INTEGRATOR_LEAPFROG, lever)
     vz = s[S_VZ] + h * (f_n / m - g)
@@ -193,7 +193,7 @@ def step_leapfrog(s, st, o, ot, p, ints, h, scratch):
 
 
 @njit(cache=True, inline="always")
-def step(s, st, o, ot, p, ints, h, scratch):
+def step(s, st, o, ot, p, ints, h, scratch, ext):
     """Advance state (s, st) by h into (o, ot); returns the end-of-contact indicator (contact while > 0).
 
     Normal direction in u = m alpha_dot + D(alpha), u' = -F_el(alpha) + m g (Strang splitting: kick, midpoint
@@ -206,7 +206,7 @@ def step(s, st, o, ot, p, ints, h, scratch):
     amax = s[S_AMAX]
     c, d_pot = 0.0, 0.0
     if alpha > 0.0:
-        f_el, a = normal_elastic(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], radius, alpha, amax)
+        f_el, a = normal_force(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], radius, alpha, amax, ext)
         if c0 != 0.0:
             q = damping_power(alpha, power)
             c, d_pot = c0 * q, c0 * alpha * q / (power + 1.0)
@@ -228,7 +228,7 @@ def step(s, st, o, ot, p, ints, h, scratch):
 
 
 @njit(cache=True, inline="always")
-def step_velocity_verlet(s, st, o, ot, p, ints, h, scratch):
+def step_velocity_verlet(s, st, o, ot, p, ints, h, scratch, ext):
     """LIGGGHTS nve/sphere + wall/gran: half kick, drift, forces from the half-step velocities, half kick.
 
     The normal dashpot and the tangential increment see v(t + h/2); the tangential dashpot is added after the
@@ -239,14 +239,11 @@ def step_velocity_verlet(s, st, o, ot, p, ints, h, scratch):
     alpha = s[S_ALPHA] - h * vz_half
     amax = s[S_AMAX]
     f_n, f_el, a = 0.0, 0.0, 0.0
-    o[S_FMAX], o[S_YIELD], o[S_DETACH] = 0.0, 0.0, -1.0     # history cleared when out of contact
+    reset_history(ints[C.I_NORMAL], o)                      # history cleared when out of contact
     if alpha > 0.0:
-        if ints[C.I_NORMAL] == C.NORMAL_THORNTON_NING:
-            f_el, a, o[S_YIELD], o[S_DETACH], o[S_FMAX] = thornton_ning(
-                p[C.P_N1], p[C.P_N2], radius, alpha, s[S_ALPHA], s[S_FEL], amax, s[S_FMAX], s[S_YIELD], s[S_DETACH])
-        else:
-            f_el, a = normal_elastic(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], radius, alpha,
-                                     amax)
+        f_el, a = normal_step(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], radius, alpha, s[S_ALPHA],
+                              s[S_FEL], amax, s[S_HISTORY:S_HISTORY + NORMAL_HISTORY],
+                              o[S_HISTORY:S_HISTORY + NORMAL_HISTORY], ext)
         c = p[C.P_DAMP_C0] * damping_power(alpha, p[C.P_DAMP_POWER]) if p[C.P_DAMP_C0] != 0.0 else 0.0
         f_n = f_el - c * vz_half
         if f_n < 0.0 and ints[C.I_END] == C.END_FORCE:
@@ -258,7 +255,7 @@ def step_velocity_verlet(s, st, o, ot, p, ints, h, scratch):
 
 
 @njit(cache=True, inline="always")
-def step_leapfrog_sphere(s, st, o, ot, p, ints, h, scratch):
+def step_leapfrog_sphere(s, st, o, ot, p, ints, h, scratch, ext):
     """YADE Luding against a fixed sphere of radius R_big standing in for the wall, with YADE's own geometry:
     overlap (R_big + R) - |x2 - x1|, normal along x2 - x1, contact point in the middle of the overlap, shear force
     rotated with the normal (ScGeom::rotate), forces and torque from the contact-point branch; leapfrog as above."""
@@ -280,9 +277,9 @@ def step_leapfrog_sphere(s, st, o, ot, p, ints, h, scratch):
             sx, sz = sx + axis * sz, sz - axis * sx
         else:
             sx, sz = 0.0, 0.0
-        f_hys, dmax, o[S_DNULL] = luding_yade(p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], delt, s[S_AMAX],
-                                              s[S_DNULL], s[S_DPREV])
-        o[S_AMAX], o[S_DPREV] = dmax, delt
+        f_hys, _ = normal_step(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], radius, delt, s[S_ALPHA],
+                               s[S_FEL], s[S_AMAX], s[S_HISTORY:S_HISTORY + NORMAL_HISTORY],
+                               o[S_HISTORY:S_HISTORY + NORMAL_HISTORY], ext)
         reach = big - 0.5 * delt                      # contact point: big sphere centre + reach n
         cx, cz = reach * nx - s[S_X], (-big + reach * nz) - s[S_Z]
         wy = s[S_W]
@@ -318,15 +315,15 @@ def step_leapfrog_sphere(s, st, o, ot, p, ints, h, scratch):
 
 
 @njit(cache=True, inline="always")
-def advance(s, st, o, ot, p, ints, h, scratch):
+def advance(s, st, o, ot, p, ints, h, scratch, ext):
     """One step of the row's integrator."""
     if ints[C.I_INTEGRATOR] == C.INTEGRATOR_VELOCITY_VERLET:
-        return step_velocity_verlet(s, st, o, ot, p, ints, h, scratch)
+        return step_velocity_verlet(s, st, o, ot, p, ints, h, scratch, ext)
     if ints[C.I_INTEGRATOR] == C.INTEGRATOR_LEAPFROG and p[C.P_BIG_R] > 0.0:
-        return step_leapfrog_sphere(s, st, o, ot, p, ints, h, scratch)
+        return step_leapfrog_sphere(s, st, o, ot, p, ints, h, scratch, ext)
     if ints[C.I_INTEGRATOR] == C.INTEGRATOR_LEAPFROG:
-        return step_leapfrog(s, st, o, ot, p, ints, h, scratch)
-    return step(s, st, o, ot, p, ints, h, scratch)
+        return step_leapfrog(s, st, o, ot, p, ints, h, scratch, ext)
+    return step(s, st, o, ot, p, ints, h, scratch, ext)
 
 
 EVENT_NONE, EVENT_TURN, EVENT_SLIP, EVENT_STICK, EVENT_YIELD, EVENT_SATURATE = 0, 1, 2, 3, 4, 5
@@ -334,19 +331,19 @@ EVENT_ITERATIONS = 60
 
 
 @njit(cache=True, inline="always")
-def event_kind(s, st, o, ot, p, ints):
+def event_kind(s, st, o, ot, p, ints, ext):
     """A change of regime inside the step (paper scheme): the normal motion turns (alpha_dot through 0), the loading
     curve's kink is passed (yield), the contact starts to slide (trial spring force reaches mu F_n) or stops sliding
     (the spring leaves the Coulomb cone)."""
     if s[S_VZ] < 0.0 <= o[S_VZ] and s[S_ALPHA] > 0.0:
         return EVENT_TURN
-    kink = loading_kink(p, ints)
+    kink = loading_kink(p, ints, ext)
     if s[S_ALPHA] < kink <= o[S_ALPHA] and s[S_ALPHA] >= s[S_AMAX]:
         return EVENT_YIELD
     code = ints[C.I_TANGENTIAL]
-    if code == C.TANGENTIAL_NONE or code >= C.TANGENTIAL_VISCOUS_LINEAR or s[S_FN] <= 0.0 or o[S_FN] <= 0.0:
+    if code == TANGENTIAL_NONE or TANGENTIAL_VISCOUS[code] or s[S_FN] <= 0.0 or o[S_FN] <= 0.0:
         return EVENT_NONE
-    if code == C.TANGENTIAL_WALTON_BRAUN:     # k_t -> 0 at full mobilisation: the trial force meets mu F_n
+    if TANGENTIAL_IMPLICIT[code]:             # a stiff spring (k_t -> 0 at full mobilisation) meets mu F_n
         return EVENT_NONE                     # tangentially, and locating that only amplifies round-off
     if st[T_HELD] < 0.0 < ot[T_HELD] and p[C.P_TDAMP] != 0.0:   # spring and tangential dashpot reach the cone
         return EVENT_SATURATE
@@ -362,22 +359,25 @@ def event_kind(s, st, o, ot, p, ints):
 
 
 @njit(cache=True, inline="always")
-def loading_kink(p, ints):
-    """Overlap at which the loading curve bends: the yield overlap of Stronge and Thornton, d_lim of LIGGGHTS'
-    hysteresis; 0 for the smooth curves."""
-    code = ints[C.I_NORMAL]
-    if code == C.NORMAL_STRONGE:
-        return p[C.P_N2]
-    if code == C.NORMAL_THORNTON or code == C.NORMAL_LUDING:
-        return p[C.P_N3]
-    return 0.0
+def loading_kink(p, ints, ext):
+    """Overlap at which the loading curve bends (yield of Stronge and Thornton, d_lim of LIGGGHTS' hysteresis);
+    0 for the smooth curves."""
+    return normal_kink(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], ext)
+
+
+@njit(cache=True, inline="always")
+def reset_history(code, state):
+    """An incremental normal law's history at first touch and after a contact (none for the other laws)."""
+    if code < N_NORMAL:
+        for k in range(NORMAL_HISTORY):
+            state[S_HISTORY + k] = NORMAL_RESET[code, k]
 
 
 STICK_PROBE = 1e-4          # step fraction of the probe step that tells whether a contact on the cone still slides
 
 
 @njit(cache=True)
-def event_value(kind, f, s, st, lo, lot, probe, probe_t, p, ints, h, scratch):
+def event_value(kind, f, s, st, lo, lot, probe, probe_t, p, ints, h, scratch, ext):
     """The quantity that rises through zero at the event, after a trial step of fraction f from (s, st) (into lo, lot):
     -alpha_dot at the turn; alpha - alpha_y at yield; the trial spring margin |F_s| - mu F_n where sliding starts;
     where sliding stops, minus the margin's rate for a contact that starts on the Coulomb cone at f (a short probe
@@ -386,35 +386,35 @@ def event_value(kind, f, s, st, lo, lot, probe, probe_t, p, ints, h, scratch):
     if kind == EVENT_TURN or kind == EVENT_YIELD:
         at = s
         if f > 0.0:
-            step(s, st, lo, lot, p, ints, f * h, scratch)
+            step(s, st, lo, lot, p, ints, f * h, scratch, ext)
             at = lo
-        return at[S_VZ] if kind == EVENT_TURN else at[S_ALPHA] - loading_kink(p, ints)
+        return at[S_VZ] if kind == EVENT_TURN else at[S_ALPHA] - loading_kink(p, ints, ext)
     if kind == EVENT_SLIP or kind == EVENT_SATURATE:
         which = T_MARGIN if kind == EVENT_SLIP else T_HELD
-        return st[which] if f == 0.0 else margin_at(f, s, st, lo, lot, p, ints, h, scratch, which)
+        return st[which] if f == 0.0 else margin_at(f, s, st, lo, lot, p, ints, h, scratch, which, ext)
     if f == 0.0:
-        step(s, st, probe, probe_t, p, ints, STICK_PROBE * h, scratch)
+        step(s, st, probe, probe_t, p, ints, STICK_PROBE * h, scratch, ext)
     else:
-        step(s, st, lo, lot, p, ints, f * h, scratch)
-        step(lo, lot, probe, probe_t, p, ints, STICK_PROBE * h, scratch)
+        step(s, st, lo, lot, p, ints, f * h, scratch, ext)
+        step(lo, lot, probe, probe_t, p, ints, STICK_PROBE * h, scratch, ext)
     return -probe_t[T_HELD] / STICK_PROBE
 
 
 @njit(cache=True)
-def margin_at(f, s, st, lo, lot, p, ints, h, scratch, which):
+def margin_at(f, s, st, lo, lot, p, ints, h, scratch, which, ext):
     """The margin `which` (T_MARGIN: |F_s| - mu F_n; T_HELD: what holds the cone) after a trial step of fraction
     f > 0 (at f = 0 the start's own margin holds: a step of length 0 would end the contact at first touch, where a
     constant dashpot already pushes)."""
-    step(s, st, lo, lot, p, ints, f * h, scratch)
+    step(s, st, lo, lot, p, ints, f * h, scratch, ext)
     return lot[which]
 
 
 @njit(cache=True)
-def locate_event(kind, s, st, lo, lot, probe, probe_t, p, ints, h, scratch):
+def locate_event(kind, s, st, lo, lot, probe, probe_t, p, ints, h, scratch, ext):
     """Step fraction at which the event happens in the step from (s, st) (Illinois false position on the event
     value, trial steps in lo, lot and probe, probe_t); -1 if the value does not change sign over the step."""
-    g_lo = event_value(kind, 0.0, s, st, lo, lot, probe, probe_t, p, ints, h, scratch)
-    g_hi = event_value(kind, 1.0, s, st, lo, lot, probe, probe_t, p, ints, h, scratch)
+    g_lo = event_value(kind, 0.0, s, st, lo, lot, probe, probe_t, p, ints, h, scratch, ext)
+    g_hi = event_value(kind, 1.0, s, st, lo, lot, probe, probe_t, p, ints, h, scratch, ext)
     if not (g_lo < 0.0 < g_hi):
         return -1.0
     lo_f, hi_f, side = 0.0, 1.0, 0
@@ -424,7 +424,7 @@ def locate_event(kind, s, st, lo, lot, probe, probe_t, p, ints, h, scratch):
         mid = (lo_f * g_hi - hi_f * g_lo) / (g_hi - g_lo) if g_hi > g_lo else 0.5 * (lo_f + hi_f)
         if not lo_f < mid < hi_f:
             mid = 0.5 * (lo_f + hi_f)
-        g_mid = event_value(kind, mid, s, st, lo, lot, probe, probe_t, p, ints, h, scratch)
+        g_mid = event_value(kind, mid, s, st, lo, lot, probe, probe_t, p, ints, h, scratch, ext)
         lo_f, hi_f, g_lo, g_hi, side = illinois(lo_f, hi_f, g_lo, g_hi, side, mid, g_mid, g_mid < 0.0)
     return hi_f
 
@@ -455,7 +455,7 @@ def parabola_peak(y0, y1, y2, h1, h2):
 
 
 @njit(cache=True)
-def locate_release(s, st, lo, lot, p, ints, h, scratch, indicator):
+def locate_release(s, st, lo, lot, p, ints, h, scratch, indicator, ext):
     """Step fraction of the release (alpha = 0, or F = 0 without tension) in the step from (s, st) whose end value is
     `indicator` <= 0: Illinois false position; the fraction returned still has contact."""
     frac_lo, frac_hi = 0.0, 1.0
@@ -469,34 +469,34 @@ def locate_release(s, st, lo, lot, p, ints, h, scratch, indicator):
         mid = (frac_lo * g_hi - frac_hi * g_lo) / (g_hi - g_lo) if g_lo > 0.0 > g_hi else 0.5 * (frac_lo + frac_hi)
         if not frac_lo < mid < frac_hi:
             mid = 0.5 * (frac_lo + frac_hi)
-        g_mid = step(s, st, lo, lot, p, ints, mid * h, scratch)
+        g_mid = step(s, st, lo, lot, p, ints, mid * h, scratch, ext)
         frac_lo, frac_hi, g_lo, g_hi, side = illinois(frac_lo, frac_hi, g_lo, g_hi, side, mid, g_mid, g_mid > 0.0)
     return frac_lo
 
 
 @njit(cache=True)
 def split_at_event(s, st, o, ot, lo, lot, at_event, at_event_t, p, ints, h, scratch, a_peak, f_peak, h_full,
-                   indicator):
+                   indicator, ext):
     """Redo the step (s, st) -> (o, ot) of length h in two at a change of regime inside it, so that the error stays
     smooth in h. A step that ended at the release (h < h_full) is continued from the event to the release again,
     within what is left of h_full. Returns alpha_max and F_max (found at a turn), the end indicator (`indicator`
     if nothing happened) and the time the step took."""
-    kind = event_kind(s, st, o, ot, p, ints)
+    kind = event_kind(s, st, o, ot, p, ints, ext)
     if kind == EVENT_NONE:
         return a_peak, f_peak, indicator, h
-    frac = locate_event(kind, s, st, lo, lot, at_event, at_event_t, p, ints, h, scratch)
+    frac = locate_event(kind, s, st, lo, lot, at_event, at_event_t, p, ints, h, scratch, ext)
     if not 0.0 < frac < 1.0:
         return a_peak, f_peak, indicator, h
-    step(s, st, at_event, at_event_t, p, ints, frac * h, scratch)
+    step(s, st, at_event, at_event_t, p, ints, frac * h, scratch, ext)
     if kind == EVENT_TURN:                  # alpha_max itself; F_max too when undamped
         a_peak = max(a_peak, at_event[S_ALPHA])
         if p[C.P_DAMP_C0] == 0.0:
             f_peak = max(f_peak, at_event[S_FN])
     rest = h_full - frac * h
-    indicator = step(at_event, at_event_t, o, ot, p, ints, rest, scratch)
+    indicator = step(at_event, at_event_t, o, ot, p, ints, rest, scratch, ext)
     if h < h_full and indicator <= 0.0:
-        rest *= locate_release(at_event, at_event_t, lo, lot, p, ints, rest, scratch, indicator)
-        step(at_event, at_event_t, o, ot, p, ints, rest, scratch)
+        rest *= locate_release(at_event, at_event_t, lo, lot, p, ints, rest, scratch, indicator, ext)
+        step(at_event, at_event_t, o, ot, p, ints, rest, scratch, ext)
     return a_peak, f_peak, indicator, frac * h + rest
 
 
@@ -548,7 +548,7 @@ ONSET_OVERLAP = 1e-12     # overlap, in units of V_n dt, at which first touch's 
 
 
 @njit(cache=True)
-def paper_first_touch(s, st, p, ints):
+def paper_first_touch(s, st, p, ints, ext):
     """The paper scheme's tangential force at first touch with a tangential dashpot: -c_t V_s capped by mu F_n
     (finite where both start finite: a constant normal dashpot and a constant k_t), and whether spring and dashpot
     start on the Coulomb cone, judged at a tiny overlap where both rise from 0 (Tsuji's c ~ alpha^1/4 against
@@ -557,11 +557,11 @@ def paper_first_touch(s, st, p, ints):
     code, radius, mu = ints[C.I_TANGENTIAL], p[C.P_RADIUS], p[C.P_MU]
     slip0 = p[C.P_VX0] - radius * p[C.P_W0]
     v_n = -p[C.P_VZ0]
-    s[S_FT] = cap(-p[C.P_TDAMP] * math.sqrt(stiffness(code, p[C.P_T1], 0.0)) * slip0, mu * abs(s[S_FN]))
+    s[S_FT] = cap(-p[C.P_TDAMP] * math.sqrt(tangential_stiffness(code, p[C.P_T1], 0.0)) * slip0, mu * abs(s[S_FN]))
     alpha = ONSET_OVERLAP * v_n * p[C.P_DT]
-    f_el, a = normal_elastic(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], radius, alpha, alpha)
+    f_el, a = normal_force(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], radius, alpha, alpha, ext)
     f_n = f_el + p[C.P_DAMP_C0] * damping_power(alpha, p[C.P_DAMP_POWER]) * v_n
-    if p[C.P_TDAMP] * math.sqrt(stiffness(code, p[C.P_T1], a)) * abs(slip0) > mu * f_n:
+    if p[C.P_TDAMP] * math.sqrt(tangential_stiffness(code, p[C.P_T1], a)) * abs(slip0) > mu * f_n:
         st[T_HELD] = 0.0
 
 
@@ -600,7 +600,7 @@ def polynomial_peak(times, values):
 
 
 @njit(cache=True, parallel=True)
-def integrate(params, ints, out, history, stride):
+def integrate(params, ints, out, history, stride, ext):
     """Integrate every row of `params`/`ints` (rows in parallel); fill `out` and, if stride > 0, `history`."""
     n = params.shape[0]
     n_hist = history.shape[1]
@@ -619,24 +619,25 @@ def integrate(params, ints, out, history, stride):
         h = p[C.P_DT]
         s[S_VZ], s[S_VX], s[S_W] = p[C.P_VZ0], p[C.P_VX0], p[C.P_W0]
         s[S_U] = -p[C.P_MASS] * p[C.P_VZ0]
-        s[S_DETACH] = -1.0
+        reset_history(row_ints[C.I_NORMAL], s)
         s[S_Z] = p[C.P_RADIUS]                        # stand-in sphere: centre at R above its apex
         if p[C.P_DAMP_POWER] == 0.0:
             s[S_FN] = -p[C.P_DAMP_C0] * p[C.P_VZ0]   # a constant dashpot acts from first touch
             s[S_C] = p[C.P_DAMP_C0]
         # the spring starts at 0, inside the Coulomb cone (strictly: a slide starting in the first step is an event)
         st[T_MARGIN] = st[T_HELD] = -p[C.P_MU] * abs(s[S_FN]) - 1e-300
-        if row_ints[C.I_INTEGRATOR] == C.INTEGRATOR_VELOCITY_VERLET and row_ints[C.I_TANGENTIAL] != C.TANGENTIAL_NONE:
+        if row_ints[C.I_INTEGRATOR] == C.INTEGRATOR_VELOCITY_VERLET and row_ints[C.I_TANGENTIAL] != TANGENTIAL_NONE:
             # LIGGGHTS' setup force at first touch (gap 0 counts as contact): the tangential dashpot alone
             code = row_ints[C.I_TANGENTIAL]
             slip0 = p[C.P_VX0] - p[C.P_RADIUS] * p[C.P_W0]
-            if code >= C.TANGENTIAL_VISCOUS_LINEAR:
-                s[S_FT] = viscous(code, p[C.P_T1], 0.0, p[C.P_TDAMP], slip0, p[C.P_MU] * abs(s[S_FN]))
+            if TANGENTIAL_VISCOUS[code]:
+                s[S_FT] = viscous_friction(tangential_stiffness(code, p[C.P_T1], 0.0), p[C.P_TDAMP], slip0,
+                                           p[C.P_MU] * abs(s[S_FN]))
             else:
-                s[S_FT] = -p[C.P_TDAMP] * math.sqrt(stiffness(code, p[C.P_T1], 0.0)) * slip0
+                s[S_FT] = -p[C.P_TDAMP] * math.sqrt(tangential_stiffness(code, p[C.P_T1], 0.0)) * slip0
         elif (row_ints[C.I_INTEGRATOR] == C.INTEGRATOR_PAPER and p[C.P_TDAMP] != 0.0
-              and C.TANGENTIAL_NONE < row_ints[C.I_TANGENTIAL] < C.TANGENTIAL_VISCOUS_LINEAR):
-            paper_first_touch(s, st, p, row_ints)
+              and row_ints[C.I_TANGENTIAL] != TANGENTIAL_NONE and not TANGENTIAL_VISCOUS[row_ints[C.I_TANGENTIAL]]):
+            paper_first_touch(s, st, p, row_ints, ext)
         stick_steps = 0
         f_prev2, f_prev1 = 0.0, 0.0
         h_prev = h
@@ -656,26 +657,26 @@ def integrate(params, ints, out, history, stride):
         for k in range(max_steps):
             if grade_n > 0:
                 h = graded_step(k, grade_n, p[C.P_GRADE_T])
-            indicator = advance(s, st, o, ot, p, row_ints, h, scratch)
+            indicator = advance(s, st, o, ot, p, row_ints, h, scratch, ext)
             h_last = h
             if indicator > 0.0 and paper:
                 a_peak, f_peak, indicator, _ = split_at_event(s, st, o, ot, lo, lot, at_event, at_event_t, p, row_ints,
-                                                              h, scratch, a_peak, f_peak, h, indicator)
+                                                              h, scratch, a_peak, f_peak, h, indicator, ext)
             steps = k + 1
             if indicator <= 0.0 and not paper:
                 t_end = t_now + h                          # the engine ends contact at the step, not inside it
                 status = C.STATUS_OK
             elif indicator <= 0.0:                         # release inside the step; a regime change before it too
-                h_release = h * locate_release(s, st, lo, lot, p, row_ints, h, scratch, indicator)
-                step(s, st, o, ot, p, row_ints, h_release, scratch)
+                h_release = h * locate_release(s, st, lo, lot, p, row_ints, h, scratch, indicator, ext)
+                step(s, st, o, ot, p, row_ints, h_release, scratch, ext)
                 a_peak, f_peak, indicator, h_last = split_at_event(s, st, o, ot, lo, lot, at_event, at_event_t, p,
                                                                    row_ints, h_release, scratch, a_peak, f_peak, h,
-                                                                   -1.0)
+                                                                   -1.0, ext)
                 if indicator <= 0.0:
                     t_end = t_now + h_last
                     status = C.STATUS_OK
             f_now, a_now = o[S_FN], o[S_ALPHA]
-            if row_ints[C.I_TANGENTIAL] != C.TANGENTIAL_NONE and f_now > 0.0 and \
+            if row_ints[C.I_TANGENTIAL] != TANGENTIAL_NONE and f_now > 0.0 and \
                     abs(o[S_FT]) < (1.0 - CONE_BAND) * p[C.P_MU] * f_now:
                 stick_steps += 1
             if paper:                                  # the last samples of F_n, for its interpolated peak

@@ -5,6 +5,7 @@ import numpy as np
 
 from ..stability import check_time_step
 from . import codes as C
+from .dispatch import TANGENTIAL_NONE
 
 NORATCH_WALL_RADIUS = 1e8      # YADE's hertzian wall: reference radius 1e8 R (its noRatch slip factor uses it)
 
@@ -64,7 +65,7 @@ def plan_batch(law, scene, e_n, steps_per_contact, check_stability=True):
     params[:, C.P_DAMP_POWER] = dashpot.power
     if tangential.any():
         params[:, C.P_T1] = k_t = law.tangential.parameter(contact, normal.linear_stiffness)
-        constant_k_t = k_t if law.tangential.code in (C.TANGENTIAL_LINEAR, C.TANGENTIAL_VISCOUS_LINEAR) else None
+        constant_k_t = k_t if law.tangential.constant_stiffness else None
         g_t = law.tangential_damping.ratio(dashpot, normal.linear_stiffness, constant_k_t, e_n)
         params[:, C.P_TDAMP] = 2.0 * g_t * np.sqrt(contact.mass)
     params[:, C.P_LEVER] = law.lever
@@ -85,6 +86,6 @@ def plan_batch(law, scene, e_n, steps_per_contact, check_stability=True):
     ints = np.zeros((n, C.N_INTS), dtype=np.int64)
     ints[:, C.I_NORMAL] = law.normal.code
     ints[:, C.I_END] = C.END_ALPHA if law.end == "tension" else C.END_FORCE
-    ints[:, C.I_TANGENTIAL] = np.where(tangential, law.tangential.code, C.TANGENTIAL_NONE)
+    ints[:, C.I_TANGENTIAL] = np.where(tangential, law.tangential.code, TANGENTIAL_NONE)
     ints[:, C.I_INTEGRATOR] = C.INTEGRATORS[law.integrator]
     return Batch(params, ints, e_n, v_n0, v_t0, omega0, theta, dt, steps_per_contact, tangential)

@@ -10,6 +10,7 @@ from ..results import impact_frame
 from ..stability import UnstableTimeStep
 from . import codes as C
 from .adaptive import integrate_adaptive, stepper_names, supports
+from .extension import table as extension_table
 from .kernel import graded_largest_step, integrate
 from .plan import FixedTimeStep, plan_batch
 
@@ -30,7 +31,7 @@ def run_kernel(batch, history_points=0, rows=None):
         stride = max(1, int(batch.steps_per_contact * 3 // history_points))   # ~3 contact times recorded
     out = np.zeros((len(params), C.N_OUT))
     start = time.perf_counter()
-    integrate(params, ints, out, history, stride)
+    integrate(params, ints, out, history, stride, extension_table())
     return out, history, time.perf_counter() - start
 
 
@@ -137,7 +138,7 @@ def run_adaptive(batch, rows, tol):
     out = np.zeros((len(rows), C.N_OUT))
     t_ref = np.full(len(rows), batch.dt * batch.steps_per_contact)    # the contact-time estimate
     start = time.perf_counter()
-    integrate_adaptive(batch.params[rows], batch.ints[rows], tol, t_ref, out)
+    integrate_adaptive(batch.params[rows], batch.ints[rows], tol, t_ref, out, extension_table())
     return out, time.perf_counter() - start
 
 

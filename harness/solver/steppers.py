@@ -6,7 +6,8 @@ import numpy as np
 from numba import njit
 
 from . import codes as C
-from .contact_ode import A_FN, M_TANGENTIAL, N_Y, STICK, Y_ALPHA, Y_FS, coulomb_cone, evaluate, walton_braun_w
+from .contact_ode import A_FN, M_TANGENTIAL, N_Y, STICK, Y_ALPHA, Y_FS, coulomb_cone, evaluate, spring_w_of
+from .dispatch import TANGENTIAL_IMPLICIT
 
 # Dormand-Prince 5(4) (the ODE is autonomous: no nodes needed): stage coefficients, whose last row holds the
 # fifth-order weights (FSAL), and the error weights b - b* of the embedded fourth-order solution
@@ -23,7 +24,7 @@ DP_E = np.array([71.0 / 57600.0, 0.0, -71.0 / 16695.0, 71.0 / 1920.0, -17253.0 /
 STAGES = 7
 
 @njit(cache=True)
-def dp_step(p, ints, y, mode, h, k, y_new, stage, aux, scale, tol):
+def dp_step(p, ints, y, mode, h, k, y_new, stage, aux, scale, tol, ext):
     """One Dormand-Prince step of length h from y (k[0] = dy/dt at y) into y_new, k[6] = dy/dt at y_new (FSAL),
     aux the forces at y_new; returns the error norm: max over components of |error| / (tol x its scale)."""
     for s in range(1, STAGES):
@@ -32,7 +33,7 @@ def dp_step(p, ints, y, mode, h, k, y_new, stage, aux, scale, tol):
             for j in range(s):
                 acc += DP_A[s, j] * k[j, i]
             stage[i] = y[i] + h * acc
-        evaluate(p, ints, stage, mode, math.nan, k[s], aux)
+        evaluate(p, ints, stage, mode, math.nan, k[s], aux, ext)
     for i in range(N_Y):
         y_new[i] = stage[i]                           # the last stage is the fifth-order solution (FSAL)
     err = 0.0
@@ -82,16 +83,16 @@ def solves_for_w(ints, mode, y, w):
     W_SWITCH, where F_s' ~ x^(1/3) has a steep slope) or from first touch (mu N = 0: F_s does not tell x). Away
     from the cone F_s itself is the unknown: there F_s = -d mu N (1 - (1 - d sigma*) w^3) would tie F_s's
     precision to mu N's, lost as mu N -> 0 at the release."""
-    return (ints[C.I_TANGENTIAL] == C.TANGENTIAL_WALTON_BRAUN and mode[M_TANGENTIAL] == STICK
+    return (TANGENTIAL_IMPLICIT[ints[C.I_TANGENTIAL]] and mode[M_TANGENTIAL] == STICK
             and (w < W_SWITCH or y[Y_ALPHA] <= 0.0))
 
 
 @njit(cache=True)
-def state_of(p, ints, z, mode, use_w, y, dy, aux):
+def state_of(p, ints, z, mode, use_w, y, dy, aux, ext):
     """y = Phi(z) and dy/dt there: z is y, with w = x^(1/3) in place of F_s if use_w."""
     for i in range(N_Y):
         y[i] = z[i]
-    evaluate(p, ints, y, mode, z[Y_FS] if use_w else math.nan, dy, aux)
+    evaluate(p, ints, y, mode, z[Y_FS] if use_w else math.nan, dy, aux, ext)
 
 
 @njit(cache=True)
@@ -134,16 +135,16 @@ def lu_solve(a, pivot, b):
 
 
 @njit(cache=True)
-def jacobian(p, ints, z, mode, use_w, scale, d_phi, d_rate, work, aux):
+def jacobian(p, ints, z, mode, use_w, scale, d_phi, d_rate, work, aux, ext):
     """dPhi/dz and d(f o Phi)/dz at z by forward differences; returns the evaluations spent."""
     base_y, base_f, ys, fs, zz = work[6], work[7], work[2], work[5], work[8]
-    state_of(p, ints, z, mode, use_w, base_y, base_f, aux)
+    state_of(p, ints, z, mode, use_w, base_y, base_f, aux, ext)
     for j in range(N_Y):
         size = JACOBIAN_STEP * max(abs(z[j]), W_SCALE if j == Y_FS and use_w else scale[4 + j])
         for i in range(N_Y):
             zz[i] = z[i]
         zz[j] += size
-        state_of(p, ints, zz, mode, use_w, ys, fs, aux)
+        state_of(p, ints, zz, mode, use_w, ys, fs, aux, ext)
         for i in range(N_Y):
             d_phi[i, j] = (ys[i] - base_y[i]) / size
             d_rate[i, j] = (fs[i] - base_f[i]) / size
@@ -160,7 +161,7 @@ def newton_matrix(jac, which, hg, newton, pivot):
 
 
 @njit(cache=True)
-def sdirk_step(p, ints, y, w, mode, h, k, y_new, work, jac, lu, pivot, aux, scale, tol, spring):
+def sdirk_step(p, ints, y, w, mode, h, k, y_new, work, jac, lu, pivot, aux, scale, tol, spring, ext):
     """One SDIRK4(3) step of length h from y (k[0] = dy/dt at y; w its Walton-Braun spring's x^(1/3)) into
     y_new, k[1..5] the stage rates, k[6] = dy/dt at y_new, spring[0] = w at y_new. Each stage is solved by
     simplified Newton on z (y, with w in place of F_s near the cone: solves_for_w), with the Jacobian at the
@@ -178,12 +179,12 @@ def sdirk_step(p, ints, y, w, mode, h, k, y_new, work, jac, lu, pivot, aux, scal
     evaluations = 0
     hg = h * SD_GAMMA
     if jac[J_START, 2, 0, 0] != 1.0 or jac[J_START, 2, 0, 1] != use_w:
-        evaluations += jacobian(p, ints, z0, mode, use_w, scale, jac[J_START, 0], jac[J_START, 1], work, aux)
+        evaluations += jacobian(p, ints, z0, mode, use_w, scale, jac[J_START, 0], jac[J_START, 1], work, aux, ext)
         jac[J_START, 2, 0, 0], jac[J_START, 2, 0, 1] = 1.0, use_w
         if use_w and aux[A_FN] == 0.0:                        # first touch: F_s is blind to w where mu N = 0,
             for i in range(N_Y):                              # so the Jacobian is taken a first stage ahead
                 z[i] = z0[i] + (hg * k[0, i] if i != Y_FS else 0.0)
-            evaluations += jacobian(p, ints, z, mode, use_w, scale, jac[J_START, 0], jac[J_START, 1], work, aux)
+            evaluations += jacobian(p, ints, z, mode, use_w, scale, jac[J_START, 0], jac[J_START, 1], work, aux, ext)
             jac[J_START, 2, 0, 0] = 0.0                       # (for this step length only)
     newton_matrix(jac, J_START, hg, lu, pivot)
     refreshes = 0
@@ -200,7 +201,7 @@ def sdirk_step(p, ints, y, w, mode, h, k, y_new, work, jac, lu, pivot, aux, scal
         iteration = 0
         while iteration < NEWTON_ITERATIONS:
             iteration += 1
-            state_of(p, ints, z, mode, use_w, ys, fs, aux)
+            state_of(p, ints, z, mode, use_w, ys, fs, aux, ext)
             evaluations += 1
             size = 0.0
             for i in range(N_Y):
@@ -215,7 +216,7 @@ def sdirk_step(p, ints, y, w, mode, h, k, y_new, work, jac, lu, pivot, aux, scal
                 if refreshes == MAX_REFRESHES:
                     return math.inf, evaluations
                 refreshes += 1
-                evaluations += jacobian(p, ints, z, mode, use_w, scale, jac[J_NOW, 0], jac[J_NOW, 1], work, aux)
+                evaluations += jacobian(p, ints, z, mode, use_w, scale, jac[J_NOW, 0], jac[J_NOW, 1], work, aux, ext)
                 newton_matrix(jac, J_NOW, hg, lu, pivot)
                 last, iteration = math.inf, 0
                 continue
@@ -230,8 +231,8 @@ def sdirk_step(p, ints, y, w, mode, h, k, y_new, work, jac, lu, pivot, aux, scal
     for i in range(N_Y):
         y_new[i] = ys[i]
         k[6, i] = fs[i]
-    spring[0] = z[Y_FS] if use_w else walton_braun_w(y_new, mode, coulomb_cone(p, ints, aux[A_FN]))
-    evaluations += jacobian(p, ints, z, mode, use_w, scale, jac[J_END, 0], jac[J_END, 1], work, aux)
+    spring[0] = z[Y_FS] if use_w else spring_w_of(ints[C.I_TANGENTIAL], y_new, mode, coulomb_cone(p, ints, aux[A_FN]))
+    evaluations += jacobian(p, ints, z, mode, use_w, scale, jac[J_END, 0], jac[J_END, 1], work, aux, ext)
     jac[J_END, 2, 0, 0], jac[J_END, 2, 0, 1] = 1.0, use_w
     newton_matrix(jac, J_END, hg, lu, pivot)
     for i in range(N_Y):

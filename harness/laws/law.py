@@ -1,12 +1,17 @@
-"""Named contact laws: compositions of normal, damping, end rule, tangential and tangential-dashpot sub-models."""
+"""A contact law: a composition of normal, damping, end-rule, tangential and tangential-dashpot sub-models and the
+scheme that integrates them, built and checked from the registry's names."""
 from dataclasses import dataclass, replace
 
 from ..errors import UserError
-from ..solver import codes as C
-from .damping import DAMPING_MODELS, KuwabaraKonoDashpot, LinearDashpot, NoDamping, TsujiDashpot
-from .normal import ENGINE_NORMAL_MODELS, NORMAL_MODELS, Hertz, LinearSpring, PartiallyLatchingSpring, Stronge, Thornton, WaltonBraun
-from .tangential import TANGENTIAL_MODELS, LinearTangential, Mindlin, WaltonBraunTangential
-from .tangential_damping import TangentialDashpot
+from ..submodels.damping.kuwabara_kono import KuwabaraKonoDashpot
+from ..submodels.damping.linear import LinearDashpot
+from ..submodels.damping.none import NoDamping
+from ..submodels.damping.tsuji import TsujiDashpot
+from ..submodels.normal.hertz import Hertz
+from ..submodels.normal.linear import LinearSpring
+from ..submodels.registry import (DAMPING_MODELS, ENGINE_NORMAL_MODELS, NORMAL_MODELS, TANGENTIAL_MODELS,
+                                  kernel_of)
+from ..submodels.tangential_damping import TangentialDashpot
 
 END_RULES = ("tension", "no-tension")
 INTEGRATORS = ("paper", "velocity-verlet", "leapfrog")
@@ -29,7 +34,7 @@ class Law:
     slip: str = "lever"                  # slip V_t - lever omega, or YADE's noRatch form with the wall's reference
                                          # radius 1e8 R ('noratch', hertzian wall) or R ('noratch-sphere')
     summary: str = ""
-    dialect: str = "paper"               # whose formulas these are: the paper's, or an engine's (MODELS 5)
+    dialect: str = "paper"               # whose formulas these are: the paper's, or an engine's
 
     def describe(self):
         """Sub-model names as {key: label}, the form `harness models` prints."""
@@ -43,48 +48,13 @@ class Law:
         return self.normal.name in ("stronge", "partially-latching-spring")
 
 
-PAPER_TANGENTIAL_DASHPOT = TangentialDashpot("normal-ratio")   # c_t = 2 g sqrt(m k_t), g of the normal dashpot
-
-LAWS = {
-    "linear-spring-dashpot": Law(
-        "linear-spring-dashpot", LinearSpring("duration"), LinearDashpot(), "no-tension", LinearTangential("kappa"),
-        PAPER_TANGENTIAL_DASHPOT,
-        summary="Walton's linear spring-dashpot as the paper uses it: k_n gives the elastic Hertz contact duration "
-                "at V, no tension, g exact (Schwager & Poeschel 2007), k_t/k_n = kappa, tangential dashpot "
-                "c_t = 2 g sqrt(m k_t) while sticking"),
-    "hertz-mindlin": Law(
-        "hertz-mindlin", Hertz(), TsujiDashpot("appendix-b"), "no-tension", Mindlin("rescale"),
-        PAPER_TANGENTIAL_DASHPOT,
-        summary="Hertz + Tsuji-type dashpot calibrated by Thornton et al. (2013) App. B on the tangent stiffness "
-                "2E*a, no tension; Mindlin 8G*a with the eq. 18b unloading rescale; tangential dashpot "
-                "c_t = 2 g sqrt(m 8G*a) while sticking"),
-    "hertz-kuwabara-kono": Law(
-        "hertz-kuwabara-kono", Hertz(), KuwabaraKonoDashpot(), "no-tension", Mindlin("rescale"),
-        summary="Hertz + Kuwabara-Kono dashpot (Zhou et al. 1999 form), A calibrated at the scene speed; "
-                "Mindlin eq. 18b"),
-    "walton-braun": Law(
-        "walton-braun", WaltonBraun(), NoDamping(), "no-tension", WaltonBraunTangential("2/7"),
-        summary="Walton & Braun (1986) linear hysteretic K2 = K1/e^2, K1 from Hertz's peak overlap at V [prov]; "
-                "Walton-Braun tangential k_t0/K1 = 2/7 [prov]"),
-    "stronge": Law(
-        "stronge", Stronge(), NoDamping(), "no-tension", Mindlin("rescale"),
-        summary="PROVISIONAL reconstruction of Stronge's elastic-plastic law (docs/laws.md#stronge); Mindlin eq. 18b"),
-    "thornton": Law(
-        "thornton", Thornton(), NoDamping(), "no-tension", Mindlin("rescale"),
-        summary="Thornton (1997) elastoplastic, p_y calibrated for e_n at the scene speed; Mindlin eq. 18b"),
-    "partially-latching-spring": Law(
-        "partially-latching-spring", PartiallyLatchingSpring(), NoDamping(), "no-tension", LinearTangential("2/7"),
-        summary="PROVISIONAL: Walton-Braun spring with K1 = pi p_y R (Thornton's plastic stiffness), "
-                "K2 = K1/e^2 (docs/laws.md#partially-latching-spring); tangential spring 2/7 K1 [prov]"),
-}
-
-
 def get_law(name):
     """Look up a named law; unknown name -> UserError listing the known ones."""
+    from .named import LAWS
     try:
         return LAWS[name]
     except KeyError:
-        raise UserError(f"unknown model {name!r}; known: {', '.join(LAWS)}") from None
+        raise UserError(f"unknown law {name!r}; known: {', '.join(LAWS)}") from None
 
 
 def _split(spec):
@@ -160,8 +130,8 @@ def check_composition(law):
         raise UserError(f"the {law.damping.name} dashpot needs the hertz normal model")
     if law.normal.plastic and not isinstance(law.damping, NoDamping):
         raise UserError(f"{law.normal.name} dissipates plastically; use damping none")
-    if law.normal.code == C.NORMAL_THORNTON_NING and law.integrator != "velocity-verlet":
-        raise UserError("the incremental thornton_ning force is defined step by step only with velocity-verlet")
+    if kernel_of("normal", law.normal.code).history_reset and law.integrator == "paper":
+        raise UserError(f"the incremental {law.normal.name} force is defined step by step only in an engine's scheme")
     if law.normal.plastic and law.end != "no-tension":
         raise UserError(f"{law.normal.name} ends contact at zero force; use end no-tension")
 

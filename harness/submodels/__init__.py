@@ -1,0 +1,1 @@
+"""Sub-models, one module each: its calibration, its parameters and its compiled kernel (registry.py numbers them)."""

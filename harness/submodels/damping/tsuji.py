@@ -1,0 +1,32 @@
+"""Tsuji-type Hertz dashpot eta alpha^1/4 alpha_dot, eta = A sqrt(m k), calibrated by the paper's App. B fit or
+exactly for the end rule (docs/laws.md#normal-laws)."""
+import math
+
+from ...errors import UserError
+from .. import calibration as cal
+from . import Dashpot
+
+CALIBRATIONS = ("exact", "appendix-b", "tension")
+
+
+class TsujiDashpot:
+    """eta alpha^1/4 alpha_dot, eta = A sqrt(m k), k = 4/3 E* sqrt(R); A exact for the end rule (sqrt5 beta with
+    tension), 'tension' (sqrt5 beta whatever the end rule) or 'appendix-b' (the Thornton 2013 fit)."""
+    name = "tsuji"
+
+    def __init__(self, calibration="appendix-b"):
+        if calibration not in CALIBRATIONS:
+            raise UserError(f"tsuji calibration must be one of {', '.join(CALIBRATIONS)}, got {calibration!r}")
+        self.calibration = calibration
+
+    def coefficient_A(self, e_n, end):
+        """A for the end rule; 'appendix-b' uses A = sqrt6 g_fit (c_n = 2 g sqrt(m 2E*a), Thornton 2013 App. B)."""
+        if self.calibration == "appendix-b":
+            return math.sqrt(6.0) * cal.thornton_appendix_b_g(e_n)
+        tension = end == "tension" or self.calibration == "tension"
+        return cal.tsuji_tension_A(e_n) if tension else cal.tsuji_notension_A(e_n)
+
+    def dashpot(self, normal, contact, e_n, speed, end):
+        a = self.coefficient_A(e_n, end)
+        k = 4.0 / 3.0 * contact.E_star * math.sqrt(contact.radius)
+        return Dashpot(a * math.sqrt(contact.mass * k), 0.25, a / math.sqrt(6.0))

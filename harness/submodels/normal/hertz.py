@@ -1,0 +1,44 @@
+"""Hertz F = 4/3 E* R^1/2 alpha^3/2 (paper eq. 1)."""
+import math
+
+from numba import njit
+
+from .. import calibration as cal
+from ..base import NormalModel, NormalParameters
+from .hertz_shapes import hertz, hertz_slope
+
+NAME = "hertz"
+ADAPTIVE = True
+E_STAR = 0                  # kernel slot: E*
+
+
+def hertz_peak_overlap(contact, speed):
+    """alpha_max of an elastic Hertz impact at V: 2/5 k_h alpha^5/2 = 1/2 m V^2, k_h = 4/3 E* sqrt(R)."""
+    k_h = 4.0 / 3.0 * contact.E_star * math.sqrt(contact.radius)
+    return (1.25 * contact.mass * speed ** 2 / k_h) ** 0.4
+
+
+class Hertz(NormalModel):
+    """F = 4/3 E* R^1/2 alpha^3/2 (paper eq. 1)."""
+    name, kernel, plastic = "hertz", NAME, False
+
+    def parameters(self, contact, e_n, speed):
+        return NormalParameters((contact.E_star, 0.0, 0.0, 0.0),
+                                cal.hertz_equivalent_stiffness(contact.E_star, contact.radius, contact.mass, speed),
+                                cal.hertz_contact_time(contact.E_star, contact.radius, contact.mass, speed))
+
+    def peak(self, contact, e_n, speed):
+        """Elastic Hertz bounds damped impacts: alpha_max = (5 m V^2/(4 k_h))^2/5, dF/dalpha = 2 E* sqrt(R alpha)."""
+        alpha = hertz_peak_overlap(contact, speed)
+        return 2.0 * contact.E_star * math.sqrt(contact.radius * alpha), alpha
+
+
+@njit(cache=True)
+def force(p1, p2, p3, p4, radius, alpha, alpha_max):
+    """Hertz F = 4/3 E* R^1/2 alpha^3/2, a = sqrt(R alpha)."""
+    return hertz(p1, radius, alpha)
+
+
+@njit(cache=True)
+def slope(p1, p2, p3, p4, radius, alpha, loading, f, a):
+    return hertz_slope(p1, f, a)

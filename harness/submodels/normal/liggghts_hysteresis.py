@@ -1,0 +1,50 @@
+"""LIGGGHTS hooke/hysteresis without adhesion (an engine dialect's normal law, docs/liggghts-dialect.md)."""
+import math
+
+from numba import njit
+
+from .. import calibration as cal
+from ..base import NormalModel, NormalParameters
+
+NAME = "liggghts-hysteresis"
+ADAPTIVE = False
+K1, K2_MAX, D_LIM = 0, 1, 2                 # kernel slots
+
+
+class LudingHysteresis(NormalModel):
+    """LIGGGHTS hooke/hysteresis: k1 as the linear spring; d_lim = 2 x the undamped normal peak overlap at V and
+    k2max = k1 (2/e^2 - 1), so that at the scene speed the unloading stiffness is K1/e^2."""
+    name, kernel, plastic = "liggghts-hysteresis", NAME, True
+
+    def parameters(self, contact, e_n, speed):
+        k1 = cal.hertz_equivalent_stiffness(contact.E_star, contact.radius, contact.mass, speed)
+        k2max, d_lim = self.stiffness_and_limit(k1, contact, e_n, speed)
+        t_c = 0.5 * math.pi * math.sqrt(contact.mass / k1) * (1.0 + e_n)
+        return NormalParameters((k1, k2max, d_lim, 0.0), k1, t_c)
+
+    def peak(self, contact, e_n, speed):
+        """k2 grows to k2max with the overlap; loading reaches V sqrt(m/k1)."""
+        k1, k2max = self.parameters(contact, e_n, speed).values[:2]
+        return max(k1, k2max), speed * math.sqrt(contact.mass / k1)
+
+    @staticmethod
+    def stiffness_and_limit(k1, contact, e_n, speed):
+        return k1 * (2.0 / e_n ** 2 - 1.0), 2.0 * speed * math.sqrt(contact.mass / k1)
+
+
+@njit(cache=True)
+def force(p1, p2, p3, p4, radius, alpha, alpha_max):
+    """min(k1 d, k2 (d - d_max) + k1 d_max), k2 = k1 + (k2max - k1) d_max/d_lim; beyond d_lim the line
+    k2max (d - d_lim) + k1 d_lim (read in LIGGGHTS 3.8.0, reproduced exactly)."""
+    d_max = alpha if alpha > alpha_max else alpha_max
+    if d_max >= p3:
+        return p2 * (alpha - p3) + p1 * p3, math.sqrt(radius * alpha)
+    k2 = p1 + (p2 - p1) * d_max / p3
+    f = k2 * (alpha - d_max) + p1 * d_max
+    return (p1 * alpha if f >= p1 * alpha else f), math.sqrt(radius * alpha)
+
+
+@njit(cache=True)
+def kink(p1, p2, p3, p4):
+    """The loading curve becomes a straight line at d_lim."""
+    return p3

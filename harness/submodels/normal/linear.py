@@ -1,0 +1,61 @@
+"""Linear spring F = k_n alpha (Walton), k_n from elastic Hertz's contact duration at V (the paper's) or its peak
+overlap (LIGGGHTS hooke's) (docs/laws.md#normal-laws)."""
+import math
+
+from numba import njit
+
+from ...errors import UserError
+from .. import calibration as cal
+from ..base import NormalModel, NormalParameters
+
+NAME = "linear"
+ADAPTIVE = True
+K_N = 0                     # kernel slot: k_n
+
+
+class LinearSpring(NormalModel):
+    """F = k_n alpha; k_n = m (pi/t_H)^2, the elastic Hertz contact duration at V ('duration', the paper's), or
+    16/15 sqrt(R) E* (15 m V^2/(16 sqrt(R) E*))^1/5, Hertz's peak overlap at V ('peak-overlap', LIGGGHTS hooke's)."""
+    name, kernel, plastic = "linear", NAME, False
+    CALIBRATIONS = ("duration", "peak-overlap")
+
+    def __init__(self, calibration="duration"):
+        if calibration not in self.CALIBRATIONS:
+            raise UserError(f"the linear spring's calibration is one of {', '.join(self.CALIBRATIONS)}, "
+                            f"got {calibration!r}")
+        self.calibration = calibration
+
+    def label(self):
+        return f"{self.name}:{self.calibration}"
+
+    def stiffness(self, contact, speed):
+        if self.calibration == "duration":
+            return cal.hertz_duration_stiffness(contact.E_star, contact.radius, contact.mass, speed)
+        return cal.hertz_equivalent_stiffness(contact.E_star, contact.radius, contact.mass, speed)
+
+    def parameters(self, contact, e_n, speed):
+        k = self.stiffness(contact, speed)
+        return NormalParameters((k, 0.0, 0.0, 0.0), k, math.pi * math.sqrt(contact.mass / k))
+
+    def peak(self, contact, e_n, speed):
+        """(stiffest dF/dalpha, deepest overlap) of an impact at normal speed <= V: k, V sqrt(m/k)."""
+        k = self.parameters(contact, e_n, speed).values[0]
+        return k, speed * math.sqrt(contact.mass / k)
+
+
+@njit(cache=True)
+def force(p1, p2, p3, p4, radius, alpha, alpha_max):
+    """F = k_n alpha, a = sqrt(R alpha)."""
+    return p1 * alpha, math.sqrt(radius * alpha)
+
+
+@njit(cache=True)
+def below(p1, p2, p3, p4, alpha):
+    """At alpha <= 0 the spring pulls: F = k_n alpha (the force that ends a contact with tension)."""
+    return p1 * alpha
+
+
+@njit(cache=True)
+def slope(p1, p2, p3, p4, radius, alpha, loading, f, a):
+    """dF/dalpha = k_n; a = sqrt(R alpha): d(ln a)/dalpha = 1/(2 alpha)."""
+    return p1, 0.5 / alpha

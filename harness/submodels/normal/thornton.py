@@ -1,0 +1,105 @@
+"""Thornton (1997) elastoplastic: Hertz to the yield pressure p_y, F_y + pi p_y R (alpha - alpha_y), Hertzian
+unloading with the radius R_p (docs/laws.md#normal-laws)."""
+import math
+
+from numba import njit
+
+from .. import calibration as cal
+from ..base import NormalModel, NormalParameters
+from .hertz import Hertz
+from .hertz_shapes import FOUR_THIRDS, hertz, hertz_slope
+
+NAME = "thornton"
+ADAPTIVE = True
+E_STAR, P_Y, ALPHA_Y, F_Y = 0, 1, 2, 3      # kernel slots
+
+
+def yield_point(E_star, p_y, radius):
+    """alpha_y = (pi p_y/(2E*))^2 R, F_y = pi^3 p_y^3 R^2/(6 E*^2)."""
+    return (math.pi * p_y / (2.0 * E_star)) ** 2 * radius, math.pi ** 3 * p_y ** 3 * radius ** 2 / (6.0 * E_star ** 2)
+
+
+class Thornton(NormalModel):
+    """Thornton (1997): Hertz to p_y, F_y + pi p_y R (alpha - alpha_y), Hertz unloading, R_p; p_y gives e_n at V."""
+    name, kernel, plastic, law = "thornton", NAME, True, "thornton"
+
+    def yield_pressure(self, contact, e_n, speed):
+        """p_y from r = V_y/V solving e(r) = e_n."""
+        return cal.yield_pressure(cal.yield_velocity_ratio(e_n, self.law), speed, contact.E_star, contact.rho)
+
+    def plastic_stiffness(self, p_y, alpha_y, f_y, contact):
+        return math.pi * p_y * contact.radius
+
+    def parameters(self, contact, e_n, speed):
+        p_y = self.yield_pressure(contact, e_n, speed)
+        alpha_y, f_y = yield_point(contact.E_star, p_y, contact.radius)
+        k_plastic = self.plastic_stiffness(p_y, alpha_y, f_y, contact)
+        t_c = max(cal.hertz_contact_time(contact.E_star, contact.radius, contact.mass, speed),
+                  0.5 * math.pi * math.sqrt(contact.mass / k_plastic) * (1.0 + e_n))
+        k_lin = cal.hertz_equivalent_stiffness(contact.E_star, contact.radius, contact.mass, speed)
+        return NormalParameters(self.kernel_values(contact, p_y, alpha_y, f_y), k_lin, t_c)
+
+    def kernel_values(self, contact, p_y, alpha_y, f_y):
+        return (contact.E_star, p_y, alpha_y, f_y)
+
+    def peak(self, contact, e_n, speed):
+        """Energy balance 1/2 m V^2 = W_y + F_y d + k_p d^2/2 gives F_max = sqrt(F_y^2 + 2 k_p (E0 - W_y)); Hertzian
+        unloading returning e^2 E0 has dF/dalpha = 0.6 F_max^2/(e^2 E0) at its start."""
+        energy = 0.5 * contact.mass * speed ** 2
+        p_y = self.yield_pressure(contact, e_n, speed)
+        alpha_y, f_y = yield_point(contact.E_star, p_y, contact.radius)
+        if energy <= 0.4 * f_y * alpha_y:
+            return Hertz().peak(contact, e_n, speed)
+        k_p = self.plastic_stiffness(p_y, alpha_y, f_y, contact)
+        f_max = math.sqrt(f_y ** 2 + 2.0 * k_p * (energy - 0.4 * f_y * alpha_y))
+        alpha = alpha_y + (f_max - f_y) / k_p
+        k_hertz = 2.0 * contact.E_star * math.sqrt(contact.radius * alpha)     # unloading with R unmodified
+        return max(k_p, k_hertz, 0.6 * f_max ** 2 / (e_n ** 2 * energy)), alpha
+
+
+@njit(cache=True)
+def unloading(E_star, p_y, alpha_y, f_y, radius, alpha_max):
+    """Thornton's unloading from alpha_max > alpha_y: radius R_p = 4/3 E* a*^3/F* and residual overlap
+    alpha_max - a*^2/R_p, a*^2 = R alpha_max, F* = F_y + pi p_y R (alpha_max - alpha_y)."""
+    f_star = f_y + math.pi * p_y * radius * (alpha_max - alpha_y)
+    a_star_sq = radius * alpha_max
+    r_p = FOUR_THIRDS * E_star * a_star_sq * math.sqrt(a_star_sq) / f_star
+    return r_p, alpha_max - a_star_sq / r_p
+
+
+@njit(cache=True)
+def force(p1, p2, p3, p4, radius, alpha, alpha_max):
+    """Hertz to alpha_y, F_y + pi p_y R (alpha - alpha_y), Hertz unloading with R_p (slots E*, p_y, alpha_y, F_y)."""
+    if alpha >= alpha_max:
+        if alpha <= p3:
+            return hertz(p1, radius, alpha)
+        return p4 + math.pi * p2 * radius * (alpha - p3), math.sqrt(radius * alpha)
+    if alpha_max <= p3:
+        return hertz(p1, radius, alpha)
+    r_p, dent = unloading(p1, p2, p3, p4, radius, alpha_max)
+    delta = alpha - dent
+    if delta <= 0.0:
+        return delta, 0.0          # negative: below the residual indentation, the force has ended
+    return hertz(p1, r_p, delta)
+
+
+@njit(cache=True)
+def residual(p1, p2, p3, p4, radius, alpha_max):
+    """The dent alpha_p of the unloading curve (0 below yield)."""
+    if alpha_max > p3:
+        return unloading(p1, p2, p3, p4, radius, alpha_max)[1]
+    return 0.0
+
+
+@njit(cache=True)
+def kink(p1, p2, p3, p4):
+    """The loading curve bends at alpha_y."""
+    return p3
+
+
+@njit(cache=True)
+def slope(p1, p2, p3, p4, radius, alpha, loading, f, a):
+    """pi p_y R on the plastic line (a = sqrt(R alpha)), Hertzian elsewhere."""
+    if loading and alpha >= p3:
+        return math.pi * p2 * radius, 0.5 / alpha
+    return hertz_slope(p1, f, a)

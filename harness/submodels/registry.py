@@ -1,0 +1,122 @@
+"""The registration table: every sub-model by name (what `--with` and the named laws take) and every compiled kernel
+numbered (what the integrators dispatch on). solver/dispatch.py is generated from it (`python -m
+harness.submodels.generate`); a normal kernel registered at run time (`register_normal`) is reached through the
+extension table the integrators carry, without recompiling them."""
+import importlib
+from dataclasses import dataclass
+
+from ..errors import UserError
+from .damping.kuwabara_kono import KuwabaraKonoDashpot
+from .damping.linear import LinearDashpot
+from .damping.none import NoDamping
+from .damping.tsuji import TsujiDashpot
+from .normal.hertz import Hertz
+from .normal.liggghts_hysteresis import LudingHysteresis
+from .normal.liggghts_thornton_ning import ThorntonNing
+from .normal.linear import LinearSpring
+from .normal.partially_latching_spring import PartiallyLatchingSpring
+from .normal.stronge import Stronge
+from .normal.thornton import Thornton
+from .normal.walton_braun import WaltonBraun
+from .normal.yade_cundall_strack import CundallStrackSpring
+from .normal.yade_luding import YadeLuding
+from .tangential.linear import LinearTangential
+from .tangential.mindlin import Mindlin
+from .tangential.mindlin_deresiewicz import MindlinDeresiewicz
+from .tangential.viscous import ViscousTangential
+from .tangential.walton_braun import WaltonBraunTangential
+
+
+@dataclass(frozen=True)
+class Kernel:
+    """A compiled kernel: its family and name, its module, the function each dispatch point calls there, and what
+    the integrators must know of it."""
+    family: str
+    name: str
+    module: str
+    functions: tuple            # ((dispatch point, attribute of the module), ...)
+    adaptive: bool = False      # the adaptive integrator covers it (it has the ODE's functions)
+    history_reset: tuple = ()   # normal: an incremental law's history at first touch and after a contact
+    viscous: bool = False       # tangential: no spring, F = -min(c_t |V_s|, mu F_n) sign V_s
+    implicit: bool = False      # tangential: stiff, integrated implicitly in its hidden variable, with reversal events
+    log_rate: int = 0           # tangential: F_s a'/a in the ODE: 0 never, 1 while a shrinks (eq. 18b), 2 always
+
+
+NORMAL_POINTS = ("force", "below", "slope", "residual", "kink", "step")
+TANGENTIAL_POINTS = ("stiffness", "spring", "after_cap", "force_from_w", "w_from_force", "edge_w", "onset_w")
+SUBMODELS = "harness.submodels"
+
+
+def normal_kernel(module):
+    """The Kernel of a normal kernel module (NAME, ADAPTIVE, HISTORY_RESET and the dispatch points it defines)."""
+    m = importlib.import_module(module)
+    return Kernel("normal", m.NAME, module, tuple((p, p) for p in NORMAL_POINTS if hasattr(m, p)),
+                  adaptive=m.ADAPTIVE, history_reset=tuple(getattr(m, "HISTORY_RESET", ())))
+
+
+def tangential_kernel(name, module, adaptive=False, **functions_and_capabilities):
+    capabilities = {k: functions_and_capabilities.pop(k) for k in ("viscous", "implicit", "log_rate")
+                    if k in functions_and_capabilities}
+    return Kernel("tangential", name, f"{SUBMODELS}.tangential.{module}",
+                  tuple((p, functions_and_capabilities.get(p, p)) for p in TANGENTIAL_POINTS
+                        if p in functions_and_capabilities), adaptive=adaptive, **capabilities)
+
+
+NORMAL_KERNELS = tuple(normal_kernel(f"{SUBMODELS}.normal.{m}") for m in (
+    "linear", "hertz", "walton_braun", "thornton", "stronge", "liggghts_hysteresis", "liggghts_thornton_ning",
+    "yade_luding"))
+
+TANGENTIAL_KERNELS = (
+    Kernel("tangential", "none", "", (), adaptive=True),   # normal impact without spin, or mu = 0: no tangential model
+    tangential_kernel("linear", "linear", True, stiffness="stiffness", spring="spring"),
+    tangential_kernel("mindlin:incremental", "mindlin", True, stiffness="stiffness", spring="incremental"),
+    tangential_kernel("mindlin:rescale", "mindlin", True, stiffness="stiffness", spring="rescale", log_rate=1),
+    tangential_kernel("mindlin:total", "mindlin", True, stiffness="stiffness", spring="total",
+                      after_cap="total_after_cap", log_rate=2),
+    tangential_kernel("mindlin-deresiewicz", "mindlin_deresiewicz", stiffness="stiffness", spring="spring"),
+    tangential_kernel("walton-braun", "walton_braun", True, stiffness="stiffness", spring="spring",
+                      force_from_w="force_from_w", w_from_force="w_from_force", edge_w="edge_w", onset_w="onset_w",
+                      implicit=True),
+    tangential_kernel("viscous:linear", "viscous", stiffness="linear_stiffness", viscous=True),
+    tangential_kernel("viscous:mindlin", "viscous", stiffness="mindlin_stiffness", viscous=True),
+)
+
+# sub-models by the name --with takes; engine dialects' own sub-models are listed apart (engines name them)
+NORMAL_MODELS = {cls.name: cls for cls in (LinearSpring, Hertz, WaltonBraun, PartiallyLatchingSpring, Thornton, Stronge)}
+ENGINE_NORMAL_MODELS = {cls.name: cls for cls in (LudingHysteresis, ThorntonNing, CundallStrackSpring, YadeLuding)}
+TANGENTIAL_MODELS = {cls.name: cls for cls in (LinearTangential, Mindlin, MindlinDeresiewicz, WaltonBraunTangential,
+                                               ViscousTangential)}
+DAMPING_MODELS = {cls.name: cls for cls in (NoDamping, LinearDashpot, TsujiDashpot, KuwabaraKonoDashpot)}
+
+EXTENSION_SLOTS = 4         # normal kernels registered at run time, beyond the generated dispatch
+EXTENSIONS = []             # their Kernels, in registration order
+
+
+def kernels(family):
+    return NORMAL_KERNELS + tuple(EXTENSIONS) if family == "normal" else TANGENTIAL_KERNELS
+
+
+def code_of(family, name):
+    """The number of kernel `name` in its family (what the integrators dispatch on)."""
+    for code, kernel in enumerate(kernels(family)):
+        if kernel.name == name:
+            return code
+    raise UserError(f"no {family} kernel named {name!r}")
+
+
+def kernel_of(family, code):
+    return kernels(family)[code]
+
+
+def register_normal(model, module):
+    """Register a normal sub-model class and the module of its compiled functions at run time: one call where a
+    built-in is one registry line. The module defines NAME, ADAPTIVE and `extension(point, p1, p2, p3, p4, radius,
+    alpha, alpha_max, x, y)` with the signature solver.extension.SIGNATURE, answering each point of
+    solver.extension.POINTS (force, below, slope, residual, kink) with a pair of floats."""
+    m = importlib.import_module(module)
+    if m.NAME in [k.name for k in kernels("normal")]:
+        raise UserError(f"a normal kernel named {m.NAME!r} is registered already")
+    if len(EXTENSIONS) >= EXTENSION_SLOTS:
+        raise UserError(f"at most {EXTENSION_SLOTS} normal kernels can be registered at run time")
+    EXTENSIONS.append(Kernel("normal", m.NAME, module, (("extension", "extension"),), adaptive=m.ADAPTIVE))
+    NORMAL_MODELS[model.name] = model
