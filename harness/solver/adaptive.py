@@ -8,7 +8,7 @@ and the release (alpha = 0, or F_n = 0 without tension); under Walton-Braun's sp
 spring of the L-stable SDIRK4(3) (steppers.py): that spring rides just under a rising mu N at
 x ~ (mu N'/(k_t0 V_s))^3 and relaxes there at a rate ~ x^(-2/3), far too stiff for explicit steps at grazing
 incidence. The error control also refines towards the power-law singularities at first touch and release. This is
-the h -> 0 limit of kernel.step, the second-order paper scheme, integrated at fifth (fourth) order.
+the h -> 0 limit of schemes.step, the second-order paper scheme, integrated at fifth (fourth) order.
 """
 import math
 
@@ -20,7 +20,7 @@ from .contact_ode import (A_DFN, A_FN, A_TRIAL, E_RELEASE, E_REVERSAL, E_SLIP, E
                           M_DIR, M_LOADING, M_SIGN, M_STAR, M_STICKS, M_TANGENTIAL, N_AUX, N_EVENTS, N_MODE, N_Y, SLIDE, STICK,
                           Y_ALPHA, Y_FS, Y_RATE, Y_VX, Y_W, cone_rate, coulomb_cone, edge_w, evaluate, events,
                           slip_velocity)
-from .kernel import illinois
+from .events import illinois
 from .dispatch import TANGENTIAL_IMPLICIT, TANGENTIAL_NONE, normal_residual, tangential_onset_w
 from .steppers import J_END, J_START, STAGES, dp_step, hermite, sdirk_step
 

@@ -11,13 +11,12 @@ smooth in w where they are singular in F_s (the implicit step solves for w).
 """
 import math
 
-import numpy as np
 from numba import njit
 
 from . import codes as C
 from .dispatch import (TANGENTIAL_IMPLICIT, TANGENTIAL_LOG_RATE, normal_below, normal_force, normal_slope,
                        tangential_edge_w, tangential_force_from_w, tangential_stiffness, tangential_w_from_force)
-from .kernel import damping_power, loading_kink
+from .schemes import damping_power, loading_kink
 
 Y_ALPHA, Y_RATE, Y_VX, Y_W, Y_FS = 0, 1, 2, 3, 4
 N_Y = 5

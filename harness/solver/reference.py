@@ -11,7 +11,8 @@ from ..stability import UnstableTimeStep
 from . import codes as C
 from .adaptive import integrate_adaptive, stepper_names, supports
 from .extension import table as extension_table
-from .kernel import graded_largest_step, integrate
+from .kernel import integrate
+from .mesh import graded_largest_step
 from .plan import FixedTimeStep, plan_batch
 
 CONVERGED_START = 64             # steps per contact of the first level of the converged ladder
@@ -67,7 +68,7 @@ def richardson(fine, coarse):
 
 
 def graded_rows(law, scene, e_n, n, span, rows):
-    """Integrate the given rows with n graded steps over [0, span] (kernel.graded_time): steps shrink like s^3 at
+    """Integrate the given rows with n graded steps over [0, span] (mesh.graded_time): steps shrink like s^3 at
     first touch and towards span, just beyond the release, so that the onset and release singularities
     (alpha^(1/4), alpha^(1/2), alpha^(3/2)) become smooth in the step and the error expands in powers of 1/n.
     The stability limit is checked at the largest graded step."""

@@ -1,0 +1,109 @@
+"""The tangential half of a step: spring increment from the slip, Coulomb cap, tangential dashpot, and the kicks
+that carry the friction force (paper scheme: a sliding step's impulse exactly mu times the normal one)."""
+import math
+
+from numba import njit
+
+from ..submodels.tangential.state import N_TSTATE, T_HELD, T_MARGIN, T_STEP
+from ..submodels.tangential.viscous import friction as viscous_friction
+from . import codes as C
+from .dispatch import TANGENTIAL_NONE, TANGENTIAL_VISCOUS, tangential_after_cap, tangential_stiffness
+from .spring import cap, spring_force
+from .state import S_ALPHA, S_FEL, S_FS, S_FT, S_NOLD, S_U, S_VX, S_VZ, S_W
+
+
+@njit(cache=True, inline="always")
+def friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, in_contact, scheme, lever):
+    """Tangential force for this step and the spring force kept in history: spring increment from the slip,
+    Coulomb cap, tangential dashpot. The paper's dashpot is implicit and capped again; the engines' is explicit
+    and added after the Coulomb test only (LIGGGHTS and YADE alike, MODELS 5). History cleared out of contact."""
+    paper = scheme == C.INTEGRATOR_PAPER
+    f_t, f_s = 0.0, 0.0
+    if TANGENTIAL_VISCOUS[code] and alpha > 0.0:
+        f_t = viscous_friction(tangential_stiffness(code, p[C.P_T1], a), p[C.P_TDAMP], slip, p[C.P_MU] * abs(f_n))
+    elif in_contact:
+        limit = p[C.P_MU] * abs(f_n)
+        f_s = spring_force(code, s[S_FS], slip * h, a, p[C.P_T1], p[C.P_MU], abs(f_n), s[S_NOLD], ot, scratch, paper)
+        ot[T_MARGIN] = ot[T_HELD] = abs(f_s) - limit
+        if paper and p[C.P_TDAMP] != 0.0:
+            f_t, f_s = damped_friction(ot, p, code, h, a, f_s, slip, limit, lever)
+        elif abs(f_s) > limit:
+            f_s = cap(f_s, limit)
+            tangential_after_cap(code, f_s, p[C.P_T1], a, ot)
+            f_t = f_s
+        elif p[C.P_TDAMP] == 0.0:
+            f_t = f_s
+        else:
+            f_t = f_s - p[C.P_TDAMP] * math.sqrt(tangential_stiffness(code, p[C.P_T1], a)) * slip
+    else:
+        for k in range(N_TSTATE):
+            ot[k] = 0.0
+    return f_t, f_s
+
+
+@njit(cache=True, inline="always")
+def damped_friction(ot, p, code, h, a, f_s, slip, limit, lever):
+    """The paper scheme's spring and tangential dashpot: the spring is held within the Coulomb cone, and the total
+    F_s - c_t V_s, with V_s at the step's end (implicit: V_s(end) = V_s(half) + h/2 F_t (1/m + lever^2/I)), is the
+    tangential force clipped to mu F_n: the dashpot acts while the contact sticks, and its share shrinks
+    continuously to nothing in gross sliding (docs/laws.md#tangential-dashpot). Returns (F_t, F_s); T_HELD =
+    |total| - mu F_n."""
+    if abs(f_s) > limit:
+        f_s = cap(f_s, limit)
+        tangential_after_cap(code, f_s, p[C.P_T1], a, ot)
+    c_t = p[C.P_TDAMP] * math.sqrt(tangential_stiffness(code, p[C.P_T1], a))
+    trial = (f_s - c_t * slip) / (1.0 + 0.5 * h * c_t * (1.0 / p[C.P_MASS] + lever * lever / p[C.P_INERTIA]))
+    ot[T_HELD] = abs(trial) - limit
+    return cap(trial, limit), f_s
+
+
+@njit(cache=True, inline="always")
+def slip_velocity(p, alpha, vx, w, lever):
+    """Contact-point slip: V_t - lever omega, or YADE's noRatch form alpha_f V_t - R omega with
+    alpha_f = (r1 + R)/(r1 + R - d) (r1 the wall's reference radius)."""
+    r1 = p[C.P_SLIP_R1]
+    if r1 == 0.0:
+        return vx - lever * w
+    radius = p[C.P_RADIUS]
+    return (r1 + radius) / (r1 + radius - alpha) * vx - radius * w
+
+
+@njit(cache=True, inline="always")
+def tangential_update(s, st, o, ot, p, ints, h, scratch, alpha, a, f_n, in_contact, scheme):
+    """Tangential half of a Verlet step: half kick with the previous force, slip at the half step, friction,
+    closing half kick (paper and LIGGGHTS schemes)."""
+    for k in range(N_TSTATE):
+        ot[k] = st[k]
+    code = ints[C.I_TANGENTIAL]
+    if code == TANGENTIAL_NONE:                       # normal impact without spin, or mu = 0: nothing to do
+        o[S_VX], o[S_W], o[S_FT], o[S_FS], o[S_NOLD] = s[S_VX], s[S_W], 0.0, 0.0, f_n
+        return
+    m, inertia, radius = p[C.P_MASS], p[C.P_INERTIA], p[C.P_RADIUS]
+    lever_old = radius - p[C.P_LEVER] * s[S_ALPHA]
+    lever = radius - p[C.P_LEVER] * alpha
+    vx_half = s[S_VX] + 0.5 * h * s[S_FT] / m
+    w_half = s[S_W] - 0.5 * h * lever_old * s[S_FT] / inertia
+    slip = slip_velocity(p, alpha, vx_half, w_half, lever)
+    f_t, f_s = friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, in_contact, scheme, lever)
+    kick = f_t
+    sliding = (st[T_HELD] >= 0.0 and ot[T_HELD] > 0.0        # on the same side of the Coulomb cone at both ends
+               and s[S_FT] * f_t >= 0.0)                     # (a dashpot-held force may cross to the other side)
+    if scheme == C.INTEGRATOR_PAPER and sliding and f_n > 0.0 and not TANGENTIAL_VISCOUS[code]:
+        kick = sliding_kick(s, o, m, h, f_t / f_n)
+    o[S_VX] = vx_half + 0.5 * h * kick / m
+    o[S_W] = w_half - 0.5 * h * lever * kick / inertia
+    o[S_FT], o[S_FS], o[S_NOLD] = f_t, f_s, abs(f_n)
+    ot[T_STEP] = h
+
+
+@njit(cache=True, inline="always")
+def sliding_kick(s, o, m, h, ratio):
+    """Closing half kick of a sliding step (paper scheme) such that the friction impulse is -sign(V_s) mu times the
+    normal impulse of the step, h/2 (F_el0 + F_el1) + D(alpha_1) - D(alpha_0): the dashpot's impulse exact (its
+    force ~ t^p at first touch would make the trapezoid's error O(h^(1+p))); `ratio` = F_t/F_n = -sign mu."""
+    if h <= 0.0:                                      # a step of length 0 (an event at a step's end) kicks nothing
+        return 0.0
+    d_old = s[S_U] + m * s[S_VZ]                      # D = u - m alpha_dot, alpha_dot = -v_z
+    d_new = o[S_U] + m * o[S_VZ]
+    impulse = 0.5 * h * (s[S_FEL] + o[S_FEL]) + d_new - d_old
+    return 2.0 * ratio * impulse / h - s[S_FT]

@@ -1,0 +1,240 @@
+"""One step of each integrator: the paper scheme (velocity Verlet on the normal momentum u = m alpha_dot + D(alpha),
+linearised implicit-midpoint drift, second order and unconditionally stable in the dashpot), LIGGGHTS' velocity
+Verlet, YADE's leapfrog, and YADE's leapfrog against a stand-in sphere; and the paper scheme's first touch."""
+import math
+
+from numba import njit
+
+from ..submodels.tangential.state import N_TSTATE, T_HELD
+from . import codes as C
+from .dispatch import NORMAL_HISTORY, TANGENTIAL_NONE, normal_force, normal_kink, normal_step, tangential_stiffness
+from .friction import friction, slip_velocity, tangential_update
+from .spring import cap
+from .state import (N_STATE, S_ALPHA, S_AMAX, S_C, S_FEL, S_FN, S_FS, S_FT, S_HISTORY, S_NOLD, S_NX, S_NZ, S_SX,
+                    S_SZ, S_U, S_VX, S_VZ, S_W, S_X, S_Z, reset_history)
+
+ONSET_OVERLAP = 1e-12     # overlap, in units of V_n dt, at which first touch's friction is judged
+
+
+@njit(cache=True)
+def damping_power(alpha, power):
+    """alpha^p for the dashpot exponents in use (0, 1/4, 1/2) without the cost of a general pow."""
+    if power == 0.0:
+        return 1.0
+    if power == 0.5:
+        return math.sqrt(alpha)
+    if power == 0.25:
+        return math.sqrt(math.sqrt(alpha))
+    return alpha ** power
+
+
+@njit(cache=True)
+def dashpot_potential(c0, power, alpha):
+    """D(alpha) = c0 alpha^(p+1)/(p+1): dD/dt = c(alpha) alpha_dot, so the dashpot impulse depends on positions only."""
+    if alpha <= 0.0 or c0 == 0.0:
+        return 0.0
+    return c0 * alpha * damping_power(alpha, power) / (power + 1.0)
+
+
+@njit(cache=True)
+def drift(alpha, rate0, c_alpha, h):
+    """Linearised implicit midpoint for alpha' = (u_half - D(alpha))/m, u frozen: D(mid) = D(alpha_n) + c_n (x - alpha)/2
+    gives x = alpha + h rate0 / (1 + h c_n/(2m)); c_alpha = h c_n/(2m). Unconditionally stable, O(h^3) locally."""
+    return alpha + h * rate0 / (1.0 + c_alpha)
+
+
+@njit(cache=True, inline="always")
+def step_leapfrog(s, st, o, ot, p, ints, h, scratch, ext):
+    """YADE NewtonIntegrator: forces from the overlap at x(t) and the half-step velocities v(t - h/2), then
+    v(t + h/2) = v(t - h/2) + h F/m and x(t + h) = x(t) + h v(t + h/2). A contact exists while the overlap is
+    >= 0 (a sphere placed touching starts in contact with zero force); the first step with a negative overlap
+    applies no force and ends it (returns -1)."""
+    m, inertia, radius, g = p[C.P_MASS], p[C.P_INERTIA], p[C.P_RADIUS], p[C.P_GRAVITY]
+    alpha = s[S_ALPHA]
+    amax = s[S_AMAX] if s[S_AMAX] > alpha else alpha
+    in_contact = alpha >= 0.0
+    f_n, a = 0.0, 0.0
+    for k in range(NORMAL_HISTORY):
+        o[S_HISTORY + k] = s[S_HISTORY + k]
+    if in_contact:                                    # from overlap 0: a constant dashpot acts at first touch
+        f_el, a = normal_step(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], radius, alpha, s[S_ALPHA],
+                              s[S_FEL], amax, s[S_HISTORY:S_HISTORY + NORMAL_HISTORY],
+                              o[S_HISTORY:S_HISTORY + NORMAL_HISTORY], ext)
+        c = p[C.P_DAMP_C0] * damping_power(alpha, p[C.P_DAMP_POWER]) if p[C.P_DAMP_C0] != 0.0 else 0.0
+        f_n = f_el - c * s[S_VZ]
+        if f_n < 0.0 and ints[C.I_END] == C.END_FORCE:
+            f_n = 0.0
+    for k in range(N_TSTATE):
+        ot[k] = st[k]
+    code = ints[C.I_TANGENTIAL]
+    f_t, f_s = 0.0, 0.0
+    lever = radius - p[C.P_LEVER] * alpha
+    if code != TANGENTIAL_NONE:
+        slip = slip_velocity(p, alpha, s[S_VX], s[S_W], lever)
+        f_t, f_s = friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, in_contact, C.INTEGRATOR_LEAPFROG, lever)
+    vz = s[S_VZ] + h * (f_n / m - g)
+    o[S_VZ], o[S_FN], o[S_AMAX] = vz, f_n, amax
+    o[S_VX] = s[S_VX] + h * f_t / m
+    o[S_W] = s[S_W] - h * lever * f_t / inertia
+    o[S_FT], o[S_FS], o[S_NOLD] = f_t, f_s, abs(f_n)
+    o[S_ALPHA] = alpha - h * vz
+    return 1.0 if in_contact else -1.0
+
+
+@njit(cache=True, inline="always")
+def step(s, st, o, ot, p, ints, h, scratch, ext):
+    """Advance state (s, st) by h into (o, ot); returns the end-of-contact indicator (contact while > 0).
+
+    Normal direction in u = m alpha_dot + D(alpha), u' = -F_el(alpha) + m g (Strang splitting: kick, midpoint
+    drift, kick), which stays second order although c(alpha) = c0 alpha^p is singular at first touch.
+    """
+    m, radius, g = p[C.P_MASS], p[C.P_RADIUS], p[C.P_GRAVITY]
+    c0, power = p[C.P_DAMP_C0], p[C.P_DAMP_POWER]
+    u_shift = -0.5 * h * (s[S_FEL] - m * g)
+    alpha = drift(s[S_ALPHA], -s[S_VZ] + u_shift / m, 0.5 * h * s[S_C] / m, h)
+    amax = s[S_AMAX]
+    c, d_pot = 0.0, 0.0
+    if alpha > 0.0:
+        f_el, a = normal_force(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], radius, alpha, amax, ext)
+        if c0 != 0.0:
+            q = damping_power(alpha, power)
+            c, d_pot = c0 * q, c0 * alpha * q / (power + 1.0)
+    else:
+        f_el, a = 0.0, 0.0
+    u = s[S_U] + u_shift - 0.5 * h * (f_el - m * g)
+    alpha_dot = (u - d_pot) / m
+    f_n = f_el + c * alpha_dot
+    indicator = alpha
+    if alpha > 0.0 and ints[C.I_END] == C.END_FORCE:
+        indicator = f_n if f_n < alpha else alpha
+    if alpha <= 0.0:
+        f_n = 0.0
+    o[S_ALPHA], o[S_VZ], o[S_FN], o[S_U], o[S_FEL], o[S_C] = alpha, -alpha_dot, f_n, u, f_el, c
+    o[S_AMAX] = alpha if alpha > amax else amax
+    tangential_update(s, st, o, ot, p, ints, h, scratch, alpha, a, f_n,
+                      f_n > 0.0 or (alpha > 0.0 and ints[C.I_END] == C.END_ALPHA), C.INTEGRATOR_PAPER)
+    return indicator
+
+
+@njit(cache=True, inline="always")
+def step_velocity_verlet(s, st, o, ot, p, ints, h, scratch, ext):
+    """LIGGGHTS nve/sphere + wall/gran: half kick, drift, forces from the half-step velocities, half kick.
+
+    The normal dashpot and the tangential increment see v(t + h/2); the tangential dashpot is added after the
+    Coulomb test and is not capped again; the contact ends at the first step with alpha <= 0 (MODELS 5).
+    """
+    m, radius, g = p[C.P_MASS], p[C.P_RADIUS], p[C.P_GRAVITY]
+    vz_half = s[S_VZ] + 0.5 * h * (s[S_FN] / m - g)
+    alpha = s[S_ALPHA] - h * vz_half
+    amax = s[S_AMAX]
+    f_n, f_el, a = 0.0, 0.0, 0.0
+    reset_history(ints[C.I_NORMAL], o)                      # history cleared when out of contact
+    if alpha > 0.0:
+        f_el, a = normal_step(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], radius, alpha, s[S_ALPHA],
+                              s[S_FEL], amax, s[S_HISTORY:S_HISTORY + NORMAL_HISTORY],
+                              o[S_HISTORY:S_HISTORY + NORMAL_HISTORY], ext)
+        c = p[C.P_DAMP_C0] * damping_power(alpha, p[C.P_DAMP_POWER]) if p[C.P_DAMP_C0] != 0.0 else 0.0
+        f_n = f_el - c * vz_half
+        if f_n < 0.0 and ints[C.I_END] == C.END_FORCE:
+            f_n = 0.0
+    o[S_ALPHA], o[S_VZ], o[S_FN], o[S_FEL] = alpha, vz_half + 0.5 * h * (f_n / m - g), f_n, f_el
+    o[S_AMAX] = alpha if alpha > amax else amax
+    tangential_update(s, st, o, ot, p, ints, h, scratch, alpha, a, f_n, alpha > 0.0, C.INTEGRATOR_VELOCITY_VERLET)
+    return alpha
+
+
+@njit(cache=True, inline="always")
+def step_leapfrog_sphere(s, st, o, ot, p, ints, h, scratch, ext):
+    """YADE Luding against a fixed sphere of radius R_big standing in for the wall, with YADE's own geometry:
+    overlap (R_big + R) - |x2 - x1|, normal along x2 - x1, contact point in the middle of the overlap, shear force
+    rotated with the normal (ScGeom::rotate), forces and torque from the contact-point branch; leapfrog as above."""
+    m, inertia, radius, big = p[C.P_MASS], p[C.P_INERTIA], p[C.P_RADIUS], p[C.P_BIG_R]
+    dx, dz = s[S_X], s[S_Z] + big
+    norm = math.sqrt(dx * dx + 0.0 + dz * dz)
+    delt = (big + radius) - norm
+    for k in range(N_STATE):
+        o[k] = s[k]
+    if delt < 0.0:                                    # contact over: no force this step, history erased
+        fx, fz, torque = 0.0, 0.0, 0.0
+        in_contact = False
+    else:
+        in_contact = True
+        nx, nz = dx / norm, dz / norm
+        if s[S_NX] != 0.0 or s[S_NZ] != 0.0:          # ScGeom::rotate about prevNormal x normal (no twist in-plane)
+            axis = s[S_NZ] * nx - s[S_NX] * nz        # y component of prevNormal x normal
+            sx, sz = s[S_SX], s[S_SZ]
+            sx, sz = sx + axis * sz, sz - axis * sx
+        else:
+            sx, sz = 0.0, 0.0
+        f_hys, _ = normal_step(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], radius, delt, s[S_ALPHA],
+                               s[S_FEL], s[S_AMAX], s[S_HISTORY:S_HISTORY + NORMAL_HISTORY],
+                               o[S_HISTORY:S_HISTORY + NORMAL_HISTORY], ext)
+        reach = big - 0.5 * delt                      # contact point: big sphere centre + reach n
+        cx, cz = reach * nx - s[S_X], (-big + reach * nz) - s[S_Z]
+        wy = s[S_W]
+        rvx, rvz = -(s[S_VX] + wy * cz), -(s[S_VZ] - wy * cx)
+        vn = nx * rvx + nz * rvz
+        svx, svz = rvx - vn * nx, rvz - vn * nz
+        sx, sz = sx + p[C.P_T1] * h * svx, sz + p[C.P_T1] * h * svz
+        g0 = p[C.P_DAMP_C0]
+        normal = f_hys + g0 * vn
+        max_fs = normal * normal * p[C.P_MU] * p[C.P_MU]
+        visc_x, visc_z = 0.0, 0.0
+        if sx * sx + sz * sz > max_fs:
+            ratio = math.sqrt(max_fs) / math.sqrt(sx * sx + sz * sz)
+            sx, sz = sx * ratio, sz * ratio
+        else:
+            visc_x, visc_z = g0 * svx, g0 * svz
+        fx = normal * nx + sx + visc_x
+        fz = normal * nz + sz + visc_z
+        torque = cz * fx - cx * fz
+        o[S_NX], o[S_NZ], o[S_SX], o[S_SZ] = nx, nz, sx, sz
+        o[S_FN] = normal
+    if not in_contact:
+        o[S_NX], o[S_NZ], o[S_SX], o[S_SZ], o[S_FN] = 0.0, 0.0, 0.0, 0.0, 0.0
+    o[S_VX] = s[S_VX] + h * fx / m
+    o[S_VZ] = s[S_VZ] + h * fz / m
+    o[S_W] = s[S_W] + h * torque / inertia
+    o[S_X] = s[S_X] + h * o[S_VX]
+    o[S_Z] = s[S_Z] + h * o[S_VZ]
+    o[S_ALPHA] = delt
+    for k in range(N_TSTATE):
+        ot[k] = st[k]
+    return 1.0 if in_contact else -1.0
+
+
+@njit(cache=True, inline="always")
+def advance(s, st, o, ot, p, ints, h, scratch, ext):
+    """One step of the row's integrator."""
+    if ints[C.I_INTEGRATOR] == C.INTEGRATOR_VELOCITY_VERLET:
+        return step_velocity_verlet(s, st, o, ot, p, ints, h, scratch, ext)
+    if ints[C.I_INTEGRATOR] == C.INTEGRATOR_LEAPFROG and p[C.P_BIG_R] > 0.0:
+        return step_leapfrog_sphere(s, st, o, ot, p, ints, h, scratch, ext)
+    if ints[C.I_INTEGRATOR] == C.INTEGRATOR_LEAPFROG:
+        return step_leapfrog(s, st, o, ot, p, ints, h, scratch, ext)
+    return step(s, st, o, ot, p, ints, h, scratch, ext)
+
+
+@njit(cache=True, inline="always")
+def loading_kink(p, ints, ext):
+    """Overlap at which the loading curve bends (yield of Stronge and Thornton, d_lim of LIGGGHTS' hysteresis);
+    0 for the smooth curves."""
+    return normal_kink(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], ext)
+
+
+@njit(cache=True)
+def paper_first_touch(s, st, p, ints, ext):
+    """The paper scheme's tangential force at first touch with a tangential dashpot: -c_t V_s capped by mu F_n
+    (finite where both start finite: a constant normal dashpot and a constant k_t), and whether spring and dashpot
+    start on the Coulomb cone, judged at a tiny overlap where both rise from 0 (Tsuji's c ~ alpha^1/4 against
+    Mindlin's c_t ~ alpha^1/4): a contact that slides from first touch starts with margin 0 and gets the exact
+    friction impulse (sliding_kick) from its first step, where the trapezoid of a force ~ t^p loses an order."""
+    code, radius, mu = ints[C.I_TANGENTIAL], p[C.P_RADIUS], p[C.P_MU]
+    slip0 = p[C.P_VX0] - radius * p[C.P_W0]
+    v_n = -p[C.P_VZ0]
+    s[S_FT] = cap(-p[C.P_TDAMP] * math.sqrt(tangential_stiffness(code, p[C.P_T1], 0.0)) * slip0, mu * abs(s[S_FN]))
+    alpha = ONSET_OVERLAP * v_n * p[C.P_DT]
+    f_el, a = normal_force(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], radius, alpha, alpha, ext)
+    f_n = f_el + p[C.P_DAMP_C0] * damping_power(alpha, p[C.P_DAMP_POWER]) * v_n
+    if p[C.P_TDAMP] * math.sqrt(tangential_stiffness(code, p[C.P_T1], a)) * abs(slip0) > mu * f_n:
+        st[T_HELD] = 0.0
