@@ -9,13 +9,14 @@ import time
 
 import numpy as np
 
-from harness.cost import relative_errors, startup_seconds, truth_of
-from harness.engines import ADAPTERS
-from harness.engines.sweep import run_sweep
+from harness.analyses.cost import relative_errors, startup_seconds, truth_of
+from harness.engines import ENGINES, EXTERNAL
+from harness.execute import execute
 from harness.laws import compose
+from harness.plan import engine_runs
 from harness.scene import Scene
 from harness.solver.reference import simulate
-from harness.stability import UnstableTimeStep
+from harness.solver.stability import UnstableTimeStep
 
 TARGET = 1e-4
 LADDER = (20, 50, 100, 200, 500, 1000, 2000, 5000, 10000, 20000, 50000)
@@ -42,20 +43,20 @@ def reference_cost(law, truth):
 
 def engine_cost(name, truth):
     """Smallest rung reaching the target in the engine; wall time of that batched run and its start-up."""
-    adapter = ADAPTERS[name]
+    adapter = ENGINES[name]
     options = {"precision": "double", "linear": "viscel"} if name == "yade" else {}
     dialect = adapter.dialect(LAW.name, options)
     startup = startup_seconds(adapter, LAW, dialect, SCENE, options)[SCENE.e_n[0]]
     for n in LADDER:
         try:
-            frames, failed = run_sweep(adapter, LAW, SCENE, n, options=options)
+            frame, failed = execute(engine_runs(adapter, LAW, SCENE, n, options))
         except UnstableTimeStep:
             continue
         if failed:
             return None, np.nan, startup, np.nan
-        error = e_t_error(frames[0], truth)
+        error = e_t_error(frame, truth)
         if error <= TARGET:
-            return n, float(frames[0].wall_s.sum()), startup, error
+            return n, float(frame.wall_s.sum()), startup, error
     return None, np.nan, startup, error
 
 
@@ -69,7 +70,8 @@ def main():
     converged, _ = simulate(LAW, SCENE, converged=True)
     evaluations = f"{converged.steps_per_contact.mean():.0f} evals"      # adaptive: force evaluations per impact
     results["reference --converged"] = (evaluations, time.perf_counter() - start, 0.0, e_t_error(converged, truth))
-    for name, adapter in ADAPTERS.items():
+    for name in EXTERNAL:
+        adapter = ENGINES[name]
         if not adapter.available():
             print(f"{name}: not installed, skipped")
             continue

@@ -18,7 +18,7 @@ import time
 
 import numpy as np
 
-from harness.cost import relative_errors, truth_of
+from harness.analyses.cost import relative_errors, truth_of
 from harness.laws import LAWS, compose
 from harness.scene import Scene
 from harness.solver import reference

@@ -9,7 +9,7 @@ import time
 
 import numpy as np
 
-from harness.engines import ADAPTERS
+from harness.engines import ENGINES
 from harness.laws import compose
 from harness.scene import Scene
 from harness.solver import codes as C
@@ -35,7 +35,7 @@ def timed_run(engine, law, scene, batch):
 
 
 def main(name):
-    engine = ADAPTERS[name]
+    engine = ENGINES[name]
     if not engine.available():
         print(f"{name} is not installed; nothing to measure")
         return

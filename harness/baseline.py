@@ -1,16 +1,20 @@
 """Baselines: the expected rebound kinematics of a fixed matrix (every law through the reference and through each
-engine that supports it), committed under reference/, and the regression check against them."""
+engine that supports it), committed under baselines/ and shipped with the package, and the regression check."""
 import os
+from importlib.resources import files
 
 import numpy as np
 import pandas as pd
 
-from .engines import ADAPTERS, engine_status
+from .engines import ENGINES, EXTERNAL
 from .errors import UserError
+from .execute import execute
 from .laws import LAWS, compose
+from .plan import engine_plan, reference_runs
 from .results import read_csv, write_csv
 from .scene import Scene
 
+DEFAULT_BASELINE = str(files("harness") / "baselines")
 BASELINE_FILE = "baseline.csv"
 MATRIX_EN = (0.9, 0.5, 0.1)
 MATRIX_ANGLES = (0.0, 30.0, 60.0)
@@ -27,23 +31,22 @@ def matrix_scene():
 
 def compute(progress=None):
     """The baseline matrix now: paper law and dialects on the reference, engines where installed; (frame, skipped)."""
-    from .engines.sweep import run_sweep
-    from .solver.reference import simulate
     scene = matrix_scene()
     frames, skipped = [], []
     for name in LAWS:
         law = compose(name)
-        frames.append(simulate(law, scene, steps_per_contact=STEPS_PER_CONTACT)[0])
-        for engine, adapter in ADAPTERS.items():
-            status = engine_status(engine, name)
+        plan = reference_runs(law, scene, STEPS_PER_CONTACT)
+        for engine_name in EXTERNAL:
+            engine = ENGINES[engine_name]
+            status = engine.status(name)
             if not status.available:
-                if name in adapter.MODELS:
-                    skipped.append(f"{engine} {name}: {status.reason}")
+                if name in engine.MODELS:
+                    skipped.append(f"{engine_name} {name}: {status.reason}")
                 continue
-            frames.append(simulate(adapter.dialect(name), scene, steps_per_contact=STEPS_PER_CONTACT)[0])
-            engine_frames, failures = run_sweep(adapter, law, scene, STEPS_PER_CONTACT)
-            frames += engine_frames
-            skipped += [f"{engine} {name} e_n={f.e_n}: {f.message}" for f in failures]
+            plan += engine_plan(engine, law, scene, STEPS_PER_CONTACT)
+        frame, failures = execute(plan)
+        frames.append(frame)
+        skipped += [f"{f.engine} {name} e_n={f.e_n}: {f.message}" for f in failures]
         if progress:
             progress(name)
     return pd.concat(frames, ignore_index=True), skipped

@@ -1,6 +1,5 @@
 """Catalogue of hard cases: named Scene overrides on a base scene, each with the laws it applies to,
 and runners that put a case through the reference or, batched, through an engine."""
-import copy
 from dataclasses import dataclass
 
 import numpy as np
@@ -71,7 +70,7 @@ CATALOGUE = (
     HardCase("spin against the motion", {"omega0": -400.0, "angles_deg": (0.0, 20.0, 45.0, 89.5)},
              why="R omega0 = -2 V: the contact point slides at up to 3 V; friction slows the backspin"),
     HardCase("thornton e_n 0.05", {"e_n": (0.05,), "angles_deg": (0.0, 10.0, 30.0, 60.0, 89.5)},
-             laws=("thornton",), why="deep plastic flow: V/V_y = 1/r = 3.2e5 at e_n = 0.05 (MODELS 2.6)"),
+             laws=("thornton",), why="deep plastic flow: V/V_y = 1/r = 3.2e5 at e_n = 0.05 (docs/laws.md)"),
     HardCase("K2 = 400 K1", {"e_n": (0.05,), "angles_deg": (0.0, 10.0, 30.0, 60.0, 89.5)},
              laws=("walton-braun", "partially-latching-spring"),
              why="Walton-Braun unloading 400x stiffer than loading (K2 = K1/e^2 at e_n = 0.05): 20x shorter period"),
@@ -98,30 +97,18 @@ def run_reference(case, name, steps_per_contact=1000, **scene_overrides):
     return frame.assign(case=case.name)
 
 
-def _merged(batches):
-    """One kernel batch holding the impacts of several batches of equal dt (one engine run)."""
-    merged = copy.copy(batches[0])
-    for field in ("params", "ints", "v_n0", "v_t0", "omega0", "theta_deg", "tangential_active"):
-        setattr(merged, field, np.concatenate([getattr(b, field) for b in batches]))
-    return merged
-
-
-def run_engine(adapter, name, cases, e_n, steps_per_contact=1000, options=None, **scene_overrides):
-    """Every impact of `cases` (one material) at target e_n in ONE run of `adapter`: (results table with a 'case'
+def run_engine(engine, name, cases, e_n, steps_per_contact=1000, options=None, **scene_overrides):
+    """Every impact of `cases` (one material) at target e_n in ONE run of `engine`: (results table with a 'case'
     column, [FailedRun]); a refused or failed run gives status 'failed' rows and its one-line message."""
-    from .engines.sweep import run_batch_rows
-    from .solver.plan import plan_batch
+    from dataclasses import replace
+    from .plan import engine_runs
     scenes = [case.make_scene(e_n=(e_n,), **scene_overrides) for case in cases]
     if len({material_key(s) for s in scenes}) != 1:
         raise ValueError("one engine run holds one material: these cases differ in more than angles, spin or e_n")
-    dialect = adapter.dialect(name, options)
-    batches = [plan_batch(dialect, scene, e_n, steps_per_contact) for scene in scenes]
-    if len({b.dt for b in batches}) != 1:
-        raise ValueError("the cases' batches differ in dt")
-    merged, failure = run_batch_rows(adapter, compose(name), dialect, scenes[0], _merged(batches), options)
-    failures = [failure] if failure is not None else []
-    frames, start = [], 0
-    for case, batch in zip(cases, batches):
-        frames.append(merged.iloc[start:start + len(batch.v_n0)].assign(case=case.name))
-        start += len(batch.v_n0)
-    return pd.concat(frames, ignore_index=True), failures
+    run = replace(engine_runs(engine, compose(name), scenes[0], steps_per_contact, options)[0],
+                  together=tuple(scenes[1:]))
+    merged, failure = engine.run([run])[0]
+    sizes = [len(s.impacts(e_n)[0]) for s in scenes]
+    starts = np.cumsum([0] + sizes)
+    frames = [merged.iloc[start:start + size].assign(case=case.name) for case, start, size in zip(cases, starts, sizes)]
+    return pd.concat(frames, ignore_index=True), [failure] if failure is not None else []

@@ -10,7 +10,7 @@ from .laws import LAWS, compose
 from .submodels.calibration import hertz_contact_time
 from .submodels.normal.hertz import hertz_peak_overlap
 from .scene import DEFAULT_EN, Scene
-from .sliding import sliding_thresholds, threshold_table
+from .analyses.sliding import sliding_thresholds, threshold_table
 from .solver.reference import simulate
 
 PSI1_GRID = tuple(float(x) for x in np.round(np.arange(0.25, 14.0001, 0.25), 6))   # the paper's Psi1* axis

@@ -6,7 +6,7 @@ from pathlib import Path
 
 import jinja2
 
-TEMPLATES = Path(__file__).resolve().parent.parent / "templates"
+REPORT_TEMPLATES = Path(__file__).resolve().parent / "templates"     # the top-level templates/ (package data)
 WORD = re.compile(r"[A-Za-z0-9][A-Za-z0-9_/.-]*")
 
 
@@ -38,8 +38,8 @@ def word(value):
     return value
 
 
-def environment(autoescape=False):
-    env = jinja2.Environment(loader=jinja2.FileSystemLoader(str(TEMPLATES)), undefined=jinja2.StrictUndefined,
+def environment(directory=REPORT_TEMPLATES, autoescape=False):
+    env = jinja2.Environment(loader=jinja2.FileSystemLoader(str(directory)), undefined=jinja2.StrictUndefined,
                              autoescape=autoescape, keep_trailing_newline=True)
     env.filters["num"] = num
     env.filters["word"] = word
@@ -47,6 +47,6 @@ def environment(autoescape=False):
     return env
 
 
-def render(template, **values):
-    """Render an engine template (not autoescaped: decks and scripts are not HTML)."""
-    return environment().get_template(template).render(**values)
+def render(directory, template, **values):
+    """Render an engine's template from its own directory (not autoescaped: decks and scripts are not HTML)."""
+    return environment(directory).get_template(template).render(**values)

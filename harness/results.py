@@ -1,11 +1,11 @@
-"""The results table: one row per impact, stable column names (DESIGN), written atomically."""
+"""The results table: one row per impact, stable column names (docs/results.md), written atomically."""
 import os
-import tempfile
 
 import numpy as np
 import pandas as pd
 
 from .errors import UserError
+from .files import write_text
 from .kinematics import rebound_quantities
 
 IDENTITY = ("model", "dialect", "engine", "engine_version", "e_n_target", "mu", "theta_deg", "v_n0", "v_t0", "omega0",
@@ -43,22 +43,11 @@ def impact_frame(scene, batch, *, model, dialect, engine, engine_version, dt, st
 
 
 def write_csv(frame, path):
-    """Write via a temporary file and rename, so an interrupted run never leaves a half-written table."""
-    path = os.fspath(path)
-    directory = os.path.dirname(os.path.abspath(path))
+    """Write the table whole or not at all (harness.files), so an interrupted run never leaves half a table."""
+    directory = os.path.dirname(os.path.abspath(os.fspath(path)))
     if not os.path.isdir(directory):
         raise UserError(f"output directory does not exist: {directory}")
-    fd, tmp = tempfile.mkstemp(prefix=".results-", suffix=".csv", dir=directory)
-    try:
-        with os.fdopen(fd, "w", newline="") as handle:
-            frame.to_csv(handle, index=False, float_format="%.17g")
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(tmp, 0o666 & ~umask)          # mkstemp makes 0600; give the file the usual permissions
-        os.replace(tmp, path)
-    except BaseException:
-        os.unlink(tmp)
-        raise
+    write_text(path, frame.to_csv(index=False, float_format="%.17g"))
 
 
 def read_csv(path):

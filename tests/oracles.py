@@ -1,6 +1,6 @@
 """Independent oracles for the normal (and rigid-body tangential) impact of a sphere on a wall.
 
-Written from first principles and from ../shared/MODELS.md (sections 2 and 4) only; nothing here imports
+Written from first principles and the published formulas (docs/laws.md) only; nothing here imports
 ``harness``.  Only numpy and scipy are used.  All quantities are SI.
 
 Conventions
@@ -20,7 +20,7 @@ Numerics: ``scipy.integrate.solve_ivp`` (DOP853, rtol = 1e-12, atol = 1e-15 time
 terminal events for the end of contact.  Measured accuracy: ~1e-13 relative on the linear spring-dashpot closed
 forms, ~1e-11 on the Hertz-type laws whose force has a fractional power of alpha (non-smooth at alpha = 0).
 
-Run ``python tests/oracles.py`` for the self-checks (closed form vs integration, and every MODELS.md claim that
+Run ``python tests/oracles.py`` for the self-checks (closed form vs integration, and every published value that
 these oracles can settle).
 """
 
@@ -151,7 +151,7 @@ def _max_force(force, sols):
 
 
 def normal_impact(force, m, V, end="alpha", t_max=None):
-    """Integrate m alpha'' = -F(alpha, alpha_dot), alpha(0)=0, alpha_dot(0)=V; e = -alpha_dot(t_c)/V (MODELS.md 1, 2.1)."""
+    """Integrate m alpha'' = -F(alpha, alpha_dot), alpha(0)=0, alpha_dot(0)=V; e = -alpha_dot(t_c)/V (docs/laws.md, 2.1)."""
     # force(alpha, alpha_dot) returns the UNCLIPPED force (repulsive > 0).  It must accept a slightly negative alpha
     # (evaluated inside the last step): use an odd continuation such as _ppow(a, p) = sign(a)|a|^p.
     # end="alpha": contact ends when alpha returns to 0 (tension allowed); end="force": contact ends when the force
@@ -177,7 +177,7 @@ def normal_impact(force, m, V, end="alpha", t_max=None):
 
 
 def hertz_elastic(m, R, E_star, V):
-    """Elastic Hertz impact: alpha_max=(15mV^2/(16E*sqrtR))^(2/5), F_max=4/3E*sqrtR alpha_max^1.5, t_c=2.94328 alpha_max/V (MODELS.md 4)."""
+    """Elastic Hertz impact: alpha_max=(15mV^2/(16E*sqrtR))^(2/5), F_max=4/3E*sqrtR alpha_max^1.5, t_c=2.94328 alpha_max/V (docs/laws.md)."""
     alpha_max = (15.0 * m * V ** 2 / (16.0 * E_star * math.sqrt(R))) ** 0.4
     f_max = 4.0 / 3.0 * E_star * math.sqrt(R) * alpha_max ** 1.5
     return dict(alpha_max=alpha_max, f_max=f_max, t_c=C_TC * alpha_max / V)
@@ -189,7 +189,7 @@ def hertz_elastic(m, R, E_star, V):
 
 
 def lsd_tension_g(e):
-    """Damping ratio for LSD, Convention A (end at alpha=0, tension): g = -ln e / sqrt(pi^2 + ln^2 e) (MODELS.md 2.1)."""
+    """Damping ratio for LSD, Convention A (end at alpha=0, tension): g = -ln e / sqrt(pi^2 + ln^2 e) (docs/laws.md)."""
     if e == 1.0:
         return 0.0
     L = math.log(e)
@@ -197,7 +197,7 @@ def lsd_tension_g(e):
 
 
 def lsd_tension_closed(e, k, m):
-    """LSD Convention A: e = exp(-g pi/sqrt(1-g^2)) (exact), t_c = pi/(w0 sqrt(1-g^2)), w0 = sqrt(k/m) (MODELS.md 2.1)."""
+    """LSD Convention A: e = exp(-g pi/sqrt(1-g^2)) (exact), t_c = pi/(w0 sqrt(1-g^2)), w0 = sqrt(k/m) (docs/laws.md)."""
     g = lsd_tension_g(e)
     s = math.sqrt(1.0 - g * g)
     w0 = math.sqrt(k / m)
@@ -205,7 +205,7 @@ def lsd_tension_closed(e, k, m):
 
 
 def lsd_notension_e(g):
-    """LSD Convention B (F clipped at 0, end when F=0): Schwager & Poeschel (2007) piecewise e(g) (MODELS.md 2.1)."""
+    """LSD Convention B (F clipped at 0, end when F=0): Schwager & Poeschel (2007) piecewise e(g) (docs/laws.md)."""
     if g < 0:
         raise ValueError("g must be >= 0")
     if g == 0.0:
@@ -241,7 +241,7 @@ def lsd_notension_t_c(g, w0):
 
 
 def lsd_notension_g(e):
-    """Damping ratio g giving restitution e for LSD Convention B: root of lsd_notension_e(g) = e by brentq (MODELS.md 2.1)."""
+    """Damping ratio g giving restitution e for LSD Convention B: root of lsd_notension_e(g) = e by brentq (docs/laws.md)."""
     if not 0.0 < e <= 1.0:
         raise ValueError("e must be in (0, 1]")
     if e == 1.0:
@@ -258,9 +258,9 @@ def lsd_notension_g(e):
 
 
 def kuwabara_kono_e(y, end="alpha"):
-    """e of F = k[alpha^1.5 + 1.5 A alpha^0.5 alpha_dot] vs y = A (k/m)^(2/5) V^(1/5): x'' = -x^1.5 - 1.5 y x^0.5 x' (MODELS.md 2.3)."""
+    """e of F = k[alpha^1.5 + 1.5 A alpha^0.5 alpha_dot] vs y = A (k/m)^(2/5) V^(1/5): x'' = -x^1.5 - 1.5 y x^0.5 x' (docs/laws.md)."""
     # Scaling alpha = alpha0 x, t = (alpha0/V) tau, alpha0 = (m V^2/k)^(2/5) leaves the single parameter y.
-    # The MODELS.md 2.3 table (y 0.01..1 -> e 0.98288..0.18412) is reproduced with end="alpha" (tension allowed),
+    # The docs/laws.md table (y 0.01..1 -> e 0.98288..0.18412) is reproduced with end="alpha" (tension allowed),
     # which is therefore the default; see the self-checks.
     def f(a, v):
         return _ppow(a, 1.5) + 1.5 * y * _ppow(a, 0.5) * v
@@ -268,7 +268,7 @@ def kuwabara_kono_e(y, end="alpha"):
 
 
 def tsuji_hertz_e(A, end="alpha"):
-    """e of F = k alpha^1.5 + A sqrt(m k) alpha^0.25 alpha_dot, velocity independent: x'' = -x^1.5 - A x^0.25 x' (MODELS.md 2.2)."""
+    """e of F = k alpha^1.5 + A sqrt(m k) alpha^0.25 alpha_dot, velocity independent: x'' = -x^1.5 - A x^0.25 x' (docs/laws.md)."""
     # Same scaling as kuwabara_kono_e; the damping coefficient becomes exactly A.
     def f(a, v):
         return _ppow(a, 1.5) + A * _ppow(a, 0.25) * v
@@ -276,7 +276,7 @@ def tsuji_hertz_e(A, end="alpha"):
 
 
 def tsuji_hertz_A(e, end="alpha"):
-    """Inverse of tsuji_hertz_e by brentq: A such that F = k alpha^1.5 + A sqrt(mk) alpha^0.25 alpha_dot gives e (MODELS.md 2.2)."""
+    """Inverse of tsuji_hertz_e by brentq: A such that F = k alpha^1.5 + A sqrt(mk) alpha^0.25 alpha_dot gives e (docs/laws.md)."""
     if e == 1.0:
         return 0.0
     hi = 1.0
@@ -290,7 +290,7 @@ _APP_B_H = (-6.918798, -16.41105, 146.8049, -796.4559, 2928.711, -7206.864, 1149
 
 
 def thornton_appendix_b_g(e):
-    """Thornton et al. (2013) App. B fit: x = sum h_i e^i, g = sqrt(1/[1-(1+e)^2 exp(x)] - 1), c = 2g sqrt(m 2E*a) (MODELS.md 2.2)."""
+    """Thornton et al. (2013) App. B fit: x = sum h_i e^i, g = sqrt(1/[1-(1+e)^2 exp(x)] - 1), c = 2g sqrt(m 2E*a) (docs/laws.md)."""
     if e >= 1.0:
         return 0.0
     x = sum(h * e ** (i + 1) for i, h in enumerate(_APP_B_H))
@@ -303,7 +303,7 @@ def thornton_appendix_b_g(e):
 
 
 def thornton_e(V, V_y):
-    """Thornton (1997): e = (6sqrt3/5)^1/2 [1-r^2/6]^1/2 {r/[r+2sqrt(6/5-r^2/5)]}^1/4, r = V_y/V; 1 for V <= V_y (MODELS.md 2.6)."""
+    """Thornton (1997): e = (6sqrt3/5)^1/2 [1-r^2/6]^1/2 {r/[r+2sqrt(6/5-r^2/5)]}^1/4, r = V_y/V; 1 for V <= V_y (docs/laws.md)."""
     if V <= V_y:
         return 1.0
     r = V_y / V
@@ -312,7 +312,7 @@ def thornton_e(V, V_y):
 
 
 def thornton_yield(p_y, E_star, R, rho):
-    """Yield: a_y=pi p_y R/(2E*), alpha_y=(pi p_y/(2E*))^2 R, F_y=pi^3 p_y^3 R^2/(6E*^2), 1/2 m V_y^2 = 2/5 F_y alpha_y (MODELS.md 2.6)."""
+    """Yield: a_y=pi p_y R/(2E*), alpha_y=(pi p_y/(2E*))^2 R, F_y=pi^3 p_y^3 R^2/(6E*^2), 1/2 m V_y^2 = 2/5 F_y alpha_y (docs/laws.md)."""
     a_y = math.pi * p_y * R / (2.0 * E_star)
     alpha_y = (math.pi * p_y / (2.0 * E_star)) ** 2 * R
     F_y = math.pi ** 3 * p_y ** 3 * R ** 2 / (6.0 * E_star ** 2)
@@ -322,7 +322,7 @@ def thornton_yield(p_y, E_star, R, rho):
 
 
 def _yield_from_mass(p_y, E_star, R, m):
-    """alpha_y, F_y (MODELS.md 2.6) and V_y from 1/2 m V_y^2 = 2/5 F_y alpha_y for a given mass m."""
+    """alpha_y, F_y (docs/laws.md) and V_y from 1/2 m V_y^2 = 2/5 F_y alpha_y for a given mass m."""
     alpha_y = (math.pi * p_y / (2.0 * E_star)) ** 2 * R
     F_y = math.pi ** 3 * p_y ** 3 * R ** 2 / (6.0 * E_star ** 2)
     V_y = math.sqrt(0.8 * F_y * alpha_y / m)
@@ -330,7 +330,7 @@ def _yield_from_mass(p_y, E_star, R, m):
 
 
 def _elastoplastic_impact(E_star, R, m, V, alpha_y, plastic_force, unload_params):
-    """Hertz loading to alpha_y, plastic_force beyond, turn at alpha'=0, Hertz unloading to F=0 (MODELS.md 2.5, 2.6)."""
+    """Hertz loading to alpha_y, plastic_force beyond, turn at alpha'=0, Hertz unloading to F=0 (docs/laws.md, 2.6)."""
     # unload_params(alpha_star, F_star) -> (R_p, alpha_p), only called after yield.  Loading and unloading are
     # separate solve_ivp phases; the yield point is a phase boundary too, so that no kink sits inside a step.
     k = 4.0 / 3.0 * E_star * math.sqrt(R)
@@ -364,7 +364,7 @@ def _elastoplastic_impact(E_star, R, m, V, alpha_y, plastic_force, unload_params
 
 
 def thornton_impact(p_y, E_star, R, m, V):
-    """Thornton (1997) law integrated: Hertz, then F=F_y+pi p_y R(alpha-alpha_y), unload 4/3E*sqrt(R_p)(alpha-alpha_p)^1.5 (MODELS.md 2.6)."""
+    """Thornton (1997) law integrated: Hertz, then F=F_y+pi p_y R(alpha-alpha_y), unload 4/3E*sqrt(R_p)(alpha-alpha_p)^1.5 (docs/laws.md)."""
     alpha_y, F_y, _ = _yield_from_mass(p_y, E_star, R, m)
     kpl = math.pi * p_y * R
 
@@ -381,7 +381,7 @@ def thornton_impact(p_y, E_star, R, m, V):
 
 
 def stronge_e(V, V_y):
-    """Stronge reconstruction: x = sqrt(1 + 1.6 (V^2/V_y^2 - 1)), e = x^(3/4) V_y/V; 1 for V <= V_y (MODELS.md 2.5)."""
+    """Stronge reconstruction: x = sqrt(1 + 1.6 (V^2/V_y^2 - 1)), e = x^(3/4) V_y/V; 1 for V <= V_y (docs/laws.md)."""
     if V <= V_y:
         return 1.0
     x = math.sqrt(1.0 + 1.6 * (V * V / (V_y * V_y) - 1.0))
@@ -389,7 +389,7 @@ def stronge_e(V, V_y):
 
 
 def stronge_impact(p_y, E_star, R, m, V):
-    """Stronge reconstruction integrated: Hertz to alpha_y, F=F_y(2alpha/alpha_y-1), Hertz unload with R_c=R sqrt(F_c/F_y) (MODELS.md 2.5)."""
+    """Stronge reconstruction integrated: Hertz to alpha_y, F=F_y(2alpha/alpha_y-1), Hertz unload with R_c=R sqrt(F_c/F_y) (docs/laws.md)."""
     alpha_y, F_y, _ = _yield_from_mass(p_y, E_star, R, m)
 
     def plastic(a, v):
@@ -404,12 +404,12 @@ def stronge_impact(p_y, E_star, R, m, V):
 
 
 def walton_braun_closed(K1, e, m, V):
-    """Walton-Braun: e = sqrt(K1/K2) (K2 = K1/e^2), F_max = V sqrt(m K1), t_c = (pi/2) sqrt(m/K1)(1+e) (MODELS.md 2.4)."""
+    """Walton-Braun: e = sqrt(K1/K2) (K2 = K1/e^2), F_max = V sqrt(m K1), t_c = (pi/2) sqrt(m/K1)(1+e) (docs/laws.md)."""
     return dict(e=e, f_max=V * math.sqrt(m * K1), t_c=0.5 * math.pi * math.sqrt(m / K1) * (1.0 + e))
 
 
 def walton_braun_impact(K1, e, m, V):
-    """Walton-Braun integrated: load F=K1 alpha to alpha'=0, unload F=K2(alpha-alpha0), alpha0=alpha_max(1-K1/K2), K2=K1/e^2 (MODELS.md 2.4)."""
+    """Walton-Braun integrated: load F=K1 alpha to alpha'=0, unload F=K2(alpha-alpha0), alpha0=alpha_max(1-K1/K2), K2=K1/e^2 (docs/laws.md)."""
     K2 = K1 / e ** 2
     t1, y1, _, _, _ = _run_phase(lambda a, v: K1 * a, m, 0.0, [0.0, V], [(lambda a, v: v, -1)], V)
     amax = y1[0]
@@ -425,7 +425,7 @@ def walton_braun_impact(K1, e, m, V):
 
 
 def rigid_sliding(mu, e, V_n, V_t, R, omega0=0.0):
-    """Rigid sphere sliding throughout: v_t1 = V_t - mu(1+e)V_n, R omega1 = R omega0 + 5/2 mu(1+e)V_n (MODELS.md 4)."""
+    """Rigid sphere sliding throughout: v_t1 = V_t - mu(1+e)V_n, R omega1 = R omega0 + 5/2 mu(1+e)V_n (docs/laws.md)."""
     # Normal impulse m(1+e)V_n; friction impulse mu m (1+e) V_n opposing the slip V_s = V_t - R omega; its moment
     # about the centre changes R omega by (m R^2/I) = 5/2 times the same amount in the direction that reduces slip.
     # Raises ValueError when the slip would reverse during the impact (sliding is then not "throughout").
@@ -463,13 +463,13 @@ if __name__ == "__main__":
         return ok
 
     def claim(label, got, stated, tol, rel=False):
-        """A number stated in MODELS.md compared with the oracle: a miss is reported as a discrepancy."""
+        """A number stated in the literature (as docs/laws.md quotes it) compared with the oracle: a miss is reported as a discrepancy."""
         err = abs(got - stated) / (abs(stated) if rel else 1.0)
         ok = err <= tol
-        print("  [%s] %-62s oracle %-.6g MODELS.md %-.6g  (%s diff %.1e, tol %.0e)"
+        print("  [%s] %-62s oracle %-.6g stated %-.6g  (%s diff %.1e, tol %.0e)"
               % ("ok" if ok else "DISCREPANCY", label, got, stated, "rel" if rel else "abs", err, tol))
         if not ok:
-            discrepancies.append("%s: oracle %.6g, MODELS.md %.6g" % (label, got, stated))
+            discrepancies.append("%s: oracle %.6g, stated %.6g" % (label, got, stated))
         return ok
 
     # sample material: glass-like sphere, same-material wall
@@ -481,13 +481,13 @@ if __name__ == "__main__":
     def hertz_force(a, v):
         return k_h * _ppow(a, 1.5)
 
-    print("MODELS.md 1: kappa, chi")
+    print("docs/laws.md: kappa, chi")
     claim("kappa = 2(1-nu)/(2-nu) at nu=0.3", 2 * (1 - nu) / (2 - nu), 0.8235, 5e-5)
     claim("chi = 3.5(1-nu)/(2-nu) at nu=0.3", 3.5 * (1 - nu) / (2 - nu), 1.4412, 5e-5)
     chi = 3.5 * (1 - nu) / (2 - nu)
     claim("Maw 4 chi - 1", 4 * chi - 1, 4.765, 5e-4)
 
-    print("MODELS.md 4: Hertz elastic impact")
+    print("docs/laws.md: Hertz elastic impact")
     claim("t_c constant 2 sqrt(pi) G(7/5)/G(9/10)", C_TC, 2.94328, 5e-6)
     claim("2.94328 (15/16)^(2/5) = 2.86827", C_TC * (15.0 / 16.0) ** 0.4, 2.86827, 5e-6)
     for V in (0.1, 1.0, 10.0):
@@ -502,7 +502,7 @@ if __name__ == "__main__":
         nf = normal_impact(hertz_force, m, V, end="force")
         check("hertz V=%g end=force same t_c" % V, nf["t_c"], h["t_c"], 1e-10)
 
-    print("MODELS.md 2.1: LSD Convention A (tension, end at alpha=0)")
+    print("docs/laws.md: LSD Convention A (tension, end at alpha=0)")
     k_l, m_l = 2.0e5, 1.3e-3
     w0 = math.sqrt(k_l / m_l)
     for e in (0.95, 0.9, 0.7, 0.5, 0.3, 0.1, 0.01):
@@ -521,7 +521,7 @@ if __name__ == "__main__":
         vs = 0.7 * np.exp(-g * w0 * ts) * (np.cos(w * ts) - g * w0 / w * np.sin(w * ts))
         check("LSD-A e=%g: ODE f_max vs analytic sampling" % e, n["f_max"], float(np.max(k_l * xs + c * vs)), 1e-8)
 
-    print("MODELS.md 2.1: LSD Convention B (no tension), Schwager & Poeschel")
+    print("docs/laws.md: LSD Convention B (no tension), Schwager & Poeschel")
     for g in (0.0, 0.05, 0.2, 0.5, 0.7, 1 / math.sqrt(2), 0.72, 0.9, 0.99, 1.0, 1.01, 1.5, 3.0, 10.0):
         c = 2.0 * g * math.sqrt(m_l * k_l)
         n = normal_impact(lambda a, v: k_l * a + c * v, m_l, 0.7, end="force")
@@ -539,7 +539,7 @@ if __name__ == "__main__":
     for target, stated in zip((0.9, 0.7, 0.5, 0.3, 0.1), (0.902, 0.718, 0.550, 0.397, 0.253)):
         claim("LSD Conv-A g with clipping, target %g" % target, lsd_notension_e(lsd_tension_g(target)), stated, 5e-4)
 
-    print("MODELS.md 2.2: Hertz + Tsuji damping")
+    print("docs/laws.md: Hertz + Tsuji damping")
     # velocity independence, physical units vs normalised
     A_test = 0.4
     for V in (0.05, 1.0, 20.0):
@@ -559,7 +559,7 @@ if __name__ == "__main__":
     for e, stated in zip((0.1, 0.3, 0.5, 0.7, 0.9), (0.2527, 0.3971, 0.5503, 0.7182, 0.9020)):
         claim("LIGGGHTS hertz limitForce (sqrt5 beta, no tension) e=%g" % e,
               tsuji_hertz_e(math.sqrt(5.0) * lsd_tension_g(e), "force"), stated, 5e-5)
-    # observation (not in MODELS.md): Hertz + alpha^(1/4) damping with A = sqrt5 g has exactly the e of the LSD with
+    # observation (not in the literature quoted): Hertz + alpha^(1/4) damping with A = sqrt5 g has exactly the e of the LSD with
     # damping ratio g, under BOTH end conventions (hence "sqrt5 beta is exact" and LIGGGHTS limitForce = LSD clipped)
     for A in (0.05, 0.3, 1.0, 2.0, 3.0, 6.0):
         g = A / math.sqrt(5.0)
@@ -567,7 +567,7 @@ if __name__ == "__main__":
             check("Tsuji(A) end=alpha = LSD-A e(g=A/sqrt5), A=%g" % A, tsuji_hertz_e(A, "alpha"),
                   math.exp(-g * math.pi / math.sqrt(1.0 - g * g)), 1e-9)
         check("Tsuji(A) end=force = LSD-B e(g=A/sqrt5), A=%g" % A, tsuji_hertz_e(A, "force"), lsd_notension_e(g), 1e-9)
-    print("MODELS.md 2.2: Thornton Appendix B (no tension), A = sqrt(6) g")
+    print("docs/laws.md: Thornton Appendix B (no tension), A = sqrt(6) g")
     for e, g_stated in zip((0.9, 0.7, 0.5, 0.3, 0.1), (0.03131, 0.11168, 0.23302, 0.45362, 1.13425)):
         claim("App. B g(%g)" % e, thornton_appendix_b_g(e), g_stated, 5e-6)
     worst = 0.0
@@ -582,7 +582,7 @@ if __name__ == "__main__":
     check("engine form 2 sqrt(5/6) sqrt(3/2) = sqrt5", 2.0 * math.sqrt(5.0 / 6.0) * math.sqrt(1.5), math.sqrt(5.0),
           1e-15)
 
-    print("MODELS.md 2.3: Hertz + Kuwabara-Kono")
+    print("docs/laws.md: Hertz + Kuwabara-Kono")
     ys = (0.01, 0.05, 0.1, 0.2, 0.3, 0.5, 0.75, 1.0)
     es = (0.98288, 0.91777, 0.84334, 0.71404, 0.60595, 0.43690, 0.28739, 0.18412)
     kk = {}
@@ -616,7 +616,7 @@ if __name__ == "__main__":
             check("KK small-x fitted coefficient of x = quadrature", coef[2], c1, 2e-5)
             claim("KK small-x series coefficient of x^2", -coef[1], 0.79826, 5e-3)
 
-    print("MODELS.md 2.4: Walton-Braun")
+    print("docs/laws.md: Walton-Braun")
     K1 = 3.0e5
     for e in (0.9, 0.5, 0.1):
         cl = walton_braun_closed(K1, e, m, 1.3)
@@ -625,7 +625,7 @@ if __name__ == "__main__":
         check("WB e=%g: f_max" % e, n["f_max"], cl["f_max"], 1e-10)
         check("WB e=%g: t_c" % e, n["t_c"], cl["t_c"], 1e-10)
 
-    print("MODELS.md 2.6: Thornton elastoplastic")
+    print("docs/laws.md: Thornton elastoplastic")
     p_y = 1.0e9
     ty = thornton_yield(p_y, E_star, R, rho)
     check("V_y energy balance = 1.5605 sqrt(p_y^5/(E*^4 rho))", ty["V_y"],
@@ -652,7 +652,7 @@ if __name__ == "__main__":
         check("Thornton p_y formula e=%g gives V_y/V = r" % e, thornton_yield(p, E_star, R, rho)["V_y"] / Vs, r,
               1e-12)
 
-    print("MODELS.md 2.5: Stronge reconstruction")
+    print("docs/laws.md: Stronge reconstruction")
     for ratio in (0.5, 1.2, 2.0, 5.0, 20.0, 100.0, 1000.0):
         V = ratio * V_y
         n = stronge_impact(p_y, E_star, R, m, V)
@@ -661,7 +661,7 @@ if __name__ == "__main__":
             x = math.sqrt(1 + 1.6 * (ratio ** 2 - 1))
             check("Stronge V/V_y=%g: f_max = x F_y" % ratio, n["f_max"], x * ty["F_y"], 1e-9)
 
-    print("MODELS.md 2.7: ratios to elastic Hertz at the same speed (R=5mm, E=70GPa, nu=0.3, rho=2650, V=1)")
+    print("docs/laws.md: ratios to elastic Hertz at the same speed (R=5mm, E=70GPa, nu=0.3, rho=2650, V=1)")
     V = 1.0
     hz = hertz_elastic(m, R, E_star, V)
     table = {0.9: ((1.018, 0.905), (0.971, 0.941), (1.011, 0.942)),
@@ -692,7 +692,7 @@ if __name__ == "__main__":
         claim("PLS within 2-13%% of Thornton F, e=%g (|diff| < 0.135)" % e, max(abs(dF) - 0.135, 0.0), 0.0, 1e-12)
         claim("PLS within 2-13%% of Thornton t_c, e=%g (|diff| < 0.135)" % e, max(abs(dt) - 0.135, 0.0), 0.0, 1e-12)
 
-    print("MODELS.md 4: rigid sliding throughout")
+    print("docs/laws.md: rigid sliding throughout")
     mu, e, Vn, Vt = 0.3, 0.5, 1.0, 3.0
     kappa = 2 * (1 - nu) / (2 - nu)
     rs = rigid_sliding(mu, e, Vn, Vt, R)
@@ -724,7 +724,7 @@ if __name__ == "__main__":
     print("hard-check failures: %d" % len(failures))
     for f in failures:
         print("  FAIL:", f)
-    print("MODELS.md discrepancies: %d" % len(discrepancies))
+    print("discrepancies with stated values: %d" % len(discrepancies))
     for d in discrepancies:
         print("  ", d)
     sys.exit(1 if failures else 0)

@@ -33,7 +33,7 @@ def normal_run(law, scene, tol):
 
 @pytest.mark.parametrize("end", ["no-tension", "tension"])
 def test_elastic_hertz_matches_the_closed_form_to_its_tolerance(end):
-    """Undamped Hertz: e = 1, alpha_max, F_max and t_c = 2.94 alpha_max/V in closed form (MODELS 4); the error falls
+    """Undamped Hertz: e = 1, alpha_max, F_max and t_c = 2.94 alpha_max/V in closed form (docs/laws.md); the error falls
     with the tolerance and is within 10 tol at each."""
     scene = Scene(e_n=(0.5,), angles_deg=(0.0,))
     law = compose("hertz-mindlin", {"damping": "none", "end": end})

@@ -1,4 +1,4 @@
-"""Regression check against the committed baseline (reference/baseline.csv)."""
+"""Regression check against the committed baseline (baselines/baseline.csv, shipped with the package)."""
 from pathlib import Path
 
 import pandas as pd
@@ -9,7 +9,7 @@ from harness.laws import compose
 from harness.results import read_csv, write_csv
 from harness.solver.reference import simulate
 
-REFERENCE = Path(__file__).resolve().parent.parent / "reference"
+REFERENCE = Path(__file__).resolve().parent.parent / "baselines"
 
 
 @pytest.fixture(scope="module")

@@ -11,7 +11,7 @@ from harness.results import COLUMNS
 
 def harness(*args, cwd=None, env=None):
     import os
-    return subprocess.run([sys.executable, "-m", "harness.cli", *args], capture_output=True, text=True, cwd=cwd,
+    return subprocess.run([sys.executable, "-m", "harness", *args], capture_output=True, text=True, cwd=cwd,
                           timeout=600, env={**os.environ, **(env or {})})
 
 
@@ -115,7 +115,10 @@ def test_compare_without_engines_runs_the_reference_and_names_what_it_skipped(tm
     assert (tmp_path / "out" / "results.csv").exists()
     html = (tmp_path / "out" / "report.html").read_text()
     assert "hertz-mindlin" in html and "data:image/png;base64," in html
-    assert "skipped liggghts: liggghts is not installed" in proc.stdout and "skipped yade" in proc.stdout
+    assert f"skipped liggghts: HARNESS_LIGGGHTS={str(tmp_path / 'no-such-liggghts')!r} is not an executable file" \
+        in proc.stdout                                      # what was looked for, and where
+    assert f"skipped yade: no Python interpreter at HARNESS_YADE_PYTHON={str(tmp_path / 'no-such-python')!r}" \
+        in proc.stdout
     assert "agreement: no engine compared" in proc.stdout
 
 

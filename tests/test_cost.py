@@ -9,13 +9,13 @@ import pandas as pd
 import pytest
 from scipy.optimize import brentq
 
-from harness.cost import (ADAPTIVE, ADAPTIVE_RUNGS, EXTRAPOLATED, TOLERANCES, convergence_orders, cost_table,
+from harness.analyses.cost import (ADAPTIVE, ADAPTIVE_RUNGS, EXTRAPOLATED, TOLERANCES, convergence_orders, cost_table,
                           per_rung, rayleigh_time, recommendations, relative_errors, truth_of)
-from harness.engines import ADAPTERS
+from harness.engines import ENGINES
 from harness.laws import compose
 from harness.scene import Scene
 
-LIGGGHTS = ADAPTERS["liggghts"]
+LIGGGHTS = ENGINES["liggghts"]
 
 
 @pytest.mark.parametrize("nu", [0.0, 0.2, 0.3, 0.45])
@@ -57,7 +57,7 @@ def reference_cost():
 
 
 def test_paper_scheme_is_second_order_on_every_metric(reference_cost):
-    """Velocity Verlet on u with the release located in the step: error ~ h^2 (MODELS 4: order 2); fitted over
+    """Velocity Verlet on u with the release located in the step: error ~ h^2 (docs/laws.md: order 2); fitted over
     20..200 steps per contact the slope may run ahead of 2 (pre-asymptotic terms of higher order fading)."""
     orders = convergence_orders(reference_cost[0]).set_index(["engine", "dialect"]).loc[("reference", "paper")]
     for metric in ("e_n", "e_t", "omega_star", "t_contact", "f_n_max"):
@@ -197,7 +197,7 @@ def test_engine_curve_is_its_dialects_curve():
 
 
 def run_cli(*args):
-    return subprocess.run([sys.executable, "-m", "harness.cli", *args], capture_output=True, text=True, timeout=600)
+    return subprocess.run([sys.executable, "-m", "harness", *args], capture_output=True, text=True, timeout=600)
 
 
 @pytest.mark.parametrize("ladder", ["10,5", "0,5", "a,b", "5,5"])
@@ -229,13 +229,13 @@ def test_cli_writes_cost_csv_and_a_report_that_rebuilds(tmp_path):
 @pytest.mark.skipif(not LIGGGHTS.available(), reason="LIGGGHTS is not installed")
 def test_an_interrupted_study_keeps_its_rows_and_reports(tmp_path, monkeypatch):
     """Ctrl-C during the engine part: exit 130, cost.csv holds every row measured before, the report rebuilds."""
-    import harness.cost
-    from harness.cli import main
-    from harness.publish import rebuild
+    import harness.analyses.cost
+    from harness.commands import main
+    from harness.views.html import rebuild
 
     def interrupted(*args, **kwargs):
         raise KeyboardInterrupt
-    monkeypatch.setattr(harness.cost, "truth_of", _truth_then(harness.cost.truth_of, interrupted))
+    monkeypatch.setattr(harness.analyses.cost, "truth_of", _truth_then(harness.analyses.cost.truth_of, interrupted))
     out = tmp_path / "c"
     code = main(["cost", "--model", "hertz-mindlin", "--engines", "liggghts", "--en", "0.5", "--angles", "0,40",
                  "--ladder", "20,100", "-o", str(out)])

@@ -13,10 +13,10 @@ from oracles import (kuwabara_kono_e, stronge_e, thornton_appendix_b_g, thornton
                      tsuji_hertz_e, walton_braun_closed)
 from scipy.optimize import brentq
 
-from harness.comparison import findings
-from harness.engines import ADAPTERS
+from harness.analyses.findings import findings
+from harness.engines import ENGINES, EXTERNAL
 from harness.hard_cases import BASE_SCENE, CATALOGUE, HardCase, get_case, material_key, run_engine, run_reference
-from harness.invariants import (PARAMETER_METRICS, discontinuities, invariant_breaks, jump_floor, max_jump)
+from harness.analyses.invariants import (PARAMETER_METRICS, discontinuities, invariant_breaks, jump_floor, max_jump)
 from harness.laws import LAWS, compose
 from harness.scene import Scene
 from harness.solver.reference import simulate
@@ -36,7 +36,7 @@ def reference_frames():
 
 
 def app_b_achieved(e):
-    """e_n the Thornton 2013 App. B fit really gives without tension: Tsuji dashpot A = sqrt6 g(e) (MODELS 2.2)."""
+    """e_n the Thornton 2013 App. B fit really gives without tension: Tsuji dashpot A = sqrt6 g(e) (docs/laws.md)."""
     return tsuji_hertz_e(math.sqrt(6.0) * thornton_appendix_b_g(e), "force")
 
 
@@ -52,7 +52,7 @@ def test_reference_keeps_every_invariant_on_every_hard_case(name, reference_fram
     breaks = invariant_breaks(frame)
     if name == "hertz-mindlin":
         expected = breaks[(breaks.kind == "e_n off target")]
-        assert set(expected.e_n_target) == {0.99}                  # App. B: 0.99 gives 0.979 (MODELS 2.2)
+        assert set(expected.e_n_target) == {0.99}                  # App. B: 0.99 gives 0.979 (docs/laws.md)
         assert frame.loc[expected.row, "e_n"].to_numpy() == pytest.approx(app_b_achieved(0.99), rel=1e-3)
         breaks = breaks.drop(expected.index)
     assert breaks.empty, breaks.to_string()
@@ -87,7 +87,7 @@ def test_extreme_stiffness_and_size_give_the_paper_scene_rebound(case, reference
 
 
 def test_frictionless_impacts_keep_their_tangential_velocity_and_no_spin(reference_frames):
-    """mu = 0: no tangential force at all (MODELS 3, capped by mu F_n = 0): v_t1 = v_t0, omega1 = 0, exactly."""
+    """mu = 0: no tangential force at all (docs/laws.md, capped by mu F_n = 0): v_t1 = v_t0, omega1 = 0, exactly."""
     for name, frame in reference_frames.items():
         rows = frame[frame.case == "mu = 0"]
         assert (rows.v_t1 == rows.v_t0).all() and (rows.omega1 == 0.0).all(), name
@@ -97,7 +97,7 @@ def test_spin_leaves_the_normal_impact_alone_and_friction_within_coulomb(referen
     """Spin against the motion at normal incidence: the normal force does not depend on the tangential one (lever R),
     so e_n is that of the spinless normal impact (to the O(dt^2) by which a located stick-slip event shifts the
     normal steps); friction slows the spin but its impulse cannot exceed mu times the
-    normal one (|F_t| <= mu F_n): 0 < R (omega1 - omega0) <= 5/2 mu (1 + e_n) V_n (MODELS 4, rigid sliding)."""
+    normal one (|F_t| <= mu F_n): 0 < R (omega1 - omega0) <= 5/2 mu (1 + e_n) V_n (docs/laws.md, rigid sliding)."""
     for name, frame in reference_frames.items():
         spin = frame[(frame.case == "spin against the motion") & (frame.theta_deg == 0)].reset_index(drop=True)
         still = frame[(frame.case == "exactly normal")].reset_index(drop=True)
@@ -109,7 +109,7 @@ def test_spin_leaves_the_normal_impact_alone_and_friction_within_coulomb(referen
 
 
 def thornton_yield_speed_ratio(e):
-    """r = V_y/V with Thornton's e(r) = e (MODELS 2.6), solved on tests/oracles.py's closed form."""
+    """r = V_y/V with Thornton's e(r) = e (docs/laws.md), solved on tests/oracles.py's closed form."""
     if e >= 1.0:
         return 1.0
     return brentq(lambda r: thornton_e(1.0, r) - e, 1e-14, 1.0 - 1e-15, xtol=1e-18, rtol=1e-14)
@@ -117,7 +117,7 @@ def thornton_yield_speed_ratio(e):
 
 def test_grazing_thornton_follows_its_closed_form_at_the_low_normal_speed(reference_frames):
     """At 89.5 deg V_n = V cos(89.5 deg) = 0.0087 V: below V_y (e_n 0.5: V_y = 0.032 V) Thornton is elastic, e = 1;
-    above it (e_n 0.05) e = e_Thornton(V_n/V_y) (MODELS 2.6), not the target calibrated at V."""
+    above it (e_n 0.05) e = e_Thornton(V_n/V_y) (docs/laws.md), not the target calibrated at V."""
     frame = reference_frames["thornton"]
     rows = frame[(frame.case == "grazing 89.5 deg")]
     for _, row in rows.iterrows():
@@ -127,7 +127,7 @@ def test_grazing_thornton_follows_its_closed_form_at_the_low_normal_speed(refere
 
 
 def test_grazing_kuwabara_kono_follows_its_speed_dependence(reference_frames):
-    """Kuwabara-Kono: e depends on y = A (k/m)^2/5 V^1/5 (MODELS 2.3); calibrated at V, the grazing impact has
+    """Kuwabara-Kono: e depends on y = A (k/m)^2/5 V^1/5 (docs/laws.md); calibrated at V, the grazing impact has
     y (V_n/V)^1/5 and its e from the independent normalised integration (no tension: the paper law's end)."""
     frame = reference_frames["hertz-kuwabara-kono"]
     for _, row in frame[frame.case == "grazing 89.5 deg"].iterrows():
@@ -140,7 +140,7 @@ def test_grazing_kuwabara_kono_follows_its_speed_dependence(reference_frames):
 
 def test_deep_plastic_thornton_at_e_n_005_matches_an_independent_integration(reference_frames):
     """Thornton at e_n = 0.05 (V = 3.2e5 V_y: deep plastic flow): e, contact time and peak force of the normal
-    impact against tests/oracles.py's phase-by-phase solve_ivp integration of the same law (MODELS 2.6)."""
+    impact against tests/oracles.py's phase-by-phase solve_ivp integration of the same law (docs/laws.md)."""
     c = PAPER.contact
     r = thornton_yield_speed_ratio(0.05)
     p_y = (r * r * PAPER.speed ** 2 * c.E_star ** 4 * c.rho * 40.0 / math.pi ** 4) ** 0.2
@@ -155,7 +155,7 @@ def test_deep_plastic_thornton_at_e_n_005_matches_an_independent_integration(ref
 @pytest.mark.parametrize("name", ["walton-braun", "partially-latching-spring"])
 def test_unloading_400_times_stiffer_matches_the_closed_form(name, reference_frames):
     """K2 = K1/e^2 = 400 K1 at e_n = 0.05: e = sqrt(K1/K2), F_max = V sqrt(m K1), t_c = pi/2 sqrt(m/K1) (1 + e)
-    (MODELS 2.4); K1 from Hertz's peak overlap at V [prov] or pi p_y R (PLS, MODELS 2.7)."""
+    (docs/laws.md); K1 from Hertz's peak overlap at V [prov] or pi p_y R (PLS, docs/laws.md)."""
     c, v = PAPER.contact, PAPER.speed
     if name == "walton-braun":
         root_r = math.sqrt(c.radius)
@@ -285,7 +285,7 @@ def engine_jobs(engine):
     runs the named 0.05 case; at e_n 0.01 it spends ~27 s leaving its dent (64 contact times, huge stand-in
     spheres)."""
     jobs = []
-    for name in ADAPTERS[engine].MODELS:
+    for name in ENGINES[engine].MODELS:
         for e_n in ENGINE_EN.get((engine, name), ENGINE_EN[(engine, None)]):
             cases = [c for c in BASE if name in c.laws and e_n in c.make_scene().e_n] + ([SWEEP] if e_n == 0.5 else [])
             jobs.append((name, None, cases, e_n))
@@ -298,14 +298,14 @@ def engine_jobs(engine):
 
 def run_job(engine, job):
     name, options, cases, e_n = job
-    frame, failures = run_engine(ADAPTERS[engine], name, cases, e_n, options=options)
+    frame, failures = run_engine(ENGINES[engine], name, cases, e_n, options=options)
     return frame.assign(linear=(options or {}).get("linear", "")), failures
 
 
 @pytest.fixture(scope="module")
 def engine_runs():
     """Every engine job, two at a time (each run is one engine process; the machine has two cores)."""
-    jobs = [(engine, job) for engine in ADAPTERS if ADAPTERS[engine].available() for job in engine_jobs(engine)]
+    jobs = [(engine, job) for engine in EXTERNAL if ENGINES[engine].available() for job in engine_jobs(engine)]
     with ThreadPoolExecutor(max_workers=2) as pool:
         done = list(pool.map(lambda item: run_job(*item), jobs))
     runs = {}
@@ -327,7 +327,7 @@ REFUSALS = {"liggghts": (r"LIGGGHTS accepts coefficientRestitution in \(0.05, 1\
             "yade": (r"YADE's Luding law needs kp > k1, i.e. e_n < 1; e_n = 1 was not run",)}
 
 
-@pytest.mark.parametrize("engine", list(ADAPTERS))
+@pytest.mark.parametrize("engine", list(EXTERNAL))
 def test_engine_hard_cases_end_in_results_or_a_one_line_refusal(engine, engine_runs):
     """Nothing crashes: every failed run is a refusal naming the accepted range, where the engine's input rules put
     it (LIGGGHTS: coefficientRestitution <= 0.05 for the laws that read it, every law at nu < 0; YADE: Luding at
@@ -355,12 +355,12 @@ def dialect_frame(engine, frame):
     parts = []
     for (name, linear, case, e_n), group in frame.groupby(["model", "linear", "case", "e_n_target"], sort=False):
         case = SWEEP if case == SWEEP.name else get_case(case)
-        law = ADAPTERS[engine].dialect(name, {"linear": linear} if linear else None)
+        law = ENGINES[engine].dialect(name, {"linear": linear} if linear else None)
         parts.append(simulate(law, case.make_scene(e_n=(e_n,)))[0].set_index(group.index))
     return pd.concat(parts)
 
 
-@pytest.mark.parametrize("engine", list(ADAPTERS))
+@pytest.mark.parametrize("engine", list(EXTERNAL))
 def test_engine_agrees_with_its_dialect_on_every_hard_case(engine, engine_runs):
     """Agreement at equal dt (< 1e-6 relative, floor 1e-9 of the scale) holds on the hard cases too, so each engine
     finding below is the engine's formulas at work, reproduced by its dialect, not a harness artefact."""
@@ -378,14 +378,14 @@ def test_engine_agrees_with_its_dialect_on_every_hard_case(engine, engine_runs):
 
 
 EXPECTED_FINDINGS = {      # (engine, law, linear option) -> finding kinds beyond failed runs, each documented
-    ("liggghts", "thornton", ""): {"energy gain", "tangential energy gain", "e_n off target"},   # MODELS 5
+    ("liggghts", "thornton", ""): {"energy gain", "tangential energy gain", "e_n off target"},   # docs/liggghts-dialect.md
     ("liggghts", "linear-spring-dashpot", ""): {"friction at mu = 0"},   # first-touch dashpot (test_liggghts.py)
-    ("yade", "linear-spring-dashpot", ""): {"e_n off target"},             # ViscEl: reduced mass m/2 (MODELS 5)
+    ("yade", "linear-spring-dashpot", ""): {"e_n off target"},             # ViscEl: reduced mass m/2 (docs/yade-dialect.md)
     ("yade", "linear-spring-dashpot", "cundall-strack"): {"e_n off target", "energy gain", "tangential energy gain"},
 }                                                  # no damping (e = 1); k_s = nu k_n < 0 at nu = -0.99
 
 
-@pytest.mark.parametrize("engine", list(ADAPTERS))
+@pytest.mark.parametrize("engine", list(EXTERNAL))
 def test_engine_invariant_breaks_come_out_as_the_documented_findings(engine, engine_runs):
     """`findings` (what compare prints and reports) lists exactly the documented defects per law and nothing for
     the others: a law that starts gaining energy or missing e_n, or a documented defect that disappears, fails."""
@@ -397,7 +397,7 @@ def test_engine_invariant_breaks_come_out_as_the_documented_findings(engine, eng
 
 def test_liggghts_defects_have_the_documented_direction(engine_runs):
     """thornton_ning: the sphere leaves faster along the wall than it came (wrong-sign damping) and its normal e_n
-    falls below Thornton's e (R unmodified on unloading keeps unloading stiffer... MODELS 5), at every e_n run."""
+    falls below Thornton's e (R unmodified on unloading keeps unloading stiffer... docs/liggghts-dialect.md), at every e_n run."""
     frame, _ = engine_run(engine_runs, "liggghts")
     ok = frame[(frame.model == "thornton") & (frame.status == "ok")]
     grip = ok[(ok.case == "mu = 2") & (ok.theta_deg == 45.0)]
@@ -408,7 +408,7 @@ def test_liggghts_defects_have_the_documented_direction(engine_runs):
 
 def test_yade_defects_match_their_theory(engine_runs):
     """CundallStrack has no damping: e_n = 1 at every target; with nu < 0 its k_s = nu k_n < 0 pushes the sphere
-    along: more kinetic energy out than in. ViscEl with en = 0.5 rebounds at e(g_A(0.5)/sqrt2) = 0.644 (MODELS 5)."""
+    along: more kinetic energy out than in. ViscEl with en = 0.5 rebounds at e(g_A(0.5)/sqrt2) = 0.644 (docs/yade-dialect.md)."""
     from oracles import lsd_notension_e
     frame, _ = engine_run(engine_runs, "yade")
     cs = frame[(frame.linear == "cundall-strack") & (frame.status == "ok")]
@@ -420,11 +420,11 @@ def test_yade_defects_match_their_theory(engine_runs):
     assert viscel.e_n.to_numpy() == pytest.approx(lsd_notension_e(g_a / math.sqrt(2.0)), rel=2e-3)
 
 
-@pytest.mark.parametrize("engine", list(ADAPTERS))
+@pytest.mark.parametrize("engine", list(EXTERNAL))
 def test_engine_angle_sweeps_are_continuous_except_liggghts_hooke(engine, engine_runs):
     """The fine sweep at e_n 0.5 in each engine: continuous (jumps halve with the spacing, floor pi/N for the step-
     granular contact end) for every law but LIGGGHTS hooke, whose tangential dashpot is added only while the spring
-    is below the Coulomb cap (MODELS 5): its v_t1 and omega1 jump near the stick-slip transition (63 deg)."""
+    is below the Coulomb cap (docs/liggghts-dialect.md): its v_t1 and omega1 jump near the stick-slip transition (63 deg)."""
     frame, _ = engine_run(engine_runs, engine)
     found = discontinuities(frame[frame.case == SWEEP.name])
     expected = {("linear-spring-dashpot", f"discontinuity in {metric}") for metric in ("v_t1", "omega1")}

@@ -11,7 +11,9 @@ from conftest import fake_executable
 
 from harness.engines import liggghts
 from harness.engines.runner import EngineFailure, run_engine
+from harness.execute import execute
 from harness.laws import compose
+from harness.plan import engine_runs
 from harness.render import RenderError, render
 from harness.scene import Scene
 from harness.solver import codes as C
@@ -48,7 +50,7 @@ def test_engine_agrees_with_its_dialect_at_equal_dt(name, e_n, tmp_path):
 @needs_liggghts
 def test_hysteresis_at_e_n_1_is_elastic_not_absent(tmp_path):
     """e_n = 1 gives k2max = k1; LIGGGHTS' d_lim = k2max/(k2max - k1) phi 2R must not become 0/0 (NaN force, dropped:
-    every sphere passed through the wall with v_n1 = -V). Elastic: e_n = 1 (MODELS 2.4, e = sqrt(K1/K2)), and the
+    every sphere passed through the wall with v_n1 = -V). Elastic: e_n = 1 (docs/laws.md, e = sqrt(K1/K2)), and the
     dialect agrees."""
     engine, reference, final = engine_and_dialect("walton-braun", SCENE, 1.0, tmp_path=tmp_path)
     assert final["separated"].all()
@@ -61,16 +63,15 @@ def test_hysteresis_at_e_n_1_is_elastic_not_absent(tmp_path):
 def test_soft_and_stiff_materials_run_and_negative_poisson_is_refused_clearly(tmp_path):
     """E = 1e6 Pa (LIGGGHTS' sanity check wants >= 5e6 unless soft_particles yes, which changes nothing else) and
     E = 1e12 Pa run and agree with the dialect; nu < 0, which LIGGGHTS refuses, is a one-line failed run."""
-    from harness.engines.sweep import run_sweep
     for E in (1e6, 1e12):
         scene = Scene(E=E, e_n=(0.5,), angles_deg=(0.0, 30.0, 60.0))
         engine, reference, final = engine_and_dialect("hertz-mindlin", scene, 0.5, tmp_path=tmp_path)
         assert final["separated"].all()
         scale = np.array([1.0, 1.0, 1.0 / scene.radius]) * scene.speed
         assert (np.abs(engine - reference) / np.maximum(np.abs(reference), 1e-9 * scale)).max() < 1e-6, E
-    frames, failures = run_sweep(liggghts, compose("hertz-mindlin"), Scene(nu=-0.5, e_n=(0.5,)), 100)
+    frame, failures = execute(engine_runs(liggghts, compose("hertz-mindlin"), Scene(nu=-0.5, e_n=(0.5,)), 100))
     assert [f.message for f in failures] == ["LIGGGHTS accepts poissonsRatio in [0, 0.5] only; nu = -0.5 was not run"]
-    assert (frames[0].status == "failed").all()
+    assert (frame.status == "failed").all()
 
 
 @needs_liggghts
@@ -100,7 +101,7 @@ def test_options_change_engine_and_dialect_alike(name, options, tmp_path):
     scale = np.array([1.0, 1.0, 1.0 / scene.radius]) * scene.speed
     assert (np.abs(engine - reference) / np.maximum(np.abs(reference), 1e-9 * scale)).max() < 1e-6
     default, _, _ = engine_and_dialect(name, scene, 0.3, tmp_path=tmp_path)
-    ignored = name == "thornton"                      # thornton_ning ignores tangential_damping (MODELS 5)
+    ignored = name == "thornton"                      # thornton_ning ignores tangential_damping (docs/liggghts-dialect.md)
     assert np.array_equal(default, engine) == ignored
 
 
@@ -145,11 +146,22 @@ def test_truncated_dump_is_detected(tmp_path, monkeypatch):
         liggghts.run_deck("# deck", 3, 30, str(tmp_path))
 
 
+@needs_liggghts
+def test_version_is_the_installed_packages():
+    """The version harness records in every row is the Debian package's upstream version (dpkg, not the binary)."""
+    import shutil
+    if shutil.which("dpkg-query") is None:
+        pytest.skip("no dpkg-query to ask")
+    package = subprocess.run(["dpkg-query", "-W", "-f=${Version}", "liggghts"], capture_output=True, text=True)
+    if package.returncode != 0:
+        pytest.skip("liggghts is not a Debian package here")
+    assert liggghts.version() == package.stdout.split("+")[0].split("-")[0]
+
+
 def test_missing_binary_is_reported_not_raised(tmp_path, monkeypatch):
     monkeypatch.setenv(liggghts.BINARY_VARIABLE, str(tmp_path / "nowhere"))
-    from harness.engines import engine_status
-    status = engine_status("liggghts", "hertz-mindlin")
-    assert not status.available and "not installed" in status.reason
+    status = liggghts.status("hertz-mindlin")
+    assert not status.available and status.reason == f"HARNESS_LIGGGHTS={str(tmp_path / 'nowhere')!r} is not an executable file"
     with pytest.raises(EngineFailure, match="not found"):
         run_engine([str(tmp_path / "nowhere")], str(tmp_path), 5)
 
@@ -158,10 +170,10 @@ def test_failed_engine_run_keeps_reference_results_and_log_in_compare(tmp_path):
     """A crashing engine: compare still writes the reference rows and prints the engine's log tail."""
     fake = fake_executable(tmp_path, 'echo "ERROR: fake crash for the test"; exit 1')
     env = {**os.environ, liggghts.BINARY_VARIABLE: fake}
-    proc = subprocess.run([sys.executable, "-m", "harness.cli", "compare", "--model", "hertz-mindlin", "--en", "0.5",
+    proc = subprocess.run([sys.executable, "-m", "harness", "compare", "--model", "hertz-mindlin", "--en", "0.5",
                            "--angles", "0,45", "--engines", "liggghts", "-o", str(tmp_path / "out")],
                           capture_output=True, text=True, env=env, timeout=600)
-    assert proc.returncode == 1                             # agreement cannot hold without engine rows
+    assert proc.returncode == 3                             # the engine asked for by name did not run
     assert "fake crash for the test" in proc.stdout
     import pandas as pd
     frame = pd.read_csv(tmp_path / "out" / "results.csv")
@@ -179,7 +191,7 @@ def test_hostile_values_cannot_reach_a_deck(value):
     assert type(scene_error.value).__name__ == "UserError"
     batch = plan_batch(liggghts.dialect("hertz-mindlin"), SCENE, 0.5, 100)
     with pytest.raises(RenderError):
-        render("liggghts/batch.in.j2", harness_version="0", law="hertz-mindlin", model="hertz", e_n=value,
+        render(liggghts.TEMPLATES, "batch.in.j2", harness_version="0", law="hertz-mindlin", model="hertz", e_n=value,
                atoms=[], x_lo=0.0, x_hi=1.0, box_half=1.0, z_lo=0.0, z_hi=1.0, skin=0.1, E=1e9, nu=0.3, mu=0.3,
                properties=[], tangential="history", options=[], dt=batch.dt, radius=0.1, rho=1.0, chunk=10,
                max_chunks=10)
@@ -188,7 +200,7 @@ def test_hostile_values_cannot_reach_a_deck(value):
 @pytest.mark.parametrize("word", ["hertz\nshell ls", "hertz tangential", "$x", "a\"b"])
 def test_keywords_outside_the_vocabulary_are_refused(word):
     with pytest.raises(RenderError):
-        render("liggghts/batch.in.j2", harness_version="0", law="x", model=word, e_n=0.5, atoms=[], x_lo=0.0,
+        render(liggghts.TEMPLATES, "batch.in.j2", harness_version="0", law="x", model=word, e_n=0.5, atoms=[], x_lo=0.0,
                x_hi=1.0, box_half=1.0, z_lo=0.0, z_hi=1.0, skin=0.1, E=1e9, nu=0.3, mu=0.3, properties=[],
                tangential="history", options=[], dt=1e-7, radius=0.1, rho=1.0, chunk=10, max_chunks=10)
 
@@ -211,23 +223,22 @@ def test_rendered_deck_holds_only_the_expected_commands():
 
 @needs_liggghts
 def test_thornton_ning_energy_gain_is_reported_as_a_finding():
-    """LIGGGHTS thornton_ning's tangential damping has the wrong sign (MODELS 5): the sphere leaves with more
+    """LIGGGHTS thornton_ning's tangential damping has the wrong sign (docs/liggghts-dialect.md): the sphere leaves with more
     tangential + rotational energy than it had; compare must say so, for the engine itself."""
-    from harness.comparison import findings
-    from harness.engines.sweep import run_sweep
+    from harness.analyses.findings import findings
     scene = Scene(**EXAMPLE, e_n=(0.5,), angles_deg=(10.0, 20.0, 60.0))   # mu 0.3: at 10 deg it sticks
-    frames, failures = run_sweep(liggghts, compose("thornton"), scene, 200)
+    frame, failures = execute(engine_runs(liggghts, compose("thornton"), scene, 200))
     assert not failures
-    found = findings(frames[0])
+    found = findings(frame)
     gains = found[(found.engine == "liggghts") & (found.kind == "tangential energy gain")]
     assert len(gains) == 1 and "angle 10 deg" in gains.detail.iloc[0]
-    row = frames[0].iloc[0]
+    row = frame.iloc[0]
     assert row.v_t1 > row.v_t0                      # friction sped the sphere up: impossible for a passive contact
 
 
 @needs_liggghts
 def test_compare_cli_prints_agreement_deviation_attribution(tmp_path):
-    proc = subprocess.run([sys.executable, "-m", "harness.cli", "compare", "--model", "linear-spring-dashpot",
+    proc = subprocess.run([sys.executable, "-m", "harness", "compare", "--model", "linear-spring-dashpot",
                            "--en", "0.5", "--angles", "0,30,60", "--engines", "liggghts", "-o", str(tmp_path)],
                           capture_output=True, text=True, timeout=600)
     assert proc.returncode == 0, proc.stdout + proc.stderr
@@ -244,7 +255,7 @@ def test_compare_cli_prints_agreement_deviation_attribution(tmp_path):
 
 @needs_liggghts
 def test_render_writes_runnable_decks_and_refuses_what_liggghts_cannot_take(tmp_path):
-    proc = subprocess.run([sys.executable, "-m", "harness.cli", "render", "--model", "hertz-mindlin", "--engine",
+    proc = subprocess.run([sys.executable, "-m", "harness", "render", "--model", "hertz-mindlin", "--engine",
                            "liggghts", "--en", "0.9,0.5", "--angles", "0,30,60", "-o", str(tmp_path / "decks")],
                           capture_output=True, text=True, timeout=120)
     assert proc.returncode == 0, proc.stderr
@@ -252,7 +263,7 @@ def test_render_writes_runnable_decks_and_refuses_what_liggghts_cannot_take(tmp_
     assert [d.name for d in decks] == ["liggghts-hertz-mindlin-en0.5.in", "liggghts-hertz-mindlin-en0.9.in"]
     final, _, _ = liggghts.run_deck(decks[0].read_text(), 3, 120, str(tmp_path))
     assert np.all(final[:, 0] > SCENE.radius)                   # every sphere has left the wall
-    low = subprocess.run([sys.executable, "-m", "harness.cli", "render", "--model", "hertz-mindlin", "--engine",
+    low = subprocess.run([sys.executable, "-m", "harness", "render", "--model", "hertz-mindlin", "--engine",
                           "liggghts", "--en", "0.03", "-o", str(tmp_path / "low")], capture_output=True, text=True,
                          timeout=120)
     assert low.returncode == 2 and "coefficientRestitution in (0.05, 1]" in low.stderr

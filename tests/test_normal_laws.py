@@ -1,4 +1,4 @@
-"""Normal impacts against closed forms (MODELS 2 and 4); every oracle here is computed independently of harness."""
+"""Normal impacts against closed forms (docs/laws.md); every oracle here is computed independently of harness."""
 import math
 
 import numpy as np
@@ -83,7 +83,7 @@ def test_linear_spring_dashpot_both_conventions(end, e):
 
 
 def test_lsd_tension_calibration_clipped_gives_classic_error():
-    """Using the convention-A g with clipping gives e = 0.902/0.718/0.550/0.397/0.253 (MODELS 2.1)."""
+    """Using the convention-A g with clipping gives e = 0.902/0.718/0.550/0.397/0.253 (docs/laws.md)."""
     scene = normal_scene([0.9, 0.7, 0.5, 0.3, 0.1])
     tension = compose("linear-spring-dashpot", {"end": "tension"})
     expected = [0.902, 0.718, 0.550, 0.397, 0.253]
@@ -111,7 +111,7 @@ KK_TABLE = [(0.01, 0.98288), (0.05, 0.91777), (0.1, 0.84334), (0.2, 0.71404), (0
 
 
 def test_kuwabara_kono_restitution_follows_its_table():
-    """Rows built with A set from y = A (k/m)^2/5 V^1/5 directly (not from the calibration) reproduce MODELS 2.3,
+    """Rows built with A set from y = A (k/m)^2/5 V^1/5 directly (not from the calibration) reproduce docs/laws.md,
     whose table is for contact ending at alpha = 0 (tension allowed); without tension e is higher (0.845 at y=0.1)."""
     scene = normal_scene([0.5] * 1, angles=[0.0] * len(KK_TABLE))
     law = compose("hertz-kuwabara-kono", {"end": "tension"})
@@ -146,7 +146,7 @@ def test_walton_braun_closed_forms(e):
 
 
 def thornton_e(r):
-    """Thornton (1997) restitution for r = V_y/V (MODELS 2.6), written out independently."""
+    """Thornton (1997) restitution for r = V_y/V (docs/laws.md), written out independently."""
     return ((6 * math.sqrt(3) / 5) ** 0.5 * (1 - r * r / 6) ** 0.5
             * (r / (r + 2 * math.sqrt(6 / 5 - r * r / 5))) ** 0.25)
 
@@ -176,7 +176,7 @@ def test_thornton_restitution_formula_and_calibration(e):
 
 @pytest.mark.parametrize("e", [0.9, 0.5, 0.1])
 def test_stronge_provisional_closed_form(e):
-    """Provisional Stronge: e = x^3/4 V_y/V, x = sqrt(1 + 1.6 (V^2/V_y^2 - 1)) (MODELS 2.5 [prov])."""
+    """Provisional Stronge: e = x^3/4 V_y/V, x = sqrt(1 + 1.6 (V^2/V_y^2 - 1)) (docs/laws.md [prov])."""
     scene = normal_scene([e], speed=1.0, angles=[0.0, 40.0, 70.0])
     law = compose("stronge")
     frame = simulate(law, scene, steps_per_contact=4000)[0]
@@ -191,7 +191,7 @@ def test_stronge_provisional_closed_form(e):
 
 @pytest.mark.parametrize("e", [0.9, 0.5, 0.1])
 def test_partially_latching_spring_matches_thornton_force_and_duration(e):
-    """Provisional PLS (MODELS 2.7): e exact; peak force and duration within 15% of Thornton's (2-13% quoted)."""
+    """Provisional PLS (docs/laws.md): e exact; peak force and duration within 15% of Thornton's (2-13% quoted)."""
     scene = normal_scene([e])
     pls = simulate(compose("partially-latching-spring"), scene, steps_per_contact=2000)[0].iloc[0]
     thornton = simulate(compose("thornton"), scene, steps_per_contact=2000)[0].iloc[0]
@@ -201,7 +201,7 @@ def test_partially_latching_spring_matches_thornton_force_and_duration(e):
 
 
 def test_plastic_laws_lengthen_contact_at_low_restitution():
-    """MODELS 2.7 ratios to elastic Hertz: at e = 0.1 Thornton t_c/t_H ~ 3.15, F/F_H ~ 0.15; Tsuji F/F_H < 1."""
+    """docs/laws.md ratios to elastic Hertz: at e = 0.1 Thornton t_c/t_H ~ 3.15, F/F_H ~ 0.15; Tsuji F/F_H < 1."""
     scene = normal_scene([0.1])
     m, e_star = mass_and_estar(scene)
     alpha_h = (15.0 * m / (16.0 * e_star * math.sqrt(scene.radius))) ** 0.4

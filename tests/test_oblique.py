@@ -112,7 +112,7 @@ def in_stronge_gain_band(frame, scene):
 
 
 def test_provisional_stronge_gains_energy_just_above_yield():
-    """FINDING on MODELS 2.5's reconstruction: its plastic branch F_y (2 alpha/alpha_y - 1) is stiffer than Hertz at
+    """FINDING on docs/laws.md's reconstruction: its plastic branch F_y (2 alpha/alpha_y - 1) is stiffer than Hertz at
     yield (2 vs 1.5 F_y/alpha_y), so e = x^3/4 V_y/V exceeds 1 for 1 < V/V_y < ~1.55 (max ~1.018 at 1.25).
     The solver reproduces that closed form there; this test fails once the law is replaced by one that does not."""
     scene = Scene(e_n=(0.9,), angles_deg=tuple(np.degrees(np.arccos(np.linspace(0.01, 1.0, 400)))), mu=0.0)
@@ -136,7 +136,7 @@ def test_every_tangential_form_reaches_the_sliding_limit(form):
 
 
 def test_tangential_forms_differ_where_theory_says():
-    """Sticking regime: Mindlin forms differ (eq. 18b rescale removes spurious unloading energy, MODELS 3), while
+    """Sticking regime: Mindlin forms differ (eq. 18b rescale removes spurious unloading energy, docs/laws.md), while
     all coincide in full sliding; a form switch that changed nothing would fail here."""
     scene = Scene(e_n=(0.5,), angles_deg=None, psi1_star=(2.4,))
     results = {form: simulate_converged("thornton", scene, {"tangential": form}).iloc[0].psi2_star

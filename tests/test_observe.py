@@ -1,7 +1,7 @@
 """Observe mode of the engine adapters: per-impact contact time, peak normal force and peak overlap as each engine
 sees them, checked against the engine's reference dialect at equal dt; unobserved decks and scripts unchanged.
 
-Oracles (the reference dialect reproduces the engine's steps to round-off, MODELS 5):
+Oracles (the reference dialect reproduces the engine's steps to round-off, docs/liggghts-dialect.md, docs/yade-dialect.md):
 - the engine reports the largest per-step value; so does the dialect's per-step history (same samples, to 1e-8);
 - `simulate` takes the peak from the parabola through the largest sample y1 and its neighbours y0, y2, which
   exceeds y1 by (y0 - y2)^2 / (8 |y0 - 2 y1 + y2|) <= |y0 - 2 y1 + y2| / 8 ~ |F''| dt^2 / 8, i.e. O(1/N^2)
@@ -17,6 +17,7 @@ import numpy as np
 import pytest
 
 from harness.engines import liggghts, yade
+from harness.engines import ENGINES
 from harness.engines.runner import EngineFailure
 from harness.laws import compose
 from harness.scene import Scene
@@ -25,12 +26,11 @@ from harness.solver.plan import plan_batch
 from harness.solver.reference import run_kernel, simulate
 
 STEPS = 200
-ROUND_OFF = 1e-8                 # engine vs dialect at equal dt, relative (MODELS 5: ~1e-15 .. 4e-9)
+ROUND_OFF = 1e-8                 # engine vs dialect at equal dt, relative (docs/liggghts-dialect.md, docs/yade-dialect.md: ~1e-15 .. 4e-9)
 ANGLES = (0.0, 30.0, 60.0)
 CASES = ([("liggghts", name, {}, e_n) for name in liggghts.DIALECTS for e_n in (0.5, 0.1)]
          + [("yade", name, {}, e_n) for name in yade.DIALECTS for e_n in (0.5, 0.1)]
          + [("yade", "linear-spring-dashpot", {"linear": "cundall-strack"}, 0.5)])
-ADAPTERS = {"liggghts": liggghts, "yade": yade}
 CONTACT_OFFSET = {"liggghts": 0, "yade": -1}     # engine minus dialect contact time, in steps (docstring above)
 
 
@@ -46,7 +46,7 @@ def peak_and_bound(samples):
 
 def dialect_samples(batch, steps):
     """The dialect's normal force and overlap at every step (history stride 1 over 3 contact times); the force
-    row starts with the force at first touch (a constant dashpot acts from overlap 0, MODELS 5)."""
+    row starts with the force at first touch (a constant dashpot acts from overlap 0, docs/liggghts-dialect.md, docs/yade-dialect.md)."""
     out, history, _ = run_kernel(batch, history_points=3 * steps)
     recorded = ~np.isnan(history[:, :, 0])
     force = np.where(recorded, history[:, :, 2], np.nan)
@@ -58,7 +58,7 @@ def dialect_samples(batch, steps):
 
 def observed_run(engine, name, options, e_n, workdir, observe=True):
     """One observed batch of the engine, with its dialect's batch and reference rows at the same steps."""
-    adapter = ADAPTERS[engine]
+    adapter = ENGINES[engine]
     if not adapter.available():
         pytest.skip(f"{engine} is not installed")
     law = adapter.dialect(name, options)
@@ -167,16 +167,17 @@ def test_malformed_or_missing_observations_are_clear_failures(tmp_path):
 
 
 def test_sweep_fills_the_observed_columns_only_when_asked():
-    """run_sweep(observe=True): t_contact, f_n_max, overlap_max of the engine rows match the dialect within the
+    """Runs planned with observe=True: t_contact, f_n_max, overlap_max of the engine rows match the dialect within the
     quantisation bounds above; observe=False leaves them NaN as before."""
-    from harness.engines.sweep import run_sweep
+    from harness.execute import execute
+    from harness.plan import engine_runs
     if not liggghts.available():
         pytest.skip("liggghts is not installed")
     scene = Scene(e_n=(0.5,), angles_deg=(0.0, 45.0))
     law = compose("hertz-mindlin")
     reference = simulate(liggghts.dialect(law.name), scene, steps_per_contact=STEPS)[0]
-    seen = run_sweep(liggghts, law, scene, STEPS, observe=True)[0][0]
-    plain = run_sweep(liggghts, law, scene, STEPS)[0][0]
+    seen = execute(engine_runs(liggghts, law, scene, STEPS, observe=True))[0]
+    plain = execute(engine_runs(liggghts, law, scene, STEPS))[0]
     for column in ("f_n_max", "overlap_max"):
         assert seen[column].to_numpy() == pytest.approx(reference[column].to_numpy(), rel=2.0 / STEPS ** 2)
     assert seen.t_contact.to_numpy() == pytest.approx(reference.t_contact.to_numpy(), rel=1e-9)

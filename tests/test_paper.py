@@ -62,7 +62,7 @@ def test_normal_speed_holds_v_n_as_kratos_does():
 
 
 def harness(*args, cwd=None):
-    return subprocess.run([sys.executable, "-m", "harness.cli", *args], capture_output=True, text=True, cwd=cwd,
+    return subprocess.run([sys.executable, "-m", "harness", *args], capture_output=True, text=True, cwd=cwd,
                           timeout=600)
 
 

@@ -34,7 +34,7 @@ def test_impacts_separate_finite_and_without_energy_gain(law, e, angle, mu, omeg
 # ---------------------------------------------------------------------------------------------- hard-case invariants
 
 def app_b_achieved(e):
-    """e_n the Thornton 2013 App. B fit gives without tension (independent ODE, tests/oracles.py; MODELS 2.2)."""
+    """e_n the Thornton 2013 App. B fit gives without tension (independent ODE, tests/oracles.py; docs/laws.md)."""
     from oracles import thornton_appendix_b_g, tsuji_hertz_e
     return tsuji_hertz_e(math.sqrt(6.0) * thornton_appendix_b_g(e), "force")
 
@@ -57,7 +57,7 @@ def test_random_scenes_keep_the_hard_case_invariants(law, e, angle, mu, omega, l
     nu), mu 0..2, E 1e6..1e12 Pa, R 10 um..0.1 m, any spin, at normal incidence and at a random angle: no invariant
     break (harness/invariants.py) at the default 1000 steps per contact, but the documented ones: hertz-mindlin's
     App. B e_n above 0.95 (which must then be the fit's own e), stronge's energy gain (provisional, README)."""
-    from harness.invariants import invariant_breaks
+    from harness.analyses.invariants import invariant_breaks
     scene = Scene(e_n=(e,), angles_deg=(0.0, angle), mu=mu, omega0=omega, E=10.0 ** log_E,
                   radius=10.0 ** log_radius, nu=nu)
     frame = simulate(law_with_ratio(law, 10.0 ** log_ratio), scene)[0]
@@ -72,7 +72,7 @@ def test_random_scenes_keep_the_hard_case_invariants(law, e, angle, mu, omega, l
 
 
 SENSITIVITY = 25.0      # |d outcome| <= 25 |dp/p|: the plastic calibrations amplify, r = V_y/V ~ e_n^4
-                        # (e ~ 1.185 r^1/4, MODELS 2.6); hypothesis found 10.8 (stronge e_t, e_n 0.03, 0.5 deg)
+                        # (e ~ 1.185 r^1/4, docs/laws.md); hypothesis found 10.8 (stronge e_t, e_n 0.03, 0.5 deg)
 
 
 @settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
@@ -81,12 +81,12 @@ SENSITIVITY = 25.0      # |d outcome| <= 25 |dp/p|: the plastic calibrations amp
        log_radius=st.floats(-5.0, -1.0), omega=st.floats(-500.0, 500.0))
 def test_random_neighbouring_inputs_give_neighbouring_outputs(law, parameter, e, angle, mu, log_E, log_radius, omega):
     """At a random scene, p (1 + k 5e-4), k = -2..2, for p = e_n, E, R or mu: the rebound velocities per V change by
-    at most SENSITIVITY x the relative step, and their changes halve with the step (harness.invariants.
+    at most SENSITIVITY x the relative step, and their changes halve with the step (harness.analyses.invariants.
     discontinuities; e_t and Omega* divide them by v_t0 and mu V_n, which random scenes make tiny), above
     the pi/N floor of a step-granular stick-slip switch (jump_floor). Walton-Braun runs at 16000 steps per contact:
     at 1000 its tangential spring, whose k_t ~ (1 - T/mu N)^1/3 vanishes at the cap, leaves Omega* of a sliding
     impact 6.5% low and scattered by 0.3% from one input to the next (converging as ~dt^1.5)."""
-    from harness.invariants import CONTINUITY_METRICS, discontinuities, jump_floor, max_jump, normalised
+    from harness.analyses.invariants import CONTINUITY_METRICS, discontinuities, jump_floor, max_jump, normalised
     delta = 1e-3
     steps = 16000 if law == "walton-braun" else 1000
     base = dict(e_n=e, E=10.0 ** log_E, radius=10.0 ** log_radius, mu=mu)

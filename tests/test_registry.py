@@ -5,14 +5,13 @@ import math
 import re
 from pathlib import Path
 
-import numpy as np
 import pytest
 from numba import njit
 
 import oracles
 from harness.scene import Scene
 from harness.solver import dispatch
-from harness.solver.extension import BELOW, FORCE, KINK, RESIDUAL, SIGNATURE, SLOPE
+from harness.solver.extension import FORCE, SIGNATURE, SLOPE
 from harness.submodels import generate, registry
 from harness.submodels.base import NormalModel, NormalParameters
 
@@ -103,7 +102,7 @@ def test_a_law_registered_from_a_test_file_runs_through_run(registered, mode, tm
     """`harness run --with normal=quadratic`, plain and --converged: its normal impact against the independent
     integration, and an oblique one that stays finite and loses no energy."""
     import pandas as pd
-    from harness.cli import main
+    from harness.commands import main
     out = tmp_path / "r.csv"
     resolution = ["--converged"] if mode == "converged" else ["--steps-per-contact", "4000"]
     code = main(["run", "--model", "thornton", "--with", "normal=quadratic", "--en", "0.5", "--angles", "0,30",

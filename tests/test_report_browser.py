@@ -14,7 +14,7 @@ pytestmark = pytest.mark.skipif(not (os.path.exists(CHROMIUM) and os.path.exists
 @pytest.fixture(scope="module")
 def report(tmp_path_factory):
     out = tmp_path_factory.mktemp("report")
-    proc = subprocess.run([sys.executable, "-m", "harness.cli", "compare", "--model", "hertz-mindlin", "--en",
+    proc = subprocess.run([sys.executable, "-m", "harness", "compare", "--model", "hertz-mindlin", "--en",
                            "0.5,0.1", "--angles", "0,30,60", "-o", str(out)], capture_output=True, text=True,
                           timeout=600)
     assert proc.returncode == 0, proc.stdout + proc.stderr
@@ -52,8 +52,8 @@ def test_report_renders_figures_and_tables_without_errors(report, browser):
     headings = [h.text for h in browser.find_elements(By.TAG_NAME, "h2")]
     agreement = headings.index("Agreement: engine against its dialect at equal time step")
     table = browser.find_elements(By.XPATH, f"(//h2)[{agreement + 1}]/following-sibling::table[1]//tr")
-    from harness.engines import ADAPTERS
-    engines = [name for name, adapter in ADAPTERS.items() if adapter.available()]
+    from harness.engines import ENGINES, EXTERNAL
+    engines = [name for name in EXTERNAL if ENGINES[name].available()]
     assert len(table) - 1 == 3 * len(engines)                 # v_n1, v_t1, omega1 per engine
     assert all("True" in row.text for row in table[1:])
     facts = browser.find_elements(
@@ -77,7 +77,7 @@ def test_rebuilding_the_report_simulates_nothing(report, monkeypatch):
     rebuilt report still holds the same tables and figures."""
     import harness.engines.runner as runner
     import harness.solver.reference as reference
-    from harness.publish import rebuild
+    from harness.views.html import rebuild
 
     def forbidden(*args, **kwargs):
         raise AssertionError("report rebuilding must not simulate")

@@ -14,7 +14,7 @@ from harness.solver.reference import simulate
 
 
 def test_converged_mode_is_within_1e6_of_exact_lsd():
-    """Tension-allowed LSD: e is exact by construction of g (MODELS 2.1), so the converged e_n must be within 1e-6."""
+    """Tension-allowed LSD: e is exact by construction of g (docs/laws.md), so the converged e_n must be within 1e-6."""
     scene = Scene(e_n=(0.9, 0.5, 0.2), angles_deg=(0.0,))
     frame = simulate(compose("linear-spring-dashpot", {"end": "tension"}), scene, converged=True)[0]
     assert np.allclose(frame.e_n, frame.e_n_target, rtol=1e-6, atol=0)
@@ -131,7 +131,7 @@ def test_rigid_wall_is_stiffer_than_same_material():
 
 
 def test_wall_of_another_material_combines_both_compliances():
-    """E* = 1/[(1-nu1^2)/E1 + (1-nu2^2)/E2] and G* likewise (MODELS 1), checked against hand-written formulas."""
+    """E* = 1/[(1-nu1^2)/E1 + (1-nu2^2)/E2] and G* likewise (docs/laws.md), checked against hand-written formulas."""
     scene = Scene(e_n=(1.0,), angles_deg=(0.0,), E=70e9, nu=0.3, wall="other", wall_E=200e9, wall_nu=0.25)
     e_star = 1 / ((1 - 0.3 ** 2) / 70e9 + (1 - 0.25 ** 2) / 200e9)
     g1, g2 = 70e9 / (2 * 1.3), 200e9 / (2 * 1.25)
@@ -248,10 +248,10 @@ def test_hysteresis_dialects_leave_their_latched_dent_at_low_e_n(engine):
     """Engine hysteresis laws keep the contact at zero force until the gap opens: after unloading (K2 = K1/e^2) the
     sphere crosses the dent alpha_max (1 - e^2) at e V, so t_c = sqrt(m/K1) [pi/2 (1 + e) + (1 - e^2)/e] (MODELS
     2.4 + the dent), 64 contact-time estimates at e_n = 0.01: the step cap must allow for it (it stopped at 40)."""
-    from harness.engines import ADAPTERS
+    from harness.engines import ENGINES
     e = 0.01
     scene = Scene(e_n=(e,), angles_deg=(0.0,))
-    row = simulate(ADAPTERS[engine].dialect("walton-braun"), scene, steps_per_contact=1000)[0].iloc[0]
+    row = simulate(ENGINES[engine].dialect("walton-braun"), scene, steps_per_contact=1000)[0].iloc[0]
     assert row.status == "ok", row.message
     c = scene.contact
     v = scene.speed

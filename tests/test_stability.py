@@ -28,7 +28,7 @@ def duration_k(contact, speed):
 @pytest.mark.parametrize("e_n", [0.9, 0.5, 0.1])
 def test_explicit_linear_spring_dashpot_limit_is_the_damped_oscillator_one(e_n):
     """LIGGGHTS hooke (velocity Verlet, dashpot at the half-step velocity): h_c = 2/w (sqrt(1 + z^2) - z),
-    w = sqrt(k/m), z = -ln e/sqrt(pi^2 + ln^2 e) (MODELS 2.2, convention A); mu = 0, so the normal mode alone."""
+    w = sqrt(k/m), z = -ln e/sqrt(pi^2 + ln^2 e) (contact ending at alpha = 0, docs/laws.md); mu = 0, so the normal mode alone."""
     scene = Scene(e_n=(e_n,), angles_deg=(0.0,), mu=0.0)
     law = liggghts.dialect("linear-spring-dashpot")
     c = scene.contact
@@ -93,7 +93,7 @@ def test_peak_stiffness_bounds_the_simulated_force_overlap_curve(name, e_n):
 
 def test_cli_refuses_a_large_time_step_in_one_line_and_writes_nothing(tmp_path):
     out = tmp_path / "out"
-    proc = subprocess.run([sys.executable, "-m", "harness.cli", "compare", "--model", "walton-braun", "--en", "0.05",
+    proc = subprocess.run([sys.executable, "-m", "harness", "compare", "--model", "walton-braun", "--en", "0.05",
                            "--angles", "30", "--steps-per-contact", "10", "-o", str(out)],
                           capture_output=True, text=True, timeout=300)
     assert proc.returncode == 2

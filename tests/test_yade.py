@@ -110,7 +110,7 @@ def test_crash_hang_truncation_give_clear_failures(tmp_path, monkeypatch):
 
 @needs_yade
 def test_viscel_against_a_wall_uses_half_the_mass():
-    """MODELS 5: against a Wall, ViscEl's reduced mass is m/2 while the sphere moves with m, so its damping ratio
+    """docs/yade-dialect.md: against a Wall, ViscEl's reduced mass is m/2 while the sphere moves with m, so its damping ratio
     is g_A(e)/sqrt2 and, with the force clipped at zero, the sphere leaves with Schwager & Poeschel's e of that
     ratio (tests/oracles.py), not with the input e: en 0.5 -> 0.644."""
     import math
@@ -142,7 +142,7 @@ def test_unknown_precision_is_a_user_error():
 def test_hostile_values_cannot_reach_the_script(value):
     from harness.render import RenderError, render
     with pytest.raises(RenderError):
-        render("yade/batch.py.j2", harness_version="0", law="x", law2="Law2_ScGeom_MindlinPhys_Mindlin", e_n=value,
+        render(yade.TEMPLATES, "batch.py.j2", harness_version="0", law="x", law2="Law2_ScGeom_MindlinPhys_Mindlin", e_n=value,
                material="FrictMat", young=1e9, poisson=0.3, rho=1.0, friction_angle=0.3, radius=0.1, spheres=[],
                ig2="Ig2_Wall_Sphere_ScGeom", hertzian=True, ip2="Ip2_FrictMat_FrictMat_MindlinPhys",
                ip2_args=[("en", value)], dt=1e-7, chunk=10, max_chunks=1)
@@ -175,7 +175,7 @@ def test_compare_with_both_engines_prints_the_engine_against_engine_attribution(
     from harness.engines import liggghts
     if not liggghts.available():
         pytest.skip("liggghts is not installed")
-    proc = subprocess.run([sys.executable, "-m", "harness.cli", "compare", "--model",
+    proc = subprocess.run([sys.executable, "-m", "harness", "compare", "--model",
                            "hertz-mindlin", "--en", "0.5", "--angles", "0,30,60", "-o", str(tmp_path)],
                           capture_output=True, text=True, timeout=600)
     assert proc.returncode == 0, proc.stdout + proc.stderr
@@ -192,10 +192,9 @@ def test_compare_with_both_engines_prints_the_engine_against_engine_attribution(
 @needs_yade
 def test_precision_gap_double_against_mpfr150_is_round_off():
     """The report's precision figure: double and mpfr150 differ on a smooth impact at round-off level only."""
-    from harness.engines.sweep import precision_gap
     if not yade.available("mpfr150"):
         pytest.skip("yade-mpfr150 is not installed")
-    gap = precision_gap(yade, compose("hertz-mindlin"), Scene(e_n=(0.5,), angles_deg=(0.0, 45.0)), 200, samples=2)
+    gap = yade.precision_gap(compose("hertz-mindlin"), Scene(e_n=(0.5,), angles_deg=(0.0, 45.0)), 200, samples=2)
     assert gap["against"] == "mpfr150"
     values = [gap[k] for k in ("v_n1", "v_t1", "omega1")]
     assert max(values) < 1e-9 and max(values) > 0.0
@@ -205,7 +204,10 @@ def test_precision_gap_double_against_mpfr150_is_round_off():
 def test_luding_at_e_n_1_is_refused_with_one_line_not_an_abort():
     """kp = k1 (2/e^2 - 1) = k1 at e_n = 1, which YADE's Ip2_LudingMat_LudingMat_LudingPhys rejects by throwing (the
     interpreter aborted with signal 6): harness refuses it with the reason, and the other e_n still run."""
-    from harness.engines.sweep import run_sweep
-    frames, failures = run_sweep(yade, compose("walton-braun"), Scene(e_n=(0.5, 1.0), angles_deg=(0.0, 45.0)), 200)
+    from harness.execute import execute
+    from harness.plan import engine_runs
+    frame, failures = execute(engine_runs(yade, compose("walton-braun"), Scene(e_n=(0.5, 1.0), angles_deg=(0.0, 45.0)),
+                                          200))
     assert [f.message for f in failures] == ["YADE's Luding law needs kp > k1, i.e. e_n < 1; e_n = 1 was not run"]
-    assert (frames[0].status == "ok").all() and (frames[1].status == "failed").all()
+    by_e_n = frame.groupby("e_n_target").status.unique()
+    assert list(by_e_n[0.5]) == ["ok"] and list(by_e_n[1.0]) == ["failed"]

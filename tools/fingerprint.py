@@ -13,7 +13,7 @@ import sys
 import numpy as np
 import pandas as pd
 
-from harness.engines import ADAPTERS
+from harness.engines import ENGINES, EXTERNAL
 from harness.laws import LAWS, compose
 from harness.scene import Scene
 from harness.solver.reference import simulate
@@ -27,8 +27,8 @@ def laws():
     out = [(name, compose(name)) for name in LAWS]
     out += [(f"{name} without tangential dashpot", compose(name, {"tangential-damping": "none"}))
             for name in ("linear-spring-dashpot", "hertz-mindlin")]
-    out += [(f"{engine} {name}", adapter.dialect(name)) for engine, adapter in ADAPTERS.items()
-            for name in LAWS if adapter.supports(name)]
+    out += [(f"{engine} {name}", ENGINES[engine].dialect(name)) for engine in EXTERNAL
+            for name in LAWS if ENGINES[engine].supports(name)]
     return out
 
 

@@ -16,7 +16,7 @@ from .state import S_ALPHA, S_FEL, S_FS, S_FT, S_NOLD, S_U, S_VX, S_VZ, S_W
 def friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, in_contact, scheme, lever):
     """Tangential force for this step and the spring force kept in history: spring increment from the slip,
     Coulomb cap, tangential dashpot. The paper's dashpot is implicit and capped again; the engines' is explicit
-    and added after the Coulomb test only (LIGGGHTS and YADE alike, MODELS 5). History cleared out of contact."""
+    and added after the Coulomb test only (LIGGGHTS and YADE alike, docs/liggghts-dialect.md, docs/yade-dialect.md). History cleared out of contact."""
     paper = scheme == C.INTEGRATOR_PAPER
     f_t, f_s = 0.0, 0.0
     if TANGENTIAL_VISCOUS[code] and alpha > 0.0:

@@ -1,9 +1,9 @@
 """Plan: turn (law, scene, e_n) into kernel rows, switching on only the effects the scene calls for."""
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ..stability import check_time_step
+from .stability import check_time_step
 from . import codes as C
 from .dispatch import TANGENTIAL_NONE
 
@@ -29,6 +29,14 @@ class Batch:
     dt: float
     steps_per_contact: float
     tangential_active: np.ndarray
+
+
+def join(batches):
+    """One batch holding the impacts of several batches of one material and one dt (one engine run)."""
+    if len({b.dt for b in batches}) != 1:
+        raise ValueError("batches run together must share one dt")
+    per_impact = ("params", "ints", "v_n0", "v_t0", "omega0", "theta_deg", "tangential_active")
+    return replace(batches[0], **{name: np.concatenate([getattr(b, name) for b in batches]) for name in per_impact})
 
 
 def needs_tangential(scene, v_t0, omega0, law=None):

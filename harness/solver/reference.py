@@ -7,7 +7,7 @@ import pandas as pd
 from .. import __version__
 from ..kinematics import rebound_quantities
 from ..results import impact_frame
-from ..stability import UnstableTimeStep
+from .stability import UnstableTimeStep
 from . import codes as C
 from .adaptive import integrate_adaptive, stepper_names, supports
 from .extension import table as extension_table

@@ -121,7 +121,7 @@ def step_velocity_verlet(s, st, o, ot, p, ints, h, scratch, ext):
     """LIGGGHTS nve/sphere + wall/gran: half kick, drift, forces from the half-step velocities, half kick.
 
     The normal dashpot and the tangential increment see v(t + h/2); the tangential dashpot is added after the
-    Coulomb test and is not capped again; the contact ends at the first step with alpha <= 0 (MODELS 5).
+    Coulomb test and is not capped again; the contact ends at the first step with alpha <= 0 (docs/liggghts-dialect.md).
     """
     m, radius, g = p[C.P_MASS], p[C.P_RADIUS], p[C.P_GRAVITY]
     vz_half = s[S_VZ] + 0.5 * h * (s[S_FN] / m - g)

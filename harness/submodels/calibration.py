@@ -1,4 +1,4 @@
-"""Calibrations: the model parameter that gives a target normal restitution e_n (MODELS 2.1-2.6)."""
+"""Calibrations: the model parameter that gives a target normal restitution e_n (docs/laws.md)."""
 import math
 from functools import lru_cache
 
@@ -10,12 +10,12 @@ APPENDIX_B = (-6.918798, -16.41105, 146.8049, -796.4559, 2928.711,
 
 
 def lsd_tension_g(e):
-    """g = -ln e / sqrt(pi^2 + ln^2 e): LSD, contact ends at alpha = 0 (MODELS 2.1 convention A)."""
+    """g = -ln e / sqrt(pi^2 + ln^2 e): LSD, contact ends at alpha = 0 (docs/laws.md)."""
     return -math.log(e) / math.sqrt(math.pi ** 2 + math.log(e) ** 2)
 
 
 def lsd_notension_e(g):
-    """Schwager & Poeschel (2007) restitution of the LSD with the force clipped at 0 (MODELS 2.1 convention B)."""
+    """Schwager & Poeschel (2007) restitution of the LSD with the force clipped at 0 (docs/laws.md)."""
     if g <= 0.0:
         return 1.0
     if g < 1.0 / math.sqrt(2.0):
@@ -32,14 +32,14 @@ def lsd_notension_e(g):
 
 @lru_cache(maxsize=None)
 def lsd_notension_g(e):
-    """Invert Schwager & Poeschel's e(g) numerically (MODELS 2.1 convention B)."""
+    """Invert Schwager & Poeschel's e(g) numerically (docs/laws.md)."""
     if e >= 1.0:
         return 0.0
     return brentq(lambda g: lsd_notension_e(g) - e, 0.0, 50.0, xtol=1e-15, rtol=1e-15)
 
 
 def thornton_appendix_b_g(e):
-    """Thornton et al. (2013) Appendix B: g = sqrt(1/[1 - (1+e)^2 exp(x)] - 1), x = sum h_i e^i (MODELS 2.2)."""
+    """Thornton et al. (2013) Appendix B: g = sqrt(1/[1 - (1+e)^2 exp(x)] - 1), x = sum h_i e^i (docs/laws.md)."""
     if e >= 1.0:
         return 0.0
     x = sum(h * e ** (i + 1) for i, h in enumerate(APPENDIX_B))
@@ -88,7 +88,7 @@ def tsuji_notension_A(e):
 
 @lru_cache(maxsize=None)
 def kuwabara_kono_y(e, end):
-    """y = A (k/m)^2/5 V^1/5 that gives e for F = k[a^3/2 + 3/2 A a^1/2 a'] (Zhou et al. 1999; MODELS 2.3)."""
+    """y = A (k/m)^2/5 V^1/5 that gives e for F = k[a^3/2 + 3/2 A a^1/2 a'] (Zhou et al. 1999; docs/laws.md)."""
     if e >= 1.0:
         return 0.0
     return _invert(lambda y: _normalised_restitution(lambda x: 1.5 * math.sqrt(x), y, end), e, 1e-8, 20.0)
@@ -100,7 +100,7 @@ def kuwabara_kono_restitution(y, end):
 
 
 def thornton_restitution(r):
-    """Thornton (1997) e(r), r = V_y/V <= 1 (MODELS 2.6)."""
+    """Thornton (1997) e(r), r = V_y/V <= 1 (docs/laws.md)."""
     if r >= 1.0:
         return 1.0
     return (math.sqrt(6.0 * math.sqrt(3.0) / 5.0) * math.sqrt(1.0 - r * r / 6.0)
@@ -108,7 +108,7 @@ def thornton_restitution(r):
 
 
 def stronge_restitution(r):
-    """Provisional Stronge e = x^3/4 V_y/V, x = sqrt(1 + 1.6 (V^2/V_y^2 - 1)), r = V_y/V (MODELS 2.5)."""
+    """Provisional Stronge e = x^3/4 V_y/V, x = sqrt(1 + 1.6 (V^2/V_y^2 - 1)), r = V_y/V (docs/laws.md)."""
     if r >= 1.0:
         return 1.0
     x = math.sqrt(1.0 + 1.6 * (1.0 / (r * r) - 1.0))
@@ -126,7 +126,7 @@ def yield_velocity_ratio(e, law):
 
 
 def yield_pressure(r, speed, E_star, rho):
-    """p_y = (r^2 V^2 E*^4 rho 40/pi^4)^1/5, from V_y = pi^2/sqrt40 sqrt(p_y^5/(E*^4 rho)) (MODELS 2.6)."""
+    """p_y = (r^2 V^2 E*^4 rho 40/pi^4)^1/5, from V_y = pi^2/sqrt40 sqrt(p_y^5/(E*^4 rho)) (docs/laws.md)."""
     return (r * r * speed * speed * E_star ** 4 * rho * 40.0 / math.pi ** 4) ** 0.2
 
 

@@ -66,7 +66,7 @@ def chain(name, family, kernels, arguments, default, extension=None):
             if default == "None":
                 lines.append("        return")
     if extension:
-        lines.append(f"    if code >= N_NORMAL:")
+        lines.append("    if code >= N_NORMAL:")
         lines.append(f"        return call(ext, code - N_NORMAL, {extension}")
     lines.append(f"    return {NAN2 if default is None else default}" if default != "None" else "    return")
     return "\n".join(lines)

@@ -1,4 +1,4 @@
-"""Tangential dashpot: c_t = 2 g_t sqrt(m k_t), applied only while the contact sticks (MODELS 3, section 5)."""
+"""Tangential dashpot: c_t = 2 g_t sqrt(m k_t), applied only while the contact sticks (docs/laws.md#tangential-dashpot)."""
 import math
 
 from ..errors import UserError

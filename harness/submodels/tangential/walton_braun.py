@@ -5,7 +5,6 @@ w = x^1/3, x = (mu N - d T)/(mu N - d T*), where F_s = -d mu N (1 - (1 - d sigma
 import numpy as np
 from numba import njit
 
-from ..base import TangentialModel
 from .linear import LinearTangential
 from .ratio import ratio_label
 from .state import N_TSTATE, T_AUX1, T_DIR

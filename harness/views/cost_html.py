@@ -1,7 +1,7 @@
 """The report's accuracy-against-cost section, from cost.csv alone: log-log figures and the tables."""
 import numpy as np
 
-from .cost import (ADAPTIVE, EXTRAPOLATED, METRICS, TOLERANCES, convergence_orders, ladder_rows, per_rung,
+from ..analyses.cost import (ADAPTIVE, EXTRAPOLATED, METRICS, TOLERANCES, convergence_orders, ladder_rows, per_rung,
                    recommendations)
 
 LABELS = {"e_n": "e_n", "e_t": "e_t", "omega_star": "Omega*", "t_contact": "contact time", "f_n_max": "peak force",
@@ -35,7 +35,7 @@ def cost_figure(cost, x_column, x_label, metrics):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    from .report import figure_png
+    from .html import figure_png
     fig, axes = plt.subplots(1, len(metrics), figsize=(3.7 * len(metrics), 3.6), squeeze=False)
     for ax, metric in zip(axes[0], metrics):
         column = f"err_{metric}"
@@ -63,9 +63,10 @@ def cost_figure(cost, x_column, x_label, metrics):
     return png
 
 
-def cost_section(cost, model):
-    """Figures and tables of the cost section."""
-    from .report import records
+def cost_section(cost, uncertainty, run):
+    """Figures and tables of the cost section, from the cost table, the truth's uncertainty and the study's record."""
+    from .html import records
+    model = run["model"]
     figures = [
         (f"{model}: worst-metric error against wall time (start-up excluded)",
          cost_figure(cost, "net_wall_s", "wall time [s]", ("max",))),
@@ -78,4 +79,6 @@ def cost_section(cost, model):
     return {"figures": figures, "recommendations": records(recommendations(cost)),
             "orders": records(convergence_orders(cost)),
             "refused": records(refused[["engine", "dialect", "rung", "message"]]),
-            "table": records(cost.drop(columns=["model", "message"]))}
+            "table": records(cost.drop(columns=["model", "message"])),
+            "model": model, "skipped": [tuple(s) for s in run["skipped"]], "failures": run.get("failures", []),
+            "scene": run["scene"], "uncertainty": records(uncertainty) if not uncertainty.empty else None}

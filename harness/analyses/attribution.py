@@ -5,8 +5,8 @@ from dataclasses import replace
 import numpy as np
 import pandas as pd
 
-from .errors import UserError
-from .laws.law import SUBMODEL_KEYS, check_composition
+from ..errors import UserError
+from ..laws.law import SUBMODEL_KEYS, check_composition
 
 METRICS = ("e_n", "e_t", "omega_star", "psi2_star", "v_t1", "omega1")
 FIELDS = {key: key.replace("-", "_") for key in SUBMODEL_KEYS}

@@ -4,9 +4,11 @@ import io
 import os
 
 import numpy as np
+import pandas as pd
 
-from .kinematics import CONVENTIONS
-from .render import environment
+from ..files import write_text
+from ..kinematics import CONVENTIONS
+from ..render import environment
 
 
 
@@ -114,7 +116,7 @@ def force_figure(histories, contact, speed):
 
 
 def hertz_ratios(normal, contact, speed):
-    """Contact time and peak force of the normal impacts against elastic Hertz at the same speed (MODELS 4)."""
+    """Contact time and peak force of the normal impacts against elastic Hertz at the same speed (docs/laws.md)."""
     alpha = (15.0 * contact.mass * speed ** 2 / (16.0 * contact.E_star * np.sqrt(contact.radius))) ** 0.4
     t_h = 2.94328 * alpha / speed
     f_h = 4.0 / 3.0 * contact.E_star * np.sqrt(contact.radius) * alpha ** 1.5
@@ -124,20 +126,36 @@ def hertz_ratios(normal, contact, speed):
     return table
 
 
-def write_report(out_dir, compare=None, cost=None):
-    """Render DIR/report.html (self-contained) from a compare part, a cost part or both; returns its path."""
+def rebuild(out_dir):
+    """Write DIR/report.html from the files in DIR alone (a comparison, a cost study or both); returns its path.
+    The report is always built from the saved data, so `harness report DIR` simulates nothing."""
+    from ..outputs import kinds, load_comparison, load_cost
+    has_compare, has_cost = kinds(out_dir)
+    return write_report(out_dir, load_comparison(out_dir) if has_compare else None,
+                        load_cost(out_dir) if has_cost else None)
+
+
+def write_report(out_dir, comparison=None, cost=None):
+    """Render DIR/report.html (self-contained) from a Comparison, a cost study (table, truth uncertainty, its run
+    record) or both; returns its path."""
+    from .cost_html import cost_section
     env = environment(autoescape=True)
-    context = {"compare": None, "cost": cost, "conventions": CONVENTIONS,
-               "title": (compare or {}).get("law").name if compare else cost["model"]}
-    if compare:
-        context["compare"] = compare_context(**compare)
+    cost_part = cost_section(*cost) if cost is not None else None
+    context = {"compare": compare_context(comparison) if comparison is not None else None, "cost": cost_part,
+               "conventions": CONVENTIONS,
+               "title": comparison.law.name if comparison is not None else cost_part["model"]}
     html = env.get_template("report.html.j2").render(**context)
-    path = os.path.join(out_dir, "report.html")
-    tmp = path + ".tmp"
-    with open(tmp, "w", encoding="utf-8") as handle:
-        handle.write(html)
-    os.replace(tmp, path)
-    return path
+    return write_text(os.path.join(out_dir, "report.html"), html)
+
+
+def arithmetic(engine_options):
+    """The floating-point arithmetic each engine ran in: an engine that can change it says so (`arithmetic`)."""
+    from ..engines import ENGINES
+    return {name: engine.arithmetic(engine_options.get(name, {})) if hasattr(engine, "arithmetic") else DOUBLE
+            for name, engine in ENGINES.items()}
+
+
+DOUBLE = "double (IEEE 754 binary64)"
 
 
 def sliding_lines(sliding):
@@ -147,9 +165,11 @@ def sliding_lines(sliding):
     return dict(zip(sliding.e_n_target, sliding.simulated))
 
 
-def compare_context(frame, law, scene, skipped, agreement=None, deviation=None, cross=None, attributions=None,
-                    findings=None, failures=(), precision=None, histories=None, arithmetic=None, sliding=None):
+def compare_context(comparison):
     """Figures and tables of the compare sections."""
+    frame, law, scene = comparison.results, comparison.law, comparison.scene
+    histories, sliding = comparison.histories, comparison.sliding
+    cross = [(f"{b} against {a}", records(table)) for (a, b), table in comparison.cross.items() if not table.empty]
     figures = []
     paper = frame[(frame.engine == "reference") & (frame.dialect == "paper")]
     oblique = frame[frame.psi1_star > 0]
@@ -166,9 +186,11 @@ def compare_context(frame, law, scene, skipped, agreement=None, deviation=None, 
         e_n_min=("e_n", "min"), e_n_max=("e_n", "max"), e_t_min=("e_t", "min"), e_t_max=("e_t", "max"),
         t_contact_max=("t_contact", "max"), f_n_max=("f_n_max", "max"), ke_ratio_max=("ke_ratio", "max"),
         rows=("status", "size")).reset_index()
+    precision = pd.DataFrame([comparison.precision]) if comparison.precision else None
     return dict(law=law, submodels=law.describe(), scene=scene, figures=figures,
-                summary=summary.to_dict("records"), skipped=skipped, rows=len(frame), ran=engines_ran(frame),
-                facts=records(run_facts(frame, arithmetic or {})), agreement=records(agreement),
-                deviation=records(deviation), cross=records(cross), findings=records(findings), failures=failures,
-                precision=records(precision), ratios=ratios, sliding=records(sliding),
-                attributions=[(name, records(table)) for name, table in (attributions or {}).items()])
+                summary=summary.to_dict("records"), skipped=comparison.skipped, rows=len(frame),
+                ran=engines_ran(frame), facts=records(run_facts(frame, arithmetic(comparison.engine_options))),
+                agreement=records(comparison.agreement), deviation=records(comparison.deviation), cross=cross,
+                findings=records(comparison.findings), failures=comparison.failures, precision=records(precision),
+                ratios=ratios, sliding=records(sliding),
+                attributions=[(name, records(table)) for name, table in comparison.attribution.items()])

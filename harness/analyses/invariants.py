@@ -26,16 +26,16 @@ SWEEP_IDENTITY = ("engine", "dialect", "model", "e_n_target", "mu", "theta_deg",
                   "case")       # "case": a hard-case label (harness.hard_cases), where the table has one
 COLUMNS = ["engine", "dialect", "model", "e_n_target", "theta_deg", "kind", "value", "limit", "row"]
 KNOWN_CAUSES = {              # (dialect, model, kind) -> the documented cause, printed with the finding
-    ("paper", "hertz-mindlin", "e_n off target"): "Thornton 2013 App. B fit degrades above e_n 0.95 (MODELS 2.2)",
-    ("yade", "hertz-mindlin", "e_n off target"): "Thornton 2013 App. B fit degrades above e_n 0.95 (MODELS 2.2)",
+    ("paper", "hertz-mindlin", "e_n off target"): "Thornton 2013 App. B fit degrades above e_n 0.95 (docs/laws.md)",
+    ("yade", "hertz-mindlin", "e_n off target"): "Thornton 2013 App. B fit degrades above e_n 0.95 (docs/laws.md)",
     ("yade", "linear-spring-dashpot", "e_n off target"):
-        "ViscEl uses the reduced mass m/2 against a wall; CundallStrack has no damping (MODELS 5)",
+        "ViscEl uses the reduced mass m/2 against a wall; CundallStrack has no damping (docs/yade-dialect.md)",
     ("yade", "linear-spring-dashpot", "energy gain"): "CundallStrack's k_s = nu k_n is negative for nu < 0",
     ("liggghts", "thornton", "e_n off target"):
-        "thornton_ning unloads with R unmodified, so Thornton's p_y calibration misses (MODELS 5)",
+        "thornton_ning unloads with R unmodified, so Thornton's p_y calibration misses (docs/liggghts-dialect.md)",
     ("liggghts", "linear-spring-dashpot", "friction at mu = 0"):
         "hooke's zero shear history at first touch passes the Coulomb test, so its tangential dashpot acts",
-    ("liggghts", "thornton", "energy gain"): "thornton_ning's tangential damping has the wrong sign (MODELS 5)",
+    ("liggghts", "thornton", "energy gain"): "thornton_ning's tangential damping has the wrong sign (docs/liggghts-dialect.md)",
     ("paper", "stronge", "energy gain"): "the provisional reconstruction gains energy for 1 < V/V_y < 1.55 (README)",
 }
 
@@ -43,7 +43,7 @@ KNOWN_CAUSES = {              # (dialect, model, kind) -> the documented cause, 
 def contact_time_bound(frame):
     """Longest plausible contact: factor x t_est (V/V_n)^1/5 sqrt(1 + ln^2 e/pi^2), t_est = dt x steps per contact
     (the plan's estimate at the scene speed V ~ |v0|; a dashpot ending at alpha = 0 lengthens the contact by
-    1/sqrt(1 - g^2), MODELS 2.1); engine dialects, which keep the contact at zero force until the gap opens (a latched
+    1/sqrt(1 - g^2), docs/laws.md); engine dialects, which keep the contact at zero force until the gap opens (a latched
     dent, a clipped dashpot), also get the time to cross the largest overlap at the rebound speed."""
     t_est = frame.dt * frame.steps_per_contact
     slow = np.maximum(np.hypot(frame.v_n0, frame.v_t0) / frame.v_n0, 1.0) ** 0.2

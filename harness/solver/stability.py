@@ -9,8 +9,8 @@ g = c/(2 m_eff), i.e. w h < 2 (sqrt(1 + z^2) - z) with z the damping ratio (O'Su
 import math
 from dataclasses import dataclass
 
-from .errors import UserError
-from .solver import codes as C
+from ..errors import UserError
+from . import codes as C
 
 
 @dataclass(frozen=True)
@@ -53,7 +53,7 @@ def stability_limit(law, scene, e_n, params, tangential=True):
     modes = [("normal", k_n, c_n, mass)]
     code = law.tangential.code
     if tangential and scene.mu > 0.0:
-        from .solver.dispatch import TANGENTIAL_VISCOUS, tangential_stiffness
+        from .dispatch import TANGENTIAL_VISCOUS, tangential_stiffness
         p1 = law.tangential.parameter(contact, law.normal.parameters(contact, e_n, scene.speed).linear_stiffness)
         k_t = abs(tangential_stiffness(code, p1, math.sqrt(contact.radius * alpha)))   # |k_s| = |nu| k_n for YADE
         c_t = abs(params[C.P_TDAMP]) * math.sqrt(k_t)                               # CundallStrack with nu < 0

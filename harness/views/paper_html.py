@@ -4,13 +4,14 @@ import os
 
 import numpy as np
 
-from . import __version__
-from .kinematics import CONVENTIONS
-from .laws import LAWS
-from .paper import ELASTIC, PSI1_GRID
+from .. import __version__
+from ..files import write_text
+from ..kinematics import CONVENTIONS
+from ..laws import LAWS
+from ..paper import ELASTIC, PSI1_GRID
+from ..render import environment
+from .html import figure_png, records
 from .paper_axes import PANELS, draw_rigid_body, set_paper_axes
-from .render import environment
-from .report import figure_png, records
 
 OBLIQUE, NORMAL, SLIDING = "paper.csv", "paper-normal.csv", "paper-sliding.csv"
 COLOURS = ("#1b9e77", "#d95f02", "#7570b3", "#e7298a", "#66a61e", "#e6ab02")    # one per e_n, in every figure
@@ -74,9 +75,4 @@ def write_paper_report(out_dir, oblique, normal, sliding, command):
         methods=sorted(set(sliding.method)), normal=records(at_paper_en.round(4)), conventions=CONVENTIONS,
         psi_points=len(PSI1_GRID), command=command, version=__version__,
         date=datetime.datetime.now().strftime("%Y-%m-%d %H:%M"), files=(OBLIQUE, NORMAL, SLIDING))
-    path = os.path.join(out_dir, "paper.html")
-    tmp = path + ".tmp"
-    with open(tmp, "w", encoding="utf-8") as handle:
-        handle.write(html)
-    os.replace(tmp, path)
-    return path
+    return write_text(os.path.join(out_dir, "paper.html"), html)

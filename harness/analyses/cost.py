@@ -6,11 +6,11 @@ import tempfile
 import numpy as np
 import pandas as pd
 
-from .engines.runner import EngineFailure
-from .engines.sweep import TIMEOUT_FLOOR_S, run_sweep
-from .solver.plan import FixedTimeStep, plan_batch
-from .solver.reference import CONVERGED_START, adaptive_batch, simulate, simulate_adaptive, simulate_extrapolated
-from .stability import UnstableTimeStep
+from ..engines.runner import EngineFailure
+from ..engines.batches import TIMEOUT_FLOOR_S
+from ..solver.plan import FixedTimeStep, plan_batch
+from ..solver.reference import CONVERGED_START, adaptive_batch, simulate, simulate_adaptive, simulate_extrapolated
+from ..solver.stability import UnstableTimeStep
 
 LADDER = (5, 10, 20, 50, 100, 200, 500, 1000, 5000)
 METRICS = ("e_n", "e_t", "omega_star", "t_contact", "f_n_max")
@@ -145,18 +145,33 @@ def engine_curve(rows, adapter, paper_law, dialect, scene, ladder, truth, option
     startup = startup_seconds(adapter, paper_law, dialect, scene, options)
     for label, resolution in ladder_rungs(ladder, scene):
         try:
-            frames, failed = run_sweep(adapter, paper_law, scene, resolution, options=options)
+            frames, failed = sweep(adapter, paper_law, scene, resolution, options)
         except UnstableTimeStep as exc:
             refused(rows, paper_law.name, adapter.NAME, dialect.dialect, label, scene, str(exc))
             continue
         failures += failed
         if not failed:                  # contact time and peak force from an observed, untimed second run
-            observed, _ = run_sweep(adapter, paper_law, scene, resolution, options=options, observe=True)
+            observed, _ = sweep(adapter, paper_law, scene, resolution, options, observe=True)
             for frame, seen in zip(frames, observed):
                 for column in ("t_contact", "f_n_max", "overlap_max"):
                     frame[column] = seen[column].to_numpy()
         measure(rows, paper_law.name, adapter.NAME, dialect.dialect, label,
                 {f.e_n_target.iloc[0]: f for f in frames}, truth, startup)
+
+
+def sweep(engine, law, scene, resolution, options, observe=False):
+    """The engine's batches at every e_n (one frame each) and its failed runs, through the plan."""
+    from ..execute import execute
+    from ..plan import engine_runs
+    runs = engine_runs(engine, law, scene, resolution, options, observe)
+    for run in runs:
+        run.batch()                        # a time step above the stability limit: refused before any run
+    frames, failures = [], []
+    for run in runs:
+        table, failed = execute([run])
+        frames.append(table)
+        failures += failed
+    return frames, failures
 
 
 EXTRAPOLATED = "paper, graded Richardson"       # the converged ladder's rungs as a curve of the reference

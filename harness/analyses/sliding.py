@@ -11,10 +11,10 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from .errors import UserError
-from .solver import codes as C
-from .solver.plan import plan_batch
-from .solver.reference import adaptive_batch, run_adaptive, run_kernel
+from ..errors import UserError
+from ..solver import codes as C
+from ..solver.plan import plan_batch
+from ..solver.reference import adaptive_batch, run_adaptive, run_kernel
 
 PSI_MAX = 40.0          # Psi1* searched up to this (the rigid-body threshold is 7; viscous laws without a
                         # tangential dashpot approach the sliding line only as 1/Psi1* and never reach it)

@@ -1,103 +1,19 @@
-"""YADE 2023.02a adapter: one batched script per (law, e_n), run as a Python module without the yade launcher
-(which opens network servers), every impact its own sphere against one wall."""
+"""YADE's input and output: one batched script per (law, e_n), every impact its own sphere against one wall, run
+as a Python module in its own directory, and its result files read back (docs/yade-dialect.md)."""
 import os
-import re
-import shutil
-from functools import lru_cache
+from pathlib import Path
 
 import numpy as np
 
-from .. import __version__
-from ..errors import UserError
-from ..render import render
-from .runner import EngineFailure, run_engine
+from ... import __version__
+from ...render import render
+from ..runner import EngineFailure, run_engine
+from .dialect import MODELS
+from .flavours import environment, python
 
-NAME = "yade"
-INPUT_SUFFIX = ".py"
-PYTHON_VARIABLE = "HARNESS_YADE_PYTHON"    # another interpreter (a test's fake); default Debian's python3.11
-FLAVOURS = {"double": "yade-double", "long-double": "yade-longdouble", "float128": "yade-float128",
-            "mpfr150": "yade-mpfr150"}
-ARITHMETIC = {"double": "double (IEEE 754 binary64)", "long-double": "long double (x87 80-bit extended)",
-              "float128": "float128 (IEEE 754 binary128)", "mpfr150": "MPFR, 150 decimal digits"}
-LIBRARY = "/usr/lib/x86_64-linux-gnu"
+TEMPLATES = Path(__file__).resolve().parent / "templates"
+
 OBSERVE_FILE = "observe.txt"    # observe mode: per sphere, first and last real step, peak normal force and overlap
-MODELS = {"hertz-mindlin": "Law2_ScGeom_MindlinPhys_Mindlin", "linear-spring-dashpot": "Law2_ScGeom_ViscElPhys_Basic",
-          "walton-braun": "Law2_ScGeom_LudingPhys_Basic"}
-DIALECTS = {                    # sub-models that make the paper law compute what YADE computes (MODELS 5, docs/)
-    "hertz-mindlin": {"damping": "tsuji:appendix-b", "end": "no-tension", "tangential": "mindlin:incremental",
-                      "tangential-damping": "normal-ratio", "integrator": "leapfrog", "lever": "1",
-                      "slip": "noratch"},
-    "linear-spring-dashpot": {"damping": "linear:half-mass", "end": "no-tension", "tangential": "linear:2/7",
-                              "tangential-damping": "proportional", "integrator": "leapfrog", "lever": "1"},
-    "walton-braun": {"normal": "yade-luding", "end": "no-tension", "tangential": "linear:2/7",
-                     "tangential-damping": "none", "integrator": "leapfrog", "lever": "0.5"},
-}
-LINEAR_LAWS = ("viscel", "cundall-strack")     # YADE's two linear laws for linear-spring-dashpot (option 'linear')
-CUNDALL_STRACK = {             # K_n = E R, K_s = nu K_n, no damping (e = 1 whatever e_n), noRatch slip with the
-    "normal": "yade-cundall-strack", "damping": "none", "end": "tension",  # default wall geometry (r1 = R),
-    "tangential": "linear:nu", "tangential-damping": "none",                 # torque lever R - d/2
-    "integrator": "leapfrog", "lever": "0.5", "slip": "noratch-sphere"}
-
-
-def dialect(law_name, options=None):
-    """The law as YADE 2023.02a computes it: leapfrog with forces from the half-step velocities, contact from
-    overlap >= 0 until the first negative overlap, App. B damping with the normal force clipped at 0, incremental
-    8G*a shear spring (not reduced as a falls), dashpot after the Coulomb test, torque lever R - d, noRatch slip."""
-    from ..laws import compose
-    from ..laws.law import replace_submodels
-    options = dict(options or {})
-    unknown = set(options) - {"precision", "linear"}
-    if unknown:
-        raise UserError(f"unknown YADE option(s) {', '.join(sorted(unknown))}; known: precision, linear")
-    if options.get("linear", "viscel") not in LINEAR_LAWS:
-        raise UserError(f"YADE linear law must be one of {', '.join(LINEAR_LAWS)}, got {options['linear']!r}")
-    if law_name == "linear-spring-dashpot" and options.get("linear") == "cundall-strack":
-        return replace_submodels(compose(law_name), CUNDALL_STRACK, "yade")
-    return replace_submodels(compose(law_name), DIALECTS[law_name], "yade")
-
-
-def python():
-    return os.environ.get(PYTHON_VARIABLE, "/usr/bin/python3.11")
-
-
-def flavour_path(precision):
-    if precision not in FLAVOURS:
-        raise UserError(f"precision must be one of {', '.join(FLAVOURS)}, got {precision!r}")
-    return os.path.join(LIBRARY, FLAVOURS[precision], "py")
-
-
-def available(precision="double"):
-    """Debian's python3.11 and the flavour's module directory are both there."""
-    return shutil.which(python()) is not None and os.path.isdir(flavour_path(precision))
-
-
-def version():
-    return _version(LIBRARY)
-
-
-@lru_cache(maxsize=None)
-def _version(library):
-    """'2023.02a' from the Debian package's changelog path, else 'unknown'."""
-    try:
-        names = os.listdir("/usr/share/doc/yade")
-    except OSError:
-        names = []
-    for name in ("changelog.Debian.gz",):
-        if name in names:
-            import gzip
-            with gzip.open(os.path.join("/usr/share/doc/yade", name), "rt") as handle:
-                match = re.search(r"\(([0-9.a-z]+)-", handle.readline())
-                if match:
-                    return match.group(1)
-    return "unknown"
-
-
-def supports(law_name):
-    return law_name in MODELS and law_name in DIALECTS
-
-
-def environment(precision):
-    return {**os.environ, "PYTHONPATH": flavour_path(precision), "OMP_NUM_THREADS": "1"}
 
 
 def viscel_contact_time(law, scene, e_n):
@@ -120,7 +36,7 @@ def script(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps
                   friction_angle=math.atan(scene.mu), radius=radius, spheres=spheres, ig2="Ig2_Wall_Sphere_ScGeom",
                   hertzian=True, dt=dt, chunk=chunk, max_chunks=max(1, max_steps // chunk + 1), observe=bool(observe))
     if law.name == "walton-braun":
-        from ..submodels.normal.yade_luding import YadeLuding
+        from ...submodels.normal.yade_luding import YadeLuding
         luding = YadeLuding()
         k1, kp, d_p_max, _ = luding.parameters(scene.contact, e_n, scene.speed).values
         if not kp > k1:             # YADE throws 'k1 have to be less as kp!' and the interpreter aborts (signal 6)
@@ -129,18 +45,18 @@ def script(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps
         spacing = 2.0 * math.sqrt(2.0 * big * radius)        # a neighbour's huge sphere stays 4R below
         for i, s in enumerate(spheres):
             s["x"] = i * spacing
-        return render("yade/batch.py.j2", **{**common, "ig2": "Ig2_Sphere_Sphere_ScGeom", "hertzian": False},
+        return render(TEMPLATES, "batch.py.j2", **{**common, "ig2": "Ig2_Sphere_Sphere_ScGeom", "hertzian": False},
                       material="LudingMat", k1=k1, kp=kp, ks=2.0 / 7.0 * k1,
                       phi_f=luding.plasticity_depth(k1, kp, d_p_max, scene.contact), huge_radius=big,
                       ip2="Ip2_LudingMat_LudingMat_LudingPhys", ip2_args=[])
     if law.name == "linear-spring-dashpot" and linear == "cundall-strack":
-        return render("yade/batch.py.j2", **{**common, "law2": "Law2_ScGeom_FrictPhys_CundallStrack",
+        return render(TEMPLATES, "batch.py.j2", **{**common, "law2": "Law2_ScGeom_FrictPhys_CundallStrack",
                                              "hertzian": False}, material="FrictMat", young=scene.E, poisson=scene.nu,
                       ip2="Ip2_FrictMat_FrictMat_FrictPhys", ip2_args=[])
     if law.name == "linear-spring-dashpot":
-        return render("yade/batch.py.j2", **common, material="ViscElMat", tc=viscel_contact_time(law, scene, e_n),
+        return render(TEMPLATES, "batch.py.j2", **common, material="ViscElMat", tc=viscel_contact_time(law, scene, e_n),
                       en=e_n, et=e_n, ip2="Ip2_ViscElMat_ViscElMat_ViscElPhys", ip2_args=[])
-    return render("yade/batch.py.j2", **common, material="FrictMat", young=scene.E, poisson=scene.nu,
+    return render(TEMPLATES, "batch.py.j2", **common, material="FrictMat", young=scene.E, poisson=scene.nu,
                   ip2="Ip2_FrictMat_FrictMat_MindlinPhys", ip2_args=[("en", e_n), ("es", e_n)])
 
 

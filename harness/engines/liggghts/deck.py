@@ -1,28 +1,19 @@
-"""LIGGGHTS 3.8.0 adapter: one batched deck per (law, e_n), every impact its own sphere against a wall/gran plane."""
+"""LIGGGHTS' input and output: one batched deck per (law, e_n), every impact its own sphere against a wall/gran plane,
+run in its own directory, and its dumps read back (docs/liggghts-dialect.md)."""
 import math
 import os
-import re
-import shutil
-import subprocess
 from dataclasses import dataclass
-from functools import lru_cache
+from pathlib import Path
 
 import numpy as np
 
-from .. import __version__
-from ..render import render
-from ..errors import UserError
-from .runner import EngineFailure, run_engine
+from ... import __version__
+from ...render import render
+from ..runner import EngineFailure, run_engine
+from .binary import binary
+from .dialect import MODELS
 
-NAME = "liggghts"
-INPUT_SUFFIX = ".in"
-BINARY_VARIABLE = "HARNESS_LIGGGHTS"     # path of another liggghts binary (a custom build, or a test's fake)
-MODELS = {                      # harness law -> LIGGGHTS normal model (MODELS 5)
-    "linear-spring-dashpot": "hooke",
-    "hertz-mindlin": "hertz",
-    "walton-braun": "hooke/hysteresis",
-    "thornton": "thornton_ning",
-}
+TEMPLATES = Path(__file__).resolve().parent / "templates"
 MIN_RESTITUTION = 0.05          # LIGGGHTS refuses coefficientRestitution <= 0.05 and poissonsRatio < 0; youngsModulus
                                 # < 5e6 or > 1e9 only with soft_particles/hard_particles yes (sanity checks only)
 OBSERVE_DUMP = "observe.dump"   # observe mode: `id z fz` of every sphere in contact, every step
@@ -37,90 +28,9 @@ class Deck:
     n_atoms: int
 
 
-COMMON = {"end": "tension", "integrator": "velocity-verlet", "lever": "0.5"}
-DIALECTS = {                    # sub-models that make the paper law compute what LIGGGHTS computes (MODELS 5)
-    "linear-spring-dashpot": {**COMMON, "damping": "linear:tension", "tangential": "linear:1",
-                              "tangential-damping": "normal-coefficient"},
-    "hertz-mindlin": {**COMMON, "damping": "tsuji:tension", "tangential": "mindlin:total",
-                      "tangential-damping": "normal-ratio"},
-    "walton-braun": {**COMMON, "end": "no-tension", "normal": "liggghts-hysteresis", "tangential": "linear:1",
-                     "tangential-damping": "none"},
-    "thornton": {**COMMON, "end": "no-tension", "normal": "liggghts-thornton-ning", "tangential": "mindlin:total",
-                 "tangential-damping": "reversed-beta"},
-}
-OPTIONS = {                     # option -> allowed values, default first, and the models that honour it
-    "limitForce": (("off", "on"), ("hooke", "hertz")),
-    "tangential_damping": (("on", "off"), ("hooke", "hertz", "hooke/hysteresis")),
-    "ktToKnUser": (("off", "on"), ("hooke",)),
-    "tangential": (("history", "no_history"), ("hooke", "hertz")),
-}
-KT_TO_KN_USER = "0.285714286"   # the literal LIGGGHTS multiplies by, not exactly 2/7
-
-
-def check_options(law_name, options):
-    """Validate --liggghts-option values; one clear line for a bad one."""
-    for key, value in options.items():
-        if key not in OPTIONS:
-            raise UserError(f"unknown LIGGGHTS option {key!r}; known: {', '.join(OPTIONS)}")
-        values, models = OPTIONS[key]
-        if value not in values:
-            raise UserError(f"LIGGGHTS option {key} takes {' or '.join(values)}, got {value!r}")
-        if key == "tangential" and value != "history" and MODELS.get(law_name) not in models:
-            raise UserError(f"tangential no_history is offered with hooke and hertz only, not {MODELS.get(law_name)}")
-
-
-def dialect(law_name, options=None):
-    """The law as LIGGGHTS 3.8.0 computes it (MODELS 5): velocity Verlet with half-step velocities in the forces,
-    lever R - d/2, setup force at first touch, total-displacement tangential spring with its dashpot added after the
-    Coulomb test; options change what the model honours (limitForce clips; tangential_damping off removes c_t;
-    ktToKnUser gives k_t = 0.285714286 k_n; no_history replaces the spring by capped viscous friction)."""
-    from ..laws import compose
-    from ..laws.law import replace_submodels
-    options = dict(options or {})
-    check_options(law_name, options)
-    overrides = dict(DIALECTS[law_name])
-    honoured = {key: value for key, value in options.items() if MODELS[law_name] in OPTIONS[key][1]}
-    if honoured.get("limitForce") == "on":
-        overrides["end"] = "no-tension"
-    if honoured.get("tangential_damping") == "off":
-        overrides["tangential-damping"] = "none"
-    if honoured.get("ktToKnUser") == "on":
-        overrides["tangential"] = f"linear:{KT_TO_KN_USER}"
-    if honoured.get("tangential") == "no_history":
-        overrides["tangential"] = "viscous:linear" if MODELS[law_name] == "hooke" else "viscous:mindlin"
-    return replace_submodels(compose(law_name), overrides, "liggghts")
-
-
-def binary():
-    return os.environ.get(BINARY_VARIABLE, "liggghts")
-
-
-def available():
-    return shutil.which(binary()) is not None
-
-
-def version():
-    return _version(binary())
-
-
-@lru_cache(maxsize=None)
-def _version(path):
-    """'3.8.0' from the banner the binary prints."""
-    try:
-        out = subprocess.run([path, "-h"], capture_output=True, text=True, timeout=30, stdin=subprocess.DEVNULL)
-    except (OSError, subprocess.TimeoutExpired):
-        return "unknown"
-    match = re.search(r"LIGGGHTS-PUBLIC ([0-9.]+)", out.stdout + out.stderr)
-    return match.group(1) if match else "unknown"
-
-
-def supports(law_name):
-    return law_name in MODELS and law_name in DIALECTS
-
-
 def law_stiffness(scene):
     """k_n of LIGGGHTS hooke: 16/15 sqrt(R) E* (15 m V_c^2/(16 sqrt(R) E*))^1/5 with V_c = the scene speed."""
-    from ..submodels.calibration import hertz_equivalent_stiffness
+    from ...submodels.calibration import hertz_equivalent_stiffness
     c = scene.contact
     return hertz_equivalent_stiffness(c.E_star, c.radius, c.mass, scene.speed)
 
@@ -145,7 +55,7 @@ def settings(law, scene, e_n, options=None):
         properties.append(("characteristicVelocity", "scalar", scene.speed))
     if model == "hooke/hysteresis":
         restitution = 1.0                               # no viscous part: all dissipation by hysteresis
-        from ..submodels.normal.liggghts_hysteresis import LudingHysteresis
+        from ...submodels.normal.liggghts_hysteresis import LudingHysteresis
         k1 = law_stiffness(scene)
         k2max, d_lim = LudingHysteresis.stiffness_and_limit(k1, scene.contact, e_n, scene.speed)
         depth = d_lim * (k2max - k1) / (k2max * 2 * scene.radius)
@@ -175,7 +85,7 @@ def deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, 
     atoms = [{"x": i * spacing, "vx": float(vt), "vz": -float(vn), "omegay": float(w)}
              for i, (vn, vt, w) in enumerate(zip(v_n0, v_t0, omega0))]
     chunk = max(10, int(steps_per_contact // 10))
-    text = render("liggghts/batch.in.j2", harness_version=__version__, law=law.name, model=model, e_n=restitution,
+    text = render(TEMPLATES, "batch.in.j2", harness_version=__version__, law=law.name, model=model, e_n=restitution,
                   atoms=atoms, x_lo=-2.0 * radius, x_hi=len(atoms) * spacing, box_half=2.0 * radius,
                   z_lo=-radius, z_hi=4.0 * radius, skin=0.5 * radius, E=scene.E, nu=scene.nu, mu=scene.mu,
                   properties=properties, tangential=tangential, options=options, dt=dt, radius=radius,

@@ -1,0 +1,6 @@
+"""`python -m harness`: the command line."""
+import sys
+
+from .commands import main
+
+sys.exit(main())

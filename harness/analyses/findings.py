@@ -1,0 +1,73 @@
+"""Engine behaviour worth a user's attention, from the results table: energy gained, the invariant breaks a row's
+status does not already say, failed runs."""
+import numpy as np
+import pandas as pd
+
+from .invariants import ENERGY_TOLERANCE, cause, invariant_breaks
+
+
+def tangential_energy_ratio(frame):
+    """(m v_t1^2 + I omega1^2)/(m v_t0^2 + I omega0^2): a contact can only take energy out of these motions."""
+    mass = 4.0 / 3.0 * np.pi * frame.radius ** 3 * frame.rho
+    inertia = 0.4 * mass * frame.radius ** 2
+    before = mass * frame.v_t0 ** 2 + inertia * frame.omega0 ** 2
+    after = mass * frame.v_t1 ** 2 + inertia * frame.omega1 ** 2
+    return (after / before.where(before > 0)).astype(float)
+
+
+def _because(row, kind):
+    known = cause(row.dialect, row.model, kind)
+    return f"; known cause: {known}" if known else ""
+
+
+def findings(frame):
+    """Engine behaviour worth a user's attention: kinetic energy gained (in all, or in the tangential and
+    rotational motion, which friction can only slow), the other invariant breaks of harness.invariants that a row's
+    status does not already say (non-finite values, long contact, normal-impact e_n off its target, a tangential
+    force without friction), failed runs."""
+    out = []
+    frame = frame.reset_index(drop=True)          # invariant breaks point at rows by label
+    frame = frame.assign(kt_ratio=tangential_energy_ratio(frame))
+    for kind, column, what in (("energy gain", "ke_ratio", "kinetic energy"),
+                               ("tangential energy gain", "kt_ratio", "tangential + rotational kinetic energy")):
+        gain = frame[(frame[column] > 1.0 + ENERGY_TOLERANCE) & (frame.status == "ok")]
+        for (engine, dialect), group in gain.groupby(["engine", "dialect"], sort=False):
+            worst = group.loc[group[column].idxmax()]
+            out.append({"engine": engine, "dialect": dialect, "kind": kind,
+                        "detail": f"{len(group)} impacts end with more {what} than they began with; worst ratio "
+                                  f"{worst[column]:.6f} at e_n = {worst.e_n_target:g}, angle {worst.theta_deg:g} deg "
+                                  f"(v_t1 = {worst.v_t1:.4f} m/s from v_t0 = {worst.v_t0:.4f})"
+                                  + _because(worst, "energy gain")})
+    breaks = invariant_breaks(frame)
+    breaks = breaks[breaks.kind.isin(("non-finite result", "long contact", "e_n off target", "friction at mu = 0"))
+                    & (frame.loc[breaks.row, "status"].to_numpy() == "ok")]
+    for (engine, dialect, _, kind), group in breaks.groupby(["engine", "dialect", "model", "kind"], sort=False):
+        rows = frame.loc[group.row]
+        out.append({"engine": engine, "dialect": dialect, "kind": kind,
+                    "detail": _break_detail(kind, group, rows) + _because(rows.iloc[0], kind)})
+    failed = frame[frame.status != "ok"]
+    for (engine, dialect, status), group in failed.groupby(["engine", "dialect", "status"], sort=False):
+        out.append({"engine": engine, "dialect": dialect, "kind": status,
+                    "detail": f"{len(group)} impacts: {group.message.iloc[0]}"})
+    return pd.DataFrame(out, columns=["engine", "dialect", "kind", "detail"])
+
+
+def _break_detail(kind, group, rows):
+    """One line for a group of invariant breaks of one kind."""
+    if kind == "e_n off target":
+        miss = (group.value - group.limit).abs() / group.limit
+        worst = group.loc[miss.idxmax()]
+        return (f"{len(group)} normal impacts end with e_n more than 1% from the target; worst {worst.value:.4g} for "
+                f"{worst.limit:g}")
+    if kind == "long contact":
+        worst = group.loc[(group.value / group.limit).idxmax()]
+        return (f"{len(group)} impacts stay in contact longer than the bound; worst {worst.value:.3g} s against "
+                f"{worst.limit:.3g} s at e_n = {worst.e_n_target:g}, angle {worst.theta_deg:g} deg")
+    if kind == "friction at mu = 0":
+        worst = rows.loc[group.loc[group.value.idxmax()].row]
+        return (f"{len(group)} impacts with mu = 0 change their tangential velocity or spin; worst v_t1 = "
+                f"{worst.v_t1:.6g} m/s from {worst.v_t0:.6g}, omega1 = {worst.omega1:.4g} rad/s at angle "
+                f"{worst.theta_deg:g} deg")
+    worst = rows.iloc[0]
+    return (f"{len(group)} impacts end with non-finite values, first at e_n = {worst.e_n_target:g}, angle "
+            f"{worst.theta_deg:g} deg")

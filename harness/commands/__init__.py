@@ -1,0 +1,48 @@
+"""The command line: one thin module per command; bad input ends in one line on stderr and exit code 2."""
+import argparse
+import sys
+
+from .. import __version__
+from ..errors import UserError
+
+EXIT_OK, EXIT_DISAGREE, EXIT_USAGE, EXIT_ENGINE, EXIT_INTERRUPTED = 0, 1, 2, 3, 130
+EXIT_CODES = """exit codes:
+  0  done; every compared engine agrees with its dialect
+  1  an engine disagrees with its dialect, or the regression check found a metric outside tolerance
+  2  bad input (one line on stderr says which)
+  3  an engine asked for by name could not run, or one of its runs failed (its log tail is printed)
+  130 interrupted; finished results were kept"""
+
+
+def describe(sub, name, summary, example):
+    """A sub-command whose --help carries its summary, an example and the exit codes."""
+    return sub.add_parser(name, help=summary, description=summary[0].upper() + summary[1:] + ".",
+                          epilog=f"example:\n  {example}\n\n{EXIT_CODES}",
+                          formatter_class=argparse.RawDescriptionHelpFormatter)
+
+
+def build_parser():
+    from . import check, compare, cost, models, paper, render, report, run
+    from .options import Parser
+    parser = Parser(prog="harness", formatter_class=argparse.RawDescriptionHelpFormatter,
+                    description="Cross-validate DEM contact force models against the literature (Thornton, Cummins "
+                                "& Cleary 2013) and against LIGGGHTS and YADE.",
+                    epilog=f"example:\n  harness compare --model hertz-mindlin\n\n{EXIT_CODES}")
+    parser.add_argument("--version", action="version", version=f"harness {__version__}")
+    sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND", parser_class=Parser)
+    for module in (models, run, compare, cost, paper, render, report, check):
+        module.add(sub, describe)
+    return parser
+
+
+def main(argv=None):
+    """Parse, run one command, return its exit code; a user's mistake is one line and 2, Ctrl-C is 130."""
+    try:
+        args = build_parser().parse_args(argv)
+        return args.func(args)
+    except UserError as exc:
+        print(f"harness: error: {exc}", file=sys.stderr)
+        return EXIT_USAGE
+    except KeyboardInterrupt:
+        print("harness: interrupted; finished results were kept", file=sys.stderr)
+        return EXIT_INTERRUPTED

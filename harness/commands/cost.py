@@ -1,0 +1,69 @@
+"""`harness cost`: the accuracy-against-cost ladder; its tables, DIR/cost.csv and the report."""
+import os
+
+import pandas as pd
+
+from ..analyses.cost import COLUMNS, LADDER, cost_table
+from ..api import statuses
+from ..engines import ENGINES
+from ..errors import UserError
+from ..outputs import COST, save_cost
+from ..request import Request
+from ..results import write_csv
+from ..views.html import rebuild
+from ..views.terminal import print_cost
+from . import EXIT_ENGINE, EXIT_OK
+from .options import add_engine_options, add_scene_options, check_output_directory, keywords
+
+EXAMPLE = "harness cost --model hertz-mindlin --en 0.9,0.3 --angles 0:80:20 -o cost/"
+
+
+def add(sub, describe):
+    p = describe(sub, "cost", "accuracy against time: a ladder of steps per contact for the paper law, each engine's "
+                              "dialect and each engine; cost.csv and the report", EXAMPLE)
+    p.add_argument("--model", required=True, help="law name (see `harness models`)")
+    add_engine_options(p)
+    add_scene_options(p, resolution=False)
+    p.add_argument("--ladder", default=None, metavar="LIST",
+                   help="steps per contact to try (default 5,10,20,50,100,200,500,1000,5000)")
+    p.add_argument("-o", "--output", default="harness-out", metavar="DIR", help="output directory (default %(default)s)")
+    p.add_argument("--quiet", action="store_true", help="print only where the files are")
+    p.set_defaults(func=main)
+
+
+def ladder_from_text(text):
+    """--ladder '5,10,20': whole steps per contact >= 1, ascending, no repeats."""
+    if text is None:
+        return LADDER
+    try:
+        rungs = tuple(int(part) for part in text.split(",") if part.strip())
+    except ValueError:
+        raise UserError(f"--ladder takes whole numbers of steps per contact, e.g. 5,10,100; got {text!r}") from None
+    if not rungs or min(rungs) < 1 or list(rungs) != sorted(set(rungs)):
+        raise UserError(f"--ladder needs ascending whole numbers >= 1 without repeats, got {text!r}")
+    return rungs
+
+
+def main(args):
+    """Run the ladder; 0 when every run succeeded or was refused with its reason, 3 when an engine run failed."""
+    request = Request.from_keywords(args.model, **keywords(args, resolution=False))
+    law, scene, ladder = request.law, request.scene, ladder_from_text(args.ladder)
+    check_output_directory(args.output)
+    found = statuses(request)
+    adapters = {s.name: (ENGINES[s.name], request.engine_options.get(s.name, {})) for s in found if s.available}
+    for name, (adapter, options) in adapters.items():
+        adapter.dialect(law.name, options)                    # bad options: exit 2 before anything runs
+    skipped = [(s.name, s.reason) for s in found if not s.available]
+    os.makedirs(args.output, exist_ok=True)
+    overrides = dict(request.overrides)
+    save_cost(args.output, pd.DataFrame(columns=COLUMNS), {}, law, scene, overrides, skipped, [])
+    table, failures, uncertainty = cost_table(law, scene, adapters, ladder,
+                                              keep=lambda so_far: write_csv(so_far, os.path.join(args.output, COST)))
+    save_cost(args.output, table, uncertainty, law, scene, overrides, skipped, failures)
+    report = rebuild(args.output)
+    if not args.quiet:
+        print_cost(table, uncertainty, law, scene, ladder, skipped, failures)
+        print()
+    print(f"wrote {os.path.join(args.output, COST)} and {report}")
+    asked = set(request.engines or ()) - {"reference"}
+    return EXIT_ENGINE if failures or asked & {name for name, _ in skipped} else EXIT_OK

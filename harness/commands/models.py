@@ -1,0 +1,40 @@
+"""`harness models`: the laws, their sub-models and the engines that run each."""
+import json
+
+from ..engines import ENGINES
+from ..laws import LAWS
+from ..materials import MATERIALS
+from . import EXIT_OK
+
+
+def add(sub, describe):
+    p = describe(sub, "models", "the laws, their sub-models and the engines that support each", "harness models --json")
+    p.add_argument("--json", action="store_true", help="one machine-readable list")
+    p.set_defaults(func=main)
+
+
+def support(law_name):
+    """{engine: the engine's model of the law, or None} for every external engine."""
+    return {name: (engine.MODELS[law_name] if engine.supports(law_name) else None)
+            for name, engine in ENGINES.items() if name != "reference"}
+
+
+def main(args):
+    if args.json:
+        print(json.dumps([{"name": law.name, "provisional": law.provisional, "summary": law.summary,
+                           "submodels": law.describe(), "engines": {"reference": "paper", **support(law.name)}}
+                          for law in LAWS.values()], indent=2))
+        return EXIT_OK
+    rows = [("law", "normal", "damping", "end", "tangential", "tangential dashpot", "engines")]
+    for law in LAWS.values():
+        d = law.describe()
+        engines = ", ".join(["reference"] + [f"{e} ({m})" for e, m in support(law.name).items() if m])
+        rows.append((law.name + (" [provisional]" if law.provisional else ""), d["normal"], d["damping"], d["end"],
+                     d["tangential"], d["tangential-damping"], engines))
+    widths = [max(len(row[i]) for row in rows) for i in range(6)]
+    for row in rows:
+        print("  ".join(cell.ljust(w) for cell, w in zip(row, widths)) + "  " + row[6])
+    print("\n[provisional]: the paper defines the law but its equations are not available; harness runs a "
+          "reconstruction (docs/laws.md).")
+    print("materials: " + ", ".join(MATERIALS) + " (default tcc13: the paper's sphere and wall)")
+    return EXIT_OK

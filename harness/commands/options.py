@@ -1,0 +1,164 @@
+"""The options commands share: argument types, the scene and resolution options, engine options, and the keywords
+they become (the Python API's names, harness.request)."""
+import argparse
+import math
+import os
+
+from ..errors import UserError
+from ..scene import DEFAULT_EN
+
+
+class Parser(argparse.ArgumentParser):
+    """argparse that reports a usage error as one line and exit code 2."""
+
+    def error(self, message):
+        raise UserError(message)
+
+
+def number(text):
+    """A finite float (the scene validates ranges)."""
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a number: {text!r}") from None
+    if not math.isfinite(value):
+        raise argparse.ArgumentTypeError(f"not a finite number: {text!r}")
+    return value
+
+
+def number_list(text):
+    """Comma-separated finite floats: '0.9,0.5,0.1'."""
+    return tuple(number(part) for part in text.split(",") if part.strip() != "") or _empty(text)
+
+
+def _empty(text):
+    raise argparse.ArgumentTypeError(f"empty list: {text!r}")
+
+
+def angle_list(text):
+    """'A,B,C' or 'A:B:STEP' (inclusive of B when it falls on the grid), degrees."""
+    if ":" not in text:
+        return number_list(text)
+    parts = text.split(":")
+    if len(parts) != 3:
+        raise argparse.ArgumentTypeError(f"angle range must be A:B:STEP, got {text!r}")
+    start, stop, step = (number(p) for p in parts)
+    if step <= 0 or stop < start:
+        raise argparse.ArgumentTypeError(f"angle range needs STEP > 0 and B >= A, got {text!r}")
+    count = int(math.floor((stop - start) / step + 1e-9)) + 1
+    if count > 100000:
+        raise argparse.ArgumentTypeError(f"angle range has too many angles ({count})")
+    return tuple(round(start + i * step, 12) for i in range(count))
+
+
+def submodel(text):
+    """KEY=VALUE sub-model override, e.g. tangential=mindlin:total."""
+    key, sep, value = text.partition("=")
+    if not sep or not key or not value:
+        raise argparse.ArgumentTypeError(f"expected KEY=VALUE, got {text!r}")
+    return key.strip(), value.strip()
+
+
+def engine_option(text):
+    """ENGINE:KEY=VALUE, e.g. liggghts:limitForce=on."""
+    engine, sep, rest = text.partition(":")
+    key, sep2, value = rest.partition("=")
+    if not (sep and sep2 and engine and key and value):
+        raise argparse.ArgumentTypeError(f"expected ENGINE:KEY=VALUE, got {text!r}")
+    return engine.strip(), key.strip(), value.strip()
+
+
+def add_scene_options(parser, resolution=True):
+    """Options that describe the scene, the law's sub-models, the engines' options and (unless the command sets its
+    own) the time step."""
+    g = parser.add_argument_group("scene")
+    g.add_argument("--en", type=number_list, default=DEFAULT_EN, metavar="LIST",
+                   help="target normal restitution coefficients, e.g. 0.9,0.5,0.1 (default: the paper's "
+                        f"{','.join(f'{e:g}' for e in DEFAULT_EN)})")
+    where = g.add_mutually_exclusive_group()
+    where.add_argument("--angles", type=angle_list, metavar="A,B,..|A:B:STEP",
+                       help="impact angles from the normal in degrees (default 1:89:2, 45 angles)")
+    where.add_argument("--psi", type=number_list, metavar="LIST",
+                       help="the paper's normalised impact angles Psi1* = 2 V_t/(mu (1 + e_n) V_n) at normal speed V_n")
+    where.add_argument("--vt", type=number_list, metavar="LIST", help="tangential speeds V_t [m/s] at normal speed V_n")
+    g.add_argument("--mu", type=number, help="friction coefficient (default: the material's)")
+    g.add_argument("--material", default="tcc13",
+                   help="material preset (see `harness models`); default tcc13, the paper's sphere and wall")
+    for name, unit in (("radius", "m"), ("E", "Pa"), ("nu", "-"), ("rho", "kg/m^3")):
+        g.add_argument(f"--{name}", type=number, help=f"override the material's {name} [{unit}]")
+    speed = g.add_mutually_exclusive_group()
+    speed.add_argument("--speed", type=number, metavar="V",
+                       help="impact speed [m/s]: the resultant with --angles, the normal speed with --psi or --vt "
+                            "(default 5, the paper's)")
+    speed.add_argument("--normal-speed", type=number, metavar="V",
+                       help="hold the normal speed V_n [m/s] fixed, V_t = V_n tan(angle) (Kratos' way of drawing the "
+                            "paper's figures)")
+    g.add_argument("--omega0", type=number, default=0.0, help="initial spin omega_y [rad/s] (default 0)")
+    g.add_argument("--gravity", type=number, default=0.0, help="gravity towards the wall [m/s^2] (default 0)")
+    g.add_argument("--wall", default="same", metavar="same|rigid|MATERIAL",
+                   help="wall of the same material (the paper's case), rigid, or a preset material")
+    g.add_argument("--with", dest="overrides", type=submodel, action="append", default=[], metavar="KEY=VALUE",
+                   help="replace one sub-model: normal=, damping=, end=, tangential=, tangential-damping= "
+                        "(e.g. --with tangential=mindlin:incremental)")
+    if not resolution:
+        return
+    res = parser.add_argument_group("resolution")
+    how = res.add_mutually_exclusive_group()
+    how.add_argument("--steps-per-contact", type=int, metavar="N",
+                     help="time step = estimated contact time / N (default 1000)")
+    how.add_argument("--dt", type=number, metavar="SECONDS",
+                     help="one time step in seconds for every law and e_n (refused above the stability limit)")
+    how.add_argument("--converged", action="store_true",
+                     help="integrate the exact limit: results within ~1e-6 of the h -> 0 solution")
+
+
+def add_engine_options(parser):
+    """--engines and --engine-option, as every engine declares its options (docs/engines.md)."""
+    from ..engines import ENGINES
+    declared = "; ".join(f"{name}:{key}={'|'.join(o.values)}" for name, engine in ENGINES.items()
+                         for key, o in engine.OPTIONS.items())
+    parser.add_argument("--engines", default=None, metavar="LIST",
+                        help=f"comma-separated engines of {', '.join(ENGINES)} (default: every engine that supports "
+                             "the law; `reference` alone runs the reference solver only)")
+    parser.add_argument("--engine-option", dest="engine_options", type=engine_option, action="append", default=[],
+                        metavar="ENGINE:KEY=VALUE", help=f"an engine's option, repeatable: {declared}")
+
+
+def engines_from(text):
+    """--engines LIST -> tuple of names (None: the default)."""
+    from ..engines import get_engine
+    if text is None:
+        return None
+    names = tuple(n.strip() for n in text.split(",") if n.strip())
+    if not names:
+        raise UserError(f"--engines needs at least one engine name, got {text!r}")
+    for name in names:
+        get_engine(name)
+    return names
+
+
+def keywords(args, resolution=True):
+    """The options as the API's keywords (harness.request.Request.from_keywords)."""
+    out = dict(en=args.en, angles=args.angles, psi=args.psi, vt=args.vt, mu=args.mu, material=args.material,
+               radius=args.radius, E=args.E, nu=args.nu, rho=args.rho, speed=args.speed,
+               normal_speed=args.normal_speed, omega0=args.omega0, gravity=args.gravity, wall=args.wall,
+               overrides=tuple(args.overrides))
+    if resolution:
+        out.update(steps_per_contact=args.steps_per_contact, dt=args.dt, converged=args.converged)
+    if hasattr(args, "engines"):
+        out.update(engines=engines_from(args.engines), engine_options=args.engine_options)
+    return out
+
+
+def check_output_file(path):
+    """A results file the user names: its directory must exist and it must not be a directory."""
+    directory = os.path.dirname(os.path.abspath(path))
+    if not os.path.isdir(directory):
+        raise UserError(f"cannot write {path}: directory {directory} does not exist")
+    if os.path.isdir(path):
+        raise UserError(f"cannot write {path}: it is a directory")
+
+
+def check_output_directory(path):
+    if os.path.exists(path) and not os.path.isdir(path):
+        raise UserError(f"output {path} exists and is not a directory")

@@ -1,0 +1,49 @@
+"""`harness paper`: the paper's figure set on its scene: an HTML page and three CSVs."""
+import os
+import sys
+
+from ..errors import UserError
+from ..laws import LAWS
+from ..paper import figure_set
+from ..results import write_csv
+from ..views.paper_html import NORMAL, OBLIQUE, SLIDING, write_paper_report
+from ..views.terminal import text_table
+from . import EXIT_OK
+from .options import check_output_directory
+
+EXAMPLE = "harness paper -o paper/"
+
+
+def add(sub, describe):
+    p = describe(sub, "paper", "the paper's figure set: Psi2*, Omega*, e_t against Psi1* per law at its e_n, contact "
+                               "duration and peak force against e_n, where each law slides throughout", EXAMPLE)
+    p.add_argument("--laws", default=None, metavar="LIST", help="comma-separated laws (default: every law)")
+    p.add_argument("--steps-per-contact", type=int, default=2000, metavar="N", help="resolution (default 2000)")
+    p.add_argument("-o", "--output", default="harness-paper", metavar="DIR", help="output directory (default %(default)s)")
+    p.add_argument("--quiet", action="store_true", help="print only where the page is")
+    p.set_defaults(func=main)
+
+
+def main(args):
+    """The paper's figure set: paper.csv, paper-normal.csv, paper-sliding.csv and paper.html in DIR."""
+    laws = tuple(LAWS) if args.laws is None else tuple(n.strip() for n in args.laws.split(",") if n.strip())
+    unknown = [n for n in laws if n not in LAWS]
+    if unknown or not laws:
+        raise UserError(f"unknown law(s) {', '.join(unknown) or args.laws!r}; known: {', '.join(LAWS)}")
+    if args.steps_per_contact < 100:
+        raise UserError(f"--steps-per-contact must be >= 100 for the paper's figures, got {args.steps_per_contact}")
+    check_output_directory(args.output)
+    report = (lambda what: None) if args.quiet else (lambda what: print(f"  done: {what}", file=sys.stderr))
+    oblique, normal, sliding = figure_set(laws, args.steps_per_contact, progress=report)
+    os.makedirs(args.output, exist_ok=True)
+    write_csv(oblique, os.path.join(args.output, OBLIQUE))
+    for table, name in ((normal, NORMAL), (sliding, SLIDING)):
+        write_csv(table, os.path.join(args.output, name))
+    path = write_paper_report(args.output, oblique, normal, sliding, "harness " + " ".join(sys.argv[1:]))
+    if not args.quiet:
+        print(text_table(sliding, ["model", "e_n_target", "simulated", "derived", "difference"],
+                         {"simulated": "{:.4f}", "derived": "{:.4f}", "difference": "{:+.1e}"}))
+    print(f"wrote {path}")
+    return EXIT_OK
+
+

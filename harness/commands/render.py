@@ -1,0 +1,40 @@
+"""`harness render`: an engine's input deck or script for every e_n of the scene, without running it."""
+import os
+
+from ..engines import get_engine
+from ..errors import UserError
+from ..plan import engine_runs
+from ..request import Request
+from . import EXIT_OK
+from .options import add_scene_options, check_output_directory, engine_option, keywords
+
+EXAMPLE = "harness render --model hertz-mindlin --engine liggghts --en 0.5 -o decks/"
+
+
+def add(sub, describe):
+    p = describe(sub, "render", "write an engine's input deck/script for the scene without running it", EXAMPLE)
+    p.add_argument("--model", required=True, help="law name (see `harness models`)")
+    p.add_argument("--engine", required=True, help="the engine whose input to write (liggghts, yade)")
+    p.add_argument("--engine-option", dest="engine_options", type=engine_option, action="append", default=[],
+                   metavar="ENGINE:KEY=VALUE", help="an engine's option (see `harness compare --help`)")
+    add_scene_options(p)
+    p.add_argument("-o", "--output", required=True, metavar="DIR", help="directory for the inputs")
+    p.add_argument("--quiet", action="store_true", help="print nothing on success")
+    p.set_defaults(func=main)
+
+
+def main(args):
+    engine = get_engine(args.engine)
+    request = Request.from_keywords(args.model, engine_options=args.engine_options, **keywords(args))
+    if not engine.supports(request.law.name):
+        raise UserError(f"{args.engine} has no counterpart of {request.law.name}")
+    check_output_directory(args.output)
+    texts = [engine.render(run) for run in engine_runs(engine, request.law, request.scene, request.resolution,
+                                                       request.engine_options.get(args.engine))]
+    os.makedirs(args.output, exist_ok=True)
+    for name, text in texts:
+        with open(os.path.join(args.output, name), "w") as handle:
+            handle.write(text)
+    if not args.quiet:
+        print("\n".join(os.path.join(args.output, name) for name, _ in texts))
+    return EXIT_OK

@@ -1,0 +1,15 @@
+"""`harness report DIR`: rebuild DIR/report.html from the files of a compare or cost directory, simulating nothing."""
+from ..views.html import rebuild
+from . import EXIT_OK
+
+
+def add(sub, describe):
+    p = describe(sub, "report", "rebuild DIR/report.html from a compare or cost directory, simulating nothing",
+                 "harness report harness-out")
+    p.add_argument("directory", metavar="DIR")
+    p.set_defaults(func=main)
+
+
+def main(args):
+    print(f"wrote {rebuild(args.directory)}")
+    return EXIT_OK

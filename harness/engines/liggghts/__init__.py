@@ -1,0 +1,39 @@
+"""LIGGGHTS 3.8.0 as an engine (docs/engines.md): one batched deck per (law, e_n), run as a subprocess; its dialects
+are in dialect.py, its input and output in deck.py, its binary in binary.py."""
+from ..batches import render_input, run_batch_rows
+from ..protocol import Status
+from .binary import BINARY_VARIABLE, available, binary, missing_reason, version
+from .deck import (OBSERVE_DUMP, TEMPLATES, deck, read_dump, read_observation, render_batch, run_batch, run_deck,
+                   settings)
+from .dialect import DIALECTS, MODELS, OPTIONS, dialect
+
+NAME = "liggghts"
+INPUT_SUFFIX = ".in"
+
+
+def supports(law_name):
+    return law_name in MODELS and law_name in DIALECTS
+
+
+def status(law_name, options=None):
+    """Installed (the binary named, or `liggghts` on PATH), with a dialect of the law?"""
+    if not available():
+        return Status(NAME, False, missing_reason())
+    if not supports(law_name):
+        return Status(NAME, False, f"liggghts has no counterpart of {law_name}")
+    return Status(NAME, True)
+
+
+def run(runs):
+    """(results frame, failure or None) of each run, one deck each."""
+    return [run_batch_rows(NAME, version(), run_batch, run) for run in runs]
+
+
+def render(run):
+    """(file name, deck text) of one run (harness render)."""
+    return render_input(NAME, INPUT_SUFFIX, render_batch, run)
+
+
+__all__ = ["BINARY_VARIABLE", "DIALECTS", "MODELS", "NAME", "OBSERVE_DUMP", "OPTIONS", "TEMPLATES", "available",
+           "binary", "deck", "dialect", "read_dump", "read_observation", "render", "render_batch", "run", "run_batch", "run_deck",
+           "settings", "status", "supports", "version"]

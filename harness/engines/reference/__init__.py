@@ -1,0 +1,49 @@
+"""The reference solver as an engine (docs/engines.md): it runs any law, the paper's or an engine's dialect, in the
+compiled kernels of harness/solver, at a number of steps per contact, a time step or converged."""
+from ... import __version__
+from ...laws import LAWS, compose
+from ..protocol import Status
+
+NAME = "reference"
+INPUT_SUFFIX = ""
+OPTIONS = {}
+MODELS = {name: "paper" for name in LAWS}
+
+
+def available(option=None):
+    return True
+
+
+def status(law_name, options=None):
+    return Status(NAME, True)
+
+
+def version():
+    return __version__
+
+
+def supports(law_name):
+    return law_name in LAWS
+
+
+def dialect(law_name, options=None):
+    """The paper's law: the reference's own formulas."""
+    return compose(law_name)
+
+
+def run(runs):
+    """(results frame, None) of each run: `simulate` of its dialect at its resolution."""
+    from ...plan import CONVERGED
+    from ...solver.reference import simulate
+    out = []
+    for run in runs:
+        converged = run.resolution == CONVERGED
+        frame, _ = simulate(run.dialect, run.scene, converged=converged,
+                            steps_per_contact=1000 if converged else run.resolution)
+        out.append((frame, None))
+    return out
+
+
+def render(run):
+    from ...errors import UserError
+    raise UserError("the reference solver reads no input file; `harness render` writes engines' inputs")

@@ -1,0 +1,49 @@
+"""YADE 2023.02a as an engine (docs/engines.md): one batched script per (law, e_n), run as a Python module without the
+yade launcher; its dialects are in dialect.py, its input and output in script.py, its interpreter and flavours in
+flavours.py. It also checks its own arithmetic (precision.py)."""
+from ..batches import render_input, run_batch_rows
+from ..protocol import Status
+from .dialect import DIALECTS, MODELS, OPTIONS, check_options, dialect
+from .flavours import (ARITHMETIC, FLAVOURS, PYTHON_VARIABLE, available, environment, flavour_path, missing_reason,
+                       python, version)
+from .precision import precision_gap
+from .script import (OBSERVE_FILE, TEMPLATES, read_observation, read_result, render_batch, run_batch, run_script,
+                     script)
+
+NAME = "yade"
+INPUT_SUFFIX = ".py"
+
+
+def supports(law_name):
+    return law_name in MODELS and law_name in DIALECTS
+
+
+def status(law_name, options=None):
+    """Debian's python3.11 and the chosen flavour's module directory, with a dialect of the law?"""
+    precision = check_options(options).get("precision", "double")
+    if not available(precision):
+        return Status(NAME, False, missing_reason(precision))
+    if not supports(law_name):
+        return Status(NAME, False, f"yade has no counterpart of {law_name}")
+    return Status(NAME, True)
+
+
+def run(runs):
+    """(results frame, failure or None) of each run, one script each."""
+    return [run_batch_rows(NAME, version(), run_batch, run) for run in runs]
+
+
+def render(run):
+    """(file name, script text) of one run (harness render)."""
+    return render_input(NAME, INPUT_SUFFIX, render_batch, run)
+
+
+def arithmetic(options):
+    """The floating-point arithmetic of a run with these options."""
+    return ARITHMETIC[check_options(options).get("precision", "double")]
+
+
+__all__ = ["ARITHMETIC", "DIALECTS", "FLAVOURS", "MODELS", "NAME", "OBSERVE_FILE", "OPTIONS", "PYTHON_VARIABLE", "TEMPLATES",
+           "arithmetic", "available", "dialect", "environment", "flavour_path", "precision_gap", "python",
+           "read_observation", "read_result", "render", "render_batch", "run", "run_batch", "run_script", "script",
+           "status", "supports", "version"]

@@ -1,0 +1,41 @@
+"""What YADE 2023.02a computes for each law, as a composition of sub-models (docs/yade-dialect.md), and its options."""
+from ..protocol import Option, check_options as check_declared
+
+MODELS = {"hertz-mindlin": "Law2_ScGeom_MindlinPhys_Mindlin", "linear-spring-dashpot": "Law2_ScGeom_ViscElPhys_Basic",
+          "walton-braun": "Law2_ScGeom_LudingPhys_Basic"}
+DIALECTS = {                    # sub-models that make the paper law compute what YADE computes
+    "hertz-mindlin": {"damping": "tsuji:appendix-b", "end": "no-tension", "tangential": "mindlin:incremental",
+                      "tangential-damping": "normal-ratio", "integrator": "leapfrog", "lever": "1",
+                      "slip": "noratch"},
+    "linear-spring-dashpot": {"damping": "linear:half-mass", "end": "no-tension", "tangential": "linear:2/7",
+                              "tangential-damping": "proportional", "integrator": "leapfrog", "lever": "1"},
+    "walton-braun": {"normal": "yade-luding", "end": "no-tension", "tangential": "linear:2/7",
+                     "tangential-damping": "none", "integrator": "leapfrog", "lever": "0.5"},
+}
+OPTIONS = {                     # declared options, default first (`--engine-option yade:KEY=VALUE`)
+    "precision": Option(("double", "long-double", "float128", "mpfr150"),
+                        "the YADE flavour (arithmetic) that runs; inputs go in as exact decimal strings"),
+    "linear": Option(("viscel", "cundall-strack"),
+                     "YADE's law for linear-spring-dashpot: ViscEl, or the elastic CundallStrack"),
+}
+CUNDALL_STRACK = {             # K_n = E R, K_s = nu K_n, no damping (e = 1 whatever e_n), noRatch slip with the
+    "normal": "yade-cundall-strack", "damping": "none", "end": "tension",  # default wall geometry (r1 = R),
+    "tangential": "linear:nu", "tangential-damping": "none",                 # torque lever R - d/2
+    "integrator": "leapfrog", "lever": "0.5", "slip": "noratch-sphere"}
+
+
+def dialect(law_name, options=None):
+    """The law as YADE 2023.02a computes it: leapfrog with forces from the half-step velocities, contact from
+    overlap >= 0 until the first negative overlap, App. B damping with the normal force clipped at 0, incremental
+    8G*a shear spring (not reduced as a falls), dashpot after the Coulomb test, torque lever R - d, noRatch slip."""
+    from ...laws import compose
+    from ...laws.law import replace_submodels
+    options = check_options(options)
+    if law_name == "linear-spring-dashpot" and options.get("linear") == "cundall-strack":
+        return replace_submodels(compose(law_name), CUNDALL_STRACK, "yade")
+    return replace_submodels(compose(law_name), DIALECTS[law_name], "yade")
+
+
+def check_options(options):
+    """The YADE options given, validated; one clear line for a bad one."""
+    return check_declared("yade", OPTIONS, options)

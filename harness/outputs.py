@@ -1,0 +1,120 @@
+"""A results directory as data first: results.csv plus the other tables a comparison produced, saved as files; the
+HTML report is always rebuilt from those files, so `harness report DIR` simulates nothing."""
+import json
+import os
+from dataclasses import asdict
+
+import numpy as np
+import pandas as pd
+
+from .engines.batches import FailedRun
+from .errors import UserError
+from .files import write_text
+from .results import read_csv, write_csv
+
+RUN, ATTRIBUTION, HISTORIES, FAILURES, PRECISION = ("run.json", "attribution.csv", "histories.csv", "failures.csv",
+                                                    "precision.csv")
+SLIDING = "sliding.csv"
+COST, COST_RUN, COST_TRUTH = "cost.csv", "cost.json", "cost-truth.csv"
+
+
+def save_comparison(out_dir, comparison):
+    """Write everything beyond results.csv that the report shows (results.csv is written as the runs finish)."""
+    scene_fields = {k: v for k, v in asdict(comparison.scene).items() if k != "extra"}
+    write_text(os.path.join(out_dir, RUN), json.dumps(
+        {"model": comparison.law.name, "overrides": comparison.overrides, "scene": scene_fields,
+         "skipped": comparison.skipped, "engine_options": comparison.engine_options,
+         "requested": comparison.requested}, indent=1))
+    tables = [table.assign(comparison=name) for name, table in comparison.attribution.items()]
+    _table(out_dir, ATTRIBUTION, pd.concat(tables, ignore_index=True) if tables else None)
+    rows = [pd.DataFrame(h[0][~np.isnan(h[0][:, 0])], columns=["t", "overlap", "f_n", "f_t"]).assign(e_n_target=e)
+            for e, h in (comparison.histories or {}).items()]
+    _table(out_dir, HISTORIES, pd.concat(rows, ignore_index=True) if rows else None)
+    _table(out_dir, FAILURES, pd.DataFrame([vars(f) for f in comparison.failures],
+                                           columns=["engine", "e_n", "message", "log_tail"]))
+    _table(out_dir, PRECISION, pd.DataFrame([comparison.precision] if comparison.precision else []))
+    _table(out_dir, SLIDING, comparison.sliding if comparison.sliding is not None else pd.DataFrame())
+
+
+def _table(out_dir, name, frame):
+    """DIR/name from `frame`, written whole; None removes a stale one."""
+    if frame is None:
+        _remove(out_dir, name)
+    else:
+        write_text(os.path.join(out_dir, name), frame.to_csv(index=False))
+
+
+def _remove(out_dir, name):
+    path = os.path.join(out_dir, name)
+    if os.path.exists(path):
+        os.remove(path)
+
+
+def _read(out_dir, name):
+    path = os.path.join(out_dir, name)
+    if not os.path.exists(path) or os.path.getsize(path) <= 1:
+        return pd.DataFrame()
+    try:
+        return pd.read_csv(path)
+    except pd.errors.EmptyDataError:
+        return pd.DataFrame()
+
+
+def kinds(out_dir):
+    """(has a comparison, has a cost study) in DIR; a user error when it holds neither."""
+    has_compare = os.path.exists(os.path.join(out_dir, RUN))
+    has_cost = os.path.exists(os.path.join(out_dir, COST_RUN))
+    if not os.path.isdir(out_dir) or not (has_compare or has_cost):
+        raise UserError(f"{out_dir} is not a results directory of `harness compare` or `harness cost` "
+                        f"(no {RUN} or {COST_RUN})")
+    return has_compare, has_cost
+
+
+def load_comparison(out_dir):
+    """The Comparison saved in DIR (its analyses follow from the table again)."""
+    from .comparison import Comparison
+    from .laws import compose
+    from .scene import Scene
+    frame = read_csv(os.path.join(out_dir, "results.csv"))
+    with open(os.path.join(out_dir, RUN)) as handle:
+        run = json.load(handle)
+    scene = Scene(**{k: tuple(v) if isinstance(v, list) else v for k, v in run["scene"].items()})
+    attribution_table = _read(out_dir, ATTRIBUTION)
+    attributions = {name: table.drop(columns="comparison").dropna(axis=1, how="all")
+                    for name, table in attribution_table.groupby("comparison", sort=False)} \
+        if not attribution_table.empty else {}
+    history_table = _read(out_dir, HISTORIES)
+    histories = {e: group[["t", "overlap", "f_n", "f_t"]].to_numpy()[None, :, :]
+                 for e, group in history_table.groupby("e_n_target", sort=False)} if not history_table.empty else None
+    failure_table = _read(out_dir, FAILURES)
+    failures = [FailedRun(r.engine, r.e_n, r.message, "" if pd.isna(r.log_tail) else r.log_tail)
+                for r in failure_table.itertuples()] if not failure_table.empty else []
+    precision = _read(out_dir, PRECISION)
+    sliding = _read(out_dir, SLIDING)
+    requested = run.get("requested")
+    return Comparison(compose(run["model"], run["overrides"]), scene, frame, overrides=run["overrides"],
+                      engine_options=run.get("engine_options", {}), requested=tuple(requested) if requested else None,
+                      skipped=[tuple(s) for s in run["skipped"]], failures=failures, attribution=attributions,
+                      sliding=sliding if not sliding.empty else None,
+                      precision=precision.iloc[0].to_dict() if not precision.empty else None, histories=histories)
+
+
+def load_cost(out_dir):
+    """(cost table, the truth's uncertainty table, cost.json) saved in DIR."""
+    with open(os.path.join(out_dir, COST_RUN)) as handle:
+        run = json.load(handle)
+    cost = pd.read_csv(os.path.join(out_dir, COST), dtype={"rung": str, "message": str})
+    return cost, _read(out_dir, COST_TRUTH), run
+
+
+def save_cost(out_dir, cost, uncertainty, law, scene, overrides, skipped, failures):
+    """DIR/cost.csv (per curve, rung and e_n), the truth uncertainties and cost.json (scene, skipped engines); also
+    written before the study starts, so `harness report DIR` works on an interrupted one."""
+    write_csv(cost, os.path.join(out_dir, COST))
+    rows = [{"curve": curve, "e_n_target": e_n, **errs} for curve, per_e in uncertainty.items()
+            for e_n, errs in per_e.items()]
+    _table(out_dir, COST_TRUTH, pd.DataFrame(rows))
+    scene_fields = {k: v for k, v in asdict(scene).items() if k != "extra"}
+    write_text(os.path.join(out_dir, COST_RUN), json.dumps(
+        {"model": law.name, "overrides": overrides, "scene": scene_fields, "skipped": skipped,
+         "failures": [vars(f) for f in failures]}, indent=1))

@@ -1,0 +1,81 @@
+"""The run plan: what a request asks for, as runs. A run is one batch: one engine running one law in one dialect at
+one e_n over every impact of a scene, at one resolution; its key is a hash of everything that determines its
+result. compare, cost, check and the hard-case tests all execute plans (execute.py)."""
+import hashlib
+import json
+from dataclasses import asdict, dataclass, replace
+
+from .solver.plan import FixedTimeStep, join, plan_batch
+
+CONVERGED = "converged"       # the resolution of the converged mode
+SCHEMA = 1                    # of the results table and of the key: a change makes every key new
+
+
+@dataclass(frozen=True)
+class Run:
+    """One batch of the plan."""
+    engine: str
+    law: object                 # the law asked for (its name picks an engine's model)
+    dialect: object             # the formulas that run: the paper law, or an engine's dialect
+    scene: object               # with exactly one e_n
+    resolution: object          # steps per contact, FixedTimeStep or CONVERGED
+    options: tuple = ()         # the engine's options, (key, value) sorted
+    observe: bool = False       # an engine also reports contact time, peak force and overlap
+    together: tuple = ()        # scenes of the same material and e_n whose impacts join this run's
+
+    @property
+    def e_n(self):
+        return self.scene.e_n[0]
+
+    @property
+    def options_dict(self):
+        return dict(self.options)
+
+    def batch(self):
+        """The kernel rows of this run (their time step is the engine's too: agreement is at equal dt)."""
+        if not self.together:
+            return plan_batch(self.dialect, self.scene, self.e_n, self.resolution)
+        return join([plan_batch(self.dialect, s, self.e_n, self.resolution) for s in (self.scene,) + self.together])
+
+    def key(self, engine_version):
+        """sha256 of the engine and its version, the dialect's sub-models, the scene, the resolution and options."""
+        resolution = (self.resolution.seconds if isinstance(self.resolution, FixedTimeStep) else self.resolution)
+        identity = {"schema": SCHEMA, "engine": self.engine, "version": engine_version, "law": self.law.name,
+                    "dialect": self.dialect.dialect, "submodels": self.dialect.describe(),
+                    "scenes": [{k: v for k, v in asdict(s).items() if k != "extra"}
+                               for s in (self.scene,) + self.together],
+                    "resolution": [type(self.resolution).__name__, resolution], "options": list(self.options),
+                    "observe": self.observe}
+        return hashlib.sha256(json.dumps(identity, sort_keys=True, default=repr).encode()).hexdigest()[:20]
+
+
+def per_e_n(scene):
+    """The scene once per e_n (a run's scene)."""
+    return [replace(scene, e_n=(e_n,)) for e_n in scene.e_n]
+
+
+def reference_runs(law, scene, resolution, dialect=None):
+    """The reference solver running `dialect` (default: the law itself, the paper's) at every e_n."""
+    return [Run("reference", law, dialect or law, s, resolution) for s in per_e_n(scene)]
+
+
+def engine_runs(engine, law, scene, resolution, options=None, observe=False):
+    """An engine running its dialect of `law` at every e_n."""
+    options = tuple(sorted(dict(options or {}).items()))
+    dialect = engine.dialect(law.name, dict(options))
+    return [Run(engine.NAME, law, dialect, s, resolution, options, observe) for s in per_e_n(scene)]
+
+
+def engine_plan(engine, law, scene, resolution, options=None):
+    """What checks one engine: its dialect on the reference solver, then the engine itself, at equal dt."""
+    dialect = engine.dialect(law.name, dict(options or {}))
+    return reference_runs(law, scene, resolution, dialect) + engine_runs(engine, law, scene, resolution, options)
+
+
+def compare_plan(law, scene, resolution, engines, engine_resolution=None):
+    """The paper law on the reference at `resolution`, then each engine ({engine module: options}) with its dialect
+    at `engine_resolution` (engines have no converged mode: the paper law's resolution unless that is CONVERGED)."""
+    runs = reference_runs(law, scene, resolution)
+    for engine, options in engines.items():
+        runs += engine_plan(engine, law, scene, engine_resolution or resolution, options)
+    return runs

@@ -1,0 +1,107 @@
+"""What a user asks for, from the CLI's options or the Python API's keywords (the same names): a law and its
+sub-model replacements, a scene, a resolution, engines and their options; validated once, one clear line for bad
+input."""
+import math
+from dataclasses import dataclass, field
+
+from .errors import UserError
+from .plan import CONVERGED
+from .scene import DEFAULT_ANGLES, DEFAULT_EN, DEFAULT_SPEED, from_material
+from .solver.plan import FixedTimeStep
+
+SCENE_KEYWORDS = ("en", "angles", "psi", "vt", "mu", "material", "radius", "E", "nu", "rho", "speed", "normal_speed",
+                  "omega0", "gravity", "wall")
+
+
+def scene_from(en=DEFAULT_EN, angles=None, psi=None, vt=None, mu=None, material="tcc13", radius=None, E=None,
+               nu=None, rho=None, speed=None, normal_speed=None, omega0=0.0, gravity=0.0, wall="same"):
+    """The validated Scene of the scene keywords."""
+    if speed is not None and normal_speed is not None:
+        raise UserError("give --speed or --normal-speed, not both")
+    if sum(x is not None for x in (angles, psi, vt)) > 1:
+        raise UserError("give one of --angles, --psi, --vt")
+    if angles is None and psi is None and vt is None:
+        angles = DEFAULT_ANGLES
+    speed_is = "normal" if normal_speed is not None else "resultant"
+    speed = normal_speed if normal_speed is not None else speed
+    return from_material(material, radius=radius, E=E, nu=nu, rho=rho, mu=mu,
+                         speed=DEFAULT_SPEED if speed is None else speed, speed_is=speed_is, e_n=tuple(en),
+                         angles_deg=None if angles is None else tuple(angles), psi1_star=None if psi is None else
+                         tuple(psi), v_t=None if vt is None else tuple(vt), omega0=omega0, gravity=gravity,
+                         **wall_fields(wall))
+
+
+def wall_fields(text):
+    """--wall same|rigid|MATERIAL -> Scene wall fields."""
+    if text in ("same", "rigid"):
+        return {"wall": text}
+    from .materials import get_material
+    mat = get_material(text)
+    return {"wall": "other", "wall_E": mat.E, "wall_nu": mat.nu}
+
+
+def resolution_from(steps_per_contact=None, dt=None, converged=False):
+    """--steps-per-contact N (a whole number >= 1, default 1000), --dt SECONDS (> 0) or --converged."""
+    if sum((steps_per_contact is not None, dt is not None, bool(converged))) > 1:
+        raise UserError("give one of --steps-per-contact, --dt, --converged")
+    if converged:
+        return CONVERGED
+    if dt is not None:
+        if not (math.isfinite(dt) and dt > 0.0):
+            raise UserError(f"--dt must be a positive number of seconds, got {dt:g}")
+        return FixedTimeStep(dt)
+    steps = 1000 if steps_per_contact is None else steps_per_contact
+    if isinstance(steps, bool) or not isinstance(steps, int) or steps < 1:
+        raise UserError(f"--steps-per-contact must be a whole number >= 1, got {steps!r}")
+    return steps
+
+
+def engine_options_from(pairs):
+    """[(engine, key, value)] from --engine-option ENGINE:KEY=VALUE -> {engine: {key: value}}; a key given twice is
+    refused (the last would silently win)."""
+    from .engines import get_engine
+    out = {}
+    for engine, key, value in pairs or ():
+        get_engine(engine)
+        if key in out.setdefault(engine, {}):
+            raise UserError(f"engine option {engine}:{key} given twice")
+        out[engine][key] = value
+    return out
+
+
+@dataclass(frozen=True)
+class Request:
+    """A validated request: `law` (the named law with its replacements), `scene`, `resolution`, the engines asked
+    for (None: every engine that supports the law) and their options."""
+    model: str
+    scene: object
+    resolution: object = 1000
+    overrides: tuple = ()
+    engines: tuple | None = None
+    engine_options: dict = field(default_factory=dict)
+
+    @property
+    def law(self):
+        from .laws import compose
+        return compose(self.model, dict(self.overrides))
+
+    @classmethod
+    def from_keywords(cls, model, engines=None, engine_options=None, steps_per_contact=None, dt=None,
+                      converged=False, **keywords):
+        """From the API's keywords (the CLI passes its options under the same names): `with_` or `overrides` for
+        --with, `engine_options` as {engine: {key: value}} or [(engine, key, value)]."""
+        overrides = keywords.pop("with_", None) or keywords.pop("overrides", None) or ()
+        unknown = set(keywords) - set(SCENE_KEYWORDS)
+        if unknown:
+            raise UserError(f"unknown keyword(s) {', '.join(sorted(unknown))}")
+        pairs = dict(overrides).items() if isinstance(overrides, dict) else overrides
+        keys = [k for k, _ in pairs]
+        repeated = sorted({k for k in keys if keys.count(k) > 1})
+        if repeated:
+            raise UserError(f"--with {repeated[0]}=... given twice")
+        options = engine_options_from(engine_options) if not isinstance(engine_options, dict) else \
+            {e: dict(o) for e, o in (engine_options or {}).items()}
+        request = cls(model, scene_from(**keywords), resolution_from(steps_per_contact, dt, converged),
+                      tuple(pairs), None if engines is None else tuple(engines), options)
+        request.law                          # unknown law or sub-model: refused here, before anything runs
+        return request

@@ -1,0 +1,1 @@
+"""Views of the data: the terminal, the HTML report and its figures."""

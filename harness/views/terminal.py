@@ -1,0 +1,105 @@
+"""The terminal view: fixed-width tables and what compare, check and cost print."""
+
+
+def summary_lines(frame):
+    """Per e_n: achieved e_n range, e_t range, largest kinetic-energy ratio and rows not ok."""
+    lines = [f"{'e_n target':>10} {'e_n achieved':>21} {'e_t':>19} {'max KE1/KE0':>12} {'not ok':>6}"]
+    for e_n, group in frame.groupby("e_n_target", sort=False):
+        lines.append(f"{e_n:10.3f} {group.e_n.min():10.6f}..{group.e_n.max():<9.6f} "
+                     f"{group.e_t.min():9.4f}..{group.e_t.max():<8.4f} {group.ke_ratio.max():12.6f} "
+                     f"{int((group.status != 'ok').sum()):6d}")
+    return lines
+
+
+def text_table(frame, columns, formats=None):
+    """A plain fixed-width table for the terminal."""
+    if frame.empty:
+        return "  (none)"
+    formats = formats or {}
+    cells = [[formats.get(c, "{}").format(row[c]) if not isinstance(row[c], float) or c not in formats
+              else formats[c].format(row[c]) for c in columns] for _, row in frame.iterrows()]
+    widths = [max(len(c), *(len(r[i]) for r in cells)) for i, c in enumerate(columns)]
+    def line(values):
+        return "  " + "  ".join(v.ljust(w) if c == "note" else v.rjust(w)
+                                for v, w, c in zip(values, widths, columns)).rstrip()
+    return "\n".join([line(columns)] + [line(r) for r in cells])
+
+
+def print_comparison(comparison, written):
+    """The comparison's tables, findings and failures, then where its files are."""
+    frame, law = comparison.results, comparison.law
+    print(f"{law.name}: paper law on the reference engine, {sum(frame.engine == 'reference')} rows")
+    print("\n".join(summary_lines(frame[(frame.engine == "reference") & (frame.dialect == "paper")])))
+    if comparison.sliding is not None:
+        print("\nsliding throughout (paper law: the smallest Psi1* found, and the condition derived for it):")
+        print(text_table(comparison.sliding, ["e_n_target", "simulated", "derived", "difference", "formula"],
+                         {"simulated": "{:.5f}", "derived": "{:.5f}", "difference": "{:+.1e}"}))
+    for name, reason in comparison.skipped:
+        print(f"skipped {name}: {reason}")
+    if comparison.compared:
+        print("\nagreement (engine vs its dialect in the reference, equal dt):")
+        print(text_table(comparison.agreement, ["engine", "metric", "max_rel_diff", "e_n_target", "theta_deg",
+                                                "tolerance", "pass"], {"max_rel_diff": "{:.2e}", "tolerance": "{:.0e}"}))
+        print("\ndeviation (engine vs the paper law):")
+        print(text_table(comparison.deviation, ["engine", "e_n_target", "metric", "max_abs_diff", "theta_deg", "paper",
+                                                "engine_value"], {"max_abs_diff": "{:.4g}", "paper": "{:.5g}",
+                                                                  "engine_value": "{:.5g}"}))
+        for (a, b), cross in comparison.cross.items():
+            if not cross.empty:
+                print(f"\n{b} against {a} (engine runs, same scene and dt):")
+                print(text_table(cross, ["e_n_target", "metric", "max_abs_diff", "theta_deg", a, "engine_value"],
+                                 {"max_abs_diff": "{:.4g}", a: "{:.5g}", "engine_value": "{:.5g}"}))
+        for name, table in comparison.attribution.items():
+            print(f"\nattribution ({name}, one ingredient at a time; max change per metric):")
+            cols = [c for c in table.columns if c.startswith("d_")]
+            print(text_table(table, ["ingredient", "dialect", "target", *cols, "note"], {c: "{:+.4g}" for c in cols}))
+    precision = comparison.precision
+    if precision:
+        gaps = ", ".join(f"{k} {v:.1e}" for k, v in precision.items() if k in ("v_n1", "v_t1", "omega1"))
+        print(f"\nprecision: {precision['engine']} double against {precision['against']} on the same impacts and dt "
+              f"(max relative difference): {gaps or precision.get('failed')}")
+    if not comparison.findings.empty:
+        print("\nfindings:")
+        for _, row in comparison.findings.iterrows():
+            print(f"  {row.engine} ({row.dialect}): {row.kind}: {row.detail}")
+    for failure in comparison.failures:
+        print(f"\n{failure.engine} failed at e_n = {failure.e_n:g}: {failure.message}\n{failure.log_tail}")
+    print(f"\nwrote {' and '.join(written)}")
+
+
+def print_cost(table, uncertainty, law, scene, ladder, skipped, failures):
+    """The cost study's tables: errors and times per rung, recommended time steps, orders of convergence."""
+    from ..analyses.cost import (METRICS, RAYLEIGH_FRACTION, convergence_orders, per_rung, rayleigh_time,
+                                 recommendations)
+    t_r = rayleigh_time(scene)
+    print(f"{law.name}: accuracy against cost, {len(scene.e_n)} e_n x {len(scene.impacts(scene.e_n[0])[0])} "
+          f"impacts; ladder {', '.join(map(str, ladder))} steps per contact, plus {RAYLEIGH_FRACTION:.0%} of the "
+          f"Rayleigh time (T_R = {t_r:.4g} s, dt = {RAYLEIGH_FRACTION * t_r:.4g} s)")
+    print("errors: max over impacts |x - x*| / max |x*| against the converged reference of the same dialect; "
+          "wall time summed over e_n, engine start-up excluded")
+    for curve, per_e in uncertainty.items():
+        worst = max(errs["err_max"] for errs in per_e.values())
+        truth = next(iter(per_e.values())).get("truth", "")
+        print(f"  converged reference of the {curve} dialect: {truth}, uncertainty {worst:.1e}"
+              + (" (errors below this are not resolved)" if worst > 1e-6 else ""))
+    for name, reason in skipped:
+        print(f"skipped {name}: {reason}")
+    rows = per_rung(table)
+    refused = table[table.status == "refused"].drop_duplicates(["engine", "dialect", "rung"])
+    print()
+    print(text_table(rows, ["engine", "dialect", "rung", "steps_per_contact", "dt", "net_wall_s", "err_e_n", "err_e_t",
+                            "err_omega_star", "err_t_contact", "err_f_n_max"],
+                     {"steps_per_contact": "{:.4g}", "dt": "{:.3g}", "net_wall_s": "{:.3g}",
+                      **{f"err_{m}": "{:.1e}" for m in METRICS}}))
+    for _, r in refused.iterrows():
+        print(f"  refused: {r.engine}/{r.dialect} at {r.rung}: {r.message}")
+    print("\nrecommended time step (coarsest rung within tolerance at every e_n, worst metric, and every finer rung too):")
+    rec = recommendations(table)
+    cols = [c for c in rec.columns if c.startswith("dt for") or c.startswith("steps/contact")] + ["error at 20% Rayleigh"]
+    print(text_table(rec, ["engine", "dialect", *cols], {c: "{:.3g}" for c in cols}))
+    print("\norder of convergence (slope of log error against log steps per contact, rungs >= 20; the adaptive "
+          "curve: against force evaluations per contact):")
+    orders = convergence_orders(table)
+    print(text_table(orders, ["engine", "dialect", *METRICS], {m: "{:.2f}" for m in METRICS}))
+    for failure in failures:
+        print(f"\n{failure.engine} failed at e_n = {failure.e_n:g}: {failure.message}\n{failure.log_tail}")
