@@ -3,7 +3,7 @@
 `harness.run(model, **keywords)` returns the reference solver's results table; `harness.compare(model, **keywords)`
 returns a Comparison; the keywords are the command line's option names (docs/user-guide.md)."""
 
-__version__ = "0.1.0"
+from .version import __version__
 __all__ = ["run", "compare", "__version__"]
 
 

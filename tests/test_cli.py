@@ -128,3 +128,13 @@ def test_compare_skips_engines_for_scenes_their_inputs_cannot_express(tmp_path):
     assert proc.returncode == 0
     assert "skipped liggghts: engine inputs use a wall of the sphere's own material" in proc.stdout
     assert "skipped yade: engine inputs use a wall of the sphere's own material" in proc.stdout
+
+
+def test_engines_reference_alone_runs_the_paper_law_only(tmp_path):
+    """`--engines reference` is valid wherever --engines is: the paper law alone, nothing skipped, exit 0."""
+    proc = harness("compare", "--model", "thornton", "--engines", "reference", "--en", "0.5", "--angles", "0,40",
+                   "-o", str(tmp_path / "out"))
+    assert proc.returncode == 0, proc.stderr
+    frame = pd.read_csv(tmp_path / "out" / "results.csv")
+    assert set(zip(frame.engine, frame.dialect)) == {("reference", "paper")} and len(frame) == 2
+    assert "skipped" not in proc.stdout

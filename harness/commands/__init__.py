@@ -2,16 +2,9 @@
 import argparse
 import sys
 
-from .. import __version__
 from ..errors import UserError
-
-EXIT_OK, EXIT_DISAGREE, EXIT_USAGE, EXIT_ENGINE, EXIT_INTERRUPTED = 0, 1, 2, 3, 130
-EXIT_CODES = """exit codes:
-  0  done; every compared engine agrees with its dialect
-  1  an engine disagrees with its dialect, or the regression check found a metric outside tolerance
-  2  bad input (one line on stderr says which)
-  3  an engine asked for by name could not run, or one of its runs failed (its log tail is printed)
-  130 interrupted; finished results were kept"""
+from ..version import __version__
+from .options import EXIT_CODES, EXIT_INTERRUPTED, EXIT_USAGE, Parser
 
 
 def describe(sub, name, summary, example):
@@ -23,7 +16,6 @@ def describe(sub, name, summary, example):
 
 def build_parser():
     from . import check, compare, cost, models, paper, render, report, run
-    from .options import Parser
     parser = Parser(prog="harness", formatter_class=argparse.RawDescriptionHelpFormatter,
                     description="Cross-validate DEM contact force models against the literature (Thornton, Cummins "
                                 "& Cleary 2013) and against LIGGGHTS and YADE.",

@@ -2,7 +2,7 @@
 from ..baseline import DEFAULT_BASELINE, check, update
 from ..errors import UserError
 from ..views.terminal import text_table
-from . import EXIT_DISAGREE, EXIT_OK
+from .options import EXIT_DISAGREE, EXIT_OK
 
 
 def add(sub, describe):

@@ -9,8 +9,8 @@ from ..request import Request
 from ..results import write_csv
 from ..views.html import rebuild
 from ..views.terminal import print_comparison
-from . import EXIT_DISAGREE, EXIT_ENGINE, EXIT_OK
-from .options import add_engine_options, add_scene_options, check_output_directory, keywords
+from .options import (EXIT_DISAGREE, EXIT_ENGINE, EXIT_OK, add_engine_options, add_scene_options,
+                      check_output_directory, keywords)
 
 EXAMPLE = "harness compare --model hertz-mindlin --engines liggghts --en 0.5 -o out/"
 

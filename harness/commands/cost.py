@@ -12,8 +12,8 @@ from ..request import Request
 from ..results import write_csv
 from ..views.html import rebuild
 from ..views.terminal import print_cost
-from . import EXIT_ENGINE, EXIT_OK
-from .options import add_engine_options, add_scene_options, check_output_directory, keywords
+from .options import (EXIT_ENGINE, EXIT_OK, add_engine_options, add_scene_options, check_output_directory,
+                      keywords)
 
 EXAMPLE = "harness cost --model hertz-mindlin --en 0.9,0.3 --angles 0:80:20 -o cost/"
 

@@ -4,7 +4,7 @@ import json
 from ..engines import ENGINES
 from ..laws import LAWS
 from ..materials import MATERIALS
-from . import EXIT_OK
+from .options import EXIT_OK
 
 
 def add(sub, describe):

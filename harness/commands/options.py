@@ -1,11 +1,19 @@
-"""The options commands share: argument types, the scene and resolution options, engine options, and the keywords
-they become (the Python API's names, harness.request)."""
+"""What every command shares: the exit codes, argument types, the scene and resolution options, engine options, and
+the keywords they become (the Python API's names, harness.request)."""
 import argparse
 import math
 import os
 
 from ..errors import UserError
 from ..scene import DEFAULT_EN
+
+EXIT_OK, EXIT_DISAGREE, EXIT_USAGE, EXIT_ENGINE, EXIT_INTERRUPTED = 0, 1, 2, 3, 130
+EXIT_CODES = """exit codes:
+  0  done; every compared engine agrees with its dialect
+  1  an engine disagrees with its dialect, or the regression check found a metric outside tolerance
+  2  bad input (one line on stderr says which)
+  3  an engine asked for by name could not run, or one of its runs failed (its log tail is printed)
+  130 interrupted; finished results were kept"""
 
 
 class Parser(argparse.ArgumentParser):

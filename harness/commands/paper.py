@@ -8,8 +8,7 @@ from ..paper import figure_set
 from ..results import write_csv
 from ..views.paper_html import NORMAL, OBLIQUE, SLIDING, write_paper_report
 from ..views.terminal import text_table
-from . import EXIT_OK
-from .options import check_output_directory
+from .options import EXIT_OK, check_output_directory
 
 EXAMPLE = "harness paper -o paper/"
 

@@ -5,8 +5,7 @@ from ..engines import get_engine
 from ..errors import UserError
 from ..plan import engine_runs
 from ..request import Request
-from . import EXIT_OK
-from .options import add_scene_options, check_output_directory, engine_option, keywords
+from .options import EXIT_OK, add_scene_options, check_output_directory, engine_option, keywords
 
 EXAMPLE = "harness render --model hertz-mindlin --engine liggghts --en 0.5 -o decks/"
 

@@ -1,6 +1,6 @@
 """`harness report DIR`: rebuild DIR/report.html from the files of a compare or cost directory, simulating nothing."""
 from ..views.html import rebuild
-from . import EXIT_OK
+from .options import EXIT_OK
 
 
 def add(sub, describe):

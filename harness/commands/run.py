@@ -2,8 +2,7 @@
 from ..api import run_request
 from ..request import Request
 from ..results import write_csv
-from . import EXIT_OK
-from .options import add_scene_options, check_output_file, keywords
+from .options import EXIT_OK, add_scene_options, check_output_file, keywords
 
 EXAMPLE = "harness run --model thornton --en 0.9,0.5,0.1 --angles 0:80:10 -o results.csv"
 

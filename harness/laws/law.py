@@ -10,7 +10,7 @@ from ..submodels.damping.tsuji import TsujiDashpot
 from ..submodels.normal.hertz import Hertz
 from ..submodels.normal.linear import LinearSpring
 from ..submodels.registry import (DAMPING_MODELS, ENGINE_NORMAL_MODELS, NORMAL_MODELS, TANGENTIAL_MODELS,
-                                  kernel_of)
+                                  kernel_code, kernel_of)
 from ..submodels.tangential_damping import TangentialDashpot
 
 END_RULES = ("tension", "no-tension")
@@ -48,15 +48,6 @@ class Law:
         return self.normal.name in ("stronge", "partially-latching-spring")
 
 
-def get_law(name):
-    """Look up a named law; unknown name -> UserError listing the known ones."""
-    from .named import LAWS
-    try:
-        return LAWS[name]
-    except KeyError:
-        raise UserError(f"unknown law {name!r}; known: {', '.join(LAWS)}") from None
-
-
 def _split(spec):
     name, _, option = str(spec).partition(":")
     return name, option or None
@@ -84,13 +75,8 @@ def _choice(key, spec, allowed):
     return spec
 
 
-def compose(name, overrides=None):
-    """The named law with sub-models replaced, e.g. {'tangential': 'mindlin:total', 'end': 'tension'}; validated."""
-    return replace_submodels(get_law(name), overrides)
-
-
 def replace_submodels(law, overrides, dialect=None):
-    """`law` with the given sub-models replaced (same vocabulary as `compose`); `dialect` renames its dialect."""
+    """`law` with the given sub-models replaced ({'tangential': 'mindlin:total', 'end': 'tension'}, ...); `dialect` renames its dialect."""
     changes = {} if dialect is None else {"dialect": dialect}
     for key, spec in (overrides or {}).items():
         if key == "normal":
@@ -130,7 +116,7 @@ def check_composition(law):
         raise UserError(f"the {law.damping.name} dashpot needs the hertz normal model")
     if law.normal.plastic and not isinstance(law.damping, NoDamping):
         raise UserError(f"{law.normal.name} dissipates plastically; use damping none")
-    if kernel_of("normal", law.normal.code).history_reset and law.integrator == "paper":
+    if kernel_of("normal", kernel_code(law.normal)).history_reset and law.integrator == "paper":
         raise UserError(f"the incremental {law.normal.name} force is defined step by step only in an engine's scheme")
     if law.normal.plastic and law.end != "no-tension":
         raise UserError(f"{law.normal.name} ends contact at zero force; use end no-tension")

@@ -13,7 +13,8 @@ from ..submodels.tangential.linear import LinearTangential
 from ..submodels.tangential.mindlin import Mindlin
 from ..submodels.tangential.walton_braun import WaltonBraunTangential
 from ..submodels.tangential_damping import TangentialDashpot
-from .law import Law
+from ..errors import UserError
+from .law import Law, replace_submodels
 
 PAPER_TANGENTIAL_DASHPOT = TangentialDashpot("normal-ratio")   # c_t = 2 g sqrt(m k_t), g of the normal dashpot
 
@@ -51,3 +52,14 @@ LAWS = {
 }
 
 
+def get_law(name):
+    """Look up a named law; unknown name -> UserError listing the known ones."""
+    try:
+        return LAWS[name]
+    except KeyError:
+        raise UserError(f"unknown law {name!r}; known: {', '.join(LAWS)}") from None
+
+
+def compose(name, overrides=None):
+    """The named law with sub-models replaced, e.g. {'tangential': 'mindlin:total', 'end': 'tension'}; validated."""
+    return replace_submodels(get_law(name), overrides)

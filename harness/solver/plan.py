@@ -3,9 +3,10 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from .stability import check_time_step
+from ..submodels.registry import kernel_code
 from . import codes as C
 from .dispatch import TANGENTIAL_NONE
+from .stability import check_time_step
 
 NORATCH_WALL_RADIUS = 1e8      # YADE's hertzian wall: reference radius 1e8 R (its noRatch slip factor uses it)
 
@@ -92,8 +93,8 @@ def plan_batch(law, scene, e_n, steps_per_contact, check_stability=True):
         check_time_step(law, scene, e_n, dt, params[active[0] if len(active) else 0], normal.contact_time,
                         len(active) > 0)
     ints = np.zeros((n, C.N_INTS), dtype=np.int64)
-    ints[:, C.I_NORMAL] = law.normal.code
+    ints[:, C.I_NORMAL] = kernel_code(law.normal)
     ints[:, C.I_END] = C.END_ALPHA if law.end == "tension" else C.END_FORCE
-    ints[:, C.I_TANGENTIAL] = np.where(tangential, law.tangential.code, TANGENTIAL_NONE)
+    ints[:, C.I_TANGENTIAL] = np.where(tangential, kernel_code(law.tangential), TANGENTIAL_NONE)
     ints[:, C.I_INTEGRATOR] = C.INTEGRATORS[law.integrator]
     return Batch(params, ints, e_n, v_n0, v_t0, omega0, theta, dt, steps_per_contact, tangential)

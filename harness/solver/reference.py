@@ -4,7 +4,7 @@ import time
 import numpy as np
 import pandas as pd
 
-from .. import __version__
+from ..version import __version__
 from ..kinematics import rebound_quantities
 from ..results import impact_frame
 from .stability import UnstableTimeStep

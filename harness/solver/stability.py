@@ -10,6 +10,7 @@ import math
 from dataclasses import dataclass
 
 from ..errors import UserError
+from ..submodels.registry import kernel_code
 from . import codes as C
 
 
@@ -51,7 +52,7 @@ def stability_limit(law, scene, e_n, params, tangential=True):
     c_n = params[C.P_DAMP_C0] * (alpha ** params[C.P_DAMP_POWER] if params[C.P_DAMP_POWER] else 1.0)
     mass = contact.mass
     modes = [("normal", k_n, c_n, mass)]
-    code = law.tangential.code
+    code = kernel_code(law.tangential)
     if tangential and scene.mu > 0.0:
         from .dispatch import TANGENTIAL_VISCOUS, tangential_stiffness
         p1 = law.tangential.parameter(contact, law.normal.parameters(contact, e_n, scene.speed).linear_stiffness)

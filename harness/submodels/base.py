@@ -22,12 +22,6 @@ class SubModel:
     def label(self):
         return self.name
 
-    @property
-    def code(self):
-        """The kernel's number in the registry (what the compiled integrators dispatch on)."""
-        from .registry import code_of
-        return code_of(self.family, self.kernel)
-
 
 class NormalModel(SubModel):
     """A normal sub-model: F_el(alpha, alpha_max) and its parameters for a contact, a target e_n and a speed."""

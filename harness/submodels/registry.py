@@ -104,6 +104,11 @@ def code_of(family, name):
     raise UserError(f"no {family} kernel named {name!r}")
 
 
+def kernel_code(submodel):
+    """The number of a sub-model's kernel (what the compiled integrators dispatch on)."""
+    return code_of(submodel.family, submodel.kernel)
+
+
 def kernel_of(family, code):
     return kernels(family)[code]
 

@@ -1,6 +1,7 @@
 """The report's accuracy-against-cost section, from cost.csv alone: log-log figures and the tables."""
 import numpy as np
 
+from .pieces import figure_png, records
 from ..analyses.cost import (ADAPTIVE, EXTRAPOLATED, METRICS, TOLERANCES, convergence_orders, ladder_rows, per_rung,
                    recommendations)
 
@@ -35,7 +36,6 @@ def cost_figure(cost, x_column, x_label, metrics):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    from .html import figure_png
     fig, axes = plt.subplots(1, len(metrics), figsize=(3.7 * len(metrics), 3.6), squeeze=False)
     for ax, metric in zip(axes[0], metrics):
         column = f"err_{metric}"
@@ -65,7 +65,6 @@ def cost_figure(cost, x_column, x_label, metrics):
 
 def cost_section(cost, uncertainty, run):
     """Figures and tables of the cost section, from the cost table, the truth's uncertainty and the study's record."""
-    from .html import records
     model = run["model"]
     figures = [
         (f"{model}: worst-metric error against wall time (start-up excluded)",

@@ -4,14 +4,14 @@ import os
 
 import numpy as np
 
-from .. import __version__
 from ..files import write_text
 from ..kinematics import CONVENTIONS
 from ..laws import LAWS
 from ..paper import ELASTIC, PSI1_GRID
 from ..render import environment
-from .html import figure_png, records
+from ..version import __version__
 from .paper_axes import PANELS, draw_rigid_body, set_paper_axes
+from .pieces import figure_png, records
 
 OBLIQUE, NORMAL, SLIDING = "paper.csv", "paper-normal.csv", "paper-sliding.csv"
 COLOURS = ("#1b9e77", "#d95f02", "#7570b3", "#e7298a", "#66a61e", "#e6ab02")    # one per e_n, in every figure

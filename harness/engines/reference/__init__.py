@@ -1,6 +1,6 @@
 """The reference solver as an engine (docs/engines.md): it runs any law, the paper's or an engine's dialect, in the
 compiled kernels of harness/solver, at a number of steps per contact, a time step or converged."""
-from ... import __version__
+from ...version import __version__
 from ...laws import LAWS, compose
 from ..protocol import Status
 

@@ -5,7 +5,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ... import __version__
+from ...version import __version__
 from ...render import render
 from ..runner import EngineFailure, run_engine
 from .dialect import MODELS

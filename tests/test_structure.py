@@ -1,0 +1,112 @@
+"""The structure of the package: data walks one way (nothing below a command imports a command, lower layers do
+not import higher ones), no import cycles, small modules, package data where a plain install finds it."""
+import ast
+import inspect
+import pathlib
+
+import pytest
+
+import harness
+
+PACKAGE = pathlib.Path(harness.__file__).parent
+
+
+def imports_of(path):
+    """Absolute names of the harness modules a file imports (at any depth, lazily or not)."""
+    parts = path.relative_to(PACKAGE.parent).with_suffix("").parts
+    package = ".".join(parts[:-1])
+    found = set()
+    for node in ast.walk(ast.parse(path.read_text())):
+        if isinstance(node, ast.ImportFrom):
+            if node.level:
+                base = package.split(".")[:len(package.split(".")) - node.level + 1]
+                target = ".".join(base + ([node.module] if node.module else []))
+            else:
+                target = node.module or ""
+            found |= {target} | {f"{target}.{alias.name}" for alias in node.names}
+        elif isinstance(node, ast.Import):
+            found |= {alias.name for alias in node.names}
+    return {name for name in found if name.startswith("harness")}
+
+
+def modules():
+    """(name, path) of every module of the package; a package by its own name."""
+    for path in sorted(PACKAGE.rglob("*.py")):
+        parts = path.relative_to(PACKAGE.parent).with_suffix("").parts
+        yield ".".join(parts[:-1] if parts[-1] == "__init__" else parts), path
+
+
+def test_nothing_below_a_command_imports_a_command():
+    offenders = [(name, sorted(i for i in imports_of(path) if i.startswith("harness.commands")))
+                 for name, path in modules() if not name.startswith("harness.commands") and name != "harness.__main__"]
+    assert not [o for o in offenders if o[1]], offenders
+
+
+@pytest.mark.parametrize("layer", ["harness.analyses", "harness.views", "harness.submodels", "harness.solver",
+                                   "harness.laws"])
+def test_lower_layers_do_not_import_the_layers_above(layer):
+    """Analyses and views read tables; sub-models, the solver and the laws know nothing of plans, engines or
+    outputs (cost is the analysis that builds its own plans)."""
+    above = {"harness.analyses": ("harness.views", "harness.api", "harness.outputs"),
+             "harness.views": ("harness.api", "harness.execute", "harness.plan", "harness.engines.batches"),
+             "harness.submodels": ("harness.plan", "harness.engines", "harness.analyses", "harness.views",
+                                   "harness.api", "harness.outputs"),
+             "harness.solver": ("harness.plan", "harness.engines", "harness.analyses", "harness.views", "harness.api",
+                                "harness.outputs"),
+             "harness.laws": ("harness.plan", "harness.engines", "harness.analyses", "harness.views", "harness.api",
+                              "harness.outputs")}[layer]
+    offenders = {name: sorted(i for i in imports_of(path) if i.startswith(above))
+                 for name, path in modules() if name.startswith(layer)}
+    assert not {k: v for k, v in offenders.items() if v}
+
+
+def test_modules_stay_small():
+    sizes = {name: len(path.read_text().splitlines()) for name, path in modules()}
+    assert max(sizes.values()) <= 400, sorted(sizes.items(), key=lambda kv: -kv[1])[:3]
+
+
+def test_the_committed_baseline_ships_with_the_package():
+    from harness.baseline import BASELINE_FILE, DEFAULT_BASELINE
+    shipped = pathlib.Path(DEFAULT_BASELINE) / BASELINE_FILE
+    committed = PACKAGE.parent / "baselines" / BASELINE_FILE
+    assert shipped.is_file()
+    if committed.is_file():                      # from a checkout: the same bytes
+        assert shipped.read_bytes() == committed.read_bytes()
+
+
+def test_public_api_is_run_and_compare():
+    assert inspect.signature(harness.run).parameters["model"]
+    assert {"model", "engines", "engine_options"} <= set(inspect.signature(harness.compare).parameters)
+
+
+def import_graph():
+    """{module: the harness modules it imports}, an attribute import counted as an import of its module."""
+    known = dict(modules())
+
+    def module_of(name):
+        while name and name not in known:
+            name = name.rpartition(".")[0]
+        return name
+    graph = {}
+    for name, path in known.items():
+        graph[name] = {module_of(i) for i in imports_of(path)} - {"", name}
+    return graph
+
+
+def test_no_import_cycles():
+    """Not even through an import inside a function: every module can be understood from the ones below it."""
+    graph = import_graph()
+    state, cycles = {}, []
+
+    def visit(node, path):
+        state[node] = "open"
+        for nxt in sorted(graph[node]):
+            if state.get(nxt) == "open":
+                cycles.append(path[path.index(nxt):] + [nxt])
+            elif nxt not in state:
+                visit(nxt, path + [nxt])
+        state[node] = "done"
+    for node in sorted(graph):
+        if node not in state:
+            visit(node, [node])
+    assert not cycles, "\n".join(" -> ".join(c) for c in cycles[:5])
