@@ -1,91 +1,79 @@
-"""Reference solver throughput: a 9 e_n x 45 angle hertz-mindlin sweep at 1000 steps per contact, impact-steps/s,
-side by side with LIGGGHTS on the same sweep when it is installed; then all seven laws on the default sweep.
+"""Reference solver throughput: a 9 e_n x 45 angle hertz-mindlin sweep at 1000 steps per contact through the
+compiled integrator on one thread and on every core, side by side with LIGGGHTS running the same batches (its deck as
+harness writes it, start-up measured by the same deck stopped after one step and subtracted); then all seven laws on
+the default sweep.
 
-Run: .venv/bin/python benchmarks/bench_reference.py
+    .venv/bin/python benchmarks/bench_reference.py [--smoke]
 """
-import shutil
-import subprocess
+import sys
 import tempfile
 import time
-from pathlib import Path
 
-import jinja2
+import numpy as np
 
+from harness.engines import liggghts
 from harness.laws import LAWS, compose
 from harness.scene import Scene
 from harness.solver import codes as C
+from harness.solver.extension import table as extension_table
+from harness.solver.kernel import integrate
 from harness.solver.plan import plan_batch
-from harness.solver.reference import run_kernel, simulate
+from harness.solver.reference import simulate
+from harness.solver.threads import THREADS
 
-E_N = tuple(round(0.1 * i, 1) for i in range(1, 10))
 STEPS = 1000
-TEMPLATES = Path(__file__).resolve().parent.parent / "templates"
 
 
-def reference_rate(scene):
-    """Kernel wall time and impact-steps of the whole sweep (the kernel is compiled first)."""
+def reference_seconds(batches, threads):
+    """Wall time and impact-steps of the compiled integrator over the batches (compiled before timing)."""
+    ext = extension_table()
+
+    def one(batch):
+        out = np.zeros((len(batch.params), C.N_OUT))
+        integrate(batch.params, batch.ints, out, np.zeros((len(batch.params), 0, 4)), 0, ext, threads=threads)
+        return out
+    one(batches[0])
+    start = time.perf_counter()
+    steps = sum(int(one(batch)[:, C.O_STEPS].sum()) for batch in batches)
+    return time.perf_counter() - start, steps
+
+
+def liggghts_seconds(law, scene, batches):
+    """LIGGGHTS' wall time over the same batches, and its start-up (the same decks stopped after one step)."""
+    total = startup = 0.0
+    for batch in batches:
+        max_steps = int(batch.params[:, C.P_MAXSTEPS].max())
+        with tempfile.TemporaryDirectory(prefix="harness-bench-") as workdir:
+            total += liggghts.run_batch(law, scene, batch, max_steps, 600, workdir)[1]
+        with tempfile.TemporaryDirectory(prefix="harness-bench-") as workdir:
+            startup += liggghts.run_batch(law, scene, batch, 1, 600, workdir)[1]
+    return total, startup
+
+
+def main(smoke=False):
+    e_n = (0.5,) if smoke else tuple(round(0.1 * i, 1) for i in range(1, 10))
+    scene = Scene(e_n=e_n, angles_deg=(10.0, 40.0) if smoke else None, psi1_star=None) if smoke else Scene(e_n=e_n)
     law = compose("hertz-mindlin")
     batches = [plan_batch(law, scene, e, STEPS) for e in scene.e_n]
-    run_kernel(batches[0])                                   # warm-up (JIT load)
-    seconds, steps = 0.0, 0
-    for batch in batches:
-        out, _, wall = run_kernel(batch)
-        seconds += wall
-        steps += int(out[:, C.O_STEPS].sum())
-    return seconds, steps, batches
-
-
-def liggghts_run(scene, batch, copies, n_steps, workdir):
-    """Wall time of LIGGGHTS for one deck holding `copies` x the impacts of one e_n batch for n_steps steps."""
-    spacing = 4.0 * scene.radius
-    pairs = list(zip(batch.v_n0, batch.v_t0)) * copies
-    atoms = [{"x": repr(i * spacing), "vx": repr(float(vt)), "vz": repr(-float(vn))} for i, (vn, vt) in enumerate(pairs)]
-    env = jinja2.Environment(loader=jinja2.FileSystemLoader(str(TEMPLATES)), undefined=jinja2.StrictUndefined)
-    deck = env.get_template("liggghts/timing_sweep.in.j2").render(
-        n_atoms=len(atoms), atoms=atoms, x_lo=-spacing, x_hi=len(atoms) * spacing, box=0.05, skin=scene.radius,
-        E=scene.E, nu=scene.nu, e_n=batch.e_n, mu=scene.mu, dt=batch.dt, radius=scene.radius, rho=scene.rho,
-        steps=n_steps)
-    path = Path(workdir) / "in.timing"
-    path.write_text(deck)
-    start = time.perf_counter()
-    subprocess.run(["liggghts", "-in", path.name, "-log", "none", "-echo", "none", "-screen", "none"], cwd=workdir,
-                   check=True, timeout=600, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    return time.perf_counter() - start
-
-
-def main():
-    import numba
-    scene = Scene(e_n=E_N)
-    n_impacts = len(E_N) * len(scene.angles_deg)
-    threads = numba.get_num_threads()
-    for n_threads in sorted({1, threads}):
-        numba.set_num_threads(n_threads)
-        seconds, steps, batches = reference_rate(scene)
-        ref_us = seconds / steps * 1e6
-        print(f"reference, {n_threads} thread(s): {n_impacts} impacts, {steps} impact-steps in {seconds:.3f} s "
-              f"= {steps / seconds:.3g} impact-steps/s ({ref_us:.4f} us per impact-step)")
-        if n_threads == 1:
-            single_us = ref_us
-    if shutil.which("liggghts"):
-        batch = batches[4]
-        out, _, _ = run_kernel(batch)
-        n_steps = int(out[:, C.O_STEPS].max())    # until the slowest sphere has left, as the reference does
-        copies = 20 * len(E_N)                    # enough atoms that start-up is a small, separately timed part
-        with tempfile.TemporaryDirectory() as tmp:
-            startup = liggghts_run(scene, batch, copies, 0, tmp)
-            full = liggghts_run(scene, batch, copies, n_steps, tmp)
-        atom_steps = len(batch.v_n0) * copies * n_steps
-        lig_us = (full - startup) / atom_steps * 1e6
-        print(f"liggghts:  {len(batch.v_n0) * copies} atoms x {n_steps} steps in {full:.3f} s (start-up {startup:.3f} s) "
-              f"= {lig_us:.4f} us per atom-step")
-        sweep_liggghts = lig_us * 1e-6 * n_impacts * n_steps          # the whole sweep, start-up excluded
-        print(f"RATIO, same sweep, start-up excluded: liggghts {sweep_liggghts:.3f} s (every sphere stepped until the last "
-              f"leaves) vs reference {single_us * 1e-6 * steps:.3f} s single-threaded: "
-              f"ratio {sweep_liggghts / (single_us * 1e-6 * steps):.2f}")
-        print(f"ratio liggghts/reference per impact-step: {lig_us / single_us:.2f} single-threaded, "
-              f"{lig_us / ref_us:.2f} with {threads} threads (>= 1: the reference is faster; LIGGGHTS runs on one core)")
+    impacts = sum(len(b.v_n0) for b in batches)
+    print(f"hertz-mindlin, {len(batches)} e_n x {impacts // len(batches)} angles, {STEPS} steps per contact")
+    rates = {}
+    for threads in sorted({1, THREADS}):
+        seconds, steps = reference_seconds(batches, threads)
+        rates[threads] = seconds / steps * 1e6
+        print(f"reference, {threads} thread(s): {steps} impact-steps in {seconds:.3f} s = {rates[threads]:.4f} us per "
+              f"impact-step")
+    if liggghts.available():
+        dialect_batches = [plan_batch(liggghts.dialect(law.name), scene, e, STEPS) for e in scene.e_n]
+        total, startup = liggghts_seconds(law, scene, dialect_batches)
+        reference, _ = reference_seconds(dialect_batches, 1)
+        print(f"liggghts: {total:.3f} s for the same sweep, of which start-up {startup:.3f} s")
+        print(f"RATIO liggghts/reference (its dialect, one thread), start-up excluded: "
+              f"{(total - startup) / reference:.1f}; with start-up: {total / reference:.1f}")
     else:
-        print("liggghts: not installed, no side-by-side timing")
+        print(f"liggghts: not available ({liggghts.missing_reason()}), no side-by-side timing")
+    if smoke:
+        return
     start = time.perf_counter()
     default = Scene()
     for name in LAWS:
@@ -95,4 +83,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    main("--smoke" in sys.argv[1:])

@@ -27,10 +27,23 @@ def build_parser():
     return parser
 
 
+def show_log(quiet):
+    """harness' log (what it is doing that takes time, e.g. compiling) as `harness: ...` lines on stderr."""
+    import logging
+    log = logging.getLogger("harness")
+    if not log.handlers:
+        handler = logging.StreamHandler(sys.stderr)
+        handler.setFormatter(logging.Formatter("harness: %(message)s"))
+        log.addHandler(handler)
+        log.propagate = False
+    log.setLevel(logging.WARNING if quiet else logging.INFO)
+
+
 def main(argv=None):
     """Parse, run one command, return its exit code; a user's mistake is one line and 2, Ctrl-C is 130."""
     try:
         args = build_parser().parse_args(argv)
+        show_log(quiet=getattr(args, "quiet", False))
         return args.func(args)
     except UserError as exc:
         print(f"harness: error: {exc}", file=sys.stderr)

@@ -13,16 +13,18 @@ the h -> 0 limit of schemes.step, the second-order paper scheme, integrated at f
 import math
 
 import numpy as np
-from numba import njit, prange
+from numba import njit
 
 from . import codes as C
+from .compiled import announce_compiling
 from .contact_ode import (A_DFN, A_FN, A_TRIAL, E_RELEASE, E_REVERSAL, E_SLIP, E_STICK, E_TURN, M_AMAX, M_DENT,
                           M_DIR, M_LOADING, M_SIGN, M_STAR, M_STICKS, M_TANGENTIAL, N_AUX, N_EVENTS, N_MODE, N_Y, SLIDE, STICK,
                           Y_ALPHA, Y_FS, Y_RATE, Y_VX, Y_W, cone_rate, coulomb_cone, edge_w, evaluate, events,
                           slip_velocity)
-from .events import illinois
 from .dispatch import TANGENTIAL_IMPLICIT, TANGENTIAL_NONE, normal_residual, tangential_onset_w
+from .events import illinois
 from .steppers import J_END, J_START, STAGES, dp_step, hermite, sdirk_step
+from .threads import in_threads
 
 
 SAFETY, GROW, SHRINK = 0.9, 5.0, 0.2
@@ -363,8 +365,14 @@ def impact(p, ints, tol, t_ref, row_out, ext):
     row_out[C.O_STICKING] = mode[M_STICKS] + (1.0 if implicit else 0.0)   # an implicit spring is never on the cone
 
 
-@njit(cache=True, parallel=True)
-def integrate_adaptive(params, ints, tol, t_ref, out, ext):
-    """Every row of params/ints at tolerance tol (rows in parallel); t_ref per row: the contact-time estimate."""
-    for i in prange(params.shape[0]):
+@njit(cache=True, nogil=True)
+def adaptive_rows(first, last, params, ints, tol, t_ref, out, ext):
+    """Rows first..last-1 of params/ints at tolerance tol; t_ref per row: the contact-time estimate."""
+    for i in range(first, last):
         impact(params[i], ints[i], tol, t_ref[i], out[i], ext)
+
+
+def integrate_adaptive(params, ints, tol, t_ref, out, ext):
+    """Every row of params/ints at tolerance tol, rows split between threads."""
+    announce_compiling(adaptive_rows, "the adaptive integrator")
+    in_threads(adaptive_rows, len(params), params, ints, tol, t_ref, out, ext)

@@ -12,26 +12,28 @@ Frame: wall z = 0 below, sphere moving in x-z, spin omega_y; contact-point slip 
 import math
 
 import numpy as np
-from numba import njit, prange
+from numba import njit
 
 from ..submodels.tangential.state import N_TSTATE, T_HELD, T_MARGIN
 from ..submodels.tangential.viscous import friction as viscous_friction
 from . import codes as C
+from .compiled import announce_compiling
 from .dispatch import TANGENTIAL_NONE, TANGENTIAL_VISCOUS, tangential_stiffness
 from .events import locate_release, split_at_event
 from .mesh import PEAK_POINTS, graded_step, parabola_peak, polynomial_peak
-from .schemes import advance, paper_first_touch, step
-from .state import (N_STATE, S_ALPHA, S_C, S_FN, S_FT, S_U, S_VX, S_VZ, S_W, S_Z, reset_history)
+from .schemes import paper_first_touch, step, step_leapfrog, step_leapfrog_sphere, step_velocity_verlet
+from .state import N_STATE, S_ALPHA, S_C, S_FN, S_FT, S_U, S_VX, S_VZ, S_W, S_Z, reset_history
+from .threads import in_threads
 
 CONE_BAND = 1e-9          # relative: a tangential force this close to mu F_n counts as on the Coulomb cone
 
 
-@njit(cache=True, parallel=True)
-def integrate(params, ints, out, history, stride, ext):
-    """Integrate every row of `params`/`ints` (rows in parallel); fill `out` and, if stride > 0, `history`."""
-    n = params.shape[0]
+@njit(cache=True, inline="always")
+def integrate_rows(first, last, params, ints, out, history, stride, ext, advance, split, release, first_touch):
+    """Integrate rows first..last-1 of `params`/`ints` with one scheme (its step `advance`, and the paper scheme's
+    event `split`, located `release` and `first_touch`); fill `out` and, if stride > 0, `history`."""
     n_hist = history.shape[1]
-    for i in prange(n):
+    for i in range(first, last):
         s = np.zeros(N_STATE)
         o = np.zeros(N_STATE)
         st = np.zeros(N_TSTATE)
@@ -64,7 +66,7 @@ def integrate(params, ints, out, history, stride, ext):
                 s[S_FT] = -p[C.P_TDAMP] * math.sqrt(tangential_stiffness(code, p[C.P_T1], 0.0)) * slip0
         elif (row_ints[C.I_INTEGRATOR] == C.INTEGRATOR_PAPER and p[C.P_TDAMP] != 0.0
               and row_ints[C.I_TANGENTIAL] != TANGENTIAL_NONE and not TANGENTIAL_VISCOUS[row_ints[C.I_TANGENTIAL]]):
-            paper_first_touch(s, st, p, row_ints, ext)
+            first_touch(s, st, p, row_ints, ext)
         stick_steps = 0
         f_prev2, f_prev1 = 0.0, 0.0
         h_prev = h
@@ -87,18 +89,15 @@ def integrate(params, ints, out, history, stride, ext):
             indicator = advance(s, st, o, ot, p, row_ints, h, scratch, ext)
             h_last = h
             if indicator > 0.0 and paper:
-                a_peak, f_peak, indicator, _ = split_at_event(s, st, o, ot, lo, lot, at_event, at_event_t, p, row_ints,
-                                                              h, scratch, a_peak, f_peak, h, indicator, ext)
+                a_peak, f_peak, indicator, _ = split(s, st, o, ot, lo, lot, at_event, at_event_t, p, row_ints, h,
+                                                     scratch, a_peak, f_peak, h, indicator, ext)
             steps = k + 1
             if indicator <= 0.0 and not paper:
                 t_end = t_now + h                          # the engine ends contact at the step, not inside it
                 status = C.STATUS_OK
             elif indicator <= 0.0:                         # release inside the step; a regime change before it too
-                h_release = h * locate_release(s, st, lo, lot, p, row_ints, h, scratch, indicator, ext)
-                step(s, st, o, ot, p, row_ints, h_release, scratch, ext)
-                a_peak, f_peak, indicator, h_last = split_at_event(s, st, o, ot, lo, lot, at_event, at_event_t, p,
-                                                                   row_ints, h_release, scratch, a_peak, f_peak, h,
-                                                                   -1.0, ext)
+                a_peak, f_peak, indicator, h_last = release(s, st, o, ot, lo, lot, at_event, at_event_t, p, row_ints,
+                                                            h, scratch, a_peak, f_peak, indicator, ext)
                 if indicator <= 0.0:
                     t_end = t_now + h_last
                     status = C.STATUS_OK
@@ -128,8 +127,10 @@ def integrate(params, ints, out, history, stride, ext):
                 history[i, k_rec, 2] = o[S_FN]
                 history[i, k_rec, 3] = o[S_FT]
                 k_rec += 1
-            s[:] = o
-            st[:] = ot
+            for j in range(N_STATE):
+                s[j] = o[j]
+            for j in range(N_TSTATE):
+                st[j] = ot[j]
             if status == C.STATUS_OK:
                 break
             if not (math.isfinite(o[S_VZ]) and math.isfinite(o[S_VX]) and math.isfinite(o[S_W])):
@@ -142,3 +143,79 @@ def integrate(params, ints, out, history, stride, ext):
         for k in range(k_rec, n_hist):
             history[i, k, 0] = math.nan
 
+
+@njit(cache=True, inline="always")
+def paper_release(s, st, o, ot, lo, lot, at_event, at_event_t, p, ints, h, scratch, a_peak, f_peak, indicator, ext):
+    """The paper scheme's release inside its step: located, stepped to, and any regime change before it split."""
+    h_release = h * locate_release(s, st, lo, lot, p, ints, h, scratch, indicator, ext)
+    step(s, st, o, ot, p, ints, h_release, scratch, ext)
+    return split_at_event(s, st, o, ot, lo, lot, at_event, at_event_t, p, ints, h_release, scratch, a_peak, f_peak, h,
+                          -1.0, ext)
+
+
+@njit(cache=True, inline="always")
+def no_split(s, st, o, ot, lo, lot, at_event, at_event_t, p, ints, h, scratch, a_peak, f_peak, h_full, indicator,
+             ext):
+    """Engine schemes end contact at a step and split no step."""
+    return a_peak, f_peak, indicator, h
+
+
+@njit(cache=True, inline="always")
+def no_release(s, st, o, ot, lo, lot, at_event, at_event_t, p, ints, h, scratch, a_peak, f_peak, indicator, ext):
+    return a_peak, f_peak, indicator, h
+
+
+@njit(cache=True, inline="always")
+def no_first_touch(s, st, p, ints, ext):
+    return
+
+
+@njit(cache=True, nogil=True)
+def integrate_paper(first, last, params, ints, out, history, stride, ext):
+    """The paper scheme's rows (docstring of the module)."""
+    integrate_rows(first, last, params, ints, out, history, stride, ext, step, split_at_event, paper_release,
+                   paper_first_touch)
+
+
+@njit(cache=True, nogil=True)
+def integrate_velocity_verlet(first, last, params, ints, out, history, stride, ext):
+    """LIGGGHTS' scheme."""
+    integrate_rows(first, last, params, ints, out, history, stride, ext, step_velocity_verlet, no_split, no_release,
+                   no_first_touch)
+
+
+@njit(cache=True, nogil=True)
+def integrate_leapfrog(first, last, params, ints, out, history, stride, ext):
+    """YADE's scheme against a wall."""
+    integrate_rows(first, last, params, ints, out, history, stride, ext, step_leapfrog, no_split, no_release,
+                   no_first_touch)
+
+
+@njit(cache=True, nogil=True)
+def integrate_leapfrog_sphere(first, last, params, ints, out, history, stride, ext):
+    """YADE's scheme against its stand-in sphere (Luding)."""
+    integrate_rows(first, last, params, ints, out, history, stride, ext, step_leapfrog_sphere, no_split, no_release,
+                   no_first_touch)
+
+
+def kernel_of_batch(params, ints):
+    """The compiled integrator of a batch's scheme (one scheme per batch: its law's); only that one is compiled."""
+    schemes = set(ints[:, C.I_INTEGRATOR].tolist())
+    if len(schemes) != 1:
+        raise ValueError(f"a batch holds one scheme, got {sorted(schemes)}")
+    scheme = schemes.pop()
+    if scheme == C.INTEGRATOR_PAPER:
+        return integrate_paper
+    if scheme == C.INTEGRATOR_VELOCITY_VERLET:
+        return integrate_velocity_verlet
+    if (params[:, C.P_BIG_R] > 0.0).any():
+        return integrate_leapfrog_sphere
+    return integrate_leapfrog
+
+
+def integrate(params, ints, out, history, stride, ext, threads=None):
+    """Integrate every row (fill `out` and, if stride > 0, `history`), rows split between threads."""
+    if len(params):
+        kernel = kernel_of_batch(params, ints)
+        announce_compiling(kernel, f"the {kernel.__name__.removeprefix('integrate_').replace('_', ' ')} integrator")
+        in_threads(kernel, len(params), params, ints, out, history, stride, ext, threads=threads)

@@ -43,7 +43,7 @@ def drift(alpha, rate0, c_alpha, h):
     return alpha + h * rate0 / (1.0 + c_alpha)
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def step_leapfrog(s, st, o, ot, p, ints, h, scratch, ext):
     """YADE NewtonIntegrator: forces from the overlap at x(t) and the half-step velocities v(t - h/2), then
     v(t + h/2) = v(t - h/2) + h F/m and x(t + h) = x(t) + h v(t + h/2). A contact exists while the overlap is
@@ -81,7 +81,7 @@ def step_leapfrog(s, st, o, ot, p, ints, h, scratch, ext):
     return 1.0 if in_contact else -1.0
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def step(s, st, o, ot, p, ints, h, scratch, ext):
     """Advance state (s, st) by h into (o, ot); returns the end-of-contact indicator (contact while > 0).
 
@@ -116,7 +116,7 @@ def step(s, st, o, ot, p, ints, h, scratch, ext):
     return indicator
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def step_velocity_verlet(s, st, o, ot, p, ints, h, scratch, ext):
     """LIGGGHTS nve/sphere + wall/gran: half kick, drift, forces from the half-step velocities, half kick.
 
@@ -143,7 +143,7 @@ def step_velocity_verlet(s, st, o, ot, p, ints, h, scratch, ext):
     return alpha
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def step_leapfrog_sphere(s, st, o, ot, p, ints, h, scratch, ext):
     """YADE Luding against a fixed sphere of radius R_big standing in for the wall, with YADE's own geometry:
     overlap (R_big + R) - |x2 - x1|, normal along x2 - x1, contact point in the middle of the overlap, shear force
@@ -201,18 +201,6 @@ def step_leapfrog_sphere(s, st, o, ot, p, ints, h, scratch, ext):
     for k in range(N_TSTATE):
         ot[k] = st[k]
     return 1.0 if in_contact else -1.0
-
-
-@njit(cache=True, inline="always")
-def advance(s, st, o, ot, p, ints, h, scratch, ext):
-    """One step of the row's integrator."""
-    if ints[C.I_INTEGRATOR] == C.INTEGRATOR_VELOCITY_VERLET:
-        return step_velocity_verlet(s, st, o, ot, p, ints, h, scratch, ext)
-    if ints[C.I_INTEGRATOR] == C.INTEGRATOR_LEAPFROG and p[C.P_BIG_R] > 0.0:
-        return step_leapfrog_sphere(s, st, o, ot, p, ints, h, scratch, ext)
-    if ints[C.I_INTEGRATOR] == C.INTEGRATOR_LEAPFROG:
-        return step_leapfrog(s, st, o, ot, p, ints, h, scratch, ext)
-    return step(s, st, o, ot, p, ints, h, scratch, ext)
 
 
 @njit(cache=True, inline="always")
