@@ -1,12 +1,16 @@
 """The Python API: `run` and `compare` with the CLI's option names as keywords (docs/user-guide.md)."""
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import replace
 
+import pandas as pd
+
 from .analyses.attribution import attribution
+from .analyses.precision import precision_gap
 from .analyses.sliding import sliding_thresholds, threshold_table
 from .comparison import Comparison
 from .engines import ENGINES, EXTERNAL
 from .engines.protocol import Status
-from .execute import execute
+from .execute import execute, run_all
 from .plan import CONVERGED, compare_plan, reference_runs
 from .request import Request
 from .solver.reference import simulate
@@ -50,39 +54,60 @@ def statuses(request):
     return out
 
 
-def compare_request(request, on_frame=None):
-    """Run the comparison of a validated request (on_frame(frame) after each run) and return it."""
+def compare_request(request, on_frame=None, on_done=None):
+    """Run the comparison of a validated request (on_frame(frame) as each run of the comparison is done, on_done(run,
+    frame) as any run is) and return it. What needs no engine result (attribution, the sliding threshold, force histories, the precision check) runs
+    beside the engines."""
     law, scene = request.law, request.scene
-    ran = [s for s in statuses(request) if s.available]
-    engines = {ENGINES[s.name]: request.engine_options.get(s.name, {}) for s in ran}
+    found = statuses(request)
+    engines = {ENGINES[s.name]: request.engine_options.get(s.name, {}) for s in found if s.available}
     engine_resolution = 1000 if request.resolution == CONVERGED else request.resolution
     plan = compare_plan(law, scene, request.resolution, engines, engine_resolution)
     for run_ in plan:                          # a time step above a stability limit: refused before anything runs
         if run_.resolution != CONVERGED:
             run_.batch()
-    results, failures = execute(plan, on_frame)
+    checks = [(engine.NAME, engine.precision_runs(law, scene)) for engine, options in engines.items()
+              if hasattr(engine, "precision_runs") and options.get("precision", "double") == "double"]
+    extra = [run_ for _, pair in checks for run_ in pair]
+    with ThreadPoolExecutor(max_workers=1) as beside:
+        measured = beside.submit(measurements, law, scene, engines, engine_resolution)
+        in_plan = {id(run_) for run_ in plan}
 
+        def finished(run_, frame):
+            if on_frame is not None and id(run_) in in_plan:
+                on_frame(frame)
+            if on_done is not None:
+                on_done(run_, frame)
+        done = run_all(plan + extra, finished)
+        attributions, sliding, histories = measured.result()
+    results = pd.concat([frame for frame, _ in done[:len(plan)]], ignore_index=True)
+    failures = [failure for _, failure in done[:len(plan)] if failure is not None]
+    precision, checked = None, iter(done[len(plan):])
+    for name, pair in checks:
+        if pair:
+            (double, _), (high, _) = next(checked), next(checked)
+            precision = precision_gap(double, high, name, pair[1].options_dict["precision"])
+    return Comparison(law, scene, results, overrides=dict(request.overrides), engine_options=request.engine_options,
+                      requested=request.engines, skipped=[(s.name, s.reason) for s in found if not s.available],
+                      failures=failures, attribution=attributions, sliding=sliding, precision=precision,
+                      histories=histories)
+
+
+def measurements(law, scene, engines, steps):
+    """What a comparison measures beside the runs: the attribution of each engine's difference from the paper law
+    and of each pair of engines, the paper law's sliding-throughout threshold, its normal force histories."""
     def simulate_at(l, s):
-        return simulate(l, s, steps_per_contact=engine_resolution)[0]
+        return simulate(l, s, steps_per_contact=steps)[0]
 
-    attributions, dialects = {}, {}
-    for engine, options in engines.items():
-        dialects[engine.NAME] = engine.dialect(law.name, options)
-        attributions[f"{engine.NAME} dialect -> paper"] = attribution(law, dialects[engine.NAME], scene, simulate_at)
+    dialects = {engine.NAME: engine.dialect(law.name, options) for engine, options in engines.items()}
+    attributions = {f"{name} dialect -> paper": attribution(law, dialect, scene, simulate_at)
+                    for name, dialect in dialects.items()}
     names = list(dialects)
     for i, a in enumerate(names):                      # every pair of engines: which ingredients make the difference
         for b in names[i + 1:]:
             attributions[f"{a} dialect -> {b} dialect"] = attribution(dialects[b], dialects[a], scene, simulate_at)
-    precision = None
-    for engine, options in engines.items():
-        if hasattr(engine, "precision_gap") and options.get("precision", "double") == "double" and not failures:
-            precision = engine.precision_gap(law, scene, engine_resolution)
     sliding = threshold_table(law.name, sliding_thresholds(law, scene)) if scene.mu > 0 else None
-    return Comparison(law, scene, results, overrides=dict(request.overrides), engine_options=request.engine_options,
-                      requested=request.engines, skipped=[(s.name, s.reason) for s in statuses(request)
-                                                          if not s.available],
-                      failures=failures, attribution=attributions, sliding=sliding, precision=precision,
-                      histories=normal_histories(law, scene, engine_resolution))
+    return attributions, sliding, normal_histories(law, scene, steps)
 
 
 def normal_histories(law, scene, steps):

@@ -25,6 +25,8 @@ class Comparison:
     sliding: pd.DataFrame | None = None
     precision: dict | None = None
     histories: dict | None = None
+    command: str = ""                   # the command line that made it, when a command did
+    date: str = ""                      # when it finished (local time, ISO 8601 to the minute)
 
     @property
     def engines(self):

@@ -24,7 +24,7 @@ def save_comparison(out_dir, comparison):
     write_text(os.path.join(out_dir, RUN), json.dumps(
         {"model": comparison.law.name, "overrides": comparison.overrides, "scene": scene_fields,
          "skipped": comparison.skipped, "engine_options": comparison.engine_options,
-         "requested": comparison.requested}, indent=1))
+         "requested": comparison.requested, "command": comparison.command, "date": comparison.date}, indent=1))
     tables = [table.assign(comparison=name) for name, table in comparison.attribution.items()]
     _table(out_dir, ATTRIBUTION, pd.concat(tables, ignore_index=True) if tables else None)
     rows = [pd.DataFrame(h[0][~np.isnan(h[0][:, 0])], columns=["t", "overlap", "f_n", "f_t"]).assign(e_n_target=e)
@@ -96,7 +96,8 @@ def load_comparison(out_dir):
                       engine_options=run.get("engine_options", {}), requested=tuple(requested) if requested else None,
                       skipped=[tuple(s) for s in run["skipped"]], failures=failures, attribution=attributions,
                       sliding=sliding if not sliding.empty else None,
-                      precision=precision.iloc[0].to_dict() if not precision.empty else None, histories=histories)
+                      precision=precision.iloc[0].to_dict() if not precision.empty else None, histories=histories,
+                      command=run.get("command", ""), date=run.get("date", ""))
 
 
 def load_cost(out_dir):

@@ -239,7 +239,7 @@ def test_thornton_ning_energy_gain_is_reported_as_a_finding():
 @needs_liggghts
 def test_compare_cli_prints_agreement_deviation_attribution(tmp_path):
     proc = subprocess.run([sys.executable, "-m", "harness", "compare", "--model", "linear-spring-dashpot",
-                           "--en", "0.5", "--angles", "0,30,60", "--engines", "liggghts", "-o", str(tmp_path)],
+                           "--en", "0.5", "--angles", "0,30,60", "--engines", "liggghts", "--verbose", "-o", str(tmp_path)],
                           capture_output=True, text=True, timeout=600)
     assert proc.returncode == 0, proc.stdout + proc.stderr
     out = proc.stdout

@@ -82,7 +82,7 @@ def test_paper_writes_its_tables_and_page(paper_dir):
     assert (oblique.v_n0 == 5.0).all() and oblique.psi1_star.max() == pytest.approx(14.0, rel=1e-3)
     assert set(oblique[oblique.model == "thornton"].e_n_target) == {0.25, 0.5, 0.75, 0.9}
     html = (paper_dir / "paper.html").read_text()
-    assert html.count("data:image/png;base64,") == 4 and "provisional" in html
+    assert html.count("<svg") == 4 and "provisional" in html
     assert "partially-latching-spring</b>" in html                 # named among the reconstructed laws
 
 

@@ -43,14 +43,12 @@ def test_report_renders_figures_and_tables_without_errors(report, browser):
     assert "hertz-mindlin" in browser.title
     severe = [entry for entry in browser.get_log("browser") if entry["level"] == "SEVERE"]
     assert severe == []
-    images = browser.find_elements(By.TAG_NAME, "img")
-    assert len(images) >= 5                                  # four per-law figures and the force curves
-    for image in images:
-        width, height, complete = browser.execute_script(
-            "return [arguments[0].naturalWidth, arguments[0].naturalHeight, arguments[0].complete];", image)
-        assert complete and width > 300 and height > 150
+    figures = browser.find_elements(By.CSS_SELECTOR, "figure > svg")
+    assert len(figures) >= 5                                  # four per-law figures and the force curves
+    for figure in figures:
+        assert figure.size["width"] > 300 and figure.size["height"] > 150
     headings = [h.text for h in browser.find_elements(By.TAG_NAME, "h2")]
-    agreement = headings.index("Agreement: engine against its dialect at equal time step")
+    agreement = headings.index("Agreement: engine against its own formulas at equal time step")
     table = browser.find_elements(By.XPATH, f"(//h2)[{agreement + 1}]/following-sibling::table[1]//tr")
     from harness.engines import ENGINES, EXTERNAL
     engines = [name for name in EXTERNAL if ENGINES[name].available()]
@@ -72,6 +70,35 @@ def test_report_renders_figures_and_tables_without_errors(report, browser):
     assert shot.stat().st_size > 10000
 
 
+def test_report_opens_with_the_verdict_per_engine_and_where_everything_is(report, browser):
+    """The summary box comes first: the verdict, one row per engine with its version, agreement, worst difference
+    and tolerance as results.csv gives them, the scene, the command line and a link to every file beside it."""
+    from selenium.webdriver.common.by import By
+    import pandas as pd
+    from harness.analyses.agreement import AGREEMENT_TOLERANCE
+    browser.get(f"file://{report / 'report.html'}")
+    summary = browser.find_element(By.ID, "summary")
+    first = browser.find_element(By.XPATH, "//body/*[2]")
+    assert first.get_attribute("id") == "summary"                    # right under the title
+    assert summary.find_element(By.CLASS_NAME, "verdict").text.startswith("Agreement holds")
+    results = pd.read_csv(report / "results.csv")
+    rows = summary.find_elements(By.XPATH, ".//table//tr")[1:]
+    engines = sorted(e for e in results.engine.unique() if e != "reference")
+    assert sorted(r.find_elements(By.TAG_NAME, "td")[0].text for r in rows) == engines
+    for row in rows:
+        cells = [c.text for c in row.find_elements(By.TAG_NAME, "td")]
+        assert cells[1] == str(results[results.engine == cells[0]].engine_version.iloc[0]) and cells[2] == "agrees"
+        assert float(cells[4]) == AGREEMENT_TOLERANCE and float(cells[3].split()[0]) < AGREEMENT_TOLERANCE
+    text = summary.text
+    assert "harness compare --model hertz-mindlin" in text and "radius 25 mm" in text and "70 GPa" in text
+    links = {a.get_attribute("href").rsplit("/", 1)[1] for a in summary.find_elements(By.TAG_NAME, "a")
+             if a.get_attribute("href").startswith("file:")}
+    assert {"results.csv", "run.json", "attribution.csv"} <= links
+    assert all((report / name).exists() for name in links)
+    contents = [a.get_attribute("href").rsplit("#", 1)[1] for a in browser.find_elements(By.CSS_SELECTOR, "nav a")]
+    assert contents and all(browser.find_elements(By.ID, anchor) for anchor in contents)
+
+
 def test_rebuilding_the_report_simulates_nothing(report, monkeypatch):
     """`harness report DIR` reads the directory only: the kernel and every engine are made to fail, and the
     rebuilt report still holds the same tables and figures."""
@@ -87,6 +114,7 @@ def test_rebuilding_the_report_simulates_nothing(report, monkeypatch):
     before = (report / "report.html").read_text()
     (report / "report.html").unlink()
     after = open(rebuild(str(report))).read()
-    assert after.count("data:image/png;base64,") == before.count("data:image/png;base64,") >= 5
-    for heading in ("Agreement: engine against its dialect", "Attribution:", "Normal impact against elastic Hertz"):
+    assert after.count("<figure><svg") == before.count("<figure><svg") >= 5
+    for heading in ("Agreement: engine against its own formulas", "Attribution, one ingredient",
+                    "Normal impact against elastic Hertz"):
         assert heading in after

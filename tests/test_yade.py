@@ -176,7 +176,7 @@ def test_compare_with_both_engines_prints_the_engine_against_engine_attribution(
     if not liggghts.available():
         pytest.skip("liggghts is not installed")
     proc = subprocess.run([sys.executable, "-m", "harness", "compare", "--model",
-                           "hertz-mindlin", "--en", "0.5", "--angles", "0,30,60", "-o", str(tmp_path)],
+                           "hertz-mindlin", "--en", "0.5", "--angles", "0,30,60", "--verbose", "-o", str(tmp_path)],
                           capture_output=True, text=True, timeout=600)
     assert proc.returncode == 0, proc.stdout + proc.stderr
     assert "yade against liggghts" in proc.stdout
@@ -192,9 +192,14 @@ def test_compare_with_both_engines_prints_the_engine_against_engine_attribution(
 @needs_yade
 def test_precision_gap_double_against_mpfr150_is_round_off():
     """The report's precision figure: double and mpfr150 differ on a smooth impact at round-off level only."""
+    from harness.analyses.precision import precision_gap
+    from harness.execute import execute
     if not yade.available("mpfr150"):
         pytest.skip("yade-mpfr150 is not installed")
-    gap = yade.precision_gap(compose("hertz-mindlin"), Scene(e_n=(0.5,), angles_deg=(0.0, 45.0)), 200, samples=2)
+    double, high = yade.precision_runs(compose("hertz-mindlin"), Scene(e_n=(0.5,), angles_deg=(10.0, 30.0, 60.0)))
+    assert double.options_dict == {"precision": "double"} and high.options_dict == {"precision": "mpfr150"}
+    assert list(double.scene.angles_deg) == [10.0, 60.0]              # the impacts nearest 20 and 60 deg
+    gap = precision_gap(execute([double])[0], execute([high])[0], "yade", "mpfr150")
     assert gap["against"] == "mpfr150"
     values = [gap[k] for k in ("v_n1", "v_t1", "omega1")]
     assert max(values) < 1e-9 and max(values) > 0.0

@@ -1,5 +1,4 @@
-"""The README's picture of the report: its first figure with what is above it on screen, in headless Debian
-chromium, as a PNG.
+"""The README's picture of the report: its top (the summary and the contents) in headless Debian chromium, as a PNG.
 
     .venv/bin/python tools/report_picture.py harness-out docs/report.png
 """
@@ -11,7 +10,7 @@ from selenium import webdriver
 from selenium.webdriver.chrome.service import Service
 
 CHROMIUM, DRIVER = "/usr/bin/chromium", "/usr/bin/chromedriver"
-WIDTH, HEIGHT = 1100, 900
+WIDTH, HEIGHT = 1300, 1000
 
 
 def picture(report_dir, out):
@@ -24,7 +23,6 @@ def picture(report_dir, out):
         driver = webdriver.Chrome(service=Service(DRIVER), options=options)
         try:
             driver.get(Path(report_dir, "report.html").resolve().as_uri())
-            driver.execute_script("var f = document.querySelector('img'); if (f) f.scrollIntoView();")
             driver.save_screenshot(str(out))
         finally:
             driver.quit()

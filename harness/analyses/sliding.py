@@ -21,7 +21,7 @@ PSI_MAX = 40.0          # Psi1* searched up to this (the rigid-body threshold is
 SLIDING_STEPS = 10000   # steps per contact of the kernel's runs that search for it (a stick shorter than a step
                         # hides: the threshold found is low by ~1e-3 x Psi1* where the adaptive integrator cannot run)
 ADAPTIVE_TOLERANCE = 1e-9
-GRID, ROUNDS = 48, 4    # points per round, rounds: the bracket shrinks ~(GRID - 1)^(ROUNDS - 1) times
+GRID, ROUNDS = 24, 5    # points per round, rounds: the bracket shrinks ~(GRID - 1)^(ROUNDS - 1) times
 
 
 @dataclass(frozen=True)

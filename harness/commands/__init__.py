@@ -4,7 +4,7 @@ import sys
 
 from ..errors import UserError
 from ..version import __version__
-from .options import EXIT_CODES, EXIT_INTERRUPTED, EXIT_USAGE, Parser
+from .options import EXIT_CODES, EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_USAGE, Parser
 
 
 def describe(sub, name, summary, example):
@@ -51,3 +51,9 @@ def main(argv=None):
     except KeyboardInterrupt:
         print("harness: interrupted; finished results were kept", file=sys.stderr)
         return EXIT_INTERRUPTED
+    except Exception:                                   # a bug of harness: never exit 1, which means disagreement
+        import traceback
+        traceback.print_exc()
+        print(f"harness: internal error (exit {EXIT_INTERNAL}); please report it with the traceback above",
+              file=sys.stderr)
+        return EXIT_INTERNAL

@@ -1,16 +1,22 @@
 """`harness compare`: the paper law, each engine's dialect and each engine on one scene; tables, CSVs, report."""
+import datetime
+import json
 import os
+import shlex
+import sys
 
 import pandas as pd
 
+from ..analyses.verdict import DISAGREE, NOT_COMPARED, verdict
 from ..api import compare_request
 from ..outputs import save_comparison
 from ..request import Request
 from ..results import write_csv
+from ..views.drawing import preload
 from ..views.html import rebuild
-from ..views.terminal import print_comparison
-from .options import (EXIT_DISAGREE, EXIT_ENGINE, EXIT_OK, add_engine_options, add_scene_options,
-                      check_output_directory, keywords)
+from ..views.terminal import print_comparison, print_summary, verdict_line
+from .options import (EXIT_DISAGREE, EXIT_ENGINE, EXIT_OK, add_engine_options, add_output_options,
+                      add_scene_options, check_output_directory, keywords)
 
 EXAMPLE = "harness compare --model hertz-mindlin --engines liggghts --en 0.5 -o out/"
 
@@ -22,7 +28,7 @@ def add(sub, describe):
     add_engine_options(p)
     add_scene_options(p)
     p.add_argument("-o", "--output", default="harness-out", metavar="DIR", help="output directory (default %(default)s)")
-    p.add_argument("--quiet", action="store_true", help="print only the verdict")
+    add_output_options(p, json=True, verbose=True)
     p.set_defaults(func=main)
 
 
@@ -38,14 +44,38 @@ def main(args):
         os.makedirs(args.output, exist_ok=True)
         write_csv(pd.concat(frames, ignore_index=True), results_path)
 
+    preload()                              # the report's plotting library loads beside the runs
     comparison = compare_request(request, on_frame=keep)
+    comparison.command = command_line()
+    comparison.date = datetime.datetime.now().isoformat(timespec="minutes")
     os.makedirs(args.output, exist_ok=True)
     save_comparison(args.output, comparison)
     report = rebuild(args.output)
-    if not args.quiet:
+    record = verdict(comparison)
+    reference_only = request.engines is not None and set(request.engines) == {"reference"}
+    code = exit_code(record, reference_only)
+    if args.json:
+        print(json.dumps({**record, "exit_code": code, "files": {"results": results_path, "report": report}},
+                         indent=1, default=str))
+        return code
+    if args.verbose:
         print_comparison(comparison, [results_path, report])
-    if comparison.unavailable:
-        print(f"agreement: not checked for {', '.join(comparison.unavailable)}, asked for by name")
+    elif not args.quiet:
+        print_summary(record, comparison, [results_path, report])
+    print(verdict_line(record, reference_only))
+    return code
+
+
+def command_line():
+    """This command as typed (for the report)."""
+    return "harness " + shlex.join(sys.argv[1:])
+
+
+def exit_code(record, reference_only):
+    """1 when an engine disagrees; 3 when an engine asked for did not run, a run failed, or nothing was compared
+    (unless the reference alone was asked for); else 0."""
+    if record["verdict"] == DISAGREE:
+        return EXIT_DISAGREE
+    if record["unavailable"] or record["failed"] or (record["verdict"] == NOT_COMPARED and not reference_only):
         return EXIT_ENGINE
-    print("agreement: " + ("no engine compared" if not comparison.compared else "ok" if comparison.ok else "FAILED"))
-    return EXIT_OK if comparison.ok else EXIT_DISAGREE
+    return EXIT_OK

@@ -7,12 +7,14 @@ import os
 from ..errors import UserError
 from ..scene import DEFAULT_EN
 
-EXIT_OK, EXIT_DISAGREE, EXIT_USAGE, EXIT_ENGINE, EXIT_INTERRUPTED = 0, 1, 2, 3, 130
+EXIT_OK, EXIT_DISAGREE, EXIT_USAGE, EXIT_ENGINE, EXIT_INTERNAL, EXIT_INTERRUPTED = 0, 1, 2, 3, 4, 130
 EXIT_CODES = """exit codes:
-  0  done; every compared engine agrees with its dialect
-  1  an engine disagrees with its dialect, or the regression check found a metric outside tolerance
-  2  bad input (one line on stderr says which)
-  3  an engine asked for by name could not run, or one of its runs failed (its log tail is printed)
+  0  done; every engine compared agrees with its own formulas
+  1  an engine disagrees with its own formulas, or `check` found a metric outside tolerance
+  2  bad input (one line on stderr says which); nothing was run
+  3  an engine could not run (missing, mis-set, crashed, timed out: what and why is printed) while it was asked
+     for by name or had runs that failed, or nothing was compared
+  4  an internal error of harness (a bug: the traceback is printed)
   130 interrupted; finished results were kept"""
 
 
@@ -118,6 +120,17 @@ def add_scene_options(parser, resolution=True):
                      help="one time step in seconds for every law and e_n (refused above the stability limit)")
     how.add_argument("--converged", action="store_true",
                      help="integrate the exact limit: results within ~1e-6 of the h -> 0 solution")
+
+
+def add_output_options(parser, json=False, verbose=False):
+    """--quiet (and --verbose, --json where a command has them), meaning the same in every command."""
+    out = parser.add_argument_group("output")
+    out.add_argument("--quiet", action="store_true",
+                     help="print only the last line (the outcome and where the files are), no progress")
+    if verbose:
+        out.add_argument("--verbose", action="store_true", help="print every table, not only the summary")
+    if json:
+        out.add_argument("--json", action="store_true", help="print one JSON summary on stdout and nothing else there")
 
 
 def add_engine_options(parser):

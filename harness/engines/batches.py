@@ -1,12 +1,15 @@
 """One run of the plan through an external engine as result rows (a failed batch keeps its log), and the input it
 would be given."""
+import os
 import tempfile
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 
 import numpy as np
 
 from ..errors import UserError
 from ..results import impact_frame
+from ..solver.threads import THREADS
 from ..solver.codes import P_MAXSTEPS
 from .runner import EngineFailure
 
@@ -26,28 +29,86 @@ class FailedRun:
 OBSERVED = ("t_contact", "f_n_max", "overlap_max")
 
 
-def run_batch_rows(engine, version, run_batch, run):
-    """One run of the plan through an external engine (its name, version and run_batch) as result rows, and its
-    FailedRun (None when it ran): a refused or failed run gives 'failed' rows carrying its one-line message."""
-    batch = run.batch()
-    scene, options = run.scene, run.options_dict
-    max_steps = int(batch.params[:, P_MAXSTEPS].max())
-    timeout = TIMEOUT_FLOOR_S + SECONDS_PER_ATOM_STEP * len(batch.v_n0) * max_steps
-    identity = dict(model=run.law.name, dialect=run.dialect.dialect, engine=engine, engine_version=version,
-                    dt=batch.dt, steps_per_contact=batch.steps_per_contact)
-    try:
-        with tempfile.TemporaryDirectory(prefix=f"harness-{engine}-") as workdir:
-            final, wall, _ = run_batch(run.law, scene, batch, max_steps, timeout, workdir, options, observe=run.observe)
-    except EngineFailure as exc:
-        nan = np.full(len(batch.v_n0), np.nan)
-        frame = impact_frame(scene, batch, **identity, v_n1=nan, v_t1=nan, omega1=nan, wall_s=np.nan,
-                             status="failed", message=str(exc))
-        return frame, FailedRun(engine, batch.e_n, str(exc), exc.log_tail)
+def timeout_of(batch, max_steps):
+    """A generous deadline for one batch: a floor for start-up plus a rate per sphere-step."""
+    return TIMEOUT_FLOOR_S + SECONDS_PER_ATOM_STEP * len(batch.v_n0) * max_steps
+
+
+def max_steps_of(batch):
+    return int(batch.params[:, P_MAXSTEPS].max())
+
+
+def identity_of(engine, version, run, batch):
+    return dict(model=run.law.name, dialect=run.dialect.dialect, engine=engine, engine_version=version, dt=batch.dt,
+                steps_per_contact=batch.steps_per_contact)
+
+
+def failed_rows(engine, version, run, batch, failure):
+    """'failed' rows of a run that produced nothing, carrying its one-line message, and its FailedRun."""
+    nan = np.full(len(batch.v_n0), np.nan)
+    frame = impact_frame(run.scene, batch, **identity_of(engine, version, run, batch), v_n1=nan, v_t1=nan, omega1=nan,
+                         wall_s=np.nan, status="failed", message=str(failure))
+    return frame, FailedRun(engine, batch.e_n, str(failure), failure.log_tail)
+
+
+def result_rows(engine, version, run, batch, final, wall):
+    """The rows of a run that finished: each impact's rebound, whether it separated, its share of the wall time."""
     observed = {name: final[name] for name in OBSERVED if run.observe}
-    frame = impact_frame(scene, batch, **identity, v_n1=final["v_n1"], v_t1=final["v_t1"], omega1=final["omega1"],
-                         wall_s=wall / len(batch.v_n0), status=np.where(final["separated"], "ok", "no-separation"),
-                         message="", **observed)
-    return frame, None
+    return impact_frame(run.scene, batch, **identity_of(engine, version, run, batch), v_n1=final["v_n1"],
+                        v_t1=final["v_t1"], omega1=final["omega1"], wall_s=wall / len(batch.v_n0),
+                        status=np.where(final["separated"], "ok", "no-separation"), message="", **observed)
+
+
+def run_grouped(engine, version, runs, input_name, render, group_of, run_inputs, read):
+    """Each run as (results frame, FailedRun or None). The runs of one group (group_of(run): e.g. the flavour) share
+    engine processes, one per core at most, each batch in its own directory batch<k> of the process's temporary
+    directory with its input in `input_name`; the processes run side by side. render(run, batch) -> its input text (an
+    EngineFailure refuses that run alone); run_inputs(group, n, timeout, workdir) runs the n inputs and returns each
+    batch's wall seconds (an EngineFailure fails the process: its batches are then run one per process, so that each
+    failure is its own); read(run, batch, directory) -> its final state."""
+    out, groups = [None] * len(runs), {}
+    for i, run in enumerate(runs):
+        batch = run.batch()
+        try:
+            text = render(run, batch)
+        except EngineFailure as exc:
+            out[i] = failed_rows(engine, version, run, batch, exc)
+            continue
+        groups.setdefault(group_of(run), []).append((i, run, batch, text))
+    shares = [(group, items[k::processes]) for group, items in groups.items()
+              for processes in [min(THREADS, len(items))] for k in range(processes)]
+
+    def one_process(group, items):
+        with tempfile.TemporaryDirectory(prefix=f"harness-{engine}-") as workdir:
+            for k, (_, _, _, text) in enumerate(items):
+                os.makedirs(os.path.join(workdir, f"batch{k}"))
+                with open(os.path.join(workdir, f"batch{k}", input_name), "w") as handle:
+                    handle.write(text)
+            timeout = sum(timeout_of(batch, max_steps_of(batch)) for _, _, batch, _ in items)
+            try:
+                walls = run_inputs(group, len(items), timeout, workdir)
+            except EngineFailure as exc:
+                if len(items) > 1:           # one process per batch, so that the failure names its batch
+                    for i, run, _, _ in items:
+                        out[i] = run_grouped(engine, version, [run], input_name, render, group_of, run_inputs,
+                                             read)[0]
+                    return
+                walls = [exc]
+            for k, ((i, run, batch, _), wall) in enumerate(zip(items, walls)):
+                try:
+                    if isinstance(wall, EngineFailure):
+                        raise wall
+                    final = read(run, batch, os.path.join(workdir, f"batch{k}"))
+                    out[i] = (result_rows(engine, version, run, batch, final, wall), None)
+                except EngineFailure as exc:
+                    out[i] = failed_rows(engine, version, run, batch, exc)
+    if len(shares) == 1:
+        one_process(*shares[0])
+    elif shares:
+        with ThreadPoolExecutor(max_workers=len(shares)) as pool:
+            for future in [pool.submit(one_process, group, items) for group, items in shares]:
+                future.result()
+    return out
 
 
 def render_input(engine, suffix, render_batch, run):
@@ -55,7 +116,7 @@ def render_input(engine, suffix, render_batch, run):
     input rules is the user's to fix, so it is a UserError."""
     batch = run.batch()
     try:
-        text = render_batch(run.law, run.scene, batch, int(batch.params[:, P_MAXSTEPS].max()), run.options_dict)
+        text = render_batch(run.law, run.scene, batch, max_steps_of(batch), run.options_dict)
     except EngineFailure as exc:
         raise UserError(str(exc)) from None
     return f"{engine}-{run.law.name}-en{run.e_n:g}{suffix}", text

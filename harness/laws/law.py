@@ -41,7 +41,7 @@ class Law:
         damping = self.damping.name + (f":{self.damping.calibration}" if self.damping.calibration else "")
         return {"normal": self.normal.label(), "damping": damping, "end": self.end,
                 "tangential": self.tangential.label(), "tangential-damping": self.tangential_damping.label(),
-                "integrator": self.integrator, "lever": f"R - {self.lever:g} alpha", "slip": self.slip}
+                "integrator": self.integrator, "lever": {0.0: "R", 0.5: "R - d/2", 1.0: "R - d"}.get(self.lever, f"R - {self.lever:g} d"), "slip": self.slip}
 
     @property
     def provisional(self):

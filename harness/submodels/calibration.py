@@ -1,9 +1,8 @@
-"""Calibrations: the model parameter that gives a target normal restitution e_n (docs/laws.md)."""
+"""Calibrations: the model parameter that gives a target normal restitution e_n (docs/laws.md). scipy is imported
+where a calibration needs it (it takes 0.3 s to load)."""
 import math
 from functools import lru_cache
 
-from scipy.integrate import solve_ivp
-from scipy.optimize import brentq
 
 APPENDIX_B = (-6.918798, -16.41105, 146.8049, -796.4559, 2928.711,
               -7206.864, 11494.29, -11342.18, 6276.757, -1489.915)
@@ -33,6 +32,7 @@ def lsd_notension_e(g):
 @lru_cache(maxsize=None)
 def lsd_notension_g(e):
     """Invert Schwager & Poeschel's e(g) numerically (docs/laws.md)."""
+    from scipy.optimize import brentq
     if e >= 1.0:
         return 0.0
     return brentq(lambda g: lsd_notension_e(g) - e, 0.0, 50.0, xtol=1e-15, rtol=1e-15)
@@ -53,6 +53,7 @@ def tsuji_tension_A(e):
 
 def _normalised_restitution(rhs_damping, param, end):
     """e of X'' = -X^3/2 - param D(X) X', X(0) = 0, X'(0) = 1, ending at X = 0 or at zero force (no tension)."""
+    from scipy.integrate import solve_ivp
     def force(x, v):
         xp = max(x, 0.0)
         return xp ** 1.5 + param * rhs_damping(xp) * v
@@ -73,6 +74,7 @@ def _normalised_restitution(rhs_damping, param, end):
 def _invert(fun, e, lo, hi):
     """The parameter in [lo, hi] with fun(parameter) = e; a target within the ODE tolerance of 1 (e above fun(lo))
     needs no more damping than lo."""
+    from scipy.optimize import brentq
     if fun(lo) <= e:
         return lo
     return brentq(lambda p: fun(p) - e, lo, hi, xtol=1e-13, rtol=1e-12)
@@ -118,6 +120,7 @@ def stronge_restitution(r):
 @lru_cache(maxsize=None)
 def yield_velocity_ratio(e, law):
     """r = V_y/V that gives e for the 'thornton' or 'stronge' plastic law."""
+    from scipy.optimize import brentq
     if e >= 1.0:
         return 1.0
     fun = thornton_restitution if law == "thornton" else stronge_restitution

@@ -1,7 +1,9 @@
 """The report's accuracy-against-cost section, from cost.csv alone: log-log figures and the tables."""
 import numpy as np
 
-from .pieces import figure_png, records
+from . import style
+from .drawing import draw_all
+from .pieces import figure_svg, records
 from ..analyses.cost import (ADAPTIVE, EXTRAPOLATED, METRICS, TOLERANCES, convergence_orders, ladder_rows, per_rung,
                    recommendations)
 
@@ -10,15 +12,11 @@ LABELS = {"e_n": "e_n", "e_t": "e_t", "omega_star": "Omega*", "t_contact": "cont
 
 
 def curve_style(engine, dialect):
-    """Engines solid with markers, the reference's dialects dashed, the paper law thick, the converged mode's rungs
-    (adaptive or extrapolated) thick and dotted."""
-    if engine == "reference" and dialect == "paper":
-        return {"lw": 2.2, "ls": "-", "marker": "o", "ms": 3}
+    """The report's colour per engine and line style per dialect (views.style); the converged mode's rungs (adaptive
+    or extrapolated) as the paper law's colour, dotted, with triangles."""
     if engine == "reference" and dialect in (EXTRAPOLATED, ADAPTIVE):
-        return {"lw": 2.2, "ls": ":", "marker": "^", "ms": 4}
-    if engine == "reference":
-        return {"lw": 1.2, "ls": "--", "marker": ".", "ms": 3}
-    return {"lw": 1.4, "ls": "-", "marker": "s", "ms": 3}
+        return {"color": style.colour(engine), "lw": 1.8, "ls": ":", "marker": "^", "ms": 4}
+    return {**style.curve(engine, dialect), "marker": "o" if engine == "reference" else "s", "ms": 3}
 
 
 def _curves(cost):
@@ -36,14 +34,15 @@ def cost_figure(cost, x_column, x_label, metrics):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, axes = plt.subplots(1, len(metrics), figsize=(3.7 * len(metrics), 3.6), squeeze=False)
+    fig, axes = plt.subplots(1, len(metrics), figsize=(3.7 * len(metrics), 3.6), squeeze=False, layout="constrained")
     for ax, metric in zip(axes[0], metrics):
         column = f"err_{metric}"
         for engine, dialect, ladder, rayleigh, converged in _curves(cost):
             data = ladder[np.isfinite(ladder[column]) & (ladder[column] > 0) & (ladder[x_column] > 0)]
             if data.empty:
                 continue
-            line, = ax.plot(data[x_column], data[column], label=f"{engine}/{dialect}", **curve_style(engine, dialect))
+            line, = ax.plot(data[x_column], data[column], label=style.label(engine, dialect),
+                            **curve_style(engine, dialect))
             for row in rayleigh.itertuples():
                 if getattr(row, column) > 0 and getattr(row, x_column) > 0:
                     ax.plot(getattr(row, x_column), getattr(row, column), "D", ms=7, mfc="none", color=line.get_color())
@@ -58,22 +57,22 @@ def cost_figure(cost, x_column, x_label, metrics):
     axes[0][-1].plot([], [], "D", mfc="none", color="k", label="20% Rayleigh time")
     axes[0][-1].plot([], [], "*", color="k", label="converged mode")
     axes[0][-1].legend(fontsize=7)
-    png = figure_png(fig)
+    svg = figure_svg(fig)
     plt.close(fig)
-    return png
+    return svg
 
 
 def cost_section(cost, uncertainty, run):
     """Figures and tables of the cost section, from the cost table, the truth's uncertainty and the study's record."""
     model = run["model"]
-    figures = [
+    titles, calls = zip(
         (f"{model}: worst-metric error against wall time (start-up excluded)",
-         cost_figure(cost, "net_wall_s", "wall time [s]", ("max",))),
+         (cost_figure, (cost, "net_wall_s", "wall time [s]", ("max",)))),
         (f"{model}: error of each metric against wall time (start-up excluded)",
-         cost_figure(cost, "net_wall_s", "wall time [s]", METRICS)),
+         (cost_figure, (cost, "net_wall_s", "wall time [s]", METRICS))),
         (f"{model}: error of each metric against steps per contact (the adaptive curve: force evaluations)",
-         cost_figure(cost, "n", "steps or evaluations/contact", METRICS)),
-    ]
+         (cost_figure, (cost, "n", "steps or evaluations/contact", METRICS))))
+    figures = list(zip(titles, draw_all(list(calls))))
     refused = cost[cost.status == "refused"].drop_duplicates(["engine", "dialect", "rung"])
     return {"figures": figures, "recommendations": records(recommendations(cost)),
             "orders": records(convergence_orders(cost)),

@@ -1,4 +1,5 @@
-"""HTML report: figures (matplotlib, embedded as PNG) and tables from the results table, via a Jinja template."""
+"""The HTML report: a summary of the verdict first, then figures (inline SVG) and tables, all from the saved
+results directory, via a Jinja template."""
 import os
 
 import numpy as np
@@ -7,7 +8,11 @@ import pandas as pd
 from ..files import write_text
 from ..kinematics import CONVENTIONS
 from ..render import environment
-from .pieces import figure_png, records
+from ..version import __version__
+from ..analyses.verdict import verdict
+from . import style
+from .drawing import draw_all
+from .pieces import figure_svg, number, records, si
 
 
 def engines_ran(frame):
@@ -32,23 +37,25 @@ def run_facts(frame, arithmetic):
 
 
 def series_figure(frame, title, x, ys, thresholds=None):
-    """One panel per e_n; one curve per (engine, dialect) and y column. Against Psi1* the paper's axes, the rigid
-    body's curve and, where known, the sliding-throughout threshold of the paper law (dotted)."""
+    """One panel per e_n; one curve per (engine, dialect) and y column, in the colours and line styles of
+    views.style. Against Psi1* the paper's axes and ranges, the rigid body's curve and, where known, the
+    sliding-throughout threshold of the paper law (dotted)."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    from .paper_axes import PANELS, draw_rigid_body, in_window, set_paper_axes
+    from .paper_axes import ANGLE_LABELS, PANELS, draw_rigid_body, in_window, set_paper_axes
     paper = x == "psi1_star"
     if paper:
         frame = in_window(frame)
     groups = list(frame.groupby("e_n_target", sort=False))
-    fig, axes = plt.subplots(1, len(groups), figsize=(3.6 * len(groups), 3.4), squeeze=False)
+    fig, axes = plt.subplots(1, len(groups), figsize=(3.4 * len(groups), 3.6), squeeze=False, layout="constrained")
     for ax, (e_n, group) in zip(axes[0], groups):
         for (engine, dialect), series in group.groupby(["engine", "dialect"], sort=False):
             series = series.sort_values(x)
-            for y in ys:
-                suffix = "" if len(ys) == 1 else (" centre" if "com" in y else " contact pt")
-                ax.plot(series[x], series[y], marker=".", ms=3, lw=1, label=f"{engine}/{dialect}{suffix}")
+            for y, marker in zip(ys, ("", "o")):
+                suffix = "" if len(ys) == 1 else (", centre" if "com" in y else ", contact point")
+                ax.plot(series[x], series[y], marker=marker, ms=2.5, label=style.label(engine, dialect) + suffix,
+                        **style.curve(engine, dialect))
         if paper:
             draw_rigid_body(ax, ys[0])
             set_paper_axes(ax, ys[0], dict((c, label) for c, label, _ in PANELS)[ys[0]])
@@ -56,21 +63,23 @@ def series_figure(frame, title, x, ys, thresholds=None):
             if threshold is not None and np.isfinite(threshold):
                 ax.axvline(threshold, color="0.4", ls=":", lw=1, label=f"slides throughout (Psi1* >= {threshold:.3f})")
         else:
-            ax.set(xlabel=x.replace("_deg", " [deg]"))
+            ax.set(xlabel=ANGLE_LABELS[0], ylabel=ANGLE_LABELS[1])
             ax.grid(alpha=0.3)
-        ax.set_title(f"e_n = {e_n:g}")
-    axes[0][-1].legend(fontsize=7)
-    fig.suptitle(title, y=1.02)
-    png = figure_png(fig)
+        ax.set_title(f"e_n = {e_n:g}", fontsize=10)
+        if ax is not axes[0][0]:
+            ax.set_ylabel("")
+    axes[0][-1].legend(fontsize=6.5)
+    fig.suptitle(title)
+    svg = figure_svg(fig)
     plt.close(fig)
-    return png
+    return svg
 
 
 PANELS = (   # (title, x column, y columns)
-    ("Psi2* against Psi1*", "psi1_star", ("psi2_star",)),
-    ("Omega* against Psi1*", "psi1_star", ("omega_star",)),
-    ("e_t against Psi1*", "psi1_star", ("e_t",)),
-    ("rebound angles (centre, contact point) against impact angle", "theta_deg",
+    ("Psi2*, the normalised rebound slip, against Psi1*", "psi1_star", ("psi2_star",)),
+    ("Omega*, the normalised rebound spin, against Psi1*", "psi1_star", ("omega_star",)),
+    ("e_t, the tangential restitution, against Psi1*", "psi1_star", ("e_t",)),
+    ("rebound angles of the centre (line) and the contact point (dots) against the impact angle", "theta_deg",
      ("theta_r_com_deg", "theta_r_cp_deg")),
 )
 
@@ -80,19 +89,20 @@ def force_figure(histories, contact, speed):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4))
+    fig, (left, right) = plt.subplots(1, 2, figsize=(11, 3.8), layout="constrained")
     for e_n, history in histories.items():
         h = history[0][~np.isnan(history[0][:, 0])]
         left.plot(h[:, 0] * 1e6, h[:, 2], label=f"e_n = {e_n:g}")
         right.plot(h[:, 1] * 1e6, h[:, 2], label=f"e_n = {e_n:g}")
-    left.set(xlabel="t [us]", ylabel="F_n [N]", title="force against time")
-    right.set(xlabel="overlap [um]", ylabel="F_n [N]", title="force against overlap")
+    left.set(xlabel="time since first touch [us]", ylabel="normal force [N]", title="force against time")
+    right.set(xlabel="overlap [um]", ylabel="normal force [N]", title="force against overlap")
     for ax in (left, right):
         ax.grid(alpha=0.3)
         ax.legend(fontsize=8)
-    png = figure_png(fig)
+    fig.suptitle("normal impact at the scene speed, paper law")
+    svg = figure_svg(fig)
     plt.close(fig)
-    return png
+    return svg
 
 
 def hertz_ratios(normal, contact, speed):
@@ -121,8 +131,9 @@ def write_report(out_dir, comparison=None, cost=None):
     from .cost_html import cost_section
     env = environment(autoescape=True)
     cost_part = cost_section(*cost) if cost is not None else None
-    context = {"compare": compare_context(comparison) if comparison is not None else None, "cost": cost_part,
-               "conventions": CONVENTIONS,
+    files = sorted(name for name in os.listdir(out_dir) if name.endswith((".csv", ".json")))
+    context = {"compare": compare_context(comparison, files) if comparison is not None else None, "cost": cost_part,
+               "conventions": CONVENTIONS, "files": files, "version": __version__,
                "title": comparison.law.name if comparison is not None else cost_part["model"]}
     html = env.get_template("report.html.j2").render(**context)
     return write_text(os.path.join(out_dir, "report.html"), html)
@@ -145,30 +156,43 @@ def sliding_lines(sliding):
     return dict(zip(sliding.e_n_target, sliding.simulated))
 
 
-def compare_context(comparison):
-    """Figures and tables of the compare sections."""
+def scene_facts(scene):
+    """The scene in words and units."""
+    return [("material", scene.material), ("radius", si(scene.radius, "m")), ("Young's modulus E", si(scene.E, "Pa")),
+            ("Poisson's ratio", number(scene.nu)), ("density", f"{number(scene.rho)} kg/m^3"),
+            ("friction coefficient", number(scene.mu)),
+            (f"impact speed ({'normal' if scene.speed_is == 'normal' else 'resultant'})", f"{number(scene.speed)} m/s"),
+            ("wall", scene.wall), ("initial spin", f"{number(scene.omega0)} rad/s"),
+            ("gravity", f"{number(scene.gravity)} m/s^2"), ("target e_n", ", ".join(number(e) for e in scene.e_n))]
+
+
+def compare_context(comparison, files=()):
+    """The summary, figures and tables of the compare sections."""
     frame, law, scene = comparison.results, comparison.law, comparison.scene
     histories, sliding = comparison.histories, comparison.sliding
     cross = [(f"{b} against {a}", records(table)) for (a, b), table in comparison.cross.items() if not table.empty]
     figures = []
     paper = frame[(frame.engine == "reference") & (frame.dialect == "paper")]
     oblique = frame[frame.psi1_star > 0]
+    calls = []
     if not oblique.empty:
         for title, x, ys in PANELS:
-            figures.append((f"{law.name}: {title}, every engine and dialect",
-                            series_figure(oblique, title, x, ys, sliding_lines(sliding))))
+            figures.append(f"{law.name}: {title}")
+            calls.append((series_figure, (oblique, title, x, ys, sliding_lines(sliding))))
     normal_rows = paper[paper.theta_deg == 0.0]
     ratios = records(hertz_ratios(normal_rows, scene.contact, scene.speed)) if not normal_rows.empty else None
     if histories:
-        figures.append((f"{law.name}: normal impact, force against time and overlap (paper law)",
-                        force_figure(histories, scene.contact, scene.speed)))
+        figures.append(f"{law.name}: normal impact, force against time and overlap (paper law)")
+        calls.append((force_figure, (histories, scene.contact, scene.speed)))
+    figures = list(zip(figures, draw_all(calls)))
     summary = paper.groupby("e_n_target", sort=False).agg(
         e_n_min=("e_n", "min"), e_n_max=("e_n", "max"), e_t_min=("e_t", "min"), e_t_max=("e_t", "max"),
         t_contact_max=("t_contact", "max"), f_n_max=("f_n_max", "max"), ke_ratio_max=("ke_ratio", "max"),
         rows=("status", "size")).reset_index()
     precision = pd.DataFrame([comparison.precision]) if comparison.precision else None
-    return dict(law=law, submodels=law.describe(), scene=scene, figures=figures,
-                summary=summary.to_dict("records"), skipped=comparison.skipped, rows=len(frame),
+    return dict(law=law, submodels=law.describe(), scene=scene_facts(scene), figures=figures,
+                verdict=verdict(comparison), command=comparison.command, date=comparison.date, files=files,
+                summary=records(summary), skipped=comparison.skipped, rows=len(frame),
                 ran=engines_ran(frame), facts=records(run_facts(frame, arithmetic(comparison.engine_options))),
                 agreement=records(comparison.agreement), deviation=records(comparison.deviation), cross=cross,
                 findings=records(comparison.findings), failures=comparison.failures, precision=records(precision),

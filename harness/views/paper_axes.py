@@ -4,11 +4,12 @@ import numpy as np
 PSI1_RANGE = (0.0, 14.0)                 # the paper's Psi1* axis
 RIGID_ONSET = 7.0                        # a rigid sphere slides throughout from Psi1* = 7
 PANELS = (   # (column, axis label, y range as the paper draws it)
-    ("psi2_star", "Psi2* = 2 V_s'/(mu (1 + e) V_n)", (-5.0, 8.0)),
-    ("omega_star", "Omega* = -2 R omega'/(mu (1 + e) V_n)", (-6.0, 0.5)),
-    ("e_t", "e_t = v_t'/v_t", (-0.6, 1.05)),
+    ("psi2_star", "rebound slip Psi2*", (-5.0, 8.0)),
+    ("omega_star", "rebound spin Omega*", (-6.0, 0.5)),
+    ("e_t", "tangential restitution e_t", (-0.6, 1.05)),
 )
-X_LABEL = "Psi1* = 2 V_t/(mu (1 + e) V_n)"
+X_LABEL = "impact angle Psi1*"
+ANGLE_LABELS = ("impact angle from the normal [deg]", "rebound angle from the normal [deg]")
 
 
 def rigid_body(column, psi1):
@@ -24,9 +25,9 @@ def rigid_body(column, psi1):
 
 
 def draw_rigid_body(ax, column):
-    """The rigid-body curve, black dashed, over the paper's Psi1* range."""
+    """The rigid-body curve, grey dash-dotted, over the paper's Psi1* range."""
     x = np.linspace(PSI1_RANGE[0] + 1e-9, PSI1_RANGE[1], 400)
-    ax.plot(x, rigid_body(column, x), color="k", ls="--", lw=0.9, label="rigid body")
+    ax.plot(x, rigid_body(column, x), color="0.55", ls="-.", lw=1.0, label="rigid body")
 
 
 def set_paper_axes(ax, column, label):

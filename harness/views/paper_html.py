@@ -10,8 +10,9 @@ from ..laws import LAWS
 from ..paper import ELASTIC, PSI1_GRID
 from ..render import environment
 from ..version import __version__
+from .drawing import draw_all
 from .paper_axes import PANELS, draw_rigid_body, set_paper_axes
-from .pieces import figure_png, records
+from .pieces import figure_svg, records
 
 OBLIQUE, NORMAL, SLIDING = "paper.csv", "paper-normal.csv", "paper-sliding.csv"
 COLOURS = ("#1b9e77", "#d95f02", "#7570b3", "#e7298a", "#66a61e", "#e6ab02")    # one per e_n, in every figure
@@ -33,14 +34,14 @@ def law_figure(oblique, sliding, name):
             ax.plot(group.psi1_star, group[column], color=colour, lw=1.4, label=f"e_n = {e_n:g}")
             if np.isfinite(thresholds.get(e_n, np.nan)):
                 ax.axvline(thresholds[e_n], color=colour, ls=":", lw=1)
-        ax.plot(elastic.psi1_star, elastic[column], color="0.55", ls="-.", lw=1.1, label="elastic Hertz-Mindlin")
+        ax.plot(elastic.psi1_star, elastic[column], color="0.3", ls=":", lw=1.4, label="elastic Hertz-Mindlin")
         draw_rigid_body(ax, column)
         set_paper_axes(ax, column, label)
     axes[-1].legend(fontsize=7, loc="lower right")
     fig.suptitle(f"{name}{' (provisional)' if LAWS[name].provisional else ''}: dotted, where it slides throughout")
-    png = figure_png(fig)
+    svg = figure_svg(fig)
     plt.close(fig)
-    return png
+    return svg
 
 
 def normal_figure(normal):
@@ -59,16 +60,16 @@ def normal_figure(normal):
         ax.grid(alpha=0.3)
     axes[0].legend(fontsize=7)
     fig.suptitle("normal impact at 5 m/s (dashed: provisional laws)")
-    png = figure_png(fig)
+    svg = figure_svg(fig)
     plt.close(fig)
-    return png
+    return svg
 
 
 def write_paper_report(out_dir, oblique, normal, sliding, command):
     """DIR/paper.html from the three tables; returns its path."""
     names = [n for n in oblique.model.unique() if n != ELASTIC]
-    figures = [(name, law_figure(oblique, sliding, name)) for name in names]
-    figures.append(("contact duration and peak force against e_n", normal_figure(normal)))
+    calls = [(law_figure, (oblique, sliding, name)) for name in names] + [(normal_figure, (normal,))]
+    figures = list(zip(names + ["contact duration and peak force against e_n"], draw_all(calls)))
     at_paper_en = normal[normal.e_n_target.isin(sorted(set(oblique.e_n_target) - {1.0}))]
     html = environment(autoescape=True).get_template("paper.html.j2").render(
         figures=figures, laws=[LAWS[n] for n in names], sliding=records(sliding.drop(columns=["method"])),

@@ -1,21 +1,54 @@
-"""What every HTML view is made of: figures as embedded PNG and tables as formatted cells."""
-import base64
+"""What every HTML view is made of: figures as inline SVG (crisp at any zoom) and tables of numbers formatted for
+people (4 significant digits, short exponents, blank where there is no value)."""
 import io
+import math
+import numbers
+
+from markupsafe import Markup
 
 
-def figure_png(fig):
-    """Encode a matplotlib figure as a base64 PNG data string."""
-    buffer = io.BytesIO()
-    fig.savefig(buffer, format="png", dpi=90, bbox_inches="tight")
-    return base64.b64encode(buffer.getvalue()).decode("ascii")
+def figure_svg(fig):
+    """A matplotlib figure as inline SVG markup (its XML header dropped), its text as text (searchable, smaller and
+    faster to write than glyph outlines)."""
+    import matplotlib
+    buffer = io.StringIO()
+    with matplotlib.rc_context({"svg.fonttype": "none"}):
+        fig.savefig(buffer, format="svg")
+    text = buffer.getvalue()
+    return Markup(text[text.index("<svg"):])
 
 
-def records(table):
+def number(value, digits=4):
+    """A number for a person: integers as they are, floats to `digits` significant digits with a short exponent
+    (3.47e-8), blank for NaN or None."""
+    if value is None or isinstance(value, bool):
+        return "" if value is None else str(value)
+    if isinstance(value, numbers.Integral):
+        return str(value)
+    if isinstance(value, numbers.Real):
+        value = float(value)
+        if math.isnan(value):
+            return ""
+        text = f"{value:.{digits}g}"
+        if "e" in text:
+            mantissa, exponent = text.split("e")
+            text = f"{mantissa}e{int(exponent)}"
+        return text
+    return str(value)
+
+
+def records(table, digits=4):
     """A DataFrame as (columns, rows of formatted cells) for the template."""
     if table is None or table.empty:
         return None
-    def cell(value):
-        if isinstance(value, float):
-            return f"{value:.6g}"
-        return str(value)
-    return list(table.columns), [[cell(v) for v in row] for row in table.itertuples(index=False)]
+    return list(table.columns), [[number(v, digits) for v in row] for row in table.itertuples(index=False)]
+
+
+def si(value, unit, digits=4):
+    """A quantity with an SI prefix: 7e10 Pa -> '70 GPa', 0.025 m -> '25 mm'."""
+    if value == 0 or not math.isfinite(value):
+        return f"{number(value, digits)} {unit}"
+    for factor, prefix in ((1e9, "G"), (1e6, "M"), (1e3, "k"), (1.0, ""), (1e-3, "m"), (1e-6, "u"), (1e-9, "n")):
+        if abs(value) >= factor:
+            return f"{number(value / factor, digits)} {prefix}{unit}"
+    return f"{number(value, digits)} {unit}"

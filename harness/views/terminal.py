@@ -25,8 +25,65 @@ def text_table(frame, columns, formats=None):
     return "\n".join([line(columns)] + [line(r) for r in cells])
 
 
+def print_summary(record, comparison, written):
+    """What a person reads after compare (about 20 lines): per engine its agreement with its own formulas and its
+    largest deviations from the paper law in physical units, then findings, skipped engines and failed runs (with
+    their log tails), then where the files are."""
+    engines = record["engines"]
+    ran = " and ".join(f"{e['engine']} {e['version']}" for e in engines) or "no engine"
+    print(f"{record['model']}: the paper law against {ran}; {len(record['e_n'])} e_n x "
+          f"{record['impacts'] // max(len(record['e_n']), 1)} impacts")
+    if engines:
+        print(f"agreement with its own formulas at equal time step (tolerance {engines[0]['tolerance']:.0e}):")
+        for e in engines:
+            worst = e["worst"]
+            where = ("no impact compared" if not e["compared"] else
+                     f"worst {worst['relative']:.1e} in {worst['metric']} at e_n {worst['e_n_target']:g}, "
+                     f"{worst['theta_deg']:g} deg")
+            state = "agrees" if e["agrees"] else "DISAGREES" if e["compared"] else "not compared"
+            print(f"  {e['engine'] + ' ' + e['version']:18s} {state:12s} {where}")
+        print("largest deviation from the paper law (relative to the incident speed V; the spin as R omega1/V):")
+        for e in engines:
+            for d in e["deviation"]:
+                print(f"  {e['engine']:10s} {d['metric']:7s} {d['difference']:+11.4g} {d['unit']:6s} "
+                      f"{d['relative']:+8.2%} of {d['relative_to']:4s} at e_n {d['e_n_target']:g}, {d['theta_deg']:g} deg")
+    for finding in record["findings"]:
+        print(f"finding: {finding['engine']} ({finding['dialect']}): {finding['kind']}: {one_line(finding['detail'])}")
+    for skipped in record["skipped"]:
+        print(f"skipped {skipped['engine']}: {skipped['reason']}")
+    for failure in comparison.failures:
+        print(f"{failure.engine} failed at e_n = {failure.e_n:g}: {failure.message}\n{failure.log_tail}")
+    print(f"wrote {' and '.join(written)} (every table: --verbose, the CSVs and the report)")
+
+
+def one_line(text, width=110):
+    """A finding's detail cut to one terminal line (the report has it whole)."""
+    return text if len(text) <= width else text[:width - 3] + "..."
+
+
+def verdict_line(record, reference_only=False):
+    """The verdict in one line: what agreed, what did not, what did not run."""
+    compared = [e for e in record["engines"] if e["compared"]]
+    bad = [e for e in compared if not e["agrees"]]
+    if bad:
+        line = "agreement: FAILED for " + ", ".join(
+            f"{e['engine']} (worst {e['worst']['relative']:.1e} in {e['worst']['metric']}, tolerance "
+            f"{e['tolerance']:.0e})" for e in bad)
+    elif compared:
+        line = "agreement: ok for " + ", ".join(e["engine"] for e in compared)
+    else:
+        line = "agreement: not checked: " + ("the reference alone was asked for" if reference_only else
+                                             "no engine ran")
+    if record["unavailable"]:
+        line += f"; asked for by name and not run: {', '.join(record['unavailable'])}"
+    failed = sorted({f["engine"] for f in record["failed"]})
+    if failed:
+        line += f"; failed runs: {', '.join(failed)}"
+    return line
+
+
 def print_comparison(comparison, written):
-    """The comparison's tables, findings and failures, then where its files are."""
+    """Every table of the comparison (--verbose), then where its files are."""
     frame, law = comparison.results, comparison.law
     print(f"{law.name}: paper law on the reference engine, {sum(frame.engine == 'reference')} rows")
     print("\n".join(summary_lines(frame[(frame.engine == "reference") & (frame.dialect == "paper")])))

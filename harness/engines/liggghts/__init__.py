@@ -1,10 +1,10 @@
 """LIGGGHTS 3.8.0 as an engine (docs/engines.md): one batched deck per (law, e_n), run as a subprocess; its dialects
 are in dialect.py, its input and output in deck.py, its binary in binary.py."""
-from ..batches import render_input, run_batch_rows
+from ..batches import render_input
 from ..protocol import Status
 from .binary import BINARY_VARIABLE, available, binary, missing_reason, version
 from .deck import (OBSERVE_DUMP, TEMPLATES, deck, read_dump, read_observation, render_batch, run_batch, run_deck,
-                   settings)
+                   run_together, settings)
 from .dialect import DIALECTS, MODELS, OPTIONS, dialect
 
 NAME = "liggghts"
@@ -25,8 +25,8 @@ def status(law_name, options=None):
 
 
 def run(runs):
-    """(results frame, failure or None) of each run, one deck each."""
-    return [run_batch_rows(NAME, version(), run_batch, run) for run in runs]
+    """(results frame, failure or None) of each run; the runs share one process."""
+    return run_together(runs, version())
 
 
 def render(run):

@@ -9,6 +9,7 @@ import numpy as np
 
 from ...version import __version__
 from ...render import render
+from ..batches import max_steps_of, run_grouped
 from ..runner import EngineFailure, run_engine
 from .binary import binary
 from .dialect import MODELS
@@ -172,15 +173,51 @@ def run_deck(text, n_atoms, timeout_s, workdir):
     return read_dump(os.path.join(workdir, "final.dump"), n_atoms), done.wall_s, done.log_tail
 
 
+def run_inputs(_, count, timeout_s, workdir):
+    """The decks batch<k>/in.harness in one LIGGGHTS process (one start-up; `clear` between them, each writing into
+    its own directory): each batch's share of the wall seconds."""
+    lines = []
+    for k in range(count):
+        lines += [f"shell cd batch{k}", "include in.harness", "clear", "shell cd .."]
+    with open(os.path.join(workdir, "in.driver"), "w") as handle:
+        handle.write("\n".join(lines) + "\n")
+    done = run_engine([binary(), "-in", "in.driver", "-log", "none", "-echo", "none"], workdir, timeout_s,
+                      env={**os.environ, "OMP_NUM_THREADS": "1"})
+    return [done.wall_s / count] * count
+
+
+def final_state(state, radius, log_tail=""):
+    """Rebound velocities and separation from the final dump's (z, vx, vz, omegay)."""
+    z, vx, vz, omegay = state.T
+    if not np.all(np.isfinite(state)):
+        raise EngineFailure("LIGGGHTS returned non-finite velocities", log_tail)
+    return {"v_n1": vz, "v_t1": vx, "omega1": omegay, "separated": z > radius}
+
+
+def read_batch(run, batch, directory):
+    """The final state of one batch run in `directory` (and what observe mode saw)."""
+    final = final_state(read_dump(os.path.join(directory, "final.dump"), len(batch.v_n0)), run.scene.radius)
+    if run.observe:
+        final.update(read_observation(os.path.join(directory, OBSERVE_DUMP), len(batch.v_n0), run.scene.radius,
+                                      batch.dt))
+    return final
+
+
+def run_together(runs, engine_version):
+    """(results frame, failure or None) of each run; the runs share one LIGGGHTS process (a failed process: one
+    process per run, so that each failure is its own)."""
+    return run_grouped("liggghts", engine_version, runs, "in.harness",
+                       lambda run, batch: render_batch(run.law, run.scene, batch, max_steps_of(batch),
+                                                       run.options_dict, run.observe),
+                       lambda run: None, run_inputs, read_batch)
+
+
 def run_batch(paper_law, scene, batch, max_steps, timeout_s, workdir, options=None, observe=False):
     """One batch (one e_n) in LIGGGHTS: final v_n1, v_t1, omega1 per impact and whether each sphere separated;
     with `observe` also t_contact (a whole number of steps), f_n_max and overlap_max (see read_observation)."""
     text = render_batch(paper_law, scene, batch, max_steps, options, observe)
     state, wall, log_tail = run_deck(text, len(batch.v_n0), timeout_s, workdir)
-    z, vx, vz, omegay = state.T
-    if not np.all(np.isfinite(state)):
-        raise EngineFailure("LIGGGHTS returned non-finite velocities", log_tail)
-    final = {"v_n1": vz, "v_t1": vx, "omega1": omegay, "separated": z > scene.radius}
+    final = final_state(state, scene.radius, log_tail)
     if observe:
         final.update(read_observation(os.path.join(workdir, OBSERVE_DUMP), len(batch.v_n0), scene.radius, batch.dt))
     return final, wall, log_tail

@@ -1,14 +1,14 @@
 """YADE 2023.02a as an engine (docs/engines.md): one batched script per (law, e_n), run as a Python module without the
 yade launcher; its dialects are in dialect.py, its input and output in script.py, its interpreter and flavours in
 flavours.py. It also checks its own arithmetic (precision.py)."""
-from ..batches import render_input, run_batch_rows
+from ..batches import render_input
 from ..protocol import Status
 from .dialect import DIALECTS, MODELS, OPTIONS, check_options, dialect
 from .flavours import (ARITHMETIC, FLAVOURS, PYTHON_VARIABLE, available, environment, flavour_path, missing_reason,
                        python, version)
-from .precision import precision_gap
+from .precision import HIGH, precision_runs
 from .script import (OBSERVE_FILE, TEMPLATES, read_observation, read_result, render_batch, run_batch, run_script,
-                     script)
+                     run_together, script)
 
 NAME = "yade"
 INPUT_SUFFIX = ".py"
@@ -29,8 +29,8 @@ def status(law_name, options=None):
 
 
 def run(runs):
-    """(results frame, failure or None) of each run, one script each."""
-    return [run_batch_rows(NAME, version(), run_batch, run) for run in runs]
+    """(results frame, failure or None) of each run; the runs of one flavour share one interpreter."""
+    return run_together(runs, version())
 
 
 def render(run):
@@ -44,6 +44,6 @@ def arithmetic(options):
 
 
 __all__ = ["ARITHMETIC", "DIALECTS", "FLAVOURS", "MODELS", "NAME", "OBSERVE_FILE", "OPTIONS", "PYTHON_VARIABLE", "TEMPLATES",
-           "arithmetic", "available", "dialect", "environment", "flavour_path", "precision_gap", "python",
+           "arithmetic", "available", "dialect", "environment", "flavour_path", "HIGH", "precision_runs", "python",
            "read_observation", "read_result", "render", "render_batch", "run", "run_batch", "run_script", "script",
            "status", "supports", "version"]

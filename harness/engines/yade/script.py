@@ -7,6 +7,7 @@ import numpy as np
 
 from ...version import __version__
 from ...render import render
+from ..batches import max_steps_of, run_grouped
 from ..runner import EngineFailure, run_engine
 from .dialect import MODELS
 from .flavours import environment, python
@@ -87,6 +88,50 @@ def run_script(text, n_spheres, timeout_s, workdir, precision="double"):
     return read_result(os.path.join(workdir, "result.txt"), n_spheres), done.wall_s, done.log_tail
 
 
+def run_inputs(precision, count, timeout_s, workdir):
+    """The scripts batch<k>/harness_yade.py in one interpreter, one start-up for all (O.reset() between them): each
+    batch's wall seconds with the start-up shared equally, or the EngineFailure that ended it."""
+    with open(os.path.join(workdir, "harness_driver.py"), "w") as handle:
+        handle.write(render(TEMPLATES, "driver.py.j2", harness_version=__version__, count=count))
+    done = run_engine([python(), "harness_driver.py"], workdir, timeout_s, env=environment(precision))
+    walls = []
+    for k in range(count):
+        try:
+            with open(os.path.join(workdir, f"batch{k}", "time.txt")) as handle:
+                seconds, status = handle.read().split()
+            walls.append(float(seconds) if status == "ok" else
+                         EngineFailure(f"YADE stopped in batch {k + 1} of {count} with an error", done.log_tail))
+        except (OSError, ValueError):
+            walls.append(EngineFailure(f"YADE did not finish batch {k + 1} of {count}", done.log_tail))
+    startup = max(0.0, done.wall_s - sum(w for w in walls if not isinstance(w, EngineFailure))) / count
+    return [w if isinstance(w, EngineFailure) else w + startup for w in walls]
+
+
+def read_batch(run, batch, directory):
+    """The final state of one batch run in `directory` (and what observe mode saw)."""
+    final = final_of(read_result(os.path.join(directory, "result.txt"), len(batch.v_n0)))
+    if run.observe:
+        final.update(read_observation(os.path.join(directory, OBSERVE_FILE), len(batch.v_n0), batch.dt))
+    return final
+
+
+def run_together(runs, engine_version):
+    """(results frame, failure or None) of each run; the runs of one flavour share one interpreter (its start-up,
+    about 1 s, paid once)."""
+    return run_grouped("yade", engine_version, runs, "harness_yade.py",
+                       lambda run, batch: render_batch(run.law, run.scene, batch, max_steps_of(batch),
+                                                       run.options_dict, run.observe),
+                       lambda run: run.options_dict.get("precision", "double"), run_inputs, read_batch)
+
+
+def final_of(rows, log_tail=""):
+    """The velocities and separation of the result rows."""
+    left, vx, vz, wy = rows.T
+    if not np.all(np.isfinite(rows)):
+        raise EngineFailure("YADE returned non-finite velocities", log_tail)
+    return {"v_n1": vz, "v_t1": vx, "omega1": wy, "separated": left > 0}
+
+
 def read_observation(path, n_spheres, dt):
     """Per sphere: contact time in whole steps (first real step to the first step with the interaction gone, dt
     each), peak normal force and peak overlap over the first contact; EngineFailure when missing or truncated."""
@@ -109,10 +154,7 @@ def run_batch(paper_law, scene, batch, max_steps, timeout_s, workdir, options=No
     precision = dict(options or {}).get("precision", "double")
     rows, wall, log_tail = run_script(render_batch(paper_law, scene, batch, max_steps, options, observe),
                                       len(batch.v_n0), timeout_s, workdir, precision)
-    left, vx, vz, wy = rows.T
-    if not np.all(np.isfinite(rows)):
-        raise EngineFailure("YADE returned non-finite velocities", log_tail)
-    final = {"v_n1": vz, "v_t1": vx, "omega1": wy, "separated": left > 0}
+    final = final_of(rows, log_tail)
     if observe:
         final.update(read_observation(os.path.join(workdir, OBSERVE_FILE), len(batch.v_n0), batch.dt))
     return final, wall, log_tail
