@@ -10,10 +10,13 @@ against the truth, and the wall-time ratios. The truth is the adaptive integrato
 uniform runs harness.cost uses stop near 1e-5 under Walton-Braun's spring at grazing incidence (order 1.5). Its
 last column checks it against those uniform runs, an independent discretisation (the tests check it against
 closed forms, scipy and the deep graded ladder). A second table compares the methods at equal error reached
-(hertz-mindlin), the stopping tolerance of each swept.
+(hertz-kuwabara-kono: Hertz and Mindlin without a tangential dashpot), the stopping tolerance of each swept. Laws
+with a tangential dashpot (linear-spring-dashpot, hertz-mindlin on the paper's scene) are outside the adaptive
+integrator: their converged mode is the graded ladder, and they are listed, not measured.
 
-    .venv/bin/python benchmarks/bench_converged.py
+    .venv/bin/python benchmarks/bench_converged.py [--smoke]
 """
+import sys
 import time
 
 import numpy as np
@@ -22,7 +25,7 @@ from harness.analyses.cost import relative_errors, truth_of
 from harness.laws import LAWS, compose
 from harness.scene import Scene
 from harness.solver import reference
-from harness.solver.reference import simulate, simulate_adaptive
+from harness.solver.reference import adaptive_batch, simulate, simulate_adaptive
 
 SCENE = Scene(e_n=(0.9, 0.5, 0.1), angles_deg=tuple(np.arange(1.0, 90.0, 2.0)))
 
@@ -39,6 +42,7 @@ def worst_error(frame, truth):
                for e in SCENE.e_n)
 
 
+SECOND_TABLE = "hertz-kuwabara-kono"
 METHODS = {"brute force": False, "graded Richardson": True, "adaptive": None}
 
 
@@ -62,15 +66,19 @@ def run(law, method, tolerance=1e-6):
     return frame, float(sum(counted)) + float(frame.steps_per_contact[adaptive].sum()), seconds
 
 
-def main():
+def main(smoke=False):
+    global SCENE
+    if smoke:                                  # the smallest size: one e_n, two angles, two laws, no second table
+        SCENE = Scene(e_n=(0.5,), angles_deg=(10.0, 40.0))
     warm = Scene(e_n=(0.5,), angles_deg=(10.0,))
     for method in METHODS:
-        run(compose("hertz-mindlin"), method)
-    simulate(compose("hertz-mindlin"), warm, steps_per_contact=20)
+        run(compose(SECOND_TABLE), method)
+    simulate(compose(SECOND_TABLE), warm, steps_per_contact=20)
     header = " | ".join(f"{m + ': evals':>24s} {'wall':>7s} {'error':>8s}" for m in METHODS)
     print(f"{'law':26s} {header} | {'WALL RATIO brute/adaptive':>25s} {'ladder/adaptive':>15s} "
           f"{'truth vs 2^16 steps':>19s}")
-    for name in LAWS:
+    covered = [name for name in LAWS if adaptive_batch(compose(name), warm, 0.5)[1].all()]
+    for name in ((SECOND_TABLE, "walton-braun") if smoke else covered):
         law = compose(name)
         truth, check = truth_of_bench(law)
         cells, walls = [], {}
@@ -80,10 +88,13 @@ def main():
             cells.append(f"{evaluations:24.3g} {seconds:7.3f} {worst_error(frame, truth):8.1e}")
         print(f"{name:26s} {' | '.join(cells)} | {walls['brute force'] / walls['adaptive']:25.1f} "
               f"{walls['graded Richardson'] / walls['adaptive']:15.1f} {check:19.1e}")
-
-    law = compose("hertz-mindlin")
+    if smoke:
+        return
+    print(f"outside the adaptive integrator (tangential dashpot; converged mode = graded ladder): "
+          f"{', '.join(sorted(set(LAWS) - set(covered)))}")
+    law = compose(SECOND_TABLE)
     truth, _ = truth_of_bench(law)
-    print(f"\nhertz-mindlin at equal error: the stopping tolerance swept\n{'method':18s} {'tolerance':>9s} "
+    print(f"\n{SECOND_TABLE} at equal error: the stopping tolerance swept\n{'method':18s} {'tolerance':>9s} "
           f"{'evals':>9s} {'wall':>7s} {'error':>8s}")
     for method in METHODS:
         for tolerance in (1e-4, 1e-5, 1e-6, 1e-7):
@@ -94,4 +105,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    main("--smoke" in sys.argv[1:])

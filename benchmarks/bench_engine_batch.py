@@ -1,6 +1,8 @@
 """One batched engine run of a 45-angle sweep against 45 separate runs of one sphere each, side by side.
 
-Run: .venv/bin/python benchmarks/bench_engine_batch.py [liggghts|yade]   (goal: batched at least 20x faster)
+Run: .venv/bin/python benchmarks/bench_engine_batch.py [liggghts|yade] [--smoke]   (goal: batched at least 20x faster)
+
+--smoke runs the smallest size: four angles at 100 steps per contact.
 """
 import copy
 import sys
@@ -34,12 +36,14 @@ def timed_run(engine, law, scene, batch):
         return time.perf_counter() - start, final
 
 
-def main(name):
+def main(name, smoke=False):
+    global STEPS
     engine = ENGINES[name]
     if not engine.available():
         print(f"{name} is not installed; nothing to measure")
         return
-    scene = Scene(e_n=(0.5,))
+    scene = Scene(e_n=(0.5,), angles_deg=(10.0, 30.0, 50.0, 70.0)) if smoke else Scene(e_n=(0.5,))
+    STEPS = 100 if smoke else STEPS
     law = compose("hertz-mindlin")
     batch = plan_batch(engine.dialect(law.name), scene, 0.5, STEPS)
     batched, final = timed_run(engine, law, scene, batch)
@@ -55,4 +59,5 @@ def main(name):
 
 
 if __name__ == "__main__":
-    main(sys.argv[1] if len(sys.argv) > 1 else "liggghts")
+    names = [a for a in sys.argv[1:] if not a.startswith("--")]
+    main(names[0] if names else "liggghts", "--smoke" in sys.argv[1:])

@@ -25,8 +25,18 @@ def run(model, **keywords):
     return run_request(request)
 
 
-def run_request(request, on_frame=None):
-    table, _ = execute(reference_runs(request.law, request.scene, request.resolution), on_frame)
+def run_request(request, on_frame=None, progress=None):
+    """The reference solver's results table of a validated request; progress.advance after each e_n."""
+    runs = reference_runs(request.law, request.scene, request.resolution)
+    if progress:
+        progress.expect(len(runs))
+
+    def done(frame):
+        if on_frame:
+            on_frame(frame)
+        if progress:
+            progress.advance(f"e_n {frame.e_n_target.iloc[0]:g}")
+    table, _ = execute(runs, done)
     return table
 
 
@@ -54,9 +64,9 @@ def statuses(request):
     return out
 
 
-def compare_request(request, on_frame=None, on_done=None):
-    """Run the comparison of a validated request (on_frame(frame) as each run of the comparison is done, on_done(run,
-    frame) as any run is) and return it. What needs no engine result (attribution, the sliding threshold, force histories, the precision check) runs
+def compare_request(request, on_frame=None, progress=None):
+    """Run the comparison of a validated request (on_frame(frame) as each run of the comparison is done; progress
+    told of every run and of the measurements) and return it. What needs no engine result (attribution, the sliding threshold, force histories, the precision check) runs
     beside the engines."""
     law, scene = request.law, request.scene
     found = statuses(request)
@@ -69,6 +79,8 @@ def compare_request(request, on_frame=None, on_done=None):
     checks = [(engine.NAME, engine.precision_runs(law, scene)) for engine, options in engines.items()
               if hasattr(engine, "precision_runs") and options.get("precision", "double") == "double"]
     extra = [run_ for _, pair in checks for run_ in pair]
+    if progress:
+        progress.expect(len(plan) + len(extra) + 1)
     with ThreadPoolExecutor(max_workers=1) as beside:
         measured = beside.submit(measurements, law, scene, engines, engine_resolution)
         in_plan = {id(run_) for run_ in plan}
@@ -76,10 +88,13 @@ def compare_request(request, on_frame=None, on_done=None):
         def finished(run_, frame):
             if on_frame is not None and id(run_) in in_plan:
                 on_frame(frame)
-            if on_done is not None:
-                on_done(run_, frame)
+            if progress:
+                progress.advance(f"{run_.engine} ({run_.dialect.dialect} formulas) e_n {run_.e_n:g}"
+                                 + "".join(f" {k} {v}" for k, v in run_.options))
         done = run_all(plan + extra, finished)
         attributions, sliding, histories = measured.result()
+        if progress:
+            progress.advance("attribution, sliding threshold, force histories")
     results = pd.concat([frame for frame, _ in done[:len(plan)]], ignore_index=True)
     failures = [failure for _, failure in done[:len(plan)] if failure is not None]
     precision, checked = None, iter(done[len(plan):])

@@ -55,15 +55,17 @@ def normal_impacts(laws, scene, steps_per_contact):
 def figure_set(laws=tuple(LAWS), steps_per_contact=2000, progress=None):
     """(oblique rows, normal-impact table, sliding thresholds) of the paper's figures for `laws`."""
     scene = paper_scene()
+    if progress:
+        progress.expect(2 + len(laws))
     oblique = oblique_curves(laws, scene, steps_per_contact)
     if progress:
-        progress("oblique impacts")
+        progress.advance("oblique impacts")
     normal = normal_impacts(laws, scene, steps_per_contact)
     if progress:
-        progress("normal impacts")
+        progress.advance("normal impacts")
     sliding = []
     for name in laws:
         sliding.append(threshold_table(name, sliding_thresholds(compose(name), scene)))
         if progress:
-            progress(f"sliding threshold of {name}")
+            progress.advance(f"sliding threshold of {name}")
     return oblique, normal, pd.concat(sliding, ignore_index=True)

@@ -12,6 +12,37 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 EXAMPLE = dict(radius=5e-3, mu=0.3, speed=1.0, material="example-5mm")
 
 
+NOWHERE = {"HARNESS_LIGGGHTS": "/nonexistent/liggghts", "HARNESS_YADE_PYTHON": "/nonexistent/python3.11"}
+
+
+def pytest_configure(config):
+    """`pytest -m "not engine"`: no engine for this whole session, module-wide fixtures included."""
+    if "not engine" in (config.option.markexpr or ""):
+        import os
+        os.environ.update(NOWHERE)
+
+
+def needs(engine, flavour=None):
+    """Mark a test as running the real `engine` (in `flavour`), skipped where it is not installed."""
+    from harness.engines import get_engine
+    found = get_engine(engine)
+    here = found.available(flavour) if flavour else found.available()
+
+    def mark(test):
+        return pytest.mark.engine(pytest.mark.skipif(not here, reason=f"{engine} {flavour or ''} is not installed")
+                                  (test))
+    return mark
+
+
+@pytest.fixture(autouse=True)
+def engines_only_where_marked(request, monkeypatch):
+    """A test not marked `engine` sees no engine (both engines' paths point nowhere, for this process and the
+    commands it starts): `pytest -m "not engine"` can never run one, and a test that needs one must say so."""
+    if "engine" not in request.node.keywords:
+        for name, value in NOWHERE.items():
+            monkeypatch.setenv(name, value)
+
+
 def fake_executable(directory, body, name="fake-engine"):
     """A small shell script standing in for an engine that crashes, hangs or writes a truncated result."""
     import stat

@@ -6,6 +6,7 @@ import sys
 import pandas as pd
 import pytest
 
+from conftest import needs
 from harness.results import COLUMNS
 
 
@@ -122,6 +123,8 @@ def test_compare_without_engines_runs_the_reference_and_names_what_it_skipped(tm
     assert proc.stdout.splitlines()[-1] == "agreement: not checked: no engine ran"
 
 
+@needs("liggghts")
+@needs("yade")
 def test_compare_skips_engines_for_scenes_their_inputs_cannot_express(tmp_path):
     proc = harness("compare", "--model", "hertz-mindlin", "--en", "0.5", "--angles", "0", "--wall", "rigid",
                    "-o", str(tmp_path))

@@ -5,11 +5,12 @@ import json
 import numpy as np
 import pandas as pd
 import pytest
+from conftest import needs
 
 from harness.commands import main
 from harness.engines import liggghts
 
-needs_liggghts = pytest.mark.skipif(not liggghts.available(), reason="liggghts is not installed")
+needs_liggghts = needs("liggghts")
 SMALL = ["--en", "0.5", "--angles", "10,40"]
 
 
@@ -63,7 +64,7 @@ def test_an_engine_that_disagrees_with_its_formulas_exits_1(tmp_path, capsys, mo
 def test_an_internal_error_exits_4_with_its_traceback(tmp_path, capsys, monkeypatch):
     import harness.commands.run as run_command
 
-    def broken(request):
+    def broken(request, **keywords):
         raise ZeroDivisionError("a bug")
     monkeypatch.setattr(run_command, "run_request", broken)
     code = main(["run", "--model", "thornton", *SMALL, "-o", str(tmp_path / "r.csv")])

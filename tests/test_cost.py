@@ -7,6 +7,7 @@ import sys
 import numpy as np
 import pandas as pd
 import pytest
+from conftest import needs
 from scipy.optimize import brentq
 
 from harness.analyses.cost import (ADAPTIVE, ADAPTIVE_RUNGS, EXTRAPOLATED, TOLERANCES, convergence_orders, cost_table,
@@ -179,7 +180,7 @@ def test_rungs_above_the_stability_limit_are_refused_with_the_limit():
     assert (paper.loc[["20", "50"], "status"] == "ok").all()
 
 
-@pytest.mark.skipif(not LIGGGHTS.available(), reason="LIGGGHTS is not installed")
+@needs("liggghts")
 def test_engine_curve_is_its_dialects_curve():
     """LIGGGHTS at every rung agrees with its dialect at the same dt, so its errors are the dialect's; its start-up
     is measured and subtracted."""
@@ -207,6 +208,7 @@ def test_bad_ladder_is_one_line_and_exit_2(tmp_path, ladder):
     assert not (tmp_path / "c").exists()
 
 
+@pytest.mark.engine
 def test_cli_writes_cost_csv_and_a_report_that_rebuilds(tmp_path):
     out = tmp_path / "c"
     proc = run_cli("cost", "--model", "thornton", "--engines", "liggghts", "--en", "0.5", "--angles", "0,40",
@@ -226,7 +228,7 @@ def test_cli_writes_cost_csv_and_a_report_that_rebuilds(tmp_path):
     assert rebuilt.returncode == 0 and (out / "report.html").read_text().count("<figure><svg") == 3
 
 
-@pytest.mark.skipif(not LIGGGHTS.available(), reason="LIGGGHTS is not installed")
+@needs("liggghts")
 def test_an_interrupted_study_keeps_its_rows_and_reports(tmp_path, monkeypatch):
     """Ctrl-C during the engine part: exit 130, cost.csv holds every row measured before, the report rebuilds."""
     import harness.analyses.cost

@@ -327,6 +327,7 @@ REFUSALS = {"liggghts": (r"LIGGGHTS accepts coefficientRestitution in \(0.05, 1\
             "yade": (r"YADE's Luding law needs kp > k1, i.e. e_n < 1; e_n = 1 was not run",)}
 
 
+@pytest.mark.engine
 @pytest.mark.parametrize("engine", list(EXTERNAL))
 def test_engine_hard_cases_end_in_results_or_a_one_line_refusal(engine, engine_runs):
     """Nothing crashes: every failed run is a refusal naming the accepted range, where the engine's input rules put
@@ -360,6 +361,7 @@ def dialect_frame(engine, frame):
     return pd.concat(parts)
 
 
+@pytest.mark.engine
 @pytest.mark.parametrize("engine", list(EXTERNAL))
 def test_engine_agrees_with_its_dialect_on_every_hard_case(engine, engine_runs):
     """Agreement at equal dt (< 1e-6 relative, floor 1e-9 of the scale) holds on the hard cases too, so each engine
@@ -385,6 +387,7 @@ EXPECTED_FINDINGS = {      # (engine, law, linear option) -> finding kinds beyon
 }                                                  # no damping (e = 1); k_s = nu k_n < 0 at nu = -0.99
 
 
+@pytest.mark.engine
 @pytest.mark.parametrize("engine", list(EXTERNAL))
 def test_engine_invariant_breaks_come_out_as_the_documented_findings(engine, engine_runs):
     """`findings` (what compare prints and reports) lists exactly the documented defects per law and nothing for
@@ -395,6 +398,7 @@ def test_engine_invariant_breaks_come_out_as_the_documented_findings(engine, eng
         assert kinds == EXPECTED_FINDINGS.get((engine, name, linear), set()), (name, linear, kinds)
 
 
+@pytest.mark.engine
 def test_liggghts_defects_have_the_documented_direction(engine_runs):
     """thornton_ning: the sphere leaves faster along the wall than it came (wrong-sign damping) and its normal e_n
     falls below Thornton's e (R unmodified on unloading keeps unloading stiffer... docs/liggghts-dialect.md), at every e_n run."""
@@ -406,6 +410,7 @@ def test_liggghts_defects_have_the_documented_direction(engine_runs):
     assert len(normal) and (normal.e_n < 0.99 * normal.e_n_target).all()
 
 
+@pytest.mark.engine
 def test_yade_defects_match_their_theory(engine_runs):
     """CundallStrack has no damping: e_n = 1 at every target; with nu < 0 its k_s = nu k_n < 0 pushes the sphere
     along: more kinetic energy out than in. ViscEl with en = 0.5 rebounds at e(g_A(0.5)/sqrt2) = 0.644 (docs/yade-dialect.md)."""
@@ -420,6 +425,7 @@ def test_yade_defects_match_their_theory(engine_runs):
     assert viscel.e_n.to_numpy() == pytest.approx(lsd_notension_e(g_a / math.sqrt(2.0)), rel=2e-3)
 
 
+@pytest.mark.engine
 @pytest.mark.parametrize("engine", list(EXTERNAL))
 def test_engine_angle_sweeps_are_continuous_except_liggghts_hooke(engine, engine_runs):
     """The fine sweep at e_n 0.5 in each engine: continuous (jumps halve with the spacing, floor pi/N for the step-

@@ -7,7 +7,7 @@ import sys
 import numpy as np
 import pytest
 from conftest import EXAMPLE
-from conftest import fake_executable
+from conftest import fake_executable, needs
 
 from harness.engines import liggghts
 from harness.engines.runner import EngineFailure, run_engine
@@ -20,7 +20,7 @@ from harness.solver import codes as C
 from harness.solver.plan import plan_batch
 from harness.solver.reference import run_kernel
 
-needs_liggghts = pytest.mark.skipif(not liggghts.available(), reason="liggghts is not installed")
+needs_liggghts = needs("liggghts")
 SCENE = Scene(e_n=(0.9, 0.5, 0.1), angles_deg=(0.0, 10.0, 30.0, 50.0, 70.0, 85.0))
 
 

@@ -7,8 +7,9 @@ import sys
 import pytest
 
 CHROMIUM, DRIVER = "/usr/bin/chromium", "/usr/bin/chromedriver"
-pytestmark = pytest.mark.skipif(not (os.path.exists(CHROMIUM) and os.path.exists(DRIVER)),
-                                reason="Debian chromium and chromium-driver are not installed")
+pytestmark = [pytest.mark.engine,         # the report of a comparison with every engine that is installed
+              pytest.mark.skipif(not (os.path.exists(CHROMIUM) and os.path.exists(DRIVER)),
+                                 reason="Debian chromium and chromium-driver are not installed")]
 
 
 @pytest.fixture(scope="module")

@@ -5,7 +5,7 @@ import sys
 
 import numpy as np
 import pytest
-from conftest import fake_executable
+from conftest import fake_executable, needs
 
 from harness.engines import yade
 from harness.engines.runner import EngineFailure
@@ -13,8 +13,8 @@ from harness.laws import compose
 from harness.scene import Scene
 from harness.solver.plan import plan_batch
 
-needs_yade = pytest.mark.skipif(not yade.available(), reason="yade is not installed")
-needs_float128 = pytest.mark.skipif(not yade.available("float128"), reason="yade-float128 is not installed")
+needs_yade = needs("yade")
+needs_float128 = needs("yade", "float128")
 
 PROBE = r'''
 import os, socket, sys

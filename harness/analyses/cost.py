@@ -19,8 +19,12 @@ TRUTH_STEPS = {"paper": 2 ** 16, "engine": 2 ** 18}   # the engines' schemes are
 TRUTH_SHARPEN = 1e-7             # a paper truth less certain than this is taken from the adaptive integrator ...
 TRUTH_TOLERANCE = 1e-11          # ... at this tolerance
 RAYLEIGH_FRACTION = 0.2
+TIMING_REPEATS = 3               # each timed run and each start-up is timed this often: the fastest, and the spread
+LONG_RUN_S = 5.0                 # a run this long is timed once (the machine's noise is small beside it)
+WITHIN_NOISE = "within noise"    # the timing column of a rung whose net time is not above its spread
 COLUMNS = ("model", "engine", "dialect", "e_n_target", "rung", "steps_per_contact", "dt", "impacts", "steps",
-           "wall_s", "startup_s", "net_wall_s", "status", "message", *(f"err_{m}" for m in METRICS), "err_max")
+           "wall_s", "wall_spread_s", "startup_s", "net_wall_s", "timing", "status", "message",
+           *(f"err_{m}" for m in METRICS), "err_max")
 
 
 def rayleigh_time(scene):
@@ -83,19 +87,33 @@ def contact_steps(frame):
     return float(np.ceil(frame.t_contact / frame.dt - 1e-9).sum(skipna=False))
 
 
-def measure(rows, law_name, engine, dialect, rung, frames_by_e, truth, startup=None, steps_per_impact=None):
-    """Cost rows of one rung: per e_n the errors against the truth, wall time (and without the engine's start-up)
-    and contact steps (or `steps_per_impact` times the impacts, for a rung made of several runs)."""
+def fastest(walls):
+    """(fastest, spread) of repeated timings: the minimum is the run least disturbed by the machine's other work."""
+    walls = [w for w in walls if np.isfinite(w)]
+    if not walls:
+        return np.nan, np.nan
+    return float(min(walls)), (float(max(walls) - min(walls)) if len(walls) > 1 else np.nan)
+
+
+def measure(rows, law_name, engine, dialect, rung, frames_by_e, truth, startup=None, steps_per_impact=None,
+            timings=None):
+    """Cost rows of one rung: per e_n the errors against the truth, the fastest of its timings and their spread
+    (timings: {e_n: [wall seconds]}, else the frame's), the wall time without the engine's start-up (startup:
+    {e_n: (fastest, spread)}), said to be within noise where it is not above the two spreads, and contact steps (or
+    `steps_per_impact` times the impacts, for a rung made of several runs)."""
     for e_n, frame in frames_by_e.items():
         exact = truth[truth.e_n_target == e_n]
         ok = frame.status == "ok"
-        wall = float(frame.wall_s.sum())
-        start = (startup or {}).get(e_n, 0.0)
+        wall, spread = fastest((timings or {}).get(e_n, [float(frame.wall_s.sum())]))
+        start, start_spread = (startup or {}).get(e_n, (0.0, 0.0))
+        net = wall - start
+        noise = np.nansum([spread, start_spread])
         rows.append({"model": law_name, "engine": engine, "dialect": dialect, "e_n_target": e_n, "rung": rung,
                      "steps_per_contact": float(frame.steps_per_contact.mean()), "dt": float(frame.dt.mean()),
-                     "impacts": len(frame), "wall_s": wall, "startup_s": start,
+                     "impacts": len(frame), "wall_s": wall, "wall_spread_s": spread, "startup_s": start,
                      "steps": contact_steps(frame) if steps_per_impact is None else steps_per_impact * len(frame),
-                     "net_wall_s": max(wall - start, 0.0) if np.isfinite(wall) else np.nan,
+                     "net_wall_s": net if np.isfinite(net) else np.nan,
+                     "timing": WITHIN_NOISE if np.isfinite(net) and net <= noise else "",
                      "status": "ok" if ok.all() else str(frame.status[~ok].iloc[0]),
                      "message": "" if ok.all() else str(frame.message[~ok].iloc[0]),
                      **relative_errors(frame, exact)})
@@ -112,51 +130,72 @@ def ladder_rungs(ladder, scene):
     return [(str(n), n) for n in ladder] + [("rayleigh", FixedTimeStep(RAYLEIGH_FRACTION * rayleigh_time(scene)))]
 
 
-def reference_curve(rows, law, scene, ladder, truth, engine_label="reference"):
-    """The reference engine running `law` at every rung."""
+def reference_curve(rows, law, scene, ladder, truth, engine_label="reference", progress=None):
+    """The reference engine running `law` at every rung, each timed TIMING_REPEATS times."""
     for label, resolution in ladder_rungs(ladder, scene):
         try:
-            frame, _ = simulate(law, scene, steps_per_contact=resolution)
+            frames = [simulate(law, scene, steps_per_contact=resolution)[0] for _ in range(TIMING_REPEATS)]
         except UnstableTimeStep as exc:
             refused(rows, law.name, engine_label, law.dialect, label, scene, str(exc))
+            step(progress, f"{law.dialect} formulas, {label}: refused")
             continue
+        timings = {e: [float(f[f.e_n_target == e].wall_s.sum()) for f in frames] for e in scene.e_n}
         measure(rows, law.name, engine_label, law.dialect, label,
-                {e: g for e, g in frame.groupby("e_n_target", sort=False)}, truth)
+                {e: g for e, g in frames[0].groupby("e_n_target", sort=False)}, truth, timings=timings)
+        step(progress, f"{law.dialect} formulas in the reference, {label}")
+
+
+def step(progress, what):
+    if progress:
+        progress.advance(what)
 
 
 def startup_seconds(adapter, paper_law, dialect, scene, options):
-    """Per e_n: wall time of the same batched run stopped after its first check (a few steps): process start-up,
-    reading the input and building the scene, which a long simulation pays once."""
+    """Per e_n: (fastest, spread) of TIMING_REPEATS timings of the same batched run stopped after its first check (a
+    few steps): process start-up, reading the input and building the scene, which a long simulation pays once."""
     starts = {}
     for e_n in scene.e_n:
         batch = plan_batch(dialect, scene, e_n, 1000)
-        try:
-            with tempfile.TemporaryDirectory(prefix=f"harness-{adapter.NAME}-startup-") as workdir:
-                starts[e_n] = adapter.run_batch(paper_law, scene, batch, 1, TIMEOUT_FLOOR_S, workdir, options)[1]
-        except EngineFailure:
-            starts[e_n] = np.nan
+        walls = []
+        for _ in range(TIMING_REPEATS):
+            try:
+                with tempfile.TemporaryDirectory(prefix=f"harness-{adapter.NAME}-startup-") as workdir:
+                    walls.append(adapter.run_batch(paper_law, scene, batch, 1, TIMEOUT_FLOOR_S, workdir, options)[1])
+            except EngineFailure:
+                walls.append(np.nan)
+        starts[e_n] = fastest(walls)
     return starts
 
 
-def engine_curve(rows, adapter, paper_law, dialect, scene, ladder, truth, options, failures):
-    """The engine itself at every rung (one batched run per e_n, timed); contact time and peak force come from a
-    second, observed run (its per-step output would distort the timing); refused and failed runs keep their
-    message."""
+def engine_curve(rows, adapter, paper_law, dialect, scene, ladder, truth, options, failures, progress=None):
+    """The engine itself at every rung (one batched run per e_n, timed TIMING_REPEATS times unless it is long);
+    contact time and peak force come from a further, observed run (its per-step output would distort the timing);
+    refused and failed runs keep their message."""
     startup = startup_seconds(adapter, paper_law, dialect, scene, options)
+    step(progress, f"{adapter.NAME} start-up")
     for label, resolution in ladder_rungs(ladder, scene):
         try:
             frames, failed = sweep(adapter, paper_law, scene, resolution, options)
         except UnstableTimeStep as exc:
             refused(rows, paper_law.name, adapter.NAME, dialect.dialect, label, scene, str(exc))
+            step(progress, f"{adapter.NAME}, {label}: refused")
             continue
         failures += failed
-        if not failed:                  # contact time and peak force from an observed, untimed second run
-            observed, _ = sweep(adapter, paper_law, scene, resolution, options, observe=True)
+        timings = {f.e_n_target.iloc[0]: [float(f.wall_s.sum())] for f in frames}
+        for _ in range(TIMING_REPEATS - 1):
+            if failed or max(w[0] for w in timings.values()) > LONG_RUN_S:
+                break
+            for frame in sweep(adapter, paper_law, scene, resolution, options)[0]:
+                timings[frame.e_n_target.iloc[0]].append(float(frame.wall_s.sum()))
+        if not failed:                  # contact time and peak force from an observed, untimed run
+            observed, failed = sweep(adapter, paper_law, scene, resolution, options, observe=True)
+            failures += failed
             for frame, seen in zip(frames, observed):
                 for column in ("t_contact", "f_n_max", "overlap_max"):
                     frame[column] = seen[column].to_numpy()
         measure(rows, paper_law.name, adapter.NAME, dialect.dialect, label,
-                {f.e_n_target.iloc[0]: f for f in frames}, truth, startup)
+                {f.e_n_target.iloc[0]: f for f in frames}, truth, startup, timings=timings)
+        step(progress, f"{adapter.NAME}, {label}")
 
 
 def sweep(engine, law, scene, resolution, options, observe=False):
@@ -220,7 +259,7 @@ def converged_point(rows, law, scene, truth):
                      "rung": "converged", "steps_per_contact": float(group.steps_per_contact.max()),
                      "dt": float(group.dt.min()), "impacts": len(group), "steps": np.nan,
                      "wall_s": float(group.wall_s.sum()), "startup_s": 0.0, "net_wall_s": float(group.wall_s.sum()),
-                     "status": "ok", "message": "converged mode",
+                     "timing": "", "status": "ok", "message": "converged mode",
                      **relative_errors(group, exact)})
 
 
@@ -237,30 +276,39 @@ class Rows(list):
             self.keep(pd.DataFrame(self, columns=COLUMNS))
 
 
-def cost_table(law, scene, adapters, ladder=LADDER, keep=None):
+def cost_table(law, scene, adapters, ladder=LADDER, keep=None, progress=None):
     """Every curve of the study as one table (COLUMNS); adapters: {name: (adapter, options)} of the engines;
-    `keep(table)` is called with the table so far after every row."""
+    `keep(table)` is called with the table so far after every row; progress told of every rung."""
+    rungs = len(ladder_rungs(ladder, scene))
+    if progress:
+        progress.expect(3 + rungs + len(adapters) * (2 + 2 * rungs))
     warm = scene.__class__(e_n=(0.5,), angles_deg=(10.0,))
     simulate(law, warm, steps_per_contact=10)                 # compile outside timing: the kernel,
     simulate(law, warm, converged=True)                       # and the adaptive integrator or graded ladder
     rows, failures, uncertainty = Rows(keep), [], {}
     truth, uncertainty["paper"] = truth_of(law, scene)
-    reference_curve(rows, law, scene, ladder, truth)
+    step(progress, "converged reference of the paper law")
+    reference_curve(rows, law, scene, ladder, truth, progress=progress)
     converged_curve(rows, law, scene, ladder, truth)
+    step(progress, "the converged mode's own rungs")
     converged_point(rows, law, scene, truth)
+    step(progress, "the converged mode")
     for name, (adapter, options) in adapters.items():
         dialect = adapter.dialect(law.name, options)
         dialect_truth, uncertainty[name] = truth_of(dialect, scene)
-        reference_curve(rows, dialect, scene, ladder, dialect_truth)
-        engine_curve(rows, adapter, law, dialect, scene, ladder, dialect_truth, options, failures)
+        step(progress, f"converged reference of {name}'s formulas")
+        reference_curve(rows, dialect, scene, ladder, dialect_truth, progress=progress)
+        engine_curve(rows, adapter, law, dialect, scene, ladder, dialect_truth, options, failures, progress)
     return pd.DataFrame(rows, columns=COLUMNS), failures, uncertainty
 
 
 def per_rung(cost):
     """Per curve and rung, over the e_n: worst error per metric, wall times and steps summed, finest dt."""
     agg = {f"err_{m}": "max" for m in (*METRICS, "max")}
-    agg.update({"wall_s": "sum", "net_wall_s": "sum", "steps_per_contact": "min", "steps": "sum", "dt": "max"})
-    return cost[cost.status != "refused"].groupby(["engine", "dialect", "rung"], sort=False).agg(agg).reset_index()
+    agg.update({"wall_s": "sum", "net_wall_s": "sum", "steps_per_contact": "min", "steps": "sum", "dt": "max",
+                "timing": lambda t: WITHIN_NOISE if (t == WITHIN_NOISE).any() else ""})
+    ran = cost[cost.status != "refused"].assign(timing=lambda c: c.timing.fillna(""))
+    return ran.groupby(["engine", "dialect", "rung"], sort=False).agg(agg).reset_index()
 
 
 def recommendations(cost):

@@ -1,8 +1,11 @@
 """`harness check` and `harness baseline --update`: the regression check against the committed baseline."""
+import json
+
 from ..baseline import DEFAULT_BASELINE, check, update
 from ..errors import UserError
+from ..views.progress import Progress
 from ..views.terminal import text_table
-from .options import EXIT_DISAGREE, EXIT_OK
+from .options import EXIT_DISAGREE, EXIT_OK, add_output_options
 
 
 def add(sub, describe):
@@ -10,32 +13,42 @@ def add(sub, describe):
                  "harness check")
     p.add_argument("--baseline", default=DEFAULT_BASELINE, metavar="DIR",
                    help="baseline directory (default: the committed one, shipped with harness)")
+    add_output_options(p, json=True)
     p.set_defaults(func=main)
     p = describe(sub, "baseline", "rewrite the committed baseline matrix on purpose",
                  "harness baseline --update --baseline baselines")
     p.add_argument("--update", action="store_true", help="required: rewriting expectations is deliberate")
     p.add_argument("--baseline", default=DEFAULT_BASELINE, metavar="DIR", help="baseline directory")
+    add_output_options(p)
     p.set_defaults(func=main_update)
 
 
 def main(args):
-    failures, skipped = check(args.baseline)
-    for line in skipped:
-        print(f"skipped {line}")
-    if failures.empty:
-        print("check: every metric within tolerance")
-        return EXIT_OK
-    print(f"check: {len(failures)} metric(s) outside tolerance")
-    print(text_table(failures, list(failures.columns), {"baseline": "{:.10g}", "now": "{:.10g}",
-                                                        "rel_diff": "{:.2e}", "tolerance": "{:.0e}"}))
-    return EXIT_DISAGREE
+    with Progress("check", quiet=args.quiet or args.json) as progress:
+        failures, skipped = check(args.baseline, progress=progress)
+    code = EXIT_OK if failures.empty else EXIT_DISAGREE
+    if args.json:
+        print(json.dumps({"ok": failures.empty, "exit_code": code, "baseline": args.baseline, "skipped": skipped,
+                          "outside_tolerance": failures.to_dict("records")}, indent=1, default=str))
+        return code
+    if not args.quiet:
+        for line in skipped:
+            print(f"skipped {line}")
+        if not failures.empty:
+            print(text_table(failures, list(failures.columns), {"baseline": "{:.10g}", "now": "{:.10g}",
+                                                                "rel_diff": "{:.2e}", "tolerance": "{:.0e}"}))
+    print("check: every metric within tolerance" if failures.empty else
+          f"check: {len(failures)} metric(s) outside tolerance")
+    return code
 
 
 def main_update(args):
     if not args.update:
         raise UserError("baseline rewrites the committed expectations only with --update")
-    frame, skipped = update(args.baseline)
-    for line in skipped:
-        print(f"skipped {line}")
+    with Progress("baseline", quiet=args.quiet) as progress:
+        frame, skipped = update(args.baseline, progress=progress)
+    if not args.quiet:
+        for line in skipped:
+            print(f"skipped {line}")
     print(f"wrote {len(frame)} rows to {args.baseline}")
     return EXIT_OK

@@ -14,6 +14,7 @@ from ..request import Request
 from ..results import write_csv
 from ..views.drawing import preload
 from ..views.html import rebuild
+from ..views.progress import Progress
 from ..views.terminal import print_comparison, print_summary, verdict_line
 from .options import (EXIT_DISAGREE, EXIT_ENGINE, EXIT_OK, add_engine_options, add_output_options,
                       add_scene_options, check_output_directory, keywords)
@@ -45,12 +46,15 @@ def main(args):
         write_csv(pd.concat(frames, ignore_index=True), results_path)
 
     preload()                              # the report's plotting library loads beside the runs
-    comparison = compare_request(request, on_frame=keep)
-    comparison.command = command_line()
-    comparison.date = datetime.datetime.now().isoformat(timespec="minutes")
-    os.makedirs(args.output, exist_ok=True)
-    save_comparison(args.output, comparison)
-    report = rebuild(args.output)
+    with Progress(f"compare {request.model}", quiet=args.quiet or args.json) as progress:
+        comparison = compare_request(request, on_frame=keep, progress=progress)
+        progress.expect(1)
+        comparison.command = command_line()
+        comparison.date = datetime.datetime.now().isoformat(timespec="minutes")
+        os.makedirs(args.output, exist_ok=True)
+        save_comparison(args.output, comparison)
+        report = rebuild(args.output)
+        progress.advance("report")
     record = verdict(comparison)
     reference_only = request.engines is not None and set(request.engines) == {"reference"}
     code = exit_code(record, reference_only)

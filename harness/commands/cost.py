@@ -1,9 +1,10 @@
 """`harness cost`: the accuracy-against-cost ladder; its tables, DIR/cost.csv and the report."""
+import json
 import os
 
 import pandas as pd
 
-from ..analyses.cost import COLUMNS, LADDER, cost_table
+from ..analyses.cost import COLUMNS, LADDER, convergence_orders, cost_table, recommendations
 from ..api import statuses
 from ..engines import ENGINES
 from ..errors import UserError
@@ -11,9 +12,10 @@ from ..outputs import COST, save_cost
 from ..request import Request
 from ..results import write_csv
 from ..views.html import rebuild
+from ..views.progress import Progress
 from ..views.terminal import print_cost
-from .options import (EXIT_ENGINE, EXIT_OK, add_engine_options, add_scene_options, check_output_directory,
-                      keywords)
+from .options import (EXIT_ENGINE, EXIT_OK, add_engine_options, add_output_options, add_scene_options,
+                      check_output_directory, keywords)
 
 EXAMPLE = "harness cost --model hertz-mindlin --en 0.9,0.3 --angles 0:80:20 -o cost/"
 
@@ -27,7 +29,7 @@ def add(sub, describe):
     p.add_argument("--ladder", default=None, metavar="LIST",
                    help="steps per contact to try (default 5,10,20,50,100,200,500,1000,5000)")
     p.add_argument("-o", "--output", default="harness-out", metavar="DIR", help="output directory (default %(default)s)")
-    p.add_argument("--quiet", action="store_true", help="print only where the files are")
+    add_output_options(p, json=True)
     p.set_defaults(func=main)
 
 
@@ -57,13 +59,22 @@ def main(args):
     os.makedirs(args.output, exist_ok=True)
     overrides = dict(request.overrides)
     save_cost(args.output, pd.DataFrame(columns=COLUMNS), {}, law, scene, overrides, skipped, [])
-    table, failures, uncertainty = cost_table(law, scene, adapters, ladder,
-                                              keep=lambda so_far: write_csv(so_far, os.path.join(args.output, COST)))
+    with Progress(f"cost {law.name}", quiet=args.quiet or args.json) as progress:
+        table, failures, uncertainty = cost_table(
+            law, scene, adapters, ladder, keep=lambda so_far: write_csv(so_far, os.path.join(args.output, COST)),
+            progress=progress)
     save_cost(args.output, table, uncertainty, law, scene, overrides, skipped, failures)
     report = rebuild(args.output)
+    asked = set(request.engines or ()) - {"reference"}
+    code = EXIT_ENGINE if failures or asked & {name for name, _ in skipped} else EXIT_OK
+    if args.json:
+        print(json.dumps({"model": law.name, "exit_code": code, "recommendations": recommendations(table).to_dict(
+            "records"), "orders": convergence_orders(table).to_dict("records"), "skipped": skipped,
+            "failed": [{"engine": f.engine, "e_n": f.e_n, "message": f.message} for f in failures],
+            "files": {"cost": os.path.join(args.output, COST), "report": report}}, indent=1, default=str))
+        return code
     if not args.quiet:
         print_cost(table, uncertainty, law, scene, ladder, skipped, failures)
         print()
     print(f"wrote {os.path.join(args.output, COST)} and {report}")
-    asked = set(request.engines or ()) - {"reference"}
-    return EXIT_ENGINE if failures or asked & {name for name, _ in skipped} else EXIT_OK
+    return code

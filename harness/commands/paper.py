@@ -7,8 +7,9 @@ from ..laws import LAWS
 from ..paper import figure_set
 from ..results import write_csv
 from ..views.paper_html import NORMAL, OBLIQUE, SLIDING, write_paper_report
+from ..views.progress import Progress
 from ..views.terminal import text_table
-from .options import EXIT_OK, check_output_directory
+from .options import EXIT_OK, add_output_options, check_output_directory
 
 EXAMPLE = "harness paper -o paper/"
 
@@ -19,7 +20,7 @@ def add(sub, describe):
     p.add_argument("--laws", default=None, metavar="LIST", help="comma-separated laws (default: every law)")
     p.add_argument("--steps-per-contact", type=int, default=2000, metavar="N", help="resolution (default 2000)")
     p.add_argument("-o", "--output", default="harness-paper", metavar="DIR", help="output directory (default %(default)s)")
-    p.add_argument("--quiet", action="store_true", help="print only where the page is")
+    add_output_options(p)
     p.set_defaults(func=main)
 
 
@@ -32,8 +33,8 @@ def main(args):
     if args.steps_per_contact < 100:
         raise UserError(f"--steps-per-contact must be >= 100 for the paper's figures, got {args.steps_per_contact}")
     check_output_directory(args.output)
-    report = (lambda what: None) if args.quiet else (lambda what: print(f"  done: {what}", file=sys.stderr))
-    oblique, normal, sliding = figure_set(laws, args.steps_per_contact, progress=report)
+    with Progress("paper", quiet=args.quiet) as progress:
+        oblique, normal, sliding = figure_set(laws, args.steps_per_contact, progress=progress)
     os.makedirs(args.output, exist_ok=True)
     write_csv(oblique, os.path.join(args.output, OBLIQUE))
     for table, name in ((normal, NORMAL), (sliding, SLIDING)):

@@ -5,7 +5,7 @@ from ..engines import get_engine
 from ..errors import UserError
 from ..plan import engine_runs
 from ..request import Request
-from .options import EXIT_OK, add_scene_options, check_output_directory, engine_option, keywords
+from .options import EXIT_OK, add_output_options, add_scene_options, check_output_directory, engine_option, keywords
 
 EXAMPLE = "harness render --model hertz-mindlin --engine liggghts --en 0.5 -o decks/"
 
@@ -18,7 +18,7 @@ def add(sub, describe):
                    metavar="ENGINE:KEY=VALUE", help="an engine's option (see `harness compare --help`)")
     add_scene_options(p)
     p.add_argument("-o", "--output", required=True, metavar="DIR", help="directory for the inputs")
-    p.add_argument("--quiet", action="store_true", help="print nothing on success")
+    add_output_options(p)
     p.set_defaults(func=main)
 
 
@@ -36,4 +36,5 @@ def main(args):
             handle.write(text)
     if not args.quiet:
         print("\n".join(os.path.join(args.output, name) for name, _ in texts))
+    print(f"wrote {len(texts)} {args.engine} input(s) to {args.output}")
     return EXIT_OK

@@ -47,10 +47,11 @@ def needs_tangential(scene, v_t0, omega0, law=None):
     return acts & ((v_t0 != 0.0) | (omega0 != 0.0))
 
 
-def plan_batch(law, scene, e_n, steps_per_contact, check_stability=True):
+def plan_batch(law, scene, e_n, steps_per_contact, check_stability=True, every_effect=False):
     """Kernel rows for every impact of the scene at target e_n; dt = (contact-time estimate at V) / steps, or the
     given FixedTimeStep; a dt above the stability limit is refused (harness.stability) unless the rows are for the
-    adaptive integrator, which chooses its own steps."""
+    adaptive integrator, which chooses its own steps. every_effect: the tangential model on every row whether the
+    scene calls for it or not (what benchmarks/bench_effects.py measures the saving against)."""
     contact = scene.contact
     v_n0, v_t0, omega0, theta = scene.impacts(e_n)
     normal = law.normal.parameters(contact, e_n, scene.speed)
@@ -60,7 +61,7 @@ def plan_batch(law, scene, e_n, steps_per_contact, check_stability=True):
     if not steps_per_contact > 0:
         raise ValueError(f"steps per contact must be positive, got {steps_per_contact}")
     dt = normal.contact_time / steps_per_contact
-    tangential = needs_tangential(scene, v_t0, omega0, law)
+    tangential = np.ones(len(v_n0), dtype=bool) if every_effect else needs_tangential(scene, v_t0, omega0, law)
     n = len(v_n0)
     params = np.zeros((n, C.N_PARAMS))
     params[:, C.P_MASS] = contact.mass

@@ -4,7 +4,7 @@ import numpy as np
 from . import style
 from .drawing import draw_all
 from .pieces import figure_svg, records
-from ..analyses.cost import (ADAPTIVE, EXTRAPOLATED, METRICS, TOLERANCES, convergence_orders, ladder_rows, per_rung,
+from ..analyses.cost import (ADAPTIVE, EXTRAPOLATED, METRICS, TOLERANCES, WITHIN_NOISE, convergence_orders, ladder_rows, per_rung,
                    recommendations)
 
 LABELS = {"e_n": "e_n", "e_t": "e_t", "omega_star": "Omega*", "t_contact": "contact time", "f_n_max": "peak force",
@@ -39,6 +39,8 @@ def cost_figure(cost, x_column, x_label, metrics):
         column = f"err_{metric}"
         for engine, dialect, ladder, rayleigh, converged in _curves(cost):
             data = ladder[np.isfinite(ladder[column]) & (ladder[column] > 0) & (ladder[x_column] > 0)]
+            if x_column == "net_wall_s":             # a time within the machine's noise is not a time
+                data = data[data.timing != WITHIN_NOISE]
             if data.empty:
                 continue
             line, = ax.plot(data[x_column], data[column], label=style.label(engine, dialect),

@@ -126,14 +126,15 @@ def print_comparison(comparison, written):
 
 def print_cost(table, uncertainty, law, scene, ladder, skipped, failures):
     """The cost study's tables: errors and times per rung, recommended time steps, orders of convergence."""
-    from ..analyses.cost import (METRICS, RAYLEIGH_FRACTION, convergence_orders, per_rung, rayleigh_time,
-                                 recommendations)
+    from ..analyses.cost import (METRICS, RAYLEIGH_FRACTION, WITHIN_NOISE, convergence_orders, per_rung,
+                                 rayleigh_time, recommendations)
     t_r = rayleigh_time(scene)
     print(f"{law.name}: accuracy against cost, {len(scene.e_n)} e_n x {len(scene.impacts(scene.e_n[0])[0])} "
           f"impacts; ladder {', '.join(map(str, ladder))} steps per contact, plus {RAYLEIGH_FRACTION:.0%} of the "
           f"Rayleigh time (T_R = {t_r:.4g} s, dt = {RAYLEIGH_FRACTION * t_r:.4g} s)")
     print("errors: max over impacts |x - x*| / max |x*| against the converged reference of the same dialect; "
-          "wall time summed over e_n, engine start-up excluded")
+          "wall time: the fastest of repeated timings, summed over e_n, engine start-up (timed the same way) "
+          f"excluded; '{WITHIN_NOISE}' where that is not above the timings' spread")
     for curve, per_e in uncertainty.items():
         worst = max(errs["err_max"] for errs in per_e.values())
         truth = next(iter(per_e.values())).get("truth", "")
@@ -142,12 +143,13 @@ def print_cost(table, uncertainty, law, scene, ladder, skipped, failures):
     for name, reason in skipped:
         print(f"skipped {name}: {reason}")
     rows = per_rung(table)
+    rows["net_wall_s"] = [WITHIN_NOISE if timing == WITHIN_NOISE else f"{wall:.3g}"
+                          for wall, timing in zip(rows.net_wall_s, rows.timing)]
     refused = table[table.status == "refused"].drop_duplicates(["engine", "dialect", "rung"])
     print()
     print(text_table(rows, ["engine", "dialect", "rung", "steps_per_contact", "dt", "net_wall_s", "err_e_n", "err_e_t",
                             "err_omega_star", "err_t_contact", "err_f_n_max"],
-                     {"steps_per_contact": "{:.4g}", "dt": "{:.3g}", "net_wall_s": "{:.3g}",
-                      **{f"err_{m}": "{:.1e}" for m in METRICS}}))
+                     {"steps_per_contact": "{:.4g}", "dt": "{:.3g}", **{f"err_{m}": "{:.1e}" for m in METRICS}}))
     for _, r in refused.iterrows():
         print(f"  refused: {r.engine}/{r.dialect} at {r.rung}: {r.message}")
     print("\nrecommended time step (coarsest rung within tolerance at every e_n, worst metric, and every finer rung too):")
