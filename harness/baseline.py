@@ -89,6 +89,11 @@ def check(directory, now=None, progress=None):
     if not os.path.exists(path):
         raise UserError(f"no baseline at {path}; create it with `harness baseline --update --baseline {directory}`")
     baseline = read_csv(path)
+    if baseline.empty:
+        raise UserError(f"the baseline {path} holds no rows; recreate it with `harness baseline --update`")
+    if not all(pd.api.types.is_numeric_dtype(baseline[m]) for m in METRICS):
+        raise UserError(f"the baseline {path} holds a value that is not a number in "
+                        f"{', '.join(m for m in METRICS if not pd.api.types.is_numeric_dtype(baseline[m]))}")
     skipped = []
     if now is None:
         now, skipped = compute(progress)

@@ -27,6 +27,7 @@ class Comparison:
     histories: dict | None = None
     command: str = ""                   # the command line that made it, when a command did
     date: str = ""                      # when it finished (local time, ISO 8601 to the minute)
+    partial: bool = False               # interrupted before every run finished: the results so far
 
     @property
     def engines(self):
@@ -50,7 +51,7 @@ class Comparison:
 
     @cached_property
     def findings(self):
-        return findings(self.results)
+        return findings(self.results, self.scene.gravity)
 
     @property
     def compared(self):

@@ -14,14 +14,14 @@ from .solver.threads import THREADS
 
 def execute(runs, on_frame=None):
     """(results table, failed runs) of the runs; on_frame(frame) as each is done."""
-    done = run_all(runs, None if on_frame is None else (lambda run, frame: on_frame(frame)))
+    done = run_all(runs, None if on_frame is None else (lambda run, frame, failure: on_frame(frame)))
     frames = [frame for frame, _ in done]
     table = pd.concat(frames, ignore_index=True) if frames else pd.DataFrame(columns=list(COLUMNS))
     return table, [failure for _, failure in done if failure is not None]
 
 
 def run_all(runs, on_done=None):
-    """(frame, failure or None) of each run, in the runs' order; on_done(run, frame) as each is done."""
+    """(frame, failure or None) of each run, in the runs' order; on_done(run, frame, failure) as each is done."""
     allow()
     frames, failures = [None] * len(runs), [None] * len(runs)
     groups = {}
@@ -32,7 +32,7 @@ def run_all(runs, on_done=None):
         for i, (frame, failure) in zip(indices, results):
             frames[i], failures[i] = frame, failure
             if on_done is not None:
-                on_done(runs[i], frame)
+                on_done(runs[i], frame, failure)
 
     external = {name: indices for name, indices in groups.items() if name != "reference"}
     with ThreadPoolExecutor(max_workers=max(1, min(THREADS, len(external)))) as pool:

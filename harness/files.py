@@ -1,12 +1,29 @@
 """Files written whole or not at all: a temporary file beside the target, renamed over it, so that an interrupted or
 killed process never leaves half a file."""
 import os
+import stat
 import tempfile
+
+from .errors import UserError
+
+
+def refuse_unless_regular(path):
+    """Only a regular file (not a link, a device, a FIFO, a socket or a directory) may be replaced."""
+    try:
+        mode = os.lstat(path).st_mode
+    except FileNotFoundError:
+        return
+    if not stat.S_ISREG(mode):
+        kind = ("a symbolic link" if stat.S_ISLNK(mode) else "a directory" if stat.S_ISDIR(mode) else
+                "a device, FIFO or socket")
+        raise UserError(f"will not write {path}: it is {kind}, not a regular file")
 
 
 def write_text(path, text):
-    """Write `text` to `path` atomically, with the permissions a plain open() would give."""
+    """Write `text` to `path` atomically, with the permissions a plain open() would give; only a new path or a
+    regular file is written."""
     path = os.fspath(path)
+    refuse_unless_regular(path)
     directory = os.path.dirname(os.path.abspath(path))
     fd, tmp = tempfile.mkstemp(prefix=f".{os.path.basename(path)}-", suffix=".tmp", dir=directory)
     try:

@@ -64,7 +64,8 @@ CATALOGUE = (
              why="tangential spring 10x the normal one; Mindlin kappa 1.331 (nu -0.99)"),
     HardCase("E = 1e12 Pa", {"E": 1e12}, why="very stiff: contact 12 us, peak overlap 8e-4 R"),
     HardCase("E = 1e6 Pa", {"E": 1e6},
-             why="very soft: contact 3 ms, peak overlap 0.2 R (the engines' levers R - alpha/2, R - alpha shorten)"),
+             why="very soft: contact 3 ms, peak overlap 0.14-1.9 R (the engines' levers R - alpha/2, R - alpha "
+                 "shorten); beyond 0.1 R a row is 'invalid', outside the small-strain range"),
     HardCase("R = 10 um", {"radius": 1e-5}, why="tiny mass (1.1e-11 kg), contact 69 ns, V/R = 1e5 rad/s"),
     HardCase("R = 0.1 m", {"radius": 0.1}, why="large sphere: 11 kg, contact 0.69 ms"),
     HardCase("spin against the motion", {"omega0": -400.0, "angles_deg": (0.0, 20.0, 45.0, 89.5)},

@@ -18,13 +18,26 @@ SLIDING = "sliding.csv"
 COST, COST_RUN, COST_TRUTH = "cost.csv", "cost.json", "cost-truth.csv"
 
 
-def save_comparison(out_dir, comparison):
-    """Write everything beyond results.csv that the report shows (results.csv is written as the runs finish)."""
+def start_comparison(out_dir, comparison):
+    """Before the runs: DIR/run.json describes the compare now running, marked partial, and the tables of an earlier
+    compare are removed, so DIR never mixes two runs; an interrupted compare leaves a partial run `report` can show."""
+    for name in (ATTRIBUTION, HISTORIES, FAILURES, PRECISION, SLIDING, "results.csv"):
+        _remove(out_dir, name)
+    _write_run(out_dir, comparison, partial=True)
+
+
+def _write_run(out_dir, comparison, partial):
     scene_fields = {k: v for k, v in asdict(comparison.scene).items() if k != "extra"}
     write_text(os.path.join(out_dir, RUN), json.dumps(
         {"model": comparison.law.name, "overrides": comparison.overrides, "scene": scene_fields,
          "skipped": comparison.skipped, "engine_options": comparison.engine_options,
-         "requested": comparison.requested, "command": comparison.command, "date": comparison.date}, indent=1))
+         "requested": comparison.requested, "command": comparison.command, "date": comparison.date,
+         "partial": partial}, indent=1))
+
+
+def save_comparison(out_dir, comparison):
+    """Write everything beyond results.csv that the report shows (results.csv is written as the runs finish)."""
+    _write_run(out_dir, comparison, partial=False)
     tables = [table.assign(comparison=name) for name, table in comparison.attribution.items()]
     _table(out_dir, ATTRIBUTION, pd.concat(tables, ignore_index=True) if tables else None)
     rows = [pd.DataFrame(h[0][~np.isnan(h[0][:, 0])], columns=["t", "overlap", "f_n", "f_t"]).assign(e_n_target=e)
@@ -70,15 +83,31 @@ def kinds(out_dir):
     return has_compare, has_cost
 
 
+def _load_json(out_dir, name, keys):
+    """DIR/name as a dict holding `keys`; a damaged or foreign file is the user's to fix (UserError)."""
+    try:
+        with open(os.path.join(out_dir, name), encoding="utf-8") as handle:
+            run = json.load(handle)
+    except (OSError, ValueError) as exc:
+        raise UserError(f"cannot read {out_dir}/{name}: {exc}") from None
+    if not isinstance(run, dict) or any(k not in run for k in keys) or not isinstance(run["scene"], dict):
+        raise UserError(f"{out_dir}/{name} is damaged or foreign (not a harness run description)")
+    return run
+
+
 def load_comparison(out_dir):
     """The Comparison saved in DIR (its analyses follow from the table again)."""
     from .comparison import Comparison
     from .laws import compose
     from .scene import Scene
     frame = read_csv(os.path.join(out_dir, "results.csv"))
-    with open(os.path.join(out_dir, RUN)) as handle:
-        run = json.load(handle)
-    scene = Scene(**{k: tuple(v) if isinstance(v, list) else v for k, v in run["scene"].items()})
+    if frame.empty:
+        raise UserError(f"{out_dir}/results.csv holds no results")
+    run = _load_json(out_dir, RUN, ("model", "scene"))
+    try:
+        scene = Scene(**{k: tuple(v) if isinstance(v, list) else v for k, v in dict(run["scene"]).items()})
+    except (TypeError, ValueError, UserError) as exc:
+        raise UserError(f"{out_dir}/{RUN} is damaged or foreign: in its scene, {exc}") from None
     attribution_table = _read(out_dir, ATTRIBUTION)
     attributions = {name: table.drop(columns="comparison").dropna(axis=1, how="all")
                     for name, table in attribution_table.groupby("comparison", sort=False)} \
@@ -92,19 +121,22 @@ def load_comparison(out_dir):
     precision = _read(out_dir, PRECISION)
     sliding = _read(out_dir, SLIDING)
     requested = run.get("requested")
-    return Comparison(compose(run["model"], run["overrides"]), scene, frame, overrides=run["overrides"],
+    overrides = run.get("overrides") or {}
+    return Comparison(compose(run["model"], overrides), scene, frame, overrides=overrides,
                       engine_options=run.get("engine_options", {}), requested=tuple(requested) if requested else None,
-                      skipped=[tuple(s) for s in run["skipped"]], failures=failures, attribution=attributions,
+                      skipped=[tuple(s) for s in run.get("skipped", [])], failures=failures, attribution=attributions,
                       sliding=sliding if not sliding.empty else None,
                       precision=precision.iloc[0].to_dict() if not precision.empty else None, histories=histories,
-                      command=run.get("command", ""), date=run.get("date", ""))
+                      command=run.get("command", ""), date=run.get("date", ""), partial=bool(run.get("partial")))
 
 
 def load_cost(out_dir):
     """(cost table, the truth's uncertainty table, cost.json) saved in DIR."""
-    with open(os.path.join(out_dir, COST_RUN)) as handle:
-        run = json.load(handle)
-    cost = pd.read_csv(os.path.join(out_dir, COST), dtype={"rung": str, "message": str})
+    run = _load_json(out_dir, COST_RUN, ("model", "scene"))
+    try:
+        cost = pd.read_csv(os.path.join(out_dir, COST), dtype={"rung": str, "message": str})
+    except (OSError, ValueError, pd.errors.ParserError, pd.errors.EmptyDataError) as exc:
+        raise UserError(f"cannot read {out_dir}/{COST}: {exc}") from None
     return cost, _read(out_dir, COST_TRUTH), run
 
 

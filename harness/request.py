@@ -5,6 +5,7 @@ import math
 from dataclasses import dataclass, field
 
 from .errors import UserError
+from .solver.plan import MAX_STEPS_PER_CONTACT
 from .plan import CONVERGED
 from .scene import DEFAULT_ANGLES, DEFAULT_EN, DEFAULT_SPEED, from_material
 from .solver.plan import FixedTimeStep
@@ -53,6 +54,8 @@ def resolution_from(steps_per_contact=None, dt=None, converged=False):
     steps = 1000 if steps_per_contact is None else steps_per_contact
     if isinstance(steps, bool) or not isinstance(steps, int) or steps < 1:
         raise UserError(f"--steps-per-contact must be a whole number >= 1, got {steps!r}")
+    if steps > MAX_STEPS_PER_CONTACT:
+        raise UserError(f"--steps-per-contact must be at most {MAX_STEPS_PER_CONTACT:.0e}, got {steps}")
     return steps
 
 
@@ -101,6 +104,10 @@ class Request:
             raise UserError(f"--with {repeated[0]}=... given twice")
         options = engine_options_from(engine_options) if not isinstance(engine_options, dict) else \
             {e: dict(o) for e, o in (engine_options or {}).items()}
+        ignored = sorted(set(options) - set(engines)) if engines is not None else []
+        if ignored:
+            raise UserError(f"--engine-option for {ignored[0]}, which is not among the engines asked for "
+                            f"({', '.join(engines)})")
         request = cls(model, scene_from(**keywords), resolution_from(steps_per_contact, dt, converged),
                       tuple(pairs), None if engines is None else tuple(engines), options)
         request.law                          # unknown law or sub-model: refused here, before anything runs

@@ -116,6 +116,29 @@ def _positive(name, value):
         raise UserError(f"{name} must be a positive number, got {value!r}")
 
 
+# the physical range a scene may take: contact mechanics of solid spheres, not molecules, planets or shock waves
+BOUNDS = {"radius": (1e-7, 10.0, "m"), "E": (1e3, 1e13, "Pa"), "rho": (1.0, 1e5, "kg/m^3"),
+          "speed": (1e-6, 1e3, "m/s"), "gravity": (0.0, 1e3, "m/s^2"), "mu": (0.0, 10.0, "")}
+MAX_SURFACE_SPEED = 1e3          # m/s: tangential speed, R omega0
+MAX_IMPACTS = 10 ** 6            # per run: e_n values x impacts
+
+
+def within_bounds(scene):
+    """One line naming the bound a scene value lies outside (UserError)."""
+    for name, (low, high, unit) in BOUNDS.items():
+        value = getattr(scene, name)
+        if not low <= value <= high:
+            raise UserError(f"{name} must lie in [{low:g}, {high:g}] {unit}, got {value!r}".replace(" ,", ","))
+    if abs(scene.omega0) * scene.radius > MAX_SURFACE_SPEED:
+        raise UserError(f"|omega0| R must be at most {MAX_SURFACE_SPEED:g} m/s, got {abs(scene.omega0) * scene.radius:g}")
+    surface = list(scene.v_t or ()) + [0.5 * scene.mu * 2.0 * scene.speed * p for p in scene.psi1_star or ()]
+    if any(v > MAX_SURFACE_SPEED for v in surface):
+        raise UserError(f"tangential speeds must be at most {MAX_SURFACE_SPEED:g} m/s, got {max(surface):g}")
+    count = len(scene.e_n) * len(scene.angles_deg or scene.psi1_star or scene.v_t or ())
+    if count > MAX_IMPACTS:
+        raise UserError(f"at most {MAX_IMPACTS:.0e} impacts per run, got {count} (split the sweep)")
+
+
 def validate(scene):
     """Reject physically meaningless scenes with one clear line (UserError); only finite numbers get through."""
     for name in ("nu", "mu", "omega0", "gravity"):
@@ -163,6 +186,7 @@ def validate(scene):
         for psi in scene.psi1_star:
             if not (math.isfinite(psi) and psi >= 0):
                 raise UserError(f"Psi1* must be >= 0, got {psi!r}")
+    within_bounds(scene)
 
 
 def from_material(name, **overrides):

@@ -139,11 +139,36 @@ def test_hang_is_killed_at_the_timeout(tmp_path, monkeypatch):
     assert "started" in failure.value.log_tail
 
 
-def test_truncated_dump_is_detected(tmp_path, monkeypatch):
-    body = 'printf "ITEM: ATOMS id z vx vz omegay\\n1 0.005 0 0.5 0\\n" > final.dump'
+DUMP_HEAD = "ITEM: TIMESTEP\\n0\\nITEM: NUMBER OF ATOMS\\n{n}\\nITEM: BOX BOUNDS pp pp fm\\n0 1\\n0 1\\n0 1\\n" \
+            "ITEM: ATOMS id z vx vz omegay\\n"
+ROW = "{i} 0.03 0.1 0.5 0.2\\n"
+
+
+@pytest.mark.parametrize("dump, spheres, message", [
+    (DUMP_HEAD.format(n=2) + ROW.format(i=1) + "2 0.03 0.1 0.5 0.", 2, "cut short: 1 complete rows of 2, the last "
+                                                                       "unterminated"),
+    (DUMP_HEAD.format(n=3) + ROW.format(i=1), 3, "cut short: 1 complete rows of 3"),
+    (DUMP_HEAD.format(n=3) + ROW.format(i=1) + ROW.format(i=2) + ROW.format(i=3), 2, "holds 3 spheres where the deck "
+                                                                                    "made 2"),
+    ("ITEM: ATOMS id z vx vz omegay\\n1 0.005 0 0.5 0\\n", 1, "malformed"),
+])
+def test_a_damaged_dump_is_named_and_keeps_the_log(tmp_path, monkeypatch, dump, spheres, message):
+    """A dump cut inside its last number, one short of its header, one with an extra sphere, one without a header:
+    each refused with what is wrong, and the failure carries the engine's log."""
+    body = f'echo "LIGGGHTS (fake) ran"; printf "{dump}" > final.dump'
     monkeypatch.setenv(liggghts.BINARY_VARIABLE, fake_executable(tmp_path, body))
-    with pytest.raises(EngineFailure, match="truncated: 1 of 3 spheres"):
-        liggghts.run_deck("# deck", 3, 30, str(tmp_path))
+    with pytest.raises(EngineFailure, match=message.replace("(", r"\(")) as failure:
+        liggghts.run_deck("# deck", spheres, 30, str(tmp_path))
+    assert "LIGGGHTS (fake) ran" in failure.value.log_tail
+
+
+def test_a_complete_dump_is_read():
+    import tempfile
+    with tempfile.TemporaryDirectory() as directory:
+        path = os.path.join(directory, "final.dump")
+        with open(path, "w") as handle:
+            handle.write((DUMP_HEAD.format(n=2) + ROW.format(i=2) + ROW.format(i=1)).replace("\\n", "\n"))
+        assert liggghts.read_dump(path, 2).tolist() == [[0.03, 0.1, 0.5, 0.2]] * 2
 
 
 @needs_liggghts

@@ -10,6 +10,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from harness.laws import LAWS, compose
+from harness.results import SMALL_STRAIN
 from harness.scene import Scene
 from harness.solver.reference import simulate
 
@@ -25,7 +26,8 @@ def test_impacts_separate_finite_and_without_energy_gain(law, e, angle, mu, omeg
     scene = Scene(e_n=(e,), angles_deg=(angle,), mu=mu, omega0=omega, E=10.0 ** log_E, radius=10.0 ** log_radius,
                   nu=nu)
     row = simulate(compose(law), scene, steps_per_contact=100)[0].iloc[0]
-    assert row.status == "ok", row.message
+    small_strain = row.overlap_max <= SMALL_STRAIN * row.radius    # soft and fast: a run beyond it is "invalid"
+    assert row.status == ("ok" if small_strain else "invalid"), row.message
     assert all(math.isfinite(row[c]) for c in ("v_n1", "v_t1", "omega1", "t_contact", "f_n_max"))
     assert row.v_n1 > 0.0
     assert row.ke_ratio <= 1.0 + 1e-6, (row.ke_ratio, row.e_n)

@@ -1,7 +1,9 @@
 """YADE adapter: runs as a Python module without network servers; precision flavours; failure modes."""
 import glob
+import os
 import subprocess
 import sys
+import time
 
 import numpy as np
 import pytest
@@ -38,6 +40,8 @@ def my_listening_sockets():
             mine.add(target[8:-1])
     return len(mine & listening_inodes())
 from yade import *
+import atexit, yade.boot
+atexit.register(yade.boot.finalize)                        # the probe leaves no /tmp/yade-XXXXXX either
 O.bodies.append(utils.sphere((0, 0, 0), 1.0))
 O.run(10, True)
 if len(sys.argv) > 1:                                      # positive control: the probe does see a listener
@@ -92,7 +96,20 @@ def test_a_yade_run_leaves_nothing_in_tmp(tmp_path):
     _, _, text = batch_and_script(Scene(e_n=(0.5,), angles_deg=(30.0,)))
     rows, _, _ = yade.run_script(text, 1, 120, str(tmp_path))
     assert rows[0, 0]                                            # the run did happen and the sphere left the wall
+    deadline = time.time() + 30                                  # another test's YADE may run beside this one
+    while not set(glob.glob("/tmp/yade-*")) <= before and time.time() < deadline:
+        time.sleep(0.2)
     assert set(glob.glob("/tmp/yade-*")) <= before
+
+
+@needs_yade
+def test_a_killed_yade_run_leaves_nothing_in_tmp(tmp_path):
+    """YADE removes its /tmp/yade-XXXXXX only when it exits; killed at a timeout, harness removes it."""
+    _, _, text = batch_and_script(Scene(e_n=(0.5,), angles_deg=(30.0,)))
+    with pytest.raises(EngineFailure, match="did not finish"):
+        yade.run_script(text + "\nimport time\ntime.sleep(60)\n", 1, 8, str(tmp_path))
+    made = (tmp_path / "yade_tmpdir.txt").read_text()
+    assert made.startswith("/tmp/yade-") and not os.path.exists(made)
 
 
 def test_crash_hang_truncation_give_clear_failures(tmp_path, monkeypatch):

@@ -1,12 +1,11 @@
 """What accuracy costs in time: a ladder of steps per contact for the paper law, each engine's dialect and each
 engine, errors of e_n, e_t, Omega*, t_c and F_max against the converged reference of the same dialect."""
 import math
-import tempfile
 
 import numpy as np
 import pandas as pd
 
-from ..engines.runner import EngineFailure
+from ..engines.runner import EngineFailure, scratch
 from ..engines.batches import TIMEOUT_FLOOR_S
 from ..solver.plan import FixedTimeStep, plan_batch
 from ..solver.reference import CONVERGED_START, adaptive_batch, simulate, simulate_adaptive, simulate_extrapolated
@@ -159,7 +158,7 @@ def startup_seconds(adapter, paper_law, dialect, scene, options):
         walls = []
         for _ in range(TIMING_REPEATS):
             try:
-                with tempfile.TemporaryDirectory(prefix=f"harness-{adapter.NAME}-startup-") as workdir:
+                with scratch(f"{adapter.NAME}-startup") as workdir:
                     walls.append(adapter.run_batch(paper_law, scene, batch, 1, TIMEOUT_FLOOR_S, workdir, options)[1])
             except EngineFailure:
                 walls.append(np.nan)

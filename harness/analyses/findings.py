@@ -20,7 +20,7 @@ def _because(row, kind):
     return f"; known cause: {known}" if known else ""
 
 
-def findings(frame):
+def findings(frame, gravity=0.0):
     """Engine behaviour worth a user's attention: kinetic energy gained (in all, or in the tangential and
     rotational motion, which friction can only slow), the other invariant breaks of harness.invariants that a row's
     status does not already say (non-finite values, long contact, normal-impact e_n off its target, a tangential
@@ -38,8 +38,9 @@ def findings(frame):
                                   f"{worst[column]:.6f} at e_n = {worst.e_n_target:g}, angle {worst.theta_deg:g} deg "
                                   f"(v_t1 = {worst.v_t1:.4f} m/s from v_t0 = {worst.v_t0:.4f})"
                                   + _because(worst, "energy gain")})
-    breaks = invariant_breaks(frame)
-    breaks = breaks[breaks.kind.isin(("non-finite result", "long contact", "e_n off target", "friction at mu = 0"))
+    breaks = invariant_breaks(frame, gravity)
+    breaks = breaks[breaks.kind.isin(("non-finite result", "long contact", "e_n off target", "friction at mu = 0",
+                                      "Coulomb bound"))
                     & (frame.loc[breaks.row, "status"].to_numpy() == "ok")]
     for (engine, dialect, _, kind), group in breaks.groupby(["engine", "dialect", "model", "kind"], sort=False):
         rows = frame.loc[group.row]
@@ -63,6 +64,12 @@ def _break_detail(kind, group, rows):
         worst = group.loc[(group.value / group.limit).idxmax()]
         return (f"{len(group)} impacts stay in contact longer than the bound; worst {worst.value:.3g} s against "
                 f"{worst.limit:.3g} s at e_n = {worst.e_n_target:g}, angle {worst.theta_deg:g} deg")
+    if kind == "Coulomb bound":
+        excess = group.value / group.limit - 1.0
+        worst = rows.loc[group.loc[excess.idxmax()].row]
+        return (f"{len(group)} impacts take a tangential impulse beyond mu times the normal one (|J_t| <= mu J_n); "
+                f"worst by {100 * excess.max():.3g}%: v_t1 = {worst.v_t1:.4g} m/s from {worst.v_t0:.4g} at e_n = "
+                f"{worst.e_n_target:g}, angle {worst.theta_deg:g} deg, omega0 {worst.omega0:g} rad/s")
     if kind == "friction at mu = 0":
         worst = rows.loc[group.loc[group.value.idxmax()].row]
         return (f"{len(group)} impacts with mu = 0 change their tangential velocity or spin; worst v_t1 = "

@@ -1,6 +1,10 @@
 """The command line: one thin module per command; bad input ends in one line on stderr and exit code 2."""
 import argparse
+import os
+import signal
 import sys
+import threading
+import time
 
 from ..errors import UserError
 from ..version import __version__
@@ -39,21 +43,63 @@ def show_log(quiet):
     log.setLevel(logging.WARNING if quiet else logging.INFO)
 
 
+class Stopped(KeyboardInterrupt):
+    """SIGTERM or SIGHUP, raised where harness is so that it unwinds as for Ctrl-C: engines killed, files removed."""
+
+    def __init__(self, signum):
+        super().__init__(signum)
+        self.signum = signum
+
+
+def stop_on_signals():
+    """SIGTERM and SIGHUP stop harness the way Ctrl-C does (only the main thread can receive them); returns the
+    handlers they replace."""
+    if threading.current_thread() is not threading.main_thread():
+        return {}
+
+    def stop(signum, frame):
+        raise Stopped(signum)
+    return {signum: signal.signal(signum, stop) for signum in (signal.SIGTERM, signal.SIGHUP)}
+
+
+def what_was_kept(args, since):
+    """Where the finished results of an interrupted command are, if it wrote any."""
+    output = getattr(args, "output", None) if args is not None else None
+    if not output:
+        return "nothing had been written yet"
+    paths = [output] if os.path.isfile(output) else [os.path.join(output, name) for name in
+                                                      (os.listdir(output) if os.path.isdir(output) else [])]
+    written = [p for p in paths if os.path.isfile(p) and os.path.getmtime(p) >= since]
+    return f"finished results were kept in {output}" if written else "nothing had been written yet"
+
+
 def main(argv=None):
     """Parse, run one command, return its exit code; a user's mistake is one line and 2, Ctrl-C is 130."""
+    from ..engines.runner import sweep_stale
+    args, since = None, time.time() - 1.0
+    replaced = stop_on_signals()
     try:
+        sweep_stale()
         args = build_parser().parse_args(argv)
         show_log(quiet=getattr(args, "quiet", False))
         return args.func(args)
     except UserError as exc:
         print(f"harness: error: {exc}", file=sys.stderr)
         return EXIT_USAGE
-    except KeyboardInterrupt:
-        print("harness: interrupted; finished results were kept", file=sys.stderr)
-        return EXIT_INTERRUPTED
-    except Exception:                                   # a bug of harness: never exit 1, which means disagreement
+    except KeyboardInterrupt as exc:
+        signum = exc.signum if isinstance(exc, Stopped) else signal.SIGINT
+        how = {signal.SIGTERM: "terminated", signal.SIGHUP: "hung up"}.get(signum, "interrupted")
+        print(f"harness: {how}; engines stopped, {what_was_kept(args, since)}", file=sys.stderr)
+        return EXIT_INTERRUPTED if signum == signal.SIGINT else 128 + signum
+    except Exception as exc:                            # a bug of harness: never exit 1, which means disagreement
+        if isinstance(exc, OSError) and exc.filename:   # the file system refused a path the user gave
+            print(f"harness: error: cannot use {exc.filename}: {exc.strerror}", file=sys.stderr)
+            return EXIT_USAGE
         import traceback
         traceback.print_exc()
         print(f"harness: internal error (exit {EXIT_INTERNAL}); please report it with the traceback above",
               file=sys.stderr)
         return EXIT_INTERNAL
+    finally:
+        for signum, handler in replaced.items():
+            signal.signal(signum, handler)

@@ -9,7 +9,10 @@ import pandas as pd
 
 from ..analyses.verdict import DISAGREE, NOT_COMPARED, verdict
 from ..api import compare_request
-from ..outputs import save_comparison
+from ..comparison import Comparison
+from ..lock import exclusive
+from ..outputs import save_comparison, start_comparison
+from ..partial import PartialRuns
 from ..request import Request
 from ..results import write_csv
 from ..views.drawing import preload
@@ -40,20 +43,29 @@ def main(args):
     results_path = os.path.join(args.output, "results.csv")
     frames = []
 
-    def keep(frame):                       # the directory appears with the first results, never for refused input
+    def keep(frame):                       # results.csv holds every finished run, whatever stops the compare
+        if not frames:                     # the first result replaces an earlier compare in DIR, never refused input
+            start_comparison(args.output, Comparison(request.law, request.scene, pd.DataFrame(),
+                                                     overrides=dict(request.overrides), requested=request.engines,
+                                                     engine_options=request.engine_options, command=command_line()))
         frames.append(frame)
-        os.makedirs(args.output, exist_ok=True)
         write_csv(pd.concat(frames, ignore_index=True), results_path)
 
     preload()                              # the report's plotting library loads beside the runs
-    with Progress(f"compare {request.model}", quiet=args.quiet or args.json) as progress:
-        comparison = compare_request(request, on_frame=keep, progress=progress)
+    with exclusive(args.output), Progress(f"compare {request.model}", quiet=args.quiet or args.json) as progress:
+        partial = PartialRuns(args.output)
+        try:
+            comparison = compare_request(request, on_frame=keep, progress=progress, partial=partial)
+        except KeyboardInterrupt:
+            if frames:                     # what finished, as a report marked partial
+                rebuild(args.output)
+            raise
         progress.expect(1)
         comparison.command = command_line()
         comparison.date = datetime.datetime.now().isoformat(timespec="minutes")
-        os.makedirs(args.output, exist_ok=True)
         save_comparison(args.output, comparison)
         report = rebuild(args.output)
+        partial.clear()
         progress.advance("report")
     record = verdict(comparison)
     reference_only = request.engines is not None and set(request.engines) == {"reference"}

@@ -8,6 +8,7 @@ from ..analyses.cost import COLUMNS, LADDER, convergence_orders, cost_table, rec
 from ..api import statuses
 from ..engines import ENGINES
 from ..errors import UserError
+from ..lock import exclusive
 from ..outputs import COST, save_cost
 from ..request import Request
 from ..results import write_csv
@@ -56,15 +57,15 @@ def main(args):
     for name, (adapter, options) in adapters.items():
         adapter.dialect(law.name, options)                    # bad options: exit 2 before anything runs
     skipped = [(s.name, s.reason) for s in found if not s.available]
-    os.makedirs(args.output, exist_ok=True)
     overrides = dict(request.overrides)
-    save_cost(args.output, pd.DataFrame(columns=COLUMNS), {}, law, scene, overrides, skipped, [])
-    with Progress(f"cost {law.name}", quiet=args.quiet or args.json) as progress:
-        table, failures, uncertainty = cost_table(
-            law, scene, adapters, ladder, keep=lambda so_far: write_csv(so_far, os.path.join(args.output, COST)),
-            progress=progress)
-    save_cost(args.output, table, uncertainty, law, scene, overrides, skipped, failures)
-    report = rebuild(args.output)
+    with exclusive(args.output):
+        save_cost(args.output, pd.DataFrame(columns=COLUMNS), {}, law, scene, overrides, skipped, [])
+        with Progress(f"cost {law.name}", quiet=args.quiet or args.json) as progress:
+            table, failures, uncertainty = cost_table(
+                law, scene, adapters, ladder, keep=lambda so_far: write_csv(so_far, os.path.join(args.output, COST)),
+                progress=progress)
+        save_cost(args.output, table, uncertainty, law, scene, overrides, skipped, failures)
+        report = rebuild(args.output)
     asked = set(request.engines or ()) - {"reference"}
     code = EXIT_ENGINE if failures or asked & {name for name, _ in skipped} else EXIT_OK
     if args.json:

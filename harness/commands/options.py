@@ -3,8 +3,10 @@ the keywords they become (the Python API's names, harness.request)."""
 import argparse
 import math
 import os
+import re
 
 from ..errors import UserError
+from ..files import refuse_unless_regular
 from ..scene import DEFAULT_EN
 
 EXIT_OK, EXIT_DISAGREE, EXIT_USAGE, EXIT_ENGINE, EXIT_INTERNAL, EXIT_INTERRUPTED = 0, 1, 2, 3, 4, 130
@@ -15,11 +17,16 @@ EXIT_CODES = """exit codes:
   3  an engine could not run (missing, mis-set, crashed, timed out: what and why is printed) while it was asked
      for by name or had runs that failed, or nothing was compared
   4  an internal error of harness (a bug: the traceback is printed)
-  130 interrupted; finished results were kept"""
+  130 interrupted (Ctrl-C), 143 terminated (SIGTERM), 129 hung up (SIGHUP): engines stopped, temporary files
+     removed, finished results kept"""
 
 
 class Parser(argparse.ArgumentParser):
-    """argparse that reports a usage error as one line and exit code 2."""
+    """argparse that reports a usage error as one line and exit code 2, and reads -1e4 as a number, not an option."""
+
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        self._negative_number_matcher = re.compile(r"^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$")
 
     def error(self, message):
         raise UserError(message)
@@ -37,12 +44,15 @@ def number(text):
 
 
 def number_list(text):
-    """Comma-separated finite floats: '0.9,0.5,0.1'."""
-    return tuple(number(part) for part in text.split(",") if part.strip() != "") or _empty(text)
+    """Comma-separated finite floats: '0.9,0.5,0.1' (an empty item is refused: '0.5,,0.9' is a typo)."""
+    parts = text.split(",")
+    if any(part.strip() == "" for part in parts):
+        return _empty(text)
+    return tuple(number(part) for part in parts)
 
 
 def _empty(text):
-    raise argparse.ArgumentTypeError(f"empty list: {text!r}")
+    raise argparse.ArgumentTypeError(f"empty list or list item: {text!r}")
 
 
 def angle_list(text):
@@ -172,14 +182,33 @@ def keywords(args, resolution=True):
 
 
 def check_output_file(path):
-    """A results file the user names: its directory must exist and it must not be a directory."""
+    """A results file the user names: a new path or a regular file, in a directory that exists and is writable."""
+    if not path:
+        raise UserError("the output path is empty")
     directory = os.path.dirname(os.path.abspath(path))
     if not os.path.isdir(directory):
         raise UserError(f"cannot write {path}: directory {directory} does not exist")
-    if os.path.isdir(path):
-        raise UserError(f"cannot write {path}: it is a directory")
+    refuse_unless_regular(path)
+    writable(directory, path)
 
 
 def check_output_directory(path):
-    if os.path.exists(path) and not os.path.isdir(path):
+    """An output directory the user names: an existing, writable directory, or a new one below a writable one."""
+    if not path:
+        raise UserError("the output directory is empty")
+    if os.path.lexists(path) and not os.path.isdir(path):
         raise UserError(f"output {path} exists and is not a directory")
+    existing = os.path.abspath(path)
+    while not os.path.isdir(existing):
+        existing = os.path.dirname(existing)
+    writable(existing, path)
+
+
+def writable(directory, path):
+    """Refuse, in one line, a directory this process cannot create files in (read-only, /proc, permissions)."""
+    import tempfile
+    try:
+        with tempfile.TemporaryFile(dir=directory):
+            pass
+    except OSError as exc:
+        raise UserError(f"cannot write {path}: {directory} is not writable ({exc.strerror})") from None

@@ -4,6 +4,7 @@ import sys
 
 from ..errors import UserError
 from ..laws import LAWS
+from ..lock import exclusive
 from ..paper import figure_set
 from ..results import write_csv
 from ..views.paper_html import NORMAL, OBLIQUE, SLIDING, write_paper_report
@@ -35,11 +36,11 @@ def main(args):
     check_output_directory(args.output)
     with Progress("paper", quiet=args.quiet) as progress:
         oblique, normal, sliding = figure_set(laws, args.steps_per_contact, progress=progress)
-    os.makedirs(args.output, exist_ok=True)
-    write_csv(oblique, os.path.join(args.output, OBLIQUE))
-    for table, name in ((normal, NORMAL), (sliding, SLIDING)):
-        write_csv(table, os.path.join(args.output, name))
-    path = write_paper_report(args.output, oblique, normal, sliding, "harness " + " ".join(sys.argv[1:]))
+    with exclusive(args.output):
+        write_csv(oblique, os.path.join(args.output, OBLIQUE))
+        for table, name in ((normal, NORMAL), (sliding, SLIDING)):
+            write_csv(table, os.path.join(args.output, name))
+        path = write_paper_report(args.output, oblique, normal, sliding, "harness " + " ".join(sys.argv[1:]))
     if not args.quiet:
         print(text_table(sliding, ["model", "e_n_target", "simulated", "derived", "difference"],
                          {"simulated": "{:.4f}", "derived": "{:.4f}", "difference": "{:+.1e}"}))

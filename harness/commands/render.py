@@ -3,6 +3,7 @@ import os
 
 from ..engines import get_engine
 from ..errors import UserError
+from ..files import write_text
 from ..plan import engine_runs
 from ..request import Request
 from .options import EXIT_OK, add_output_options, add_scene_options, check_output_directory, engine_option, keywords
@@ -24,7 +25,8 @@ def add(sub, describe):
 
 def main(args):
     engine = get_engine(args.engine)
-    request = Request.from_keywords(args.model, engine_options=args.engine_options, **keywords(args))
+    request = Request.from_keywords(args.model, engines=[args.engine], engine_options=args.engine_options,
+                                    **keywords(args))
     if not engine.supports(request.law.name):
         raise UserError(f"{args.engine} has no counterpart of {request.law.name}")
     check_output_directory(args.output)
@@ -32,8 +34,7 @@ def main(args):
                                                        request.engine_options.get(args.engine))]
     os.makedirs(args.output, exist_ok=True)
     for name, text in texts:
-        with open(os.path.join(args.output, name), "w") as handle:
-            handle.write(text)
+        write_text(os.path.join(args.output, name), text)
     if not args.quiet:
         print("\n".join(os.path.join(args.output, name) for name, _ in texts))
     print(f"wrote {len(texts)} {args.engine} input(s) to {args.output}")

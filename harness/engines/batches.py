@@ -1,7 +1,6 @@
 """One run of the plan through an external engine as result rows (a failed batch keeps its log), and the input it
 would be given."""
 import os
-import tempfile
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 
@@ -11,7 +10,7 @@ from ..errors import UserError
 from ..results import impact_frame
 from ..solver.threads import THREADS
 from ..solver.codes import P_MAXSTEPS
-from .runner import EngineFailure
+from .runner import EngineFailure, read_tail, scratch
 
 TIMEOUT_FLOOR_S = 120.0
 SECONDS_PER_ATOM_STEP = 2e-6        # generous: 30x what LIGGGHTS needs here
@@ -31,7 +30,11 @@ OBSERVED = ("t_contact", "f_n_max", "overlap_max")
 
 def timeout_of(batch, max_steps):
     """A generous deadline for one batch: a floor for start-up plus a rate per sphere-step."""
-    return TIMEOUT_FLOOR_S + SECONDS_PER_ATOM_STEP * len(batch.v_n0) * max_steps
+    return TIMEOUT_FLOOR_S + stepping_s(batch, max_steps)
+
+
+def stepping_s(batch, max_steps):
+    return SECONDS_PER_ATOM_STEP * len(batch.v_n0) * max_steps
 
 
 def max_steps_of(batch):
@@ -59,14 +62,17 @@ def result_rows(engine, version, run, batch, final, wall):
                         status=np.where(final["separated"], "ok", "no-separation"), message="", **observed)
 
 
-def run_grouped(engine, version, runs, input_name, render, group_of, run_inputs, read):
+def run_grouped(engine, version, runs, input_name, render, group_of, run_inputs, read, deadline=None):
     """Each run as (results frame, FailedRun or None). The runs of one group (group_of(run): e.g. the flavour) share
     engine processes, one per core at most, each batch in its own directory batch<k> of the process's temporary
     directory with its input in `input_name`; the processes run side by side. render(run, batch) -> its input text (an
     EngineFailure refuses that run alone); run_inputs(group, n, timeout, workdir) runs the n inputs and returns each
     batch's wall seconds (an EngineFailure fails the process: its batches are then run one per process, so that each
-    failure is its own); read(run, batch, directory) -> its final state."""
+    failure is its own); read(run, batch, directory) -> its final state. The engine's deadline: after its first
+    timeout, its batches not yet finished are skipped with the reason (a hung engine costs one timeout, not one per
+    batch)."""
     out, groups = [None] * len(runs), {}
+    deadline = deadline if deadline is not None else []         # the first timeout of this engine, once it happens
     for i, run in enumerate(runs):
         batch = run.batch()
         try:
@@ -78,20 +84,32 @@ def run_grouped(engine, version, runs, input_name, render, group_of, run_inputs,
     shares = [(group, items[k::processes]) for group, items in groups.items()
               for processes in [min(THREADS, len(items))] for k in range(processes)]
 
+    def skipped(items):
+        for i, run, batch, _ in items:
+            out[i] = failed_rows(engine, version, run, batch, EngineFailure(
+                f"skipped: an earlier {engine} run timed out ({deadline[0]})", deadline[0].log_tail))
+
     def one_process(group, items):
-        with tempfile.TemporaryDirectory(prefix=f"harness-{engine}-") as workdir:
+        if deadline:
+            return skipped(items)
+        with scratch(engine) as workdir:
             for k, (_, _, _, text) in enumerate(items):
                 os.makedirs(os.path.join(workdir, f"batch{k}"))
                 with open(os.path.join(workdir, f"batch{k}", input_name), "w") as handle:
                     handle.write(text)
-            timeout = sum(timeout_of(batch, max_steps_of(batch)) for _, _, batch, _ in items)
+            timeout = TIMEOUT_FLOOR_S + sum(stepping_s(batch, max_steps_of(batch)) for _, _, batch, _ in items)
             try:
                 walls = run_inputs(group, len(items), timeout, workdir)
             except EngineFailure as exc:
+                if exc.timed_out:            # every batch of this process shares the timeout; later ones skip
+                    deadline.append(exc)
+                    for i, run, batch, _ in items:
+                        out[i] = failed_rows(engine, version, run, batch, exc)
+                    return
                 if len(items) > 1:           # one process per batch, so that the failure names its batch
                     for i, run, _, _ in items:
                         out[i] = run_grouped(engine, version, [run], input_name, render, group_of, run_inputs,
-                                             read)[0]
+                                             read, deadline)[0]
                     return
                 walls = [exc]
             for k, ((i, run, batch, _), wall) in enumerate(zip(items, walls)):
@@ -100,8 +118,9 @@ def run_grouped(engine, version, runs, input_name, render, group_of, run_inputs,
                         raise wall
                     final = read(run, batch, os.path.join(workdir, f"batch{k}"))
                     out[i] = (result_rows(engine, version, run, batch, final, wall), None)
-                except EngineFailure as exc:
-                    out[i] = failed_rows(engine, version, run, batch, exc)
+                except EngineFailure as exc:        # every failure carries the log of the process that ran it
+                    out[i] = failed_rows(engine, version, run, batch, EngineFailure(
+                        str(exc), exc.log_tail or read_tail(os.path.join(workdir, "engine.log"))))
     if len(shares) == 1:
         one_process(*shares[0])
     elif shares:

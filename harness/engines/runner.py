@@ -1,5 +1,7 @@
-"""Run an engine as a subprocess in its own directory, with a timeout, keeping the tail of its log."""
+"""Run an engine as a subprocess in its own directory and process group, with a timeout, its log streamed to disk
+and only its tail read; killed with harness (SIGKILL on the parent's death), listening on no network interface."""
 import os
+import shutil
 import signal
 import subprocess
 import threading
@@ -7,6 +9,12 @@ import time
 from dataclasses import dataclass
 
 LOG_TAIL_LINES = 40
+LOG_TAIL_BYTES = 64 * 1024
+# OpenMPI (LIGGGHTS' runtime) as a singleton with no daemon, shared memory only: no TCP listener on any interface,
+# and its session directory under the run's own directory (TMPDIR), removed with it
+ISOLATED = {"OMPI_MCA_ess_singleton_isolated": "1", "OMPI_MCA_btl": "self,vader",
+            "OMPI_MCA_btl_tcp_if_include": "lo", "OMPI_MCA_oob_tcp_if_include": "lo", "OMP_NUM_THREADS": "1"}
+PARENT_DEATH = ["setpriv", "--pdeathsig", "KILL", "--"]     # the engine dies with harness, even by SIGKILL
 LIVE = set()                # engine processes running now, whichever thread started them
 _live_lock = threading.Lock()
 STOPPED = threading.Event()  # set by kill_all: no engine process starts until allow() clears it
@@ -15,9 +23,10 @@ STOPPED = threading.Event()  # set by kill_all: no engine process starts until a
 class EngineFailure(Exception):
     """An engine run that produced no usable result; `log_tail` goes into the report."""
 
-    def __init__(self, message, log_tail=""):
+    def __init__(self, message, log_tail="", timed_out=False):
         super().__init__(message)
         self.log_tail = log_tail
+        self.timed_out = timed_out
 
 
 @dataclass(frozen=True)
@@ -31,15 +40,22 @@ def tail(text, lines=LOG_TAIL_LINES):
     return "\n".join(text.splitlines()[-lines:])
 
 
+def launcher():
+    return PARENT_DEATH if shutil.which(PARENT_DEATH[0]) else []
+
+
 def run_engine(argv, workdir, timeout_s, env=None, log_name="engine.log"):
     """Run argv in workdir (own process group); EngineFailure on a missing binary, a crash or a timeout."""
     log_path = os.path.join(workdir, log_name)
     start = time.perf_counter()
     if STOPPED.is_set():
         raise EngineFailure("not started: harness is stopping")
+    if shutil.which(argv[0]) is None:
+        raise EngineFailure(f"{argv[0]} not found")
+    env = {**(os.environ if env is None else env), **ISOLATED, "TMPDIR": workdir}
     try:
         with open(log_path, "wb") as log:
-            proc = subprocess.Popen(argv, cwd=workdir, stdout=log, stderr=subprocess.STDOUT,
+            proc = subprocess.Popen(launcher() + argv, cwd=workdir, stdout=log, stderr=subprocess.STDOUT,
                                     stdin=subprocess.DEVNULL, env=env, start_new_session=True)
             with _live_lock:
                 LIVE.add(proc)
@@ -48,10 +64,11 @@ def run_engine(argv, workdir, timeout_s, env=None, log_name="engine.log"):
                 if stopping:                     # kill_all ran while this one was starting
                     raise EngineFailure("stopped: harness is stopping")
                 code = proc.wait(timeout=timeout_s)
+                kill(proc)                       # whatever it left in its group (an MPI daemon) ends with it
             except subprocess.TimeoutExpired:
                 kill(proc)
                 raise EngineFailure(f"{os.path.basename(argv[0])} did not finish within {timeout_s:g} s (killed)",
-                                    read_tail(log_path)) from None
+                                    read_tail(log_path), timed_out=True) from None
             except BaseException:
                 kill(proc)
                 raise
@@ -91,8 +108,60 @@ def kill_all():
 
 
 def read_tail(path):
+    """The last LOG_TAIL_LINES lines of a log, reading at most its last LOG_TAIL_BYTES."""
     try:
         with open(path, "rb") as handle:
+            handle.seek(max(0, os.path.getsize(path) - LOG_TAIL_BYTES))
             return tail(handle.read().decode("utf-8", "replace"))
     except OSError:
         return ""
+
+
+ENGINE_TMPDIR = "yade_tmpdir.txt"     # an engine that makes its own directory outside ours names it here
+
+
+def remove_engine_tmpdir(workdir):
+    """Remove the directory an engine made outside `workdir` and named in it (YADE's /tmp/yade-XXXXXX, which it
+    removes itself only when it exits normally)."""
+    import re
+    try:
+        with open(os.path.join(workdir, ENGINE_TMPDIR)) as handle:
+            path = handle.read().strip()
+    except OSError:
+        return
+    if re.fullmatch(r"/tmp/yade-[A-Za-z0-9]{6}", path) and os.path.isdir(path) and not os.path.islink(path):
+        shutil.rmtree(path, ignore_errors=True)
+
+
+def scratch(what):
+    """A temporary directory for one engine run, named after this process (harness-PID-what-XXXX), so that one
+    left by a killed harness is recognised and removed by the next (sweep_stale)."""
+    import tempfile
+    return tempfile.TemporaryDirectory(prefix=f"harness-{os.getpid()}-{what}-")
+
+
+def sweep_stale(root=None):
+    """Remove the scratch directories of harness processes that no longer run (killed before they could clean up);
+    returns how many."""
+    import re
+    import tempfile
+    root = root or tempfile.gettempdir()
+    removed = 0
+    for name in os.listdir(root):
+        match = re.fullmatch(r"harness-(\d+)-.+", name)
+        path = os.path.join(root, name)
+        if not match or int(match.group(1)) == os.getpid() or not os.path.isdir(path) or os.path.islink(path):
+            continue
+        try:
+            os.kill(int(match.group(1)), 0)
+            continue                                   # its process is alive
+        except ProcessLookupError:
+            pass
+        except PermissionError:
+            continue                                   # alive, another user's
+        for inner, _, files in os.walk(path):
+            if ENGINE_TMPDIR in files:
+                remove_engine_tmpdir(inner)
+        shutil.rmtree(path, ignore_errors=True)
+        removed += 1
+    return removed

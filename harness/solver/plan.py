@@ -3,12 +3,17 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from ..errors import UserError
+
 from ..submodels.registry import kernel_code
 from . import codes as C
 from .dispatch import TANGENTIAL_NONE
 from .stability import check_time_step
 
 NORATCH_WALL_RADIUS = 1e8      # YADE's hertzian wall: reference radius 1e8 R (its noRatch slip factor uses it)
+
+
+MAX_STEPS_PER_CONTACT = 10 ** 6      # beyond, a run of one impact takes minutes and round-off dominates
 
 
 @dataclass(frozen=True)
@@ -58,6 +63,9 @@ def plan_batch(law, scene, e_n, steps_per_contact, check_stability=True, every_e
     dashpot = law.damping.dashpot(law.normal, contact, e_n, scene.speed, law.end)
     if isinstance(steps_per_contact, FixedTimeStep):
         steps_per_contact = normal.contact_time / steps_per_contact.seconds
+        if steps_per_contact > MAX_STEPS_PER_CONTACT:
+            raise UserError(f"--dt gives {steps_per_contact:.3g} steps per contact at e_n {e_n:g}; at most "
+                            f"{MAX_STEPS_PER_CONTACT:.0e} (a contact lasts {normal.contact_time:.3g} s)")
     if not steps_per_contact > 0:
         raise ValueError(f"steps per contact must be positive, got {steps_per_contact}")
     dt = normal.contact_time / steps_per_contact

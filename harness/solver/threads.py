@@ -1,7 +1,10 @@
 """Rows of a batch split between threads: the compiled integrators release the GIL, so threads run them in parallel
-without numba's parallel compilation (which multiplies the first run's compile time)."""
+without numba's parallel compilation (which multiplies the first run's compile time). The threads are daemons and
+the caller only waits for them, so Ctrl-C or SIGTERM stops harness at once, not when a compiled loop returns."""
 import os
-from concurrent.futures import ThreadPoolExecutor
+import queue
+import threading
+from concurrent.futures import Future
 
 import numpy as np
 
@@ -10,9 +13,32 @@ CHUNKS_PER_THREAD = 4
 _pool = []                                  # one pool for the process, made on first use
 
 
+class DaemonPool:
+    """submit(fn, *args) -> Future, run by daemon threads (an interrupted process does not wait for them)."""
+
+    def __init__(self, workers):
+        self.tasks = queue.SimpleQueue()
+        for k in range(workers):
+            threading.Thread(target=self.work, name=f"harness-rows-{k}", daemon=True).start()
+
+    def work(self):
+        while True:
+            future, fn, args = self.tasks.get()
+            if future.set_running_or_notify_cancel():
+                try:
+                    future.set_result(fn(*args))
+                except BaseException as exc:
+                    future.set_exception(exc)
+
+    def submit(self, fn, *args):
+        future = Future()
+        self.tasks.put((future, fn, args))
+        return future
+
+
 def pool():
     if not _pool:
-        _pool.append(ThreadPoolExecutor(max_workers=THREADS, thread_name_prefix="harness-rows"))
+        _pool.append(DaemonPool(THREADS))
     return _pool[0]
 
 
@@ -22,7 +48,7 @@ def in_threads(kernel, n, *args, threads=None):
     if n == 0:
         return
     if threads == 1:
-        kernel(0, n, *args)
+        pool().submit(kernel, 0, n, *args).result()
         return
     bounds = np.linspace(0, n, min(n, CHUNKS_PER_THREAD * threads) + 1).astype(np.int64)   # small chunks balance
                                                                                     # grazing rows' longer contacts

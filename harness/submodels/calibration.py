@@ -3,6 +3,7 @@ where a calibration needs it (it takes 0.3 s to load)."""
 import math
 from functools import lru_cache
 
+from ..errors import UserError
 
 APPENDIX_B = (-6.918798, -16.41105, 146.8049, -796.4559, 2928.711,
               -7206.864, 11494.29, -11342.18, 6276.757, -1489.915)
@@ -77,6 +78,9 @@ def _invert(fun, e, lo, hi):
     from scipy.optimize import brentq
     if fun(lo) <= e:
         return lo
+    lowest = fun(hi)
+    if lowest > e:
+        raise UserError(f"e_n {e:g} is below the lowest this damping calibration reaches ({lowest:.3g})")
     return brentq(lambda p: fun(p) - e, lo, hi, xtol=1e-13, rtol=1e-12)
 
 
@@ -124,6 +128,8 @@ def yield_velocity_ratio(e, law):
     if e >= 1.0:
         return 1.0
     fun = thornton_restitution if law == "thornton" else stronge_restitution
+    if fun(math.exp(-100.0)) > e:
+        raise UserError(f"e_n {e:g} is below the lowest the {law} law reaches ({fun(math.exp(-100.0)):.3g})")
     log_r = brentq(lambda x: fun(math.exp(x)) - e, -100.0, 0.0, xtol=1e-14, rtol=1e-15)
     return math.exp(log_r)
 

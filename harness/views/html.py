@@ -192,6 +192,7 @@ def compare_context(comparison, files=()):
     precision = pd.DataFrame([comparison.precision]) if comparison.precision else None
     return dict(law=law, submodels=law.describe(), scene=scene_facts(scene), figures=figures,
                 verdict=verdict(comparison), command=comparison.command, date=comparison.date, files=files,
+                partial=comparison.partial,
                 summary=records(summary), skipped=comparison.skipped, rows=len(frame),
                 ran=engines_ran(frame), facts=records(run_facts(frame, arithmetic(comparison.engine_options))),
                 agreement=records(comparison.agreement), deviation=records(comparison.deviation), cross=cross,

@@ -48,7 +48,7 @@ def print_summary(record, comparison, written):
                 print(f"  {e['engine']:10s} {d['metric']:7s} {d['difference']:+11.4g} {d['unit']:6s} "
                       f"{d['relative']:+8.2%} of {d['relative_to']:4s} at e_n {d['e_n_target']:g}, {d['theta_deg']:g} deg")
     for finding in record["findings"]:
-        print(f"finding: {finding['engine']} ({finding['dialect']}): {finding['kind']}: {one_line(finding['detail'])}")
+        print(one_line(f"finding: {finding['engine']} ({finding['dialect']}): {finding['kind']}: {finding['detail']}"))
     for skipped in record["skipped"]:
         print(f"skipped {skipped['engine']}: {skipped['reason']}")
     for failure in comparison.failures:
@@ -56,8 +56,8 @@ def print_summary(record, comparison, written):
     print(f"wrote {' and '.join(written)} (every table: --verbose, the CSVs and the report)")
 
 
-def one_line(text, width=110):
-    """A finding's detail cut to one terminal line (the report has it whole)."""
+def one_line(text, width=120):
+    """A finding cut to one terminal line (the report has it whole)."""
     return text if len(text) <= width else text[:width - 3] + "..."
 
 

@@ -3,12 +3,12 @@ binary's log.liggghts lands, never in the user's)."""
 import os
 import re
 import shutil
-import tempfile
 from functools import lru_cache
 
-from ..runner import EngineFailure, run_engine
+from ..runner import EngineFailure, run_engine, scratch
 
 BINARY_VARIABLE = "HARNESS_LIGGGHTS"     # path of another liggghts binary (a custom build, or a test's fake)
+VERSION_TIMEOUT_S = 5.0                 # the banner comes in well under a second; a hung binary costs no more
 
 
 def binary():
@@ -33,9 +33,9 @@ def version():
 @lru_cache(maxsize=None)
 def _version(path):
     """'3.8.0' from the banner the binary prints."""
-    with tempfile.TemporaryDirectory(prefix="harness-liggghts-version-") as workdir:
+    with scratch("liggghts-version") as workdir:
         try:
-            run_engine([path, "-h"], workdir, 30.0, env={**os.environ, "OMP_NUM_THREADS": "1"})
+            run_engine([path, "-h"], workdir, VERSION_TIMEOUT_S)
         except EngineFailure:
             pass
         try:

@@ -8,7 +8,7 @@ import numpy as np
 from ...version import __version__
 from ...render import render
 from ..batches import max_steps_of, run_grouped
-from ..runner import EngineFailure, run_engine
+from ..runner import EngineFailure, remove_engine_tmpdir, run_engine
 from .dialect import MODELS
 from .flavours import environment, python
 
@@ -75,6 +75,8 @@ def read_result(path, n_spheres, what="result file"):
         rows = np.array([[float(x) for x in line.split()] for line in lines[:-1]])
     except ValueError:
         raise EngineFailure(f"YADE {what} is malformed") from None
+    if len(rows) > n_spheres:
+        raise EngineFailure(f"YADE {what} holds {len(rows)} rows for {n_spheres} spheres")
     if rows.shape != (n_spheres, 5) or not np.array_equal(rows[:, 0], np.arange(n_spheres)):
         raise EngineFailure(f"YADE {what} is truncated: {len(rows)} of {n_spheres} spheres")
     return rows[:, 1:]
@@ -84,8 +86,14 @@ def run_script(text, n_spheres, timeout_s, workdir, precision="double"):
     """Run one script in workdir under Debian's python3.11 with the flavour's module path; (rows, wall, log)."""
     with open(os.path.join(workdir, "harness_yade.py"), "w") as handle:
         handle.write(text)
-    done = run_engine([python(), "harness_yade.py"], workdir, timeout_s, env=environment(precision))
-    return read_result(os.path.join(workdir, "result.txt"), n_spheres), done.wall_s, done.log_tail
+    try:
+        done = run_engine([python(), "harness_yade.py"], workdir, timeout_s, env=environment(precision))
+    finally:
+        remove_engine_tmpdir(workdir)
+    try:
+        return read_result(os.path.join(workdir, "result.txt"), n_spheres), done.wall_s, done.log_tail
+    except EngineFailure as exc:
+        raise EngineFailure(str(exc), exc.log_tail or done.log_tail) from None
 
 
 def run_inputs(precision, count, timeout_s, workdir):
@@ -93,7 +101,10 @@ def run_inputs(precision, count, timeout_s, workdir):
     batch's wall seconds with the start-up shared equally, or the EngineFailure that ended it."""
     with open(os.path.join(workdir, "harness_driver.py"), "w") as handle:
         handle.write(render(TEMPLATES, "driver.py.j2", harness_version=__version__, count=count))
-    done = run_engine([python(), "harness_driver.py"], workdir, timeout_s, env=environment(precision))
+    try:
+        done = run_engine([python(), "harness_driver.py"], workdir, timeout_s, env=environment(precision))
+    finally:
+        remove_engine_tmpdir(workdir)
     walls = []
     for k in range(count):
         try:

@@ -1,0 +1,167 @@
+"""The catalogue of bad input, by category: every case ends in exit code 2, one line on stderr naming the problem,
+no traceback, and no file written. Physically meaningless results that do run get a status other than ok."""
+import os
+
+import numpy as np
+import pytest
+
+from harness.commands import main
+
+SCENE = ["--en", "0.5", "--angles", "10"]
+
+NOT_NUMBERS = ["nan", "inf", "-inf", "abc", "", "1e", "0x10", "1,2,"]
+NUMBERS = {   # option -> values outside its physical range (the bound is named in the message)
+    "--speed": ["0", "-1", "1e-300", "1e-7", "1e300", "3000"],
+    "--normal-speed": ["0", "-5", "1e-300", "1e6"],
+    "--radius": ["0", "-0.01", "1e-320", "1e-9", "1e300", "100"],
+    "--E": ["0", "-1e9", "1e-300", "10", "1e300", "1e15"],
+    "--nu": ["0.5", "0.6", "-1", "-2", "1e300"],
+    "--rho": ["0", "-2650", "1e-3", "1e300", "1e7"],
+    "--mu": ["-0.1", "-1e300", "1e300", "20"],
+    "--gravity": ["-9.81", "1e30", "1e5"],
+    "--omega0": ["1e300", "-1e300", "1e6", "-1e6"],
+    "--dt": ["0", "-1e-6", "1e-30", "1e-300"],
+    "--steps-per-contact": ["0", "-5", "1.5", "1e9", "1000000000"],
+}
+LISTS = {
+    "--en": ["0", "-0.5", "1.5", "2", "1e-320", "0.5,,0.9", "0.5,abc", "0.5,nan", ","],
+    "--angles": ["90", "-10", "100", "0:90:0", "10:0:5", "0:80", "a:b:c", "nan", "1e300", "0:80:-10"],
+    "--vt": ["-1", "1e300", "nan", "abc", "5000"],
+    "--psi": ["-1", "1e300", "nan", "abc"],
+}
+CHOICES = [   # (extra arguments, what is wrong)
+    (["--model", "no-such-law"], "unknown law"),
+    (["--model", "thornton", "--with", "normal=nonsense"], "unknown sub-model"),
+    (["--model", "thornton", "--with", "nonsense=hertz"], "unknown key"),
+    (["--model", "thornton", "--with", "end=tension", "--with", "end=no-tension"], "repeated --with"),
+    (["--model", "thornton", "--with", "end"], "no value"),
+    (["--model", "thornton", "--material", "unobtainium"], "unknown material"),
+    (["--model", "thornton", "--wall", "jelly"], "unknown wall"),
+    (["--model", "thornton", "--speed", "5", "--normal-speed", "5"], "two speeds"),
+    (["--model", "thornton", "--psi", "1", "--vt", "1"], "two sweeps"),
+    (["--model", "thornton", "--mu", "0", "--psi", "1"], "Psi1* at mu 0"),
+    (["--model", "thornton", "--dt", "1e-7", "--steps-per-contact", "100"], "two resolutions"),
+    (["--model", "thornton", "--dt", "1e-7", "--converged"], "two resolutions"),
+    (["--model", "hertz-kuwabara-kono", "--en", "1e-4"], "below the calibration"),
+    (["--model", "thornton", "--dt", "1e-3"], "unstable time step"),
+    (["--model", "thornton", "--en", "0.5", "--angles", "10", "--bogus"], "unknown option"),
+    (["--model"], "missing value"),
+    ([], "no model"),
+]
+
+
+def cases():
+    for option, values in NUMBERS.items():
+        for value in values + NOT_NUMBERS:
+            yield pytest.param(["--model", "thornton", *SCENE, f"{option}={value}"], id=f"{option}={value}")
+    for option, values in LISTS.items():
+        scene = [] if option == "--en" else ["--en", "0.5"]
+        for value in values + NOT_NUMBERS[:4]:
+            yield pytest.param(["--model", "thornton", *scene, f"{option}={value}"], id=f"{option}={value}")
+    for arguments, why in CHOICES:
+        yield pytest.param(arguments, id=why + " " + " ".join(arguments))
+
+
+CATALOGUE = list(cases())
+# compare validates through the same request as run: a sample of each category, every choice
+SAMPLE = [case for case in CATALOGUE if case.id.endswith("=nan") or case.id.endswith("=0") or " " in case.id]
+
+
+def test_the_catalogue_is_large():
+    assert len(CATALOGUE) >= 188 and len(SAMPLE) >= 30
+
+
+@pytest.mark.parametrize("command, arguments", [pytest.param(command, case.values[0], id=f"{command} {case.id}")
+                                                for command, cases_ in (("run", CATALOGUE), ("compare", SAMPLE))
+                                                for case in cases_])
+def test_bad_input_is_refused_in_one_line(tmp_path, capfd, command, arguments):
+    out_path = tmp_path / ("out.csv" if command == "run" else "out")
+    extra = ["--engines", "reference"] if command == "compare" and "--model" in arguments[:1] else []
+    code = main([command, *arguments, *extra, "-o", str(out_path)])
+    out, err = capfd.readouterr()
+    lines = err.strip().splitlines()
+    assert code == 2, (out, err)
+    assert len(lines) == 1 and lines[0].startswith("harness: error: "), err
+    assert "Traceback" not in err + out
+    assert os.listdir(tmp_path) == []
+
+
+def test_render_refuses_another_engines_option(tmp_path, capfd):
+    code = main(["render", "--model", "hertz-mindlin", "--engine", "yade", "--engine-option",
+                 "liggghts:limitForce=on", "--en", "0.5", "-o", str(tmp_path / "decks")])
+    err = capfd.readouterr().err
+    assert code == 2 and "liggghts" in err and len(err.strip().splitlines()) == 1
+    assert not (tmp_path / "decks").exists()
+
+
+@pytest.mark.parametrize("damage, message", [
+    ("run.json:{not json", "cannot read"), ("run.json:[1, 2]", "damaged or foreign"),
+    ("run.json:{\"model\": \"thornton\", \"scene\": {\"radius\": \"big\"}}", "damaged or foreign"),
+    ("results.csv:binary", "cannot read results table"), ("results.csv:header", "holds no results"),
+    ("results.csv:cut", "cut or damaged"), ("results.csv:foreign", "not a harness results table")])
+def test_report_refuses_a_damaged_directory_in_one_line(tmp_path, capfd, damage, message):
+    directory = tmp_path / "out"
+    assert main(["compare", "--model", "thornton", "--engines", "reference", *SCENE, "-o", str(directory),
+                 "--quiet"]) == 0
+    capfd.readouterr()
+    name, how = damage.split(":", 1)
+    path, text = directory / name, (directory / "results.csv").read_text()
+    if how == "binary":
+        path.write_bytes(bytes(range(256)) * 4)
+    elif how == "header":
+        path.write_text(text.splitlines()[0] + "\n")
+    elif how == "cut":
+        path.write_text(text[:len(text.splitlines()[0]) + 40])
+    elif how == "foreign":
+        path.write_text("a,b\n1,2\n")
+    else:
+        path.write_text(how)
+    code = main(["report", str(directory)])
+    err = capfd.readouterr().err
+    assert code == 2 and message in err and len(err.strip().splitlines()) == 1 and "Traceback" not in err
+
+
+def test_a_header_only_or_non_numeric_baseline_is_refused(tmp_path, capfd):
+    from harness.baseline import BASELINE_FILE, DEFAULT_BASELINE
+    text = open(os.path.join(DEFAULT_BASELINE, BASELINE_FILE)).read().splitlines()
+    (tmp_path / BASELINE_FILE).write_text(text[0] + "\n")
+    assert main(["check", "--baseline", str(tmp_path)]) == 2
+    assert "holds no rows" in capfd.readouterr().err
+    header = text[0].split(",")
+    row = text[1].split(",")
+    row[header.index("e_t")] = "not-a-number"
+    (tmp_path / BASELINE_FILE).write_text("\n".join([text[0], ",".join(row)] + text[2:]) + "\n")
+    assert main(["check", "--baseline", str(tmp_path)]) == 2
+    assert "not a number in e_t" in capfd.readouterr().err
+
+
+# --- results that run but mean nothing -------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("keywords, reason", [
+    (dict(E=1e4, speed=100.0), "exceeds the small-strain range"),
+    (dict(E=1e3, rho=1e5, speed=50.0), "exceeds the small-strain range"),
+])
+def test_an_overlap_beyond_small_strain_is_not_ok(keywords, reason):
+    import harness
+    from harness.results import SMALL_STRAIN
+    frame = harness.run("hertz-mindlin", en=[0.5], angles=[0, 30], **keywords)
+    overlap = frame.overlap_max / frame.radius
+    assert (overlap > SMALL_STRAIN).all()                # the premise: a Hertz overlap beyond a = 0.3 R
+    assert set(frame.status) == {"invalid"} and frame.message.str.contains(reason).all()
+    assert frame.message.str.contains(f"{overlap.iloc[0]:.3g} R").any()
+
+
+def test_rows_with_a_negative_e_n_or_a_non_finite_energy_are_invalid():
+    """The rule applied to rows as an engine could return them (YADE once gave e_n -0.88 in an ok row)."""
+    from harness.laws import compose
+    from harness.results import impact_frame
+    from harness.scene import Scene
+    from harness.solver.plan import plan_batch
+    scene = Scene(e_n=(0.5,), angles_deg=(10.0, 20.0, 30.0))
+    batch = plan_batch(compose("thornton"), scene, 0.5, 100)
+    v_n1 = np.array([-0.88 * batch.v_n0[0], 0.5 * batch.v_n0[1], np.inf])
+    frame = impact_frame(scene, batch, model="thornton", dialect="yade", engine="yade", engine_version="x", dt=batch.dt,
+                         steps_per_contact=100, v_n1=v_n1, v_t1=batch.v_t0, omega1=np.zeros(3), wall_s=0.0,
+                         status="ok", message="")
+    assert frame.status.tolist() == ["invalid", "ok", "invalid"]
+    assert "e_n -0.88 < 0" in frame.message[0] and "not finite" in frame.message[2]

@@ -1,0 +1,411 @@
+"""Nothing leaked and nothing lost: engine processes and temporary directories end with harness, whatever stops it
+(Ctrl-C, SIGTERM, SIGHUP, SIGKILL); a hung engine costs one timeout; logs are read from their tail; a LIGGGHTS run
+listens on no network interface."""
+import os
+import signal
+import subprocess
+import sys
+import threading
+import time
+
+import numpy as np
+import pytest
+
+from conftest import fake_executable, needs
+from harness.engines import liggghts
+from harness.engines.liggghts.binary import VERSION_TIMEOUT_S
+from harness.engines.runner import read_tail, run_engine, sweep_stale
+
+# --- sockets -------------------------------------------------------------------------------------------------------
+
+
+def descendants(root):
+    """Pids of every process below `root` (from /proc's parent links)."""
+    children = {}
+    for name in os.listdir("/proc"):
+        if name.isdigit():
+            try:
+                with open(f"/proc/{name}/stat") as handle:
+                    ppid = int(handle.read().rsplit(")", 1)[1].split()[1])
+            except (OSError, IndexError, ValueError):
+                continue
+            children.setdefault(ppid, []).append(int(name))
+    found, todo = [], [root]
+    while todo:
+        for child in children.get(todo.pop(), []):
+            found.append(child)
+            todo.append(child)
+    return found
+
+
+def external_listeners(pids):
+    """(address, port) of every TCP socket in LISTEN state, on an address other than loopback, held by `pids`."""
+    inodes = set()
+    for pid in pids:
+        try:
+            for fd in os.listdir(f"/proc/{pid}/fd"):
+                target = os.readlink(f"/proc/{pid}/fd/{fd}")
+                if target.startswith("socket:["):
+                    inodes.add(target[8:-1])
+        except OSError:
+            continue
+    found = []
+    for table, loopback in (("/proc/net/tcp", {"0100007F"}), ("/proc/net/tcp6", {"00000000000000000000000001000000"})):
+        with open(table) as handle:
+            for line in handle.readlines()[1:]:
+                fields = line.split()
+                address, port = fields[1].split(":")
+                if fields[3] == "0A" and fields[9] in inodes and address not in loopback:
+                    found.append((address, int(port, 16)))
+    return found
+
+
+def listeners_while(start, seconds):
+    """Every external listener seen below this process while start() runs (polled for `seconds` at most)."""
+    seen, worker = set(), threading.Thread(target=start, daemon=True)
+    worker.start()
+    deadline = time.time() + seconds
+    while worker.is_alive() and time.time() < deadline:
+        seen.update(external_listeners(descendants(os.getpid())))
+        time.sleep(0.05)
+    worker.join(seconds)
+    return seen
+
+
+def test_the_poller_sees_a_listener():
+    """Positive control: a child listening on every interface is found."""
+    code = "import socket,time; s=socket.socket(); s.bind(('0.0.0.0', 0)); s.listen(); time.sleep(1.5)"
+    seen = listeners_while(lambda: subprocess.run([sys.executable, "-c", code]), 5)
+    assert any(address == "00000000" for address, _ in seen)
+
+
+@needs("liggghts")
+def test_a_liggghts_run_listens_on_no_network_interface(tmp_path):
+    """LIGGGHTS with its OpenMPI runtime, as harness runs it (the banner, then a deck that waits 2 s)."""
+    (tmp_path / "in.wait").write_text('print "waiting"\nshell sleep 2\n')
+    done = {}
+
+    def start():
+        done["run"] = run_engine([liggghts.binary(), "-in", "in.wait"], str(tmp_path), 60)
+    seen = listeners_while(start, 30)
+    assert "waiting" in done["run"].log_tail
+    assert seen == set()
+    assert not [name for name in os.listdir("/tmp") if name.startswith("ompi.")]    # its session dir was TMPDIR
+
+
+# --- signals -------------------------------------------------------------------------------------------------------
+
+HANG = 'echo $$ > "{pidfile}"; exec sleep 60'
+
+
+def cmdline(pid):
+    try:
+        with open(f"/proc/{pid}/cmdline") as handle:
+            return handle.read()
+    except OSError:
+        return ""
+
+
+def alive(pid):
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    with open(f"/proc/{pid}/stat") as handle:            # a zombie has ended
+        return handle.read().rsplit(")", 1)[1].split()[0] != "Z"
+
+
+def start_hung_compare(tmp_path):
+    """harness compare with a LIGGGHTS that hangs; returns (process, engine pid, its TMPDIR) once the engine runs."""
+    pidfile, scratch = tmp_path / "engine.pid", tmp_path / "tmp"
+    scratch.mkdir()
+    fake = fake_executable(tmp_path, HANG.format(pidfile=pidfile))
+    env = {**os.environ, liggghts.BINARY_VARIABLE: fake, "TMPDIR": str(scratch)}
+    proc = subprocess.Popen([sys.executable, "-m", "harness", "compare", "--model", "hertz-mindlin", "--en", "0.5",
+                             "--angles", "10", "--engines", "liggghts", "-o", str(tmp_path / "out")], env=env,
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    deadline = time.time() + 120
+    while not (pidfile.exists() and pidfile.read_text().strip()):
+        assert time.time() < deadline and proc.poll() is None, proc.communicate()
+        time.sleep(0.1)
+    return proc, int(pidfile.read_text()), scratch
+
+
+def wait_gone(pid, seconds=10):
+    deadline = time.time() + seconds
+    while alive(pid) and time.time() < deadline:
+        time.sleep(0.05)
+    return not alive(pid)
+
+
+@pytest.mark.parametrize("signum, code", [(signal.SIGINT, 130), (signal.SIGTERM, 143), (signal.SIGHUP, 129)])
+def test_a_stopped_harness_leaves_no_engine_and_no_temporary_directory(tmp_path, signum, code):
+    proc, engine, scratch = start_hung_compare(tmp_path)
+    proc.send_signal(signum)
+    out, err = proc.communicate(timeout=30)
+    assert proc.returncode == code, err
+    assert "Traceback" not in err and "engines stopped" in err
+    assert wait_gone(engine)
+    assert os.listdir(scratch) == []
+
+
+def test_a_killed_harness_takes_its_engine_along_and_the_next_run_sweeps_its_directory(tmp_path):
+    proc, engine, scratch = start_hung_compare(tmp_path)
+    proc.kill()
+    proc.communicate(timeout=30)
+    assert wait_gone(engine)                                  # the parent-death signal
+    assert [name for name in os.listdir(scratch) if name.startswith(f"harness-{proc.pid}-")]
+    assert sweep_stale(str(scratch)) == 1 and os.listdir(scratch) == []
+
+
+def test_sweeping_spares_the_directories_of_running_processes(tmp_path):
+    mine = tmp_path / f"harness-{os.getpid()}-liggghts-x"
+    parent = tmp_path / f"harness-{os.getppid()}-yade-y"
+    other = tmp_path / "harness-notapid-z"
+    for directory in (mine, parent, other):
+        directory.mkdir()
+    assert sweep_stale(str(tmp_path)) == 0
+    assert mine.exists() and parent.exists() and other.exists()
+
+
+# --- a hung engine, a huge log ---------------------------------------------------------------------------------------
+
+def test_a_hung_engine_costs_one_timeout_not_one_per_batch(tmp_path, monkeypatch):
+    """Three e_n batches of a LIGGGHTS that hangs: each process times out once, and its batches are not rerun one
+    by one (which cost one more timeout each)."""
+    from harness.engines import ENGINES, batches
+    from harness.execute import execute
+    from harness.laws import compose
+    from harness.plan import engine_runs
+    from harness.scene import Scene
+    monkeypatch.setattr(batches, "TIMEOUT_FLOOR_S", 2.0)
+    monkeypatch.setenv(liggghts.BINARY_VARIABLE, fake_executable(tmp_path, "echo started; exec sleep 60"))
+    runs = engine_runs(ENGINES["liggghts"], compose("hertz-mindlin"), Scene(e_n=(0.9, 0.5, 0.25), angles_deg=(10.0,)),
+                       100)
+    start = time.perf_counter()
+    rows, failures = execute(runs)
+    seconds = time.perf_counter() - start
+    assert len(rows) == 3 and set(rows.status) == {"failed"}
+    assert rows.message.str.contains("did not finish within").all()
+    assert seconds < VERSION_TIMEOUT_S + 2.0 + 2.0, seconds     # the version probe's timeout, then the
+                                                    # processes side by side, each timed out once; never 2 + 3 x 2
+    assert len(failures) == 3 and all("started" in f.log_tail for f in failures)
+
+
+def test_only_the_tail_of_a_huge_log_is_read(tmp_path):
+    """A 4 GB log (sparse, so the test stays cheap): its tail comes back at once, without reading the rest."""
+    log = tmp_path / "engine.log"
+    with open(log, "wb") as handle:
+        handle.truncate(4 * 1024 ** 3)
+        handle.seek(0, 2)
+        handle.write(b"".join(b"line %d\n" % i for i in range(100)))
+    start = time.perf_counter()
+    text = read_tail(str(log))
+    assert time.perf_counter() - start < 1.0
+    assert text.splitlines()[-1] == "line 99" and len(text.splitlines()) == 40
+
+
+# --- output paths ----------------------------------------------------------------------------------------------------
+
+def harness_main(capfd, *argv):
+    """(exit code, stdout, stderr) of one command run in this process."""
+    from harness.commands import main
+    code = main(list(argv))
+    out, err = capfd.readouterr()
+    return code, out, err
+
+
+def refused_in_one_line(code, err):
+    lines = err.strip().splitlines()
+    return code == 2 and len(lines) == 1 and lines[0].startswith("harness: error:") and "Traceback" not in err
+
+
+RUN = ["run", "--model", "thornton", "--en", "0.5", "--angles", "10", "-o"]
+
+
+def odd_targets(tmp_path):
+    """name -> (path, what must still be there afterwards)."""
+    fifo, link, target, directory = tmp_path / "fifo", tmp_path / "link.csv", tmp_path / "target", tmp_path / "dir"
+    os.mkfifo(fifo)
+    target.write_text("precious\n")
+    os.symlink(target, link)
+    directory.mkdir()
+    return {"fifo": (str(fifo), lambda: stat_kind(fifo) == "fifo"),
+            "symlink": (str(link), lambda: os.path.islink(link) and target.read_text() == "precious\n"),
+            "directory": (str(directory), lambda: directory.is_dir()),
+            "empty": ("", lambda: True),
+            "missing directory": (str(tmp_path / "newdir") + "/", lambda: not (tmp_path / "newdir").exists()),
+            "proc": ("/proc/harness-test.csv", lambda: not os.path.exists("/proc/harness-test.csv"))}
+
+
+def stat_kind(path):
+    import stat
+    mode = os.lstat(path).st_mode
+    return "fifo" if stat.S_ISFIFO(mode) else "link" if stat.S_ISLNK(mode) else "other"
+
+
+@pytest.mark.parametrize("name", ["fifo", "symlink", "directory", "empty", "missing directory", "proc"])
+def test_run_writes_only_regular_files_or_new_paths(tmp_path, capfd, name):
+    path, intact = odd_targets(tmp_path)[name]
+    code, out, err = harness_main(capfd, *RUN, path)
+    assert refused_in_one_line(code, err), (code, err)
+    assert intact()
+
+
+def test_run_replaces_a_regular_file(tmp_path, capfd):
+    path = tmp_path / "old.csv"
+    path.write_text("old\n")
+    code, out, err = harness_main(capfd, *RUN, str(path))
+    assert code == 0 and path.read_text().startswith("model,")
+
+
+@pytest.mark.parametrize("path", ["", "/proc/harness-test-dir", "FILE"])
+def test_compare_refuses_an_output_directory_it_cannot_use(tmp_path, capfd, path):
+    if path == "FILE":
+        path = str(tmp_path / "a-file")
+        (tmp_path / "a-file").write_text("keep\n")
+    code, out, err = harness_main(capfd, "compare", "--model", "thornton", "--engines", "reference", "--en", "0.5",
+                                  "--angles", "10", "-o", path)
+    assert refused_in_one_line(code, err), (code, err)
+    assert not os.path.exists("/proc/harness-test-dir")
+
+
+def test_a_second_writer_is_refused_and_told_who_holds_the_directory(tmp_path, capfd):
+    from harness.lock import LOCK, exclusive
+    with exclusive(str(tmp_path)):
+        code, out, err = harness_main(capfd, "compare", "--model", "thornton", "--engines", "reference", "--en",
+                                      "0.5", "--angles", "10", "-o", str(tmp_path))
+        assert refused_in_one_line(code, err) and f"harness pid {os.getpid()}" in err
+        assert not (tmp_path / "results.csv").exists()
+    assert not (tmp_path / LOCK).exists()
+    code, out, err = harness_main(capfd, "compare", "--model", "thornton", "--engines", "reference", "--en", "0.5",
+                                  "--angles", "10", "-o", str(tmp_path))
+    assert code == 0 and (tmp_path / "results.csv").exists() and not (tmp_path / LOCK).exists()
+
+
+# --- the Coulomb impulse bound ----------------------------------------------------------------------------------------
+
+SPIN = dict(en=[0.5], vt=[0.0, 0.05, 0.1, 0.2], normal_speed=0.2, radius=0.1, mu=0.4, material="example-5mm")
+
+
+@pytest.mark.parametrize("omega0", [5.0, 21.0, -21.0])
+def test_every_paper_law_keeps_the_coulomb_impulse_bound(omega0):
+    """|F_t| <= mu F_n at every instant, so m |v_t1 - v_t0| <= mu m (v_n0 + v_n1) (no gravity): Chung & Ooi's spin
+    scene and a whole angle sweep, every law."""
+    import harness
+    from harness.laws import LAWS
+    for law in LAWS:
+        for frame in (harness.run(law, omega0=omega0, **SPIN),
+                      harness.run(law, en=[0.9, 0.1], angles=list(range(0, 90, 4)), omega0=omega0 / 10)):
+            slack = frame.mu * (frame.v_n0 + frame.v_n1) - (frame.v_t1 - frame.v_t0).abs()
+            assert (slack >= -1e-9 * frame.mu * (frame.v_n0 + frame.v_n1)).all(), (law, slack.min())
+
+
+def test_an_impulse_beyond_the_bound_is_an_invariant_break():
+    import pandas as pd
+    from harness.analyses.invariants import invariant_breaks
+    import harness
+    frame = harness.run("hertz-mindlin", omega0=21.0, **SPIN)
+    assert "Coulomb bound" not in set(invariant_breaks(frame).kind)
+    pushed = frame.copy()
+    pushed.loc[1, "v_t1"] = pushed.v_t0[1] + 1.01 * pushed.mu[1] * (pushed.v_n0[1] + pushed.v_n1[1])
+    found = invariant_breaks(pd.DataFrame(pushed))
+    assert found[found.kind == "Coulomb bound"].row.tolist() == [1]
+
+
+@needs("liggghts")
+@needs("yade")
+def test_both_engines_break_the_coulomb_bound_on_chung_and_oois_spin_case():
+    """Chung & Ooi's spin scene (R 0.1 m, V_n 0.2 m/s, omega0 21 rad/s, e 0.5, mu 0.4): both engines end with v_t1
+    about 0.14 m/s where |J_t| <= mu J_n allows 0.12; the finding says so, and their formulas reproduce it."""
+    import harness
+    comparison = harness.compare("hertz-mindlin", engines=["liggghts", "yade"], omega0=21.0, **SPIN)
+    found = comparison.findings[comparison.findings.kind == "Coulomb bound"]
+    assert {(e, d) for e, d in zip(found.engine, found.dialect)} >= {("liggghts", "liggghts"), ("yade", "yade"),
+                                                                      ("reference", "liggghts"), ("reference", "yade")}
+    rows = comparison.results[(comparison.results.engine != "reference") & (comparison.results.v_t0 == 0.0)]
+    allowed = (rows.mu * (rows.v_n0 + rows.v_n1)).to_numpy()
+    assert (rows.v_t1.abs().to_numpy() > 1.1 * allowed).all() and np.allclose(rows.v_t1.abs(), 0.14, atol=0.005)
+    assert not (comparison.findings.dialect == "paper").any()
+
+
+# --- an interrupted compare: kept, shown as partial, resumed ---------------------------------------------------------
+
+def test_an_interrupted_compare_is_shown_as_partial_and_the_rerun_runs_only_what_is_missing(tmp_path, monkeypatch,
+                                                                                          capfd):
+    import json
+    import harness.api
+    proc, engine, _ = start_hung_compare(tmp_path)
+    out = tmp_path / "out"
+    deadline = time.time() + 60                       # the reference's two runs finish while LIGGGHTS hangs
+    while not (out / ".partial").is_dir() or len(os.listdir(out / ".partial")) < 2:
+        assert time.time() < deadline
+        time.sleep(0.1)
+    proc.send_signal(signal.SIGINT)
+    proc.communicate(timeout=30)
+    assert proc.returncode == 130 and wait_gone(engine)
+    assert json.loads((out / "run.json").read_text())["partial"] is True
+    assert "PARTIAL: this compare was interrupted" in (out / "report.html").read_text()
+    assert len(os.listdir(out / ".partial")) == 2
+
+    executed = []
+    run_all = harness.api.run_all
+
+    def counting(runs, on_done=None):
+        executed.extend((r.engine, r.dialect.dialect) for r in runs)
+        return run_all(runs, on_done)
+    monkeypatch.setattr(harness.api, "run_all", counting)
+    monkeypatch.setenv(liggghts.BINARY_VARIABLE, fake_executable(tmp_path, 'echo "ERROR: gone"; exit 1', "crash"))
+    code = main_in_process("compare", "--model", "hertz-mindlin", "--en", "0.5", "--angles", "10", "--engines",
+                           "liggghts", "-o", str(out), "--quiet")
+    capfd.readouterr()
+    assert code == 3                                               # LIGGGHTS failed this time
+    assert executed == [("liggghts", "liggghts")]                  # the reference's two runs came from the first
+    frame = __import__("pandas").read_csv(out / "results.csv")
+    assert sorted(frame.dialect[frame.engine == "reference"]) == ["liggghts", "paper"]
+    assert json.loads((out / "run.json").read_text())["partial"] is False and not (out / ".partial").exists()
+
+
+def main_in_process(*argv):
+    from harness.commands import main
+    return main(list(argv))
+
+
+@needs("liggghts")
+@pytest.mark.parametrize("signum, code", [(signal.SIGINT, 130), (signal.SIGTERM, 143)])
+def test_a_real_liggghts_run_ends_with_harness(tmp_path, signum, code):
+    """The real binary at 1e6 steps per contact: harness stopped while LIGGGHTS runs leaves no process of its tree
+    and no temporary directory."""
+    scratch = tmp_path / "tmp"
+    scratch.mkdir()
+    proc = subprocess.Popen([sys.executable, "-m", "harness", "compare", "--model", "hertz-mindlin", "--en", "0.5",
+                             "--angles", "10", "--engines", "liggghts", "--steps-per-contact", "1000000", "-o",
+                             str(tmp_path / "out")], env={**os.environ, "TMPDIR": str(scratch)},
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    deadline, engines = time.time() + 120, []
+    while not engines:
+        assert time.time() < deadline and proc.poll() is None, proc.communicate()
+        engines = [pid for pid in descendants(proc.pid) if "liggghts" in cmdline(pid)]
+        time.sleep(0.1)
+    tree = descendants(proc.pid)
+    proc.send_signal(signum)
+    out, err = proc.communicate(timeout=60)
+    assert proc.returncode == code and "Traceback" not in err, err
+    assert all(wait_gone(pid) for pid in tree)
+    assert os.listdir(scratch) == []
+
+
+def test_ctrl_c_inside_the_compiled_kernel_stops_at_once_and_says_nothing_was_written(tmp_path):
+    """A run of ~2e8 impact-steps (tens of seconds): interrupted a second into its kernel, harness ends within a few
+    seconds instead of when the compiled loop returns, and does not claim results it never wrote."""
+    out = tmp_path / "r.csv"
+    proc = subprocess.Popen([sys.executable, "-m", "harness", "run", "--model", "hertz-mindlin", "--en", "0.5",
+                             "--angles", "0:89:0.5", "--steps-per-contact", "1000000", "-o", str(out)],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    time.sleep(4.0)                       # start-up and the cached kernel's load, then well inside the loop
+    assert proc.poll() is None
+    stopped = time.perf_counter()
+    proc.send_signal(signal.SIGINT)
+    _, err = proc.communicate(timeout=60)
+    assert time.perf_counter() - stopped < 3.0
+    assert proc.returncode == 130 and "nothing had been written yet" in err and not out.exists()
