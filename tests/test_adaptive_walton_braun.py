@@ -86,6 +86,15 @@ def test_the_spring_that_rides_the_cone_is_resolved_at_grazing_incidence():
         assert coarse[C.O_STEPS] < 2e4, coarse[C.O_STEPS]
 
 
+@pytest.mark.xfail(strict=True, reason="known defect found by hypothesis: the graded Richardson ladder of the "
+                   "converged mode misses e_t by 1.3e-6 for thornton with Walton-Braun's spring at 0.125 deg, mu "
+                   "0.0547, e_n 0.25 (the same before this session's changes)")
+def test_the_converged_mode_at_a_near_normal_low_friction_impact():
+    scene = Scene(e_n=(0.25,), angles_deg=(0.125,), mu=0.0546875)
+    law = compose("thornton", {"tangential": "walton-braun:2/7"})
+    assert_close(simulate(law, scene, converged=True)[0], deep_ladder(law, scene), scene, 5e-7)
+
+
 @settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(st.sampled_from(WALTON_BRAUN_SPRINGS), st.floats(0.05, 0.95), st.one_of(st.just(0.0), st.floats(1e-6, 89.5)),
        st.floats(0.05, 1.5))

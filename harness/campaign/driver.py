@@ -1,0 +1,92 @@
+"""Running a campaign: expand it into tasks, leave out what the store already holds, run the rest on an executor,
+store each task as it finishes, compact the store; and the dry run's counts and estimates."""
+import os
+from collections import Counter
+from dataclasses import dataclass, field
+
+from ..engines import ENGINES
+from ..engines.batches import max_steps_of
+from ..engines.runner import sweep_stale
+from .spec import tasks
+from .store import Store
+
+# a rough cost model for --dry-run: seconds per engine process start and per sphere-step (measured on this 2-core
+# machine: docs/performance.md)
+STARTUP_S = {"reference": 0.0, "liggghts": 0.5, "yade": 1.2}
+SPHERE_STEP_S = {"reference": 0.6e-6, "liggghts": 0.05e-6, "yade": 2.0e-6}
+
+
+@dataclass
+class Summary:
+    """What a campaign run did: tasks in the matrix, run now, taken from the store, failed; engines skipped."""
+    tasks: int
+    ran: int = 0
+    cached: int = 0
+    failed: int = 0
+    skipped: list = field(default_factory=list)
+    per_engine: dict = field(default_factory=dict)
+
+    def as_dict(self):
+        return {"tasks": self.tasks, "ran": self.ran, "cached": self.cached, "failed": self.failed,
+                "skipped": [{"engine": e, "reason": r} for e, r in self.skipped], "per_engine": self.per_engine}
+
+
+def keyed(campaign):
+    """({key: run} of the campaign's distinct tasks, skipped engines)."""
+    runs, skipped = tasks(campaign)
+    versions = {}
+    out = {}
+    for run in runs:
+        version = versions.setdefault(run.engine, ENGINES[run.engine].version())
+        out.setdefault(run.key(version), run)
+    return out, skipped
+
+
+def estimate_s(run):
+    """Rough wall seconds of one task (the dry run's estimate)."""
+    batch = run.batch() if run.resolution != "converged" else None
+    impacts = len(batch.v_n0) if batch is not None else 1
+    steps = (max_steps_of(batch) if run.engine != "reference" else 1.2 * batch.steps_per_contact) if batch else 5e3
+    return STARTUP_S.get(run.engine, 1.0) + SPHERE_STEP_S.get(run.engine, 1e-6) * impacts * steps
+
+
+def dry_run(campaign, store_path, no_cache=False):
+    """Summary of what a run would do, with per engine its tasks, cached tasks and estimated seconds."""
+    runs, skipped = keyed(campaign)
+    done = set() if no_cache or not os.path.isdir(store_path) else Store(store_path).finished()
+    per = {}
+    for key, run in runs.items():
+        entry = per.setdefault(run.engine, {"tasks": 0, "cached": 0, "estimated_s": 0.0})
+        entry["tasks"] += 1
+        if key in done:
+            entry["cached"] += 1
+        else:
+            entry["estimated_s"] += estimate_s(run)
+    cached = sum(e["cached"] for e in per.values())
+    return Summary(len(runs), 0, cached, 0, skipped, per)
+
+
+def run_campaign(campaign, store_path, executor, no_cache=False, progress=None):
+    """Run the tasks the store lacks on `executor`, storing each as it finishes; compact the store at the end."""
+    runs, skipped = keyed(campaign)
+    store = Store(store_path)
+    done = set() if no_cache else store.finished()
+    todo = [(key, run) for key, run in runs.items() if key not in done]
+    summary = Summary(len(runs), len(todo), len(runs) - len(todo), 0, skipped,
+                      dict(Counter(run.engine for _, run in todo)))
+    if progress:
+        progress.expect(len(todo))
+
+    def on_done(i, frame, log_tail):
+        key, run = todo[i]
+        store.put(key, frame, log_tail)
+        if (frame.status == "failed").any():
+            summary.failed += 1
+        if progress:
+            progress.advance(f"{run.engine} {run.law.name} ({run.dialect.dialect} formulas) e_n {run.e_n:g}")
+    try:
+        executor.map([run for _, run in todo], [key for key, _ in todo], on_done)
+    finally:
+        sweep_stale()                    # a worker killed mid-task leaves its engine's directories: remove them
+    store.compact()
+    return summary

@@ -1,0 +1,175 @@
+"""Campaigns: the TOML matrix expands into compare's plan; the Parquet store keeps each task once and a rerun runs
+only what is missing; Dask worker processes give the in-process results bit for bit, also when a worker is killed
+mid-run; an interrupted campaign resumes; the SLURM job script carries the options given."""
+import os
+import signal
+import sys
+
+import pandas as pd
+import pytest
+
+from conftest import needs
+from harness.campaign.driver import dry_run, keyed, run_campaign
+from harness.campaign.executors import InProcess, OnDask, local_cluster, slurm_cluster
+from harness.campaign.spec import from_dict, load
+from harness.campaign.store import KEY, Store
+from harness.commands import main
+from harness.errors import UserError
+from harness.plan import compare_plan
+
+SMALL = dict(laws=["hertz-mindlin", "thornton"], e_n=[0.5, 0.9], angles=[10, 50, 85], steps_per_contact=[500])
+METRICS = ["v_n1", "v_t1", "omega1", "e_n", "e_t", "omega_star"]
+
+
+def sorted_rows(table):
+    return table.sort_values([KEY, "theta_deg"]).reset_index(drop=True)
+
+
+def test_a_campaign_expands_into_the_plan_compare_runs():
+    campaign = from_dict({**SMALL, "engines": ["reference"], "spins": [0.0, -20.0]})
+    runs, skipped = keyed(campaign)
+    expected = sum(len(compare_plan(r.law, r.scene, r.resolution, {})) for r in campaign.requests)
+    assert len(campaign.requests) == 4 and len(runs) == expected == 8 and skipped == []
+    assert {run.engine for run in runs.values()} == {"reference"}
+
+
+def test_reference_blocks_split_a_long_sweep():
+    campaign = from_dict({**SMALL, "laws": ["thornton"], "engines": ["reference"], "angles": list(range(0, 89)),
+                          "block": 20})
+    runs, _ = keyed(campaign)
+    assert len(runs) == 2 * 5                    # 89 angles in blocks of 20, per e_n
+    assert sum(len(run.scene.angles_deg) for run in runs.values()) == 2 * 89
+
+
+@pytest.mark.parametrize("text, message", [("laws = [", "not valid TOML"), ("lawz = ['thornton']", "unknown key"),
+                                           ("laws = ['nope']", "unknown law"), ("e_n = [0.5]", "give laws"),
+                                           ("laws = ['thornton']\nangles = [10]\npsi = [1]", "one of angles"),
+                                           ("laws = ['thornton']\ne_n = [2]", "e_n must lie")])
+def test_a_bad_campaign_file_is_one_line(tmp_path, capfd, text, message):
+    path = tmp_path / "c.toml"
+    path.write_text(text)
+    with pytest.raises(UserError, match=message):
+        load(path)
+    assert main(["campaign", str(path), "-o", str(tmp_path / "store")]) == 2
+    assert len(capfd.readouterr().err.strip().splitlines()) == 1 and not (tmp_path / "store").exists()
+
+
+def test_the_store_reads_as_one_table_and_a_rerun_runs_nothing(tmp_path):
+    campaign = from_dict({**SMALL, "engines": ["reference"]})
+    first = run_campaign(campaign, tmp_path / "s", InProcess())
+    assert (first.tasks, first.ran, first.cached, first.failed) == (4, 4, 0, 0)
+    table = pd.read_parquet(tmp_path / "s")                         # pandas alone, as the README says
+    assert len(table) == 4 * 3 and table[KEY].nunique() == 4 and set(table.status) == {"ok"}
+    again = run_campaign(campaign, tmp_path / "s", InProcess())
+    assert (again.ran, again.cached) == (0, 4)
+    forced = run_campaign(campaign, tmp_path / "s", InProcess(), no_cache=True)
+    assert forced.ran == 4 and len(Store(tmp_path / "s").table()) == 12
+    assert dry_run(campaign, tmp_path / "s").cached == 4
+
+
+class StopAfter:
+    """A progress that interrupts the driver after `n` tasks (as Ctrl-C would)."""
+
+    def __init__(self, n):
+        self.n = n
+
+    def expect(self, steps):
+        pass
+
+    def advance(self, what):
+        self.n -= 1
+        if self.n == 0:
+            raise KeyboardInterrupt
+
+
+def test_an_interrupted_campaign_resumes_with_only_the_missing_tasks(tmp_path):
+    campaign = from_dict({**SMALL, "engines": ["reference"], "spins": [0.0, 10.0]})
+    with pytest.raises(KeyboardInterrupt):
+        run_campaign(campaign, tmp_path / "s", InProcess(), progress=StopAfter(3))
+    assert not [n for n in os.listdir(tmp_path / "s") if n.endswith(".tmp")]       # only whole fragments
+    resumed = run_campaign(campaign, tmp_path / "s", InProcess())
+    assert (resumed.tasks, resumed.ran, resumed.cached) == (8, 5, 3)
+    whole = run_campaign(campaign, tmp_path / "t", InProcess())
+    a, b = sorted_rows(Store(tmp_path / "s").table()), sorted_rows(Store(tmp_path / "t").table())
+    assert whole.ran == 8 and a[METRICS].equals(b[METRICS])
+
+
+def test_a_changed_law_or_engine_build_changes_the_key():
+    campaign = from_dict({**SMALL, "laws": ["hertz-mindlin"], "engines": ["reference"]})
+    other = from_dict({**SMALL, "variants": [{"law": "hertz-mindlin", "with": {"tangential": "mindlin:incremental"}}],
+                       "laws": [], "engines": ["reference"]})
+    run = next(iter(keyed(campaign)[0].values()))
+    assert not set(keyed(campaign)[0]) & set(keyed(other)[0])
+    assert run.key("0.1.0") != run.key("0.1.1")
+
+
+def test_the_slurm_job_script_carries_the_options():
+    cluster = slurm_cluster({"queue": "debug", "account": "proj", "cores": "4", "memory": "8GB",
+                             "walltime": "02:00:00"})
+    try:
+        script = cluster.job_script()
+    finally:
+        cluster.close()
+    for line in ("#SBATCH -p debug", "#SBATCH -A proj", "#SBATCH --cpus-per-task=4", "#SBATCH --mem=8G",
+                 "#SBATCH -t 02:00:00", f"{sys.executable} -m distributed.cli.dask_worker", "--nworkers 4"):
+        assert line in script, (line, script)
+
+
+class KillAWorker:
+    """A progress that kills one worker process after the first task is stored."""
+
+    def __init__(self, client):
+        self.client, self.killed = client, False
+
+    def expect(self, steps):
+        pass
+
+    def advance(self, what):
+        if not self.killed:
+            pids = self.client.run(os.getpid)
+            os.kill(sorted(pids.values())[0], signal.SIGKILL)
+            self.killed = True
+
+
+@needs("liggghts")
+@needs("yade")
+def test_dask_workers_give_the_in_process_results_bit_for_bit_even_when_one_is_killed(tmp_path):
+    from distributed import Client
+    campaign = from_dict({**SMALL, "engines": ["reference", "liggghts", "yade"]})
+    local = run_campaign(campaign, tmp_path / "local", InProcess())
+    cluster = local_cluster(2)
+    client = Client(cluster)
+    try:
+        on_dask = run_campaign(campaign, tmp_path / "dask", OnDask(client))
+        killed = KillAWorker(client)
+        survived = run_campaign(campaign, tmp_path / "killed", OnDask(client), progress=killed)
+    finally:
+        client.close()
+        cluster.close()
+    assert killed.killed and local.tasks == on_dask.tasks == survived.tasks == 2 * (2 + 2 * 2) + 2 * 2  # YADE
+    assert local.failed == on_dask.failed == survived.failed == 0 and local.skipped == []       # has no thornton
+    reference = sorted_rows(Store(tmp_path / "local").table())
+    for other in ("dask", "killed"):
+        rows = sorted_rows(Store(tmp_path / other).table())
+        assert rows[KEY].equals(reference[KEY]) and rows[METRICS].equals(reference[METRICS]), other
+
+
+def test_query_runs_sql_over_the_store(tmp_path, capfd):
+    run_campaign(from_dict({**SMALL, "engines": ["reference"]}), tmp_path / "s", InProcess())
+    assert main(["query", str(tmp_path / "s"), "SELECT count(*) AS n FROM results", "--csv"]) == 0
+    assert capfd.readouterr().out.split() == ["n", "12"]
+    assert main(["query", str(tmp_path / "s"), "SELECT nope FROM results"]) == 2
+
+
+@needs("liggghts")
+def test_the_example_campaign_runs_and_its_rerun_is_cached(tmp_path, capfd):
+    import json
+    example = os.path.join(os.path.dirname(__file__), "..", "examples", "campaign.toml")
+    store = str(tmp_path / "store")
+    assert main(["campaign", example, "-o", store, "--json"]) == 0
+    first = json.loads(capfd.readouterr().out)
+    assert (first["tasks"], first["ran"], first["cached"], first["failed"]) == (12, 12, 0, 0)
+    assert os.path.isfile(store + ".html") and "liggghts, thornton" in open(store + ".html").read()
+    assert main(["campaign", example, "-o", store, "--json", "--executor", "dask", "--workers", "1"]) == 0
+    again = json.loads(capfd.readouterr().out)
+    assert (again["ran"], again["cached"]) == (0, 12)
