@@ -67,8 +67,8 @@ def statuses(request):
 def compare_request(request, on_frame=None, progress=None, partial=None):
     """Run the comparison of a validated request (on_frame(frame) as each run of the comparison is done; progress
     told of every run and of the measurements) and return it. What needs no engine result (attribution, the sliding
-    threshold, force histories, the precision check) runs beside the engines. With `partial` (harness.partial), runs
-    finished by an interrupted compare are taken from it, and each run that finishes is put there."""
+    threshold, force histories, the precision check) runs beside the engines. With `partial` (harness.partial or a
+    campaign store), the runs it holds are taken from it, and each run that finishes is put there."""
     law, scene = request.law, request.scene
     found = statuses(request)
     engines = {ENGINES[s.name]: request.engine_options.get(s.name, {}) for s in found if s.available}
@@ -86,23 +86,13 @@ def compare_request(request, on_frame=None, progress=None, partial=None):
         measured = beside.submit(measurements, law, scene, engines, engine_resolution)
         in_plan = {id(run_) for run_ in plan}
 
-        reused = {id(run_): frame for run_ in plan if partial is not None
-                  for frame in [partial.get(run_)] if frame is not None}
-
         def finished(run_, frame, failure=None):
-            if partial is not None and id(run_) in in_plan and id(run_) not in reused and failure is None:
-                partial.put(run_, frame)
             if on_frame is not None and id(run_) in in_plan:
                 on_frame(frame)
             if progress:
                 progress.advance(f"{run_.engine} ({run_.dialect.dialect} formulas) e_n {run_.e_n:g}"
-                                 + "".join(f" {k} {v}" for k, v in run_.options)
-                                 + (" (from the interrupted run)" if id(run_) in reused else ""))
-        for run_ in plan:
-            if id(run_) in reused:
-                finished(run_, reused[id(run_)])
-        ran = iter(run_all([r for r in plan if id(r) not in reused] + extra, finished))
-        done = [(reused[id(r)], None) if id(r) in reused else next(ran) for r in plan] + list(ran)
+                                 + "".join(f" {k} {v}" for k, v in run_.options))
+        done = run_all(plan + extra, finished, partial)
         attributions, sliding, histories = measured.result()
         if progress:
             progress.advance("attribution, sliding threshold, force histories")

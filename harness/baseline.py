@@ -29,7 +29,7 @@ def matrix_scene():
     return Scene(e_n=MATRIX_EN, angles_deg=MATRIX_ANGLES)
 
 
-def compute(progress=None):
+def compute(progress=None, cache=None):
     """The baseline matrix now: paper law and every engine's dialect on the reference, the engines where installed;
     (frame, skipped)."""
     scene = matrix_scene()
@@ -49,7 +49,7 @@ def compute(progress=None):
             else:                           # its dialect needs only the reference solver
                 skipped.append(f"{engine_name} {name}: {status.reason}")
                 plan += reference_runs(law, scene, STEPS_PER_CONTACT, engine.dialect(name, {}))
-        frame, failures = execute(plan)
+        frame, failures = execute(plan, cache=cache)
         frames.append(frame)
         skipped += [f"{f.engine} {name} e_n={f.e_n}: {f.message}" for f in failures]
         if progress:
@@ -82,7 +82,7 @@ def compare_to_baseline(baseline, now):
     return pd.DataFrame(out, columns=KEYS + ["metric", "baseline", "now", "rel_diff", "tolerance"])
 
 
-def check(directory, now=None, progress=None):
+def check(directory, now=None, progress=None, cache=None):
     """Recompute the matrix (unless given) and list every metric outside tolerance; rows of absent engines are
     reported as skipped, not as failures."""
     path = os.path.join(directory, BASELINE_FILE)
@@ -96,7 +96,7 @@ def check(directory, now=None, progress=None):
                         f"{', '.join(m for m in METRICS if not pd.api.types.is_numeric_dtype(baseline[m]))}")
     skipped = []
     if now is None:
-        now, skipped = compute(progress)
+        now, skipped = compute(progress, cache)
     ran = set(now.engine.unique())
     missing = sorted(set(baseline.engine.unique()) - ran)
     skipped += [f"{engine}: not run here, its baseline rows were not checked" for engine in missing]

@@ -12,27 +12,36 @@ from .results import COLUMNS
 from .solver.threads import THREADS
 
 
-def execute(runs, on_frame=None):
-    """(results table, failed runs) of the runs; on_frame(frame) as each is done."""
-    done = run_all(runs, None if on_frame is None else (lambda run, frame, failure: on_frame(frame)))
+def execute(runs, on_frame=None, cache=None):
+    """(results table, failed runs) of the runs; on_frame(frame) as each is done; a cache (get(run), put(run,
+    frame): harness.partial, a campaign store) serves the runs it holds and keeps the others as they finish."""
+    done = run_all(runs, None if on_frame is None else (lambda run, frame, failure: on_frame(frame)), cache)
     frames = [frame for frame, _ in done]
     table = pd.concat(frames, ignore_index=True) if frames else pd.DataFrame(columns=list(COLUMNS))
     return table, [failure for _, failure in done if failure is not None]
 
 
-def run_all(runs, on_done=None):
-    """(frame, failure or None) of each run, in the runs' order; on_done(run, frame, failure) as each is done."""
+def run_all(runs, on_done=None, cache=None):
+    """(frame, failure or None) of each run, in the runs' order; on_done(run, frame, failure) as each is done; runs
+    the cache holds are taken from it, and each run that succeeds is put there."""
     allow()
     frames, failures = [None] * len(runs), [None] * len(runs)
+    held = {i: frame for i, run in enumerate(runs) if cache is not None for frame in [cache.get(run)]
+            if frame is not None}
     groups = {}
     for i, run in enumerate(runs):
-        groups.setdefault(run.engine, []).append(i)
+        if i not in held:
+            groups.setdefault(run.engine, []).append(i)
 
-    def done(indices, results):
+    def done(indices, results, from_cache=False):
         for i, (frame, failure) in zip(indices, results):
             frames[i], failures[i] = frame, failure
+            if cache is not None and not from_cache and failure is None:
+                cache.put(runs[i], frame)
             if on_done is not None:
                 on_done(runs[i], frame, failure)
+
+    done(list(held), [(frame, None) for frame in held.values()], from_cache=True)
 
     external = {name: indices for name, indices in groups.items() if name != "reference"}
     with ThreadPoolExecutor(max_workers=max(1, min(THREADS, len(external)))) as pool:

@@ -4,8 +4,8 @@ what is missing. A finished compare removes them."""
 import os
 import shutil
 
-from .engines import ENGINES
 from .files import write_text
+from .keys import run_key
 from .results import read_csv
 
 PARTIAL = ".partial"
@@ -18,7 +18,7 @@ class PartialRuns:
         self.path = os.path.join(directory, PARTIAL)
 
     def _file(self, run):
-        return os.path.join(self.path, run.key(ENGINES[run.engine].version()) + ".csv")
+        return os.path.join(self.path, run_key(run) + ".csv")
 
     def get(self, run):
         path = self._file(run)

@@ -173,3 +173,30 @@ def test_the_example_campaign_runs_and_its_rerun_is_cached(tmp_path, capfd):
     assert main(["campaign", example, "-o", store, "--json", "--executor", "dask", "--workers", "1"]) == 0
     again = json.loads(capfd.readouterr().out)
     assert (again["ran"], again["cached"]) == (0, 12)
+
+
+def count_engine_runs(monkeypatch):
+    """The runs each engine is asked to execute (cached ones are not)."""
+    from harness.engines import ENGINES
+    executed = []
+    for name, adapter in ENGINES.items():
+        def counting(runs, run=adapter.run):
+            executed.extend(r.engine for r in runs)
+            return run(runs)
+        monkeypatch.setattr(adapter, "run", counting)
+    return executed
+
+
+def test_compare_and_check_take_what_a_store_holds(tmp_path, monkeypatch, capfd):
+    executed = count_engine_runs(monkeypatch)
+    store = str(tmp_path / "store")
+    args = ["compare", "--model", "thornton", "--engines", "reference", "--en", "0.5,0.9", "--angles", "10,40",
+            "--store", store, "--quiet"]
+    assert main(args + ["-o", str(tmp_path / "a")]) == 0 and executed == ["reference"] * 2
+    assert main(args + ["-o", str(tmp_path / "b")]) == 0 and executed == ["reference"] * 2    # nothing ran again
+    a, b = (pd.read_csv(tmp_path / d / "results.csv") for d in "ab")
+    assert a[METRICS].equals(b[METRICS])
+    assert main(["check", "--store", store, "--quiet"]) == 0
+    first = len(executed)
+    assert main(["check", "--store", store, "--quiet"]) == 0 and len(executed) == first
+    capfd.readouterr()

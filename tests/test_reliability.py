@@ -334,7 +334,6 @@ def test_both_engines_break_the_coulomb_bound_on_chung_and_oois_spin_case():
 def test_an_interrupted_compare_is_shown_as_partial_and_the_rerun_runs_only_what_is_missing(tmp_path, monkeypatch,
                                                                                           capfd):
     import json
-    import harness.api
     proc, engine, _ = start_hung_compare(tmp_path)
     out = tmp_path / "out"
     deadline = time.time() + 60                       # the reference's two runs finish while LIGGGHTS hangs
@@ -349,17 +348,17 @@ def test_an_interrupted_compare_is_shown_as_partial_and_the_rerun_runs_only_what
     assert len(os.listdir(out / ".partial")) == 2
 
     executed = []
-    run_all = harness.api.run_all
-
-    def counting(runs, on_done=None):
-        executed.extend((r.engine, r.dialect.dialect) for r in runs)
-        return run_all(runs, on_done)
-    monkeypatch.setattr(harness.api, "run_all", counting)
+    from harness.engines import ENGINES
+    for name in ("reference", "liggghts"):
+        def counting(runs, run=ENGINES[name].run):
+            executed.extend((r.engine, r.dialect.dialect) for r in runs)
+            return run(runs)
+        monkeypatch.setattr(ENGINES[name], "run", counting)
     monkeypatch.setenv(liggghts.BINARY_VARIABLE, fake_executable(tmp_path, 'echo "ERROR: gone"; exit 1', "crash"))
     code = main_in_process("compare", "--model", "hertz-mindlin", "--en", "0.5", "--angles", "10", "--engines",
                            "liggghts", "-o", str(out), "--quiet")
-    capfd.readouterr()
-    assert code == 3                                               # LIGGGHTS failed this time
+    err = capfd.readouterr().err
+    assert code == 3, err                                          # LIGGGHTS failed this time
     assert executed == [("liggghts", "liggghts")]                  # the reference's two runs came from the first
     frame = __import__("pandas").read_csv(out / "results.csv")
     assert sorted(frame.dialect[frame.engine == "reference"]) == ["liggghts", "paper"]

@@ -4,9 +4,9 @@ import os
 from collections import Counter
 from dataclasses import dataclass, field
 
-from ..engines import ENGINES
 from ..engines.batches import max_steps_of
 from ..engines.runner import sweep_stale
+from ..keys import run_key
 from .spec import tasks
 from .store import Store
 
@@ -34,11 +34,9 @@ class Summary:
 def keyed(campaign):
     """({key: run} of the campaign's distinct tasks, skipped engines)."""
     runs, skipped = tasks(campaign)
-    versions = {}
     out = {}
     for run in runs:
-        version = versions.setdefault(run.engine, ENGINES[run.engine].version())
-        out.setdefault(run.key(version), run)
+        out.setdefault(run_key(run), run)
     return out, skipped
 
 

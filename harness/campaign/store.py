@@ -10,6 +10,7 @@ import pandas as pd
 import pyarrow as pa
 import pyarrow.parquet as pq
 
+from ..keys import run_key
 from ..results import COLUMNS
 
 KEY, LOG_TAIL = "task_key", "log_tail"
@@ -26,6 +27,19 @@ def tidy(frame, key, log_tail=""):
         else:
             out[column] = pd.to_numeric(out[column], errors="coerce").astype(np.float64)
     return out.reset_index(drop=True)
+
+
+class RunCache:
+    """A Store seen as a run cache (get(run), put(run, frame)), as compare's partial runs are."""
+
+    def __init__(self, store):
+        self.store = store
+
+    def get(self, run):
+        return self.store.get(run)
+
+    def put(self, run, frame):
+        self.store.put_run(run, frame)
 
 
 class Store:
@@ -75,6 +89,20 @@ class Store:
         for name in parts:
             self._remove(name)
         return len(parts)
+
+    def get(self, run):
+        """The results table of `run` if the store holds it (a run cache for compare and check), else None."""
+        key = run_key(run)
+        for name in (f"part-{key}.parquet",) + tuple(self.files("data-")):
+            path = os.path.join(self.path, name)
+            if os.path.exists(path):
+                rows = pd.read_parquet(path, filters=[(KEY, "==", key)])
+                if len(rows):
+                    return rows.drop(columns=[KEY, LOG_TAIL]).reset_index(drop=True)
+        return None
+
+    def put_run(self, run, frame):
+        self.put(run_key(run), frame)
 
     def table(self):
         """The whole store as one table (a task's rows once, even if a crash left it in two files)."""

@@ -2,6 +2,7 @@
 import json
 
 from ..baseline import DEFAULT_BASELINE, check, update
+from ..campaign.store import RunCache, Store
 from ..errors import UserError
 from ..views.progress import Progress
 from ..views.terminal import text_table
@@ -13,6 +14,8 @@ def add(sub, describe):
                  "harness check")
     p.add_argument("--baseline", default=DEFAULT_BASELINE, metavar="DIR",
                    help="baseline directory (default: the committed one, shipped with harness)")
+    p.add_argument("--store", metavar="STORE", help="a campaign store: runs it holds (computed by this very code: "
+                                                    "keys carry a digest of it) are taken from it, the others added")
     add_output_options(p, json=True)
     p.set_defaults(func=main)
     p = describe(sub, "baseline", "rewrite the committed baseline matrix on purpose",
@@ -25,7 +28,8 @@ def add(sub, describe):
 
 def main(args):
     with Progress("check", quiet=args.quiet or args.json) as progress:
-        failures, skipped = check(args.baseline, progress=progress)
+        cache = RunCache(Store(args.store)) if args.store else None
+        failures, skipped = check(args.baseline, progress=progress, cache=cache)
     code = EXIT_OK if failures.empty else EXIT_DISAGREE
     if args.json:
         print(json.dumps({"ok": failures.empty, "exit_code": code, "baseline": args.baseline, "skipped": skipped,

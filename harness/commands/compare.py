@@ -9,6 +9,7 @@ import pandas as pd
 
 from ..analyses.verdict import DISAGREE, NOT_COMPARED, verdict
 from ..api import compare_request
+from ..campaign.store import RunCache, Store
 from ..comparison import Comparison
 from ..lock import exclusive
 from ..outputs import save_comparison, start_comparison
@@ -32,6 +33,8 @@ def add(sub, describe):
     add_engine_options(p)
     add_scene_options(p)
     p.add_argument("-o", "--output", default="harness-out", metavar="DIR", help="output directory (default %(default)s)")
+    p.add_argument("--store", metavar="STORE", help="a campaign store: runs it holds are taken from it, the others "
+                                                    "are added to it")
     add_output_options(p, json=True, verbose=True)
     p.set_defaults(func=main)
 
@@ -53,7 +56,7 @@ def main(args):
 
     preload()                              # the report's plotting library loads beside the runs
     with exclusive(args.output), Progress(f"compare {request.model}", quiet=args.quiet or args.json) as progress:
-        partial = PartialRuns(args.output)
+        partial = RunCache(Store(args.store)) if args.store else PartialRuns(args.output)
         try:
             comparison = compare_request(request, on_frame=keep, progress=progress, partial=partial)
         except KeyboardInterrupt:
@@ -65,7 +68,8 @@ def main(args):
         comparison.date = datetime.datetime.now().isoformat(timespec="minutes")
         save_comparison(args.output, comparison)
         report = rebuild(args.output)
-        partial.clear()
+        if not args.store:
+            partial.clear()
         progress.advance("report")
     record = verdict(comparison)
     reference_only = request.engines is not None and set(request.engines) == {"reference"}
