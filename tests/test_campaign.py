@@ -200,3 +200,19 @@ def test_compare_and_check_take_what_a_store_holds(tmp_path, monkeypatch, capfd)
     first = len(executed)
     assert main(["check", "--store", store, "--quiet"]) == 0 and len(executed) == first
     capfd.readouterr()
+
+
+def test_cost_takes_its_converged_truths_from_a_store(tmp_path, monkeypatch, capfd):
+    """The truths (2^16 and 2^15 steps per contact) run once; a second study with the store reruns only the timed
+    ladder, and its table's errors are the same."""
+    executed = count_engine_runs(monkeypatch)
+    store = str(tmp_path / "store")
+    args = ["cost", "--model", "thornton", "--engines", "reference", "--en", "0.5", "--angles", "10,40",
+            "--ladder", "100,200", "--store", store, "--json"]
+    assert main(args + ["-o", str(tmp_path / "a")]) == 0
+    assert executed == ["reference"] * 2                   # the two truth runs went through the store
+    assert main(args + ["-o", str(tmp_path / "b")]) == 0 and executed == ["reference"] * 2
+    capfd.readouterr()
+    a, b = (pd.read_csv(tmp_path / d / "cost.csv") for d in "ab")
+    errors = [c for c in a.columns if c.startswith("err_")]
+    assert errors and a[errors].equals(b[errors])

@@ -50,15 +50,15 @@ def relative_errors(values, truth):
     return out
 
 
-def truth_of(law, scene):
+def truth_of(law, scene, cache=None):
     """Converged reference of one dialect: the finest run and its uncertainty (change from half the steps, an
     upper bound for first- and second-order schemes alike), per e_n, each naming its truth. Where that leaves the
     paper scheme uncertain beyond TRUTH_SHARPEN (Walton-Braun's spring at grazing incidence: ~1e-5, order 1.5) and
     the adaptive integrator covers the law, its run at TRUTH_TOLERANCE instead (uncertainty: the change from 10x
-    that tolerance; tests/test_adaptive_walton_braun.py checks it against the deep graded ladder)."""
+    that tolerance; tests/test_adaptive_walton_braun.py checks it against the deep graded ladder). With a cache (a
+    campaign store), the two fine runs are taken from it when it holds them, and added to it when not."""
     steps = TRUTH_STEPS["paper" if law.integrator == "paper" else "engine"]
-    fine = simulate(law, scene, steps_per_contact=steps)[0]
-    half = simulate(law, scene, steps_per_contact=steps // 2)[0]
+    fine, half = (reference(law, scene, n, cache) for n in (steps, steps // 2))
     uncertainty = uncertainties(half, fine, f"{steps} steps/contact")
     worst = max(errs["err_max"] for errs in uncertainty.values())
     if law.integrator == "paper" and worst > TRUTH_SHARPEN and covered(law, scene):
@@ -67,6 +67,15 @@ def truth_of(law, scene):
         uncertainty = uncertainties(coarse, fine, f"adaptive at tol {TRUTH_TOLERANCE:.0e} ({steps} steps/contact: "
                                                   f"{worst:.1e})")
     return fine, uncertainty
+
+
+def reference(law, scene, steps, cache=None):
+    """The reference solver's results of `law` at `steps` per contact (through the plan and the cache, if given)."""
+    if cache is None:
+        return simulate(law, scene, steps_per_contact=steps)[0]
+    from ..execute import execute
+    from ..plan import reference_runs
+    return execute(reference_runs(law, scene, steps, law), cache=cache)[0]
 
 
 def uncertainties(coarse, fine, truth):
@@ -275,9 +284,10 @@ class Rows(list):
             self.keep(pd.DataFrame(self, columns=COLUMNS))
 
 
-def cost_table(law, scene, adapters, ladder=LADDER, keep=None, progress=None):
+def cost_table(law, scene, adapters, ladder=LADDER, keep=None, progress=None, cache=None):
     """Every curve of the study as one table (COLUMNS); adapters: {name: (adapter, options)} of the engines;
-    `keep(table)` is called with the table so far after every row; progress told of every rung."""
+    `keep(table)` is called with the table so far after every row; progress told of every rung; the truths' runs
+    through `cache` (a campaign store) when given (timed runs never are: a stored run has no time to give)."""
     rungs = len(ladder_rungs(ladder, scene))
     if progress:
         progress.expect(3 + rungs + len(adapters) * (2 + 2 * rungs))
@@ -285,7 +295,7 @@ def cost_table(law, scene, adapters, ladder=LADDER, keep=None, progress=None):
     simulate(law, warm, steps_per_contact=10)                 # compile outside timing: the kernel,
     simulate(law, warm, converged=True)                       # and the adaptive integrator or graded ladder
     rows, failures, uncertainty = Rows(keep), [], {}
-    truth, uncertainty["paper"] = truth_of(law, scene)
+    truth, uncertainty["paper"] = truth_of(law, scene, cache)
     step(progress, "converged reference of the paper law")
     reference_curve(rows, law, scene, ladder, truth, progress=progress)
     converged_curve(rows, law, scene, ladder, truth)
@@ -294,7 +304,7 @@ def cost_table(law, scene, adapters, ladder=LADDER, keep=None, progress=None):
     step(progress, "the converged mode")
     for name, (adapter, options) in adapters.items():
         dialect = adapter.dialect(law.name, options)
-        dialect_truth, uncertainty[name] = truth_of(dialect, scene)
+        dialect_truth, uncertainty[name] = truth_of(dialect, scene, cache)
         step(progress, f"converged reference of {name}'s formulas")
         reference_curve(rows, dialect, scene, ladder, dialect_truth, progress=progress)
         engine_curve(rows, adapter, law, dialect, scene, ladder, dialect_truth, options, failures, progress)

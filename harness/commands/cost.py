@@ -6,6 +6,7 @@ import pandas as pd
 
 from ..analyses.cost import COLUMNS, LADDER, convergence_orders, cost_table, recommendations
 from ..api import statuses
+from ..campaign.store import RunCache, Store
 from ..engines import ENGINES
 from ..errors import UserError
 from ..lock import exclusive
@@ -30,6 +31,8 @@ def add(sub, describe):
     p.add_argument("--ladder", default=None, metavar="LIST",
                    help="steps per contact to try (default 5,10,20,50,100,200,500,1000,5000)")
     p.add_argument("-o", "--output", default="harness-out", metavar="DIR", help="output directory (default %(default)s)")
+    p.add_argument("--store", metavar="STORE", help="a campaign store: the converged truths' runs are taken from it "
+                                                    "or added to it (timed runs never are)")
     add_output_options(p, json=True)
     p.set_defaults(func=main)
 
@@ -63,7 +66,7 @@ def main(args):
         with Progress(f"cost {law.name}", quiet=args.quiet or args.json) as progress:
             table, failures, uncertainty = cost_table(
                 law, scene, adapters, ladder, keep=lambda so_far: write_csv(so_far, os.path.join(args.output, COST)),
-                progress=progress)
+                progress=progress, cache=RunCache(Store(args.store)) if args.store else None)
         save_cost(args.output, table, uncertainty, law, scene, overrides, skipped, failures)
         report = rebuild(args.output)
     asked = set(request.engines or ()) - {"reference"}
