@@ -216,3 +216,36 @@ def test_cost_takes_its_converged_truths_from_a_store(tmp_path, monkeypatch, cap
     a, b = (pd.read_csv(tmp_path / d / "cost.csv") for d in "ab")
     errors = [c for c in a.columns if c.startswith("err_")]
     assert errors and a[errors].equals(b[errors])
+
+
+@needs("yade")
+def test_a_campaign_on_dask_stopped_by_sigint_leaves_whole_fragments_and_no_process(tmp_path):
+    """The driver interrupted while YADE tasks run on two worker processes: exit 130, only whole fragments in the
+    store, no worker or engine process left, and the rerun runs only the tasks the store lacks."""
+    import json
+    import subprocess
+    import time
+    from test_reliability import descendants, wait_gone
+    path = tmp_path / "c.toml"
+    path.write_text('laws = ["hertz-mindlin"]\nengines = ["yade"]\ne_n = [0.3, 0.5, 0.7, 0.9]\n'
+                    'angles = [10, 30, 50, 70]\nspins = [0.0, 5.0, 10.0]\nsteps_per_contact = [500]\n')
+    store = tmp_path / "store"
+    command = [sys.executable, "-m", "harness", "campaign", str(path), "-o", str(store), "--executor", "dask",
+               "--workers", "2"]
+    proc = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    deadline = time.time() + 180
+    while not (store.is_dir() and [n for n in os.listdir(store) if n.startswith("part-")]):
+        assert time.time() < deadline and proc.poll() is None, proc.communicate()
+        time.sleep(0.2)
+    tree = descendants(proc.pid)
+    proc.send_signal(signal.SIGINT)
+    proc.communicate(timeout=120)
+    assert proc.returncode == 130
+    assert all(wait_gone(pid, 30) for pid in tree)
+    names = os.listdir(store)
+    assert not [n for n in names if n.endswith(".tmp")]
+    kept = Store(store).finished()
+    assert 1 <= len(kept) < 36          # 3 spins x 4 e_n x (paper law, YADE formulas, YADE)
+    done = subprocess.run(command + ["--json"], capture_output=True, text=True, timeout=600)
+    summary = json.loads(done.stdout)
+    assert (summary["tasks"], summary["cached"], summary["ran"]) == (36, len(kept), 36 - len(kept))
