@@ -44,15 +44,18 @@ def run_all(runs, on_done=None, cache=None):
     done(list(held), [(frame, None) for frame in held.values()], from_cache=True)
 
     external = {name: indices for name, indices in groups.items() if name != "reference"}
-    with ThreadPoolExecutor(max_workers=max(1, min(THREADS, len(external)))) as pool:
-        try:
-            pending = {pool.submit(ENGINES[name].run, [runs[i] for i in indices]): indices
-                       for name, indices in external.items()}
-            for i in groups.get("reference", []):
-                done([i], ENGINES["reference"].run([runs[i]]))
-            for future in as_completed(pending):
-                done(pending[future], future.result())
-        except BaseException:
-            kill_all()                  # before the pool waits for its threads: their engine processes end now
-            raise
+    try:
+        with ThreadPoolExecutor(max_workers=max(1, min(THREADS, len(external)))) as pool:
+            try:
+                pending = {pool.submit(ENGINES[name].run, [runs[i] for i in indices]): indices
+                           for name, indices in external.items()}
+                for i in groups.get("reference", []):
+                    done([i], ENGINES["reference"].run([runs[i]]))
+                for future in as_completed(pending):
+                    done(pending[future], future.result())
+            except BaseException:
+                kill_all()              # before the pool waits for its threads: their engine processes end now
+                raise
+    finally:
+        allow()                         # its threads have ended: engines may start again (a caller's next run)
     return list(zip(frames, failures))

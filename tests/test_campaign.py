@@ -207,8 +207,8 @@ def test_cost_takes_its_converged_truths_from_a_store(tmp_path, monkeypatch, cap
     ladder, and its table's errors are the same."""
     executed = count_engine_runs(monkeypatch)
     store = str(tmp_path / "store")
-    args = ["cost", "--model", "thornton", "--engines", "reference", "--en", "0.5", "--angles", "10,40",
-            "--ladder", "100,200", "--store", store, "--json"]
+    args = ["cost", "--model", "thornton", "--engines", "reference", "--en", "0.5", "--angles", "40",
+            "--ladder", "100", "--store", store, "--json"]
     assert main(args + ["-o", str(tmp_path / "a")]) == 0
     assert executed == ["reference"] * 2                   # the two truth runs went through the store
     assert main(args + ["-o", str(tmp_path / "b")]) == 0 and executed == ["reference"] * 2

@@ -41,13 +41,25 @@ def harness(*args, cwd=None, env=None):
     ["--model", "thornton", "--vt", "0.5,-1"],
     ["--model", "thornton", "--wall", "jelly"],
 ])
-def test_bad_input_is_one_line_and_exit_2(tmp_path, args):
+def test_bad_input_is_one_line_and_exit_2(tmp_path, capfd, args):
+    """In this process (the catalogue in tests/test_bad_input.py has many more); the process-level contract, exit
+    status and stderr of `python -m harness`, is the next test's."""
+    from harness.commands import main
     out = tmp_path / "r.csv"
-    proc = harness("run", *args, "-o", str(out))
-    assert proc.returncode == 2, proc.stderr
-    assert len(proc.stderr.strip().splitlines()) == 1 and proc.stderr.startswith("harness: error:")
-    assert "Traceback" not in proc.stderr
+    code = main(["run", *args, "-o", str(out)])
+    err = capfd.readouterr().err
+    assert code == 2, err
+    assert len(err.strip().splitlines()) == 1 and err.startswith("harness: error:")
+    assert "Traceback" not in err
     assert not out.exists() and list(tmp_path.iterdir()) == []
+
+
+def test_bad_input_is_one_line_and_exit_2_from_the_command_line(tmp_path):
+    out = tmp_path / "r.csv"
+    proc = harness("run", "--model", "thornton", "--en", "1.5", "-o", str(out))
+    assert proc.returncode == 2, proc.stderr
+    assert len(proc.stderr.strip().splitlines()) == 1 and proc.stderr.startswith("harness: error: e_n must lie")
+    assert "Traceback" not in proc.stderr and list(tmp_path.iterdir()) == []
 
 
 def test_unwritable_output_is_exit_2(tmp_path):
