@@ -19,7 +19,7 @@ def test_every_engine_implements_the_protocol(name):
     assert all(isinstance(o, Option) and o.default == o.values[0] for o in engine.OPTIONS.values())
     for attr in PROTOCOL:
         assert callable(getattr(engine, attr)), attr
-    assert set(engine.MODELS) <= set(LAWS)
+    assert set(engine.COUNTERPARTS) <= set(LAWS)
     for law in LAWS:
         status = engine.status(law)
         assert isinstance(status, Status) and status.name == name
@@ -38,7 +38,7 @@ def test_the_reference_is_an_engine_that_runs_every_law():
 @pytest.mark.parametrize("name", EXTERNAL)
 def test_undeclared_options_are_one_line_user_errors(name):
     engine = ENGINES[name]
-    law = next(iter(engine.MODELS))
+    law = next(iter(engine.COUNTERPARTS))
     with pytest.raises(UserError, match=f"unknown {name} option 'colour'"):
         engine.dialect(law, {"colour": "red"})
     key, option = next(iter(engine.OPTIONS.items()))

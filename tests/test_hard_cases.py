@@ -2,7 +2,7 @@
 where supported through LIGGGHTS and YADE (one batched run per law, e_n and material): finite results, no kinetic
 energy gain, separation within the bound, normal-impact e_n on target, outcomes continuous in the inputs. Engine
 breaks must come out of `findings` (what `harness compare` prints); refusals must be one line naming the range.
-Oracles: tests/oracles.py (independent integrations and MODELS closed forms) and dimensional analysis."""
+Oracles: tests/oracles.py (independent integrations and the closed forms of docs/laws.md) and dimensional analysis."""
 import math
 from concurrent.futures import ThreadPoolExecutor
 
@@ -289,7 +289,7 @@ def engine_jobs(engine):
     runs the named 0.05 case; at e_n 0.01 it spends ~27 s leaving its dent (64 contact times, huge stand-in
     spheres)."""
     jobs = []
-    for name in ENGINES[engine].MODELS:
+    for name in ENGINES[engine].COUNTERPARTS:
         for e_n in ENGINE_EN.get((engine, name), ENGINE_EN[(engine, None)]):
             cases = [c for c in BASE if name in c.laws and e_n in c.make_scene().e_n] + ([SWEEP] if e_n == 0.5 else [])
             jobs.append((name, None, cases, e_n))

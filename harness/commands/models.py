@@ -15,7 +15,7 @@ def add(sub, describe):
 
 def support(law_name):
     """{engine: the engine's model of the law, or None} for every external engine."""
-    return {name: (engine.MODELS[law_name] if engine.supports(law_name) else None)
+    return {name: (engine.COUNTERPARTS[law_name] if engine.supports(law_name) else None)
             for name, engine in ENGINES.items() if name != "reference"}
 
 

@@ -30,7 +30,7 @@ class Engine(Protocol):
     NAME: str
     OPTIONS: dict          # option name -> Option, declared by the adapter and surfaced by `--engine-option`
     INPUT_SUFFIX: str      # of the rendered input (harness render), "" for the reference
-    MODELS: dict           # harness law -> the engine's name of its model
+    COUNTERPARTS: dict           # harness law -> the engine's name of its model
 
     def available(self) -> bool:
         """The engine is installed here (for YADE: in the flavour asked for, double by default)."""

@@ -5,14 +5,14 @@ from ..protocol import Status
 from .binary import BINARY_VARIABLE, available, binary, missing_reason, version
 from .deck import (OBSERVE_DUMP, TEMPLATES, deck, read_dump, read_observation, render_batch, run_batch, run_deck,
                    run_together, settings)
-from .dialect import DIALECTS, MODELS, OPTIONS, dialect
+from .dialect import DIALECTS, COUNTERPARTS, OPTIONS, dialect
 
 NAME = "liggghts"
 INPUT_SUFFIX = ".in"
 
 
 def supports(law_name):
-    return law_name in MODELS and law_name in DIALECTS
+    return law_name in COUNTERPARTS and law_name in DIALECTS
 
 
 def status(law_name, options=None):
@@ -34,6 +34,6 @@ def render(run):
     return render_input(NAME, INPUT_SUFFIX, render_batch, run)
 
 
-__all__ = ["BINARY_VARIABLE", "DIALECTS", "MODELS", "NAME", "OBSERVE_DUMP", "OPTIONS", "TEMPLATES", "available",
+__all__ = ["BINARY_VARIABLE", "DIALECTS", "COUNTERPARTS", "NAME", "OBSERVE_DUMP", "OPTIONS", "TEMPLATES", "available",
            "binary", "deck", "dialect", "read_dump", "read_observation", "render", "render_batch", "run", "run_batch", "run_deck",
            "settings", "status", "supports", "version"]

@@ -12,7 +12,7 @@ from ...render import render
 from ..batches import max_steps_of, run_grouped
 from ..runner import EngineFailure, run_engine
 from .binary import binary
-from .dialect import MODELS
+from .dialect import COUNTERPARTS
 
 TEMPLATES = Path(__file__).resolve().parent / "templates"
 MIN_RESTITUTION = 0.05          # LIGGGHTS refuses coefficientRestitution <= 0.05 and poissonsRatio < 0; youngsModulus
@@ -44,7 +44,7 @@ def characteristic_velocity(k_n, contact):
 
 def settings(law, scene, e_n, options=None):
     """Model, tangential model, options and extra global properties that express `law` at e_n in LIGGGHTS."""
-    model = MODELS[law.name]
+    model = COUNTERPARTS[law.name]
     options = dict(options or {})
     tangential = options.pop("tangential", "history")
     properties = []

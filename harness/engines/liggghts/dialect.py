@@ -3,7 +3,7 @@ its contact options change."""
 from ...errors import UserError
 from ..protocol import Option, check_options as check_declared
 
-MODELS = {                      # harness law -> LIGGGHTS normal model
+COUNTERPARTS = {                      # harness law -> LIGGGHTS normal model
     "linear-spring-dashpot": "hooke",
     "hertz-mindlin": "hertz",
     "walton-braun": "hooke/hysteresis",
@@ -39,8 +39,8 @@ def check_options(law_name, options):
     """The LIGGGHTS options given, validated; one clear line for a bad one (no_history exists for hooke and hertz
     only)."""
     options = check_declared("liggghts", OPTIONS, options)
-    if options.get("tangential", "history") != "history" and MODELS.get(law_name) not in HONOURED_BY["tangential"]:
-        raise UserError(f"tangential no_history is offered with hooke and hertz only, not {MODELS.get(law_name)}")
+    if options.get("tangential", "history") != "history" and COUNTERPARTS.get(law_name) not in HONOURED_BY["tangential"]:
+        raise UserError(f"tangential no_history is offered with hooke and hertz only, not {COUNTERPARTS.get(law_name)}")
     return options
 
 
@@ -53,7 +53,7 @@ def dialect(law_name, options=None):
     from ...laws.law import replace_submodels
     options = check_options(law_name, options)
     overrides = dict(DIALECTS[law_name])
-    honoured = {key: value for key, value in options.items() if MODELS[law_name] in HONOURED_BY[key]}
+    honoured = {key: value for key, value in options.items() if COUNTERPARTS[law_name] in HONOURED_BY[key]}
     if honoured.get("limitForce") == "on":
         overrides["end"] = "no-tension"
     if honoured.get("tangential_damping") == "off":
@@ -61,7 +61,7 @@ def dialect(law_name, options=None):
     if honoured.get("ktToKnUser") == "on":
         overrides["tangential"] = f"linear:{KT_TO_KN_USER}"
     if honoured.get("tangential") == "no_history":
-        overrides["tangential"] = "viscous:linear" if MODELS[law_name] == "hooke" else "viscous:mindlin"
+        overrides["tangential"] = "viscous:linear" if COUNTERPARTS[law_name] == "hooke" else "viscous:mindlin"
     return replace_submodels(compose(law_name), overrides, "liggghts")
 
 

@@ -7,7 +7,7 @@ from ..protocol import Status
 NAME = "reference"
 INPUT_SUFFIX = ""
 OPTIONS = {}
-MODELS = {name: "paper" for name in LAWS}
+COUNTERPARTS = {name: "paper" for name in LAWS}
 
 
 def available(option=None):

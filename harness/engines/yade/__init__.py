@@ -3,7 +3,7 @@ yade launcher; its dialects are in dialect.py, its input and output in script.py
 flavours.py. It also checks its own arithmetic (precision.py)."""
 from ..batches import render_input
 from ..protocol import Status
-from .dialect import DIALECTS, MODELS, OPTIONS, check_options, dialect
+from .dialect import DIALECTS, COUNTERPARTS, OPTIONS, check_options, dialect
 from .flavours import (ARITHMETIC, FLAVOURS, PYTHON_VARIABLE, available, environment, flavour_path, missing_reason,
                        python, version)
 from .precision import HIGH, precision_runs
@@ -15,7 +15,7 @@ INPUT_SUFFIX = ".py"
 
 
 def supports(law_name):
-    return law_name in MODELS and law_name in DIALECTS
+    return law_name in COUNTERPARTS and law_name in DIALECTS
 
 
 def status(law_name, options=None):
@@ -43,7 +43,7 @@ def arithmetic(options):
     return ARITHMETIC[check_options(options).get("precision", "double")]
 
 
-__all__ = ["ARITHMETIC", "DIALECTS", "FLAVOURS", "MODELS", "NAME", "OBSERVE_FILE", "OPTIONS", "PYTHON_VARIABLE", "TEMPLATES",
+__all__ = ["ARITHMETIC", "DIALECTS", "FLAVOURS", "COUNTERPARTS", "NAME", "OBSERVE_FILE", "OPTIONS", "PYTHON_VARIABLE", "TEMPLATES",
            "arithmetic", "available", "dialect", "environment", "flavour_path", "HIGH", "precision_runs", "python",
            "read_observation", "read_result", "render", "render_batch", "run", "run_batch", "run_script", "script",
            "status", "supports", "version"]

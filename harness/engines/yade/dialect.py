@@ -1,7 +1,7 @@
 """What YADE 2023.02a computes for each law, as a composition of sub-models (docs/yade-dialect.md), and its options."""
 from ..protocol import Option, check_options as check_declared
 
-MODELS = {"hertz-mindlin": "Law2_ScGeom_MindlinPhys_Mindlin", "linear-spring-dashpot": "Law2_ScGeom_ViscElPhys_Basic",
+COUNTERPARTS = {"hertz-mindlin": "Law2_ScGeom_MindlinPhys_Mindlin", "linear-spring-dashpot": "Law2_ScGeom_ViscElPhys_Basic",
           "walton-braun": "Law2_ScGeom_LudingPhys_Basic"}
 DIALECTS = {                    # sub-models that make the paper law compute what YADE computes
     "hertz-mindlin": {"damping": "tsuji:appendix-b", "end": "no-tension", "tangential": "mindlin:incremental",

@@ -9,7 +9,7 @@ from ...version import __version__
 from ...render import render
 from ..batches import max_steps_of, run_grouped
 from ..runner import EngineFailure, remove_engine_tmpdir, run_engine
-from .dialect import MODELS
+from .dialect import COUNTERPARTS
 from .flavours import environment, python
 
 TEMPLATES = Path(__file__).resolve().parent / "templates"
@@ -33,7 +33,7 @@ def script(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps
     spheres = [{"x": i * 4.0 * radius, "vx": float(vt), "vz": -float(vn), "omegay": float(w)}
                for i, (vn, vt, w) in enumerate(zip(v_n0, v_t0, omega0))]
     chunk = max(10, int(steps_per_contact // 10))
-    common = dict(harness_version=__version__, law=law.name, law2=MODELS[law.name], e_n=e_n, rho=scene.rho,
+    common = dict(harness_version=__version__, law=law.name, law2=COUNTERPARTS[law.name], e_n=e_n, rho=scene.rho,
                   friction_angle=math.atan(scene.mu), radius=radius, spheres=spheres, ig2="Ig2_Wall_Sphere_ScGeom",
                   hertzian=True, dt=dt, chunk=chunk, max_chunks=max(1, max_steps // chunk + 1), observe=bool(observe))
     if law.name == "walton-braun":
