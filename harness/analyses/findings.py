@@ -67,9 +67,9 @@ def _break_detail(kind, group, rows):
     if kind == "Coulomb bound":
         excess = group.value / group.limit - 1.0
         worst = rows.loc[group.loc[excess.idxmax()].row]
-        return (f"{len(group)} impacts take a tangential impulse beyond mu times the normal one (|J_t| <= mu J_n); "
-                f"worst by {100 * excess.max():.3g}%: v_t1 = {worst.v_t1:.4g} m/s from {worst.v_t0:.4g} at e_n = "
-                f"{worst.e_n_target:g}, angle {worst.theta_deg:g} deg, omega0 {worst.omega0:g} rad/s")
+        return (f"{len(group)} impacts with |J_t| > mu J_n, worst by {100 * excess.max():.3g}% at e_n "
+                f"{worst.e_n_target:g}, {worst.theta_deg:g} deg (v_t1 {worst.v_t1:.4g} m/s from {worst.v_t0:.4g}, "
+                f"omega0 {worst.omega0:g} rad/s)")
     if kind == "friction at mu = 0":
         worst = rows.loc[group.loc[group.value.idxmax()].row]
         return (f"{len(group)} impacts with mu = 0 change their tangential velocity or spin; worst v_t1 = "
