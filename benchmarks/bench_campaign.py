@@ -55,7 +55,7 @@ def main(smoke=False, impacts=None):
         print(f"cached rerun           {cached:8.3f} s   ran {again.ran} of {again.tasks}; RATIO first/cached "
               f"{walls['in-process'] / cached:6.1f} (goal >= 50)")
 
-        count = impacts or (2000 if smoke else 100000)
+        count = impacts or (2000 if smoke else 1000000)
         angles = [90.0 * (i + 0.5) / count for i in range(count)]
         reference = from_dict({"laws": ["hertz-mindlin"], "engines": ["reference"], "e_n": [0.5], "angles": angles,
                                "steps_per_contact": [1000]})
@@ -63,7 +63,7 @@ def main(smoke=False, impacts=None):
         peak = max(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss,
                    resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss) / 1024
         print(f"reference through the campaign path: {count} impacts at 1000 steps/contact in {wall:.1f} s "
-              f"({done.tasks} tasks); 10^6 impacts at this rate: {wall * 1e6 / count / 60:.1f} min (goal < 3); "
+              f"({done.tasks} tasks) = {wall * 1e6 / count / 60:.2f} min per 10^6 impacts (goal < 3); "
               f"peak memory {peak:.0f} MB")
 
 

@@ -15,6 +15,7 @@ import math
 import numpy as np
 from numba import njit
 
+from ..jit import compiled
 from . import codes as C
 from .compiled import announce_compiling
 from .contact_ode import (A_DFN, A_FN, A_TRIAL, E_RELEASE, E_REVERSAL, E_SLIP, E_STICK, E_TURN, M_AMAX, M_DENT,
@@ -56,7 +57,7 @@ def stepper_names(ints):
     return np.where(TANGENTIAL_IMPLICIT[ints[:, C.I_TANGENTIAL]], "SDIRK4(3)", "DP5(4)")
 
 
-@njit(cache=True)
+@compiled
 def interpolated_root(kind, p, ints, y, y_end, f_start, f_end, mode, h, state, dy, aux, scale, g, g_start, g_end, ext):
     """Step fraction of event `kind` on the step's Hermite interpolant (one force evaluation per trial): a cheap,
     O(h^4) first estimate for `locate`; returns (fraction, slope of the event function there, evaluations)."""
@@ -76,7 +77,7 @@ def interpolated_root(kind, p, ints, y, y_end, f_start, f_end, mode, h, state, d
     return mid, (g_end - g_start) if hi - lo <= 0.0 else (g_hi - g_lo) / (hi - lo), trials
 
 
-@njit(cache=True)
+@compiled
 def advance(implicit, p, ints, y, mode, h, k, y_new, stage, aux, scale, tol, work, jac, lu, pivot, spring, ext):
     """One step of length h with the row's stepper (spring[0]: w at y, spring[1]: at y_new); returns (error norm,
     force evaluations)."""
@@ -86,7 +87,7 @@ def advance(implicit, p, ints, y, mode, h, k, y_new, stage, aux, scale, tol, wor
     return dp_step(p, ints, y, mode, h, k, y_new, stage, aux, scale, tol, ext), STAGES - 1
 
 
-@njit(cache=True)
+@compiled
 def locate(kind, implicit, p, ints, y, mode, h, k, y_new, stage, aux, scale, g_start, g_end, g, tol, guess, slope,
            work, jac, lu, pivot, spring, ext):
     """Step fraction in (0, 1] at which event `kind` happens inside the step of length h from y: secant steps on the
@@ -129,7 +130,7 @@ def crosses(e, g_start, g_end):
     return g_start < 0.0 <= g_end
 
 
-@njit(cache=True)
+@compiled
 def settle(p, ints, y, mode, g, aux, spring, ext):
     """At a step's start: a turn already passed unloads; a slide whose cone outgrows the spring sticks, a stick
     whose spring is beyond the cone, or on it within round-off and moving out, slides; a

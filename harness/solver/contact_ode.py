@@ -13,6 +13,7 @@ import math
 
 from numba import njit
 
+from ..jit import compiled
 from . import codes as C
 from .dispatch import (TANGENTIAL_IMPLICIT, TANGENTIAL_LOG_RATE, normal_below, normal_force, normal_slope,
                        tangential_edge_w, tangential_force_from_w, tangential_stiffness, tangential_w_from_force)
@@ -31,7 +32,7 @@ E_RELEASE, E_TURN, E_YIELD, E_PEAK, E_SLIP, E_STICK, E_REVERSAL = 0, 1, 2, 3, 4,
 N_EVENTS = 7
 INACTIVE = -math.inf
 
-@njit(cache=True)
+@compiled
 def normal_ode(ints, p, alpha, amax, ext):
     """F_el, dF_el/dalpha and the contact radius a with d(ln a)/dalpha, on the branch (alpha, alpha_max) selects
     (the kernel's slope: a ~ F^(1/3) on Hertzian branches, a = sqrt(R alpha) on linear ones). At the yield overlap
@@ -48,7 +49,7 @@ def normal_ode(ints, p, alpha, amax, ext):
     return f, slope, a, log_slope
 
 
-@njit(cache=True)
+@compiled
 def coulomb_cone(p, ints, f_n):
     """mu |F_n|; without tension mu max(F_n, 0), so that the cone stays closed beyond the release."""
     if ints[C.I_END] == C.END_FORCE and f_n < 0.0:
@@ -56,7 +57,7 @@ def coulomb_cone(p, ints, f_n):
     return p[C.P_MU] * abs(f_n)
 
 
-@njit(cache=True)
+@compiled
 def evaluate(p, ints, y, mode, w, dy, aux, ext):
     """dy/dt at y in `mode`, and the forces the events read (aux: F_n, dF_n/dt, trial spring rate, F_t). For
     Walton-Braun's sticking spring a given w (not NaN) sets y's F_s; otherwise w is read from it."""
@@ -133,7 +134,7 @@ def cone_rate(p, ints, aux):
     return p[C.P_MU] * (-aux[A_DFN] if aux[A_FN] < 0.0 and ints[C.I_END] == C.END_ALPHA else aux[A_DFN])
 
 
-@njit(cache=True)
+@compiled
 def events(p, ints, y, mode, aux, scale, g, ext):
     """Event functions at y, each rising through 0 at its event (INACTIVE where it cannot happen in this mode);
     scale = (alpha_ref, V_n, F_ref, t_ref, then the error scales, V_t at 6) makes them dimensionless."""

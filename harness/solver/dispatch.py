@@ -5,8 +5,8 @@ Kernel codes, capability tables and the dispatch of every compiled sub-model fun
 import math
 
 import numpy as np
-from numba import njit
 
+from ..jit import compiled
 from ..submodels.normal import linear as normal_linear
 from ..submodels.normal import hertz as normal_hertz
 from ..submodels.normal import walton_braun as normal_walton_braun
@@ -48,7 +48,7 @@ TANGENTIAL_IMPLICIT = np.array([False, False, False, False, False, False, True, 
 TANGENTIAL_LOG_RATE = np.array([0, 0, 0, 1, 2, 0, 0, 0, 0], dtype=np.int64)
 
 
-@njit(cache=True)
+@compiled
 def normal_force(code, p1, p2, p3, p4, radius, alpha, alpha_max, ext):
     if code == 0:
         return normal_linear.force(p1, p2, p3, p4, radius, alpha, alpha_max)
@@ -67,7 +67,7 @@ def normal_force(code, p1, p2, p3, p4, radius, alpha, alpha_max, ext):
     return math.nan, math.nan
 
 
-@njit(cache=True)
+@compiled
 def normal_below(code, p1, p2, p3, p4, alpha, ext):
     if code == 0:
         return normal_linear.below(p1, p2, p3, p4, alpha)
@@ -76,7 +76,7 @@ def normal_below(code, p1, p2, p3, p4, alpha, ext):
     return 0.0
 
 
-@njit(cache=True)
+@compiled
 def normal_slope(code, p1, p2, p3, p4, radius, alpha, loading, f, a, ext):
     if code == 0:
         return normal_linear.slope(p1, p2, p3, p4, radius, alpha, loading, f, a)
@@ -93,7 +93,7 @@ def normal_slope(code, p1, p2, p3, p4, radius, alpha, loading, f, a, ext):
     return math.nan, math.nan
 
 
-@njit(cache=True)
+@compiled
 def normal_residual(code, p1, p2, p3, p4, radius, alpha_max, ext):
     if code == 2:
         return normal_walton_braun.residual(p1, p2, p3, p4, radius, alpha_max)
@@ -106,7 +106,7 @@ def normal_residual(code, p1, p2, p3, p4, radius, alpha_max, ext):
     return 0.0
 
 
-@njit(cache=True)
+@compiled
 def normal_kink(code, p1, p2, p3, p4, ext):
     if code == 3:
         return normal_thornton.kink(p1, p2, p3, p4)
@@ -119,7 +119,7 @@ def normal_kink(code, p1, p2, p3, p4, ext):
     return 0.0
 
 
-@njit(cache=True)
+@compiled
 def normal_step(code, p1, p2, p3, p4, radius, alpha, alpha_old, f_old, alpha_max, history, new_history, ext):
     if code == 6:
         return normal_liggghts_thornton_ning.step(p1, p2, p3, p4, radius, alpha, alpha_old, f_old, alpha_max, history, new_history)
@@ -128,7 +128,7 @@ def normal_step(code, p1, p2, p3, p4, radius, alpha, alpha_old, f_old, alpha_max
     return normal_force(code, p1, p2, p3, p4, radius, alpha, alpha_max, ext)
 
 
-@njit(cache=True)
+@compiled
 def tangential_stiffness(code, p1, a):
     if code == 1:
         return tangential_linear.stiffness(p1, a)
@@ -149,7 +149,7 @@ def tangential_stiffness(code, p1, a):
     return math.nan
 
 
-@njit(cache=True)
+@compiled
 def tangential_spring(code, f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, scratch, midpoint):
     if code == 1:
         return tangential_linear.spring(f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, scratch, midpoint)
@@ -166,7 +166,7 @@ def tangential_spring(code, f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, 
     return math.nan
 
 
-@njit(cache=True)
+@compiled
 def tangential_after_cap(code, f_s, p1, a, st):
     if code == 4:
         tangential_mindlin.total_after_cap(f_s, p1, a, st)
@@ -174,28 +174,28 @@ def tangential_after_cap(code, f_s, p1, a, st):
     return
 
 
-@njit(cache=True)
+@compiled
 def tangential_force_from_w(code, d, star, cone, w):
     if code == 6:
         return tangential_walton_braun.force_from_w(d, star, cone, w)
     return math.nan
 
 
-@njit(cache=True)
+@compiled
 def tangential_w_from_force(code, d, star, cone, f_s):
     if code == 6:
         return tangential_walton_braun.w_from_force(d, star, cone, f_s)
     return math.nan
 
 
-@njit(cache=True)
+@compiled
 def tangential_edge_w(code, d, star, sign):
     if code == 6:
         return tangential_walton_braun.edge_w(d, star, sign)
     return math.nan
 
 
-@njit(cache=True)
+@compiled
 def tangential_onset_w(code, p1, v_s, rise):
     if code == 6:
         return tangential_walton_braun.onset_w(p1, v_s, rise)

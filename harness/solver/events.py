@@ -2,6 +2,7 @@
 and the release, each by Illinois false position on the step fraction, and the step split there."""
 from numba import njit
 
+from ..jit import compiled
 from ..submodels.tangential.state import T_HELD, T_MARGIN, T_STEP
 from . import codes as C
 from .dispatch import TANGENTIAL_IMPLICIT, TANGENTIAL_NONE, TANGENTIAL_VISCOUS
@@ -44,7 +45,7 @@ def event_kind(s, st, o, ot, p, ints, ext):
 STICK_PROBE = 1e-4          # step fraction of the probe step that tells whether a contact on the cone still slides
 
 
-@njit(cache=True)
+@compiled
 def event_value(kind, f, s, st, lo, lot, probe, probe_t, p, ints, h, scratch, ext):
     """The quantity that rises through zero at the event, after a trial step of fraction f from (s, st) (into lo, lot):
     -alpha_dot at the turn; alpha - alpha_y at yield; the trial spring margin |F_s| - mu F_n where sliding starts;
@@ -68,7 +69,7 @@ def event_value(kind, f, s, st, lo, lot, probe, probe_t, p, ints, h, scratch, ex
     return -probe_t[T_HELD] / STICK_PROBE
 
 
-@njit(cache=True)
+@compiled
 def margin_at(f, s, st, lo, lot, p, ints, h, scratch, which, ext):
     """The margin `which` (T_MARGIN: |F_s| - mu F_n; T_HELD: what holds the cone) after a trial step of fraction
     f > 0 (at f = 0 the start's own margin holds: a step of length 0 would end the contact at first touch, where a
@@ -77,7 +78,7 @@ def margin_at(f, s, st, lo, lot, p, ints, h, scratch, which, ext):
     return lot[which]
 
 
-@njit(cache=True)
+@compiled
 def locate_event(kind, s, st, lo, lot, probe, probe_t, p, ints, h, scratch, ext):
     """Step fraction at which the event happens in the step from (s, st) (Illinois false position on the event
     value, trial steps in lo, lot and probe, probe_t); -1 if the value does not change sign over the step."""
@@ -112,7 +113,7 @@ def illinois(lo_f, hi_f, g_lo, g_hi, side, mid, g_mid, on_low_side):
     return lo_f, hi_f, g_lo, g_hi, -1
 
 
-@njit(cache=True)
+@compiled
 def locate_release(s, st, lo, lot, p, ints, h, scratch, indicator, ext):
     """Step fraction of the release (alpha = 0, or F = 0 without tension) in the step from (s, st) whose end value is
     `indicator` <= 0: Illinois false position; the fraction returned still has contact."""
@@ -132,7 +133,7 @@ def locate_release(s, st, lo, lot, p, ints, h, scratch, indicator, ext):
     return frac_lo
 
 
-@njit(cache=True)
+@compiled
 def split_at_event(s, st, o, ot, lo, lot, at_event, at_event_t, p, ints, h, scratch, a_peak, f_peak, h_full,
                    indicator, ext):
     """Redo the step (s, st) -> (o, ot) of length h in two at a change of regime inside it, so that the error stays

@@ -5,6 +5,7 @@ import math
 
 from numba import njit
 
+from ..jit import compiled
 from ..submodels.tangential.state import N_TSTATE, T_HELD
 from . import codes as C
 from .dispatch import NORMAL_HISTORY, TANGENTIAL_NONE, normal_force, normal_kink, normal_step, tangential_stiffness
@@ -16,7 +17,7 @@ from .state import (N_STATE, S_ALPHA, S_AMAX, S_C, S_FEL, S_FN, S_FS, S_FT, S_HI
 ONSET_OVERLAP = 1e-12     # overlap, in units of V_n dt, at which first touch's friction is judged
 
 
-@njit(cache=True)
+@compiled
 def damping_power(alpha, power):
     """alpha^p for the dashpot exponents in use (0, 1/4, 1/2) without the cost of a general pow."""
     if power == 0.0:
@@ -28,7 +29,7 @@ def damping_power(alpha, power):
     return alpha ** power
 
 
-@njit(cache=True)
+@compiled
 def dashpot_potential(c0, power, alpha):
     """D(alpha) = c0 alpha^(p+1)/(p+1): dD/dt = c(alpha) alpha_dot, so the dashpot impulse depends on positions only."""
     if alpha <= 0.0 or c0 == 0.0:
@@ -36,14 +37,14 @@ def dashpot_potential(c0, power, alpha):
     return c0 * alpha * damping_power(alpha, power) / (power + 1.0)
 
 
-@njit(cache=True)
+@compiled
 def drift(alpha, rate0, c_alpha, h):
     """Linearised implicit midpoint for alpha' = (u_half - D(alpha))/m, u frozen: D(mid) = D(alpha_n) + c_n (x - alpha)/2
     gives x = alpha + h rate0 / (1 + h c_n/(2m)); c_alpha = h c_n/(2m). Unconditionally stable, O(h^3) locally."""
     return alpha + h * rate0 / (1.0 + c_alpha)
 
 
-@njit(cache=True)
+@compiled
 def step_leapfrog(s, st, o, ot, p, ints, h, scratch, ext):
     """YADE NewtonIntegrator: forces from the overlap at x(t) and the half-step velocities v(t - h/2), then
     v(t + h/2) = v(t - h/2) + h F/m and x(t + h) = x(t) + h v(t + h/2). A contact exists while the overlap is
@@ -81,7 +82,7 @@ def step_leapfrog(s, st, o, ot, p, ints, h, scratch, ext):
     return 1.0 if in_contact else -1.0
 
 
-@njit(cache=True)
+@compiled
 def step(s, st, o, ot, p, ints, h, scratch, ext):
     """Advance state (s, st) by h into (o, ot); returns the end-of-contact indicator (contact while > 0).
 
@@ -116,7 +117,7 @@ def step(s, st, o, ot, p, ints, h, scratch, ext):
     return indicator
 
 
-@njit(cache=True)
+@compiled
 def step_velocity_verlet(s, st, o, ot, p, ints, h, scratch, ext):
     """LIGGGHTS nve/sphere + wall/gran: half kick, drift, forces from the half-step velocities, half kick.
 
@@ -143,7 +144,7 @@ def step_velocity_verlet(s, st, o, ot, p, ints, h, scratch, ext):
     return alpha
 
 
-@njit(cache=True)
+@compiled
 def step_leapfrog_sphere(s, st, o, ot, p, ints, h, scratch, ext):
     """YADE Luding against a fixed sphere of radius R_big standing in for the wall, with YADE's own geometry:
     overlap (R_big + R) - |x2 - x1|, normal along x2 - x1, contact point in the middle of the overlap, shear force
@@ -210,7 +211,7 @@ def loading_kink(p, ints, ext):
     return normal_kink(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], ext)
 
 
-@njit(cache=True)
+@compiled
 def paper_first_touch(s, st, p, ints, ext):
     """The paper scheme's tangential force at first touch with a tangential dashpot: -c_t V_s capped by mu F_n
     (finite where both start finite: a constant normal dashpot and a constant k_t), and whether spring and dashpot

@@ -1,12 +1,12 @@
 """The tangential spring's pieces every kernel shares: the Coulomb cap, the mean contact radius of a step and the
 trial spring force from the registered kernels (dispatch.tangential_spring)."""
-from numba import njit
 
+from ..jit import compiled
 from ..submodels.tangential.state import T_AOLD
 from .dispatch import tangential_spring
 
 
-@njit(cache=True)
+@compiled
 def cap(force, limit):
     """Coulomb cap |F_t| <= mu F_n."""
     if force > limit:
@@ -16,7 +16,7 @@ def cap(force, limit):
     return force
 
 
-@njit(cache=True)
+@compiled
 def mean_radius(a_old, a):
     """Mean of a = sqrt(R alpha) over a step in which alpha changes linearly: 2/3 (a1^3 - a0^3)/(a1^2 - a0^2); exact
     at first touch (a ~ sqrt(t), where the trapezoid's error would sum to O(h^1.5)), second order elsewhere."""
@@ -26,7 +26,7 @@ def mean_radius(a_old, a):
     return (2.0 / 3.0) * (a_old * a_old + a_old * a + a * a) / total
 
 
-@njit(cache=True)
+@compiled
 def spring_force(code, f_s, dd, a, p1, mu, n_new, n_old, st, scratch, midpoint):
     """Trial spring force after the increment dd, before the Coulomb cap; updates the history `st`. `a` is the
     contact radius at the end of the step, st[T_AOLD] the one at its start; with `midpoint` (the paper scheme) the

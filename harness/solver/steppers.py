@@ -5,6 +5,7 @@ import math
 import numpy as np
 from numba import njit
 
+from ..jit import compiled
 from . import codes as C
 from .contact_ode import A_FN, M_TANGENTIAL, N_Y, STICK, Y_ALPHA, Y_FS, coulomb_cone, evaluate, spring_w_of
 from .dispatch import TANGENTIAL_IMPLICIT
@@ -23,7 +24,7 @@ DP_E = np.array([71.0 / 57600.0, 0.0, -71.0 / 16695.0, 71.0 / 1920.0, -17253.0 /
                  -1.0 / 40.0])
 STAGES = 7
 
-@njit(cache=True)
+@compiled
 def dp_step(p, ints, y, mode, h, k, y_new, stage, aux, scale, tol, ext):
     """One Dormand-Prince step of length h from y (k[0] = dy/dt at y) into y_new, k[6] = dy/dt at y_new (FSAL),
     aux the forces at y_new; returns the error norm: max over components of |error| / (tol x its scale)."""
@@ -47,7 +48,7 @@ def dp_step(p, ints, y, mode, h, k, y_new, stage, aux, scale, tol, ext):
     return err
 
 
-@njit(cache=True)
+@compiled
 def hermite(y, y_end, f_start, f_end, h, theta, out):
     """State at step fraction theta on the cubic Hermite interpolant of the step (values and rates at both ends)."""
     h00, h10 = (1.0 + 2.0 * theta) * (1.0 - theta) ** 2, theta * (1.0 - theta) ** 2
@@ -87,7 +88,7 @@ def solves_for_w(ints, mode, y, w):
             and (w < W_SWITCH or y[Y_ALPHA] <= 0.0))
 
 
-@njit(cache=True)
+@compiled
 def state_of(p, ints, z, mode, use_w, y, dy, aux, ext):
     """y = Phi(z) and dy/dt there: z is y, with w = x^(1/3) in place of F_s if use_w."""
     for i in range(N_Y):
@@ -95,7 +96,7 @@ def state_of(p, ints, z, mode, use_w, y, dy, aux, ext):
     evaluate(p, ints, y, mode, z[Y_FS] if use_w else math.nan, dy, aux, ext)
 
 
-@njit(cache=True)
+@compiled
 def lu_factor(a, pivot):
     """In-place LU factorisation with partial pivoting of the small square matrix a; a zero pivot (an unknown the
     equations do not see, e.g. w where N = 0 and V_s = 0) is left for lu_solve to skip."""
@@ -118,7 +119,7 @@ def lu_factor(a, pivot):
                 a[row, j] -= factor * a[col, j]
 
 
-@njit(cache=True)
+@compiled
 def lu_solve(a, pivot, b):
     """Solve in place with lu_factor's result; a zero pivot's unknown is set to 0."""
     n = a.shape[0]
@@ -134,7 +135,7 @@ def lu_solve(a, pivot, b):
         b[col] = acc / a[col, col] if a[col, col] != 0.0 else 0.0
 
 
-@njit(cache=True)
+@compiled
 def jacobian(p, ints, z, mode, use_w, scale, d_phi, d_rate, work, aux, ext):
     """dPhi/dz and d(f o Phi)/dz at z by forward differences; returns the evaluations spent."""
     base_y, base_f, ys, fs, zz = work[6], work[7], work[2], work[5], work[8]
@@ -151,7 +152,7 @@ def jacobian(p, ints, z, mode, use_w, scale, d_phi, d_rate, work, aux, ext):
     return N_Y + 1
 
 
-@njit(cache=True)
+@compiled
 def newton_matrix(jac, which, hg, newton, pivot):
     """LU factors of dPhi/dz - h gamma d(f o Phi)/dz from Jacobian `which`."""
     for i in range(N_Y):
@@ -160,7 +161,7 @@ def newton_matrix(jac, which, hg, newton, pivot):
     lu_factor(newton, pivot)
 
 
-@njit(cache=True)
+@compiled
 def sdirk_step(p, ints, y, w, mode, h, k, y_new, work, jac, lu, pivot, aux, scale, tol, spring, ext):
     """One SDIRK4(3) step of length h from y (k[0] = dy/dt at y; w its Walton-Braun spring's x^(1/3)) into
     y_new, k[1..5] the stage rates, k[6] = dy/dt at y_new, spring[0] = w at y_new. Each stage is solved by

@@ -54,7 +54,7 @@ def imports(kernels, family):
 
 def chain(name, family, kernels, arguments, default, extension=None):
     """One dispatch function: an if-chain over the kernels that define `name`, then the default."""
-    decorator = "@njit(cache=True)"
+    decorator = "@compiled"
     tail = ", ext" if family == "normal" else ""
     lines = [decorator, f"def {family}_{name}(code, {arguments}{tail}):"]
     for code, kernel in enumerate(kernels):
@@ -75,7 +75,7 @@ def chain(name, family, kernels, arguments, default, extension=None):
 def normal_step():
     """An incremental law's own step; every other kernel's force, its history untouched."""
     arguments = "p1, p2, p3, p4, radius, alpha, alpha_old, f_old, alpha_max, history, new_history"
-    lines = ["@njit(cache=True)", f"def normal_step(code, {arguments}, ext):"]
+    lines = ["@compiled", f"def normal_step(code, {arguments}, ext):"]
     for code, kernel in enumerate(NORMAL_KERNELS):
         if "step" in dict(kernel.functions):
             lines += [f"    if code == {code}:", f"        return {alias('normal', kernel)}.step({arguments})"]
@@ -94,8 +94,9 @@ def source():
         '"""Generated from harness/submodels/registry.py by `python -m harness.submodels.generate`: do not edit.\n\n'
         "Kernel codes, capability tables and the dispatch of every compiled sub-model function (docs/design.md).\n"
         '"""',
-        "import math\n\nimport numpy as np\nfrom numba import njit\n",
-        "\n".join(imports(NORMAL_KERNELS, "normal") + imports(TANGENTIAL_KERNELS, "tangential")),
+        "import math\n\nimport numpy as np\n",
+        "\n".join(["from ..jit import compiled"] + imports(NORMAL_KERNELS, "normal")
+                  + imports(TANGENTIAL_KERNELS, "tangential")),
         "from .extension import BELOW, FORCE, KINK, RESIDUAL, SLOPE, call",
         "",
         f"N_NORMAL = {len(NORMAL_KERNELS)}",

@@ -1,8 +1,8 @@
 """Hertz F = 4/3 E* R^1/2 alpha^3/2 (paper eq. 1)."""
 import math
 
-from numba import njit
 
+from ...jit import compiled
 from .. import calibration as cal
 from ..base import NormalModel, NormalParameters
 from .hertz_shapes import hertz, hertz_slope
@@ -33,12 +33,12 @@ class Hertz(NormalModel):
         return 2.0 * contact.E_star * math.sqrt(contact.radius * alpha), alpha
 
 
-@njit(cache=True)
+@compiled
 def force(p1, p2, p3, p4, radius, alpha, alpha_max):
     """Hertz F = 4/3 E* R^1/2 alpha^3/2, a = sqrt(R alpha)."""
     return hertz(p1, radius, alpha)
 
 
-@njit(cache=True)
+@compiled
 def slope(p1, p2, p3, p4, radius, alpha, loading, f, a):
     return hertz_slope(p1, f, a)

@@ -1,8 +1,8 @@
 """LIGGGHTS hooke/hysteresis without adhesion (an engine dialect's normal law, docs/liggghts-dialect.md)."""
 import math
 
-from numba import njit
 
+from ...jit import compiled
 from .. import calibration as cal
 from ..base import NormalModel, NormalParameters
 
@@ -32,7 +32,7 @@ class LudingHysteresis(NormalModel):
         return k1 * (2.0 / e_n ** 2 - 1.0), 2.0 * speed * math.sqrt(contact.mass / k1)
 
 
-@njit(cache=True)
+@compiled
 def force(p1, p2, p3, p4, radius, alpha, alpha_max):
     """min(k1 d, k2 (d - d_max) + k1 d_max), k2 = k1 + (k2max - k1) d_max/d_lim; beyond d_lim the line
     k2max (d - d_lim) + k1 d_lim (read in LIGGGHTS 3.8.0, reproduced exactly)."""
@@ -44,7 +44,7 @@ def force(p1, p2, p3, p4, radius, alpha, alpha_max):
     return (p1 * alpha if f >= p1 * alpha else f), math.sqrt(radius * alpha)
 
 
-@njit(cache=True)
+@compiled
 def kink(p1, p2, p3, p4):
     """The loading curve becomes a straight line at d_lim."""
     return p3

@@ -1,8 +1,8 @@
 """LIGGGHTS thornton_ning with surfaceEnergy 0 (an engine dialect's incremental normal law, docs/liggghts-dialect.md)."""
 import math
 
-from numba import njit
 
+from ...jit import compiled
 from .thornton import Thornton
 
 NAME = "liggghts-thornton-ning"
@@ -21,7 +21,7 @@ class ThorntonNing(Thornton):
         return (contact.E_star, math.pi * p_y * contact.radius / (2.0 * contact.E_star), 0.0, 0.0)
 
 
-@njit(cache=True)
+@compiled
 def increment(E_star, a_y, radius, alpha, alpha_old, f_old, alpha_max, f_max, yielding, detached_at):
     """F += 2E* a (d - d_old) with a = sqrt(R d) at the new overlap, a = a_y once yielded while loading; unloading
     with R unchanged; F < 0 -> 0 and detached until d returns. Returns (F, a, yielding, detached_at, f_max)."""
@@ -45,7 +45,7 @@ def increment(E_star, a_y, radius, alpha, alpha_old, f_old, alpha_max, f_max, yi
     return f, a, yielding, detached_at, (f if f > f_max else f_max)
 
 
-@njit(cache=True)
+@compiled
 def step(p1, p2, p3, p4, radius, alpha, alpha_old, f_old, alpha_max, history, new_history):
     """One step of the incremental law: (F, a) and the history after it (new_history)."""
     f, a, new_history[YIELDED], new_history[DETACHED_AT], new_history[F_MAX] = increment(

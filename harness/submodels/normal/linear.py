@@ -2,8 +2,8 @@
 overlap (LIGGGHTS hooke's) (docs/laws.md#normal-laws)."""
 import math
 
-from numba import njit
 
+from ...jit import compiled
 from ...errors import UserError
 from .. import calibration as cal
 from ..base import NormalModel, NormalParameters
@@ -43,19 +43,19 @@ class LinearSpring(NormalModel):
         return k, speed * math.sqrt(contact.mass / k)
 
 
-@njit(cache=True)
+@compiled
 def force(p1, p2, p3, p4, radius, alpha, alpha_max):
     """F = k_n alpha, a = sqrt(R alpha)."""
     return p1 * alpha, math.sqrt(radius * alpha)
 
 
-@njit(cache=True)
+@compiled
 def below(p1, p2, p3, p4, alpha):
     """At alpha <= 0 the spring pulls: F = k_n alpha (the force that ends a contact with tension)."""
     return p1 * alpha
 
 
-@njit(cache=True)
+@compiled
 def slope(p1, p2, p3, p4, radius, alpha, loading, f, a):
     """dF/dalpha = k_n; a = sqrt(R alpha): d(ln a)/dalpha = 1/(2 alpha)."""
     return p1, 0.5 / alpha

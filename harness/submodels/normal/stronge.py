@@ -2,8 +2,8 @@
 unloading with R_c (docs/laws.md#normal-laws)."""
 import math
 
-from numba import njit
 
+from ...jit import compiled
 from .hertz_shapes import FOUR_THIRDS, hertz, hertz_slope
 from .thornton import Thornton
 
@@ -23,7 +23,7 @@ class Stronge(Thornton):
         return (contact.E_star, alpha_y, f_y, 0.0)
 
 
-@njit(cache=True)
+@compiled
 def unloading(E_star, alpha_y, f_y, radius, alpha_max):
     """Stronge's unloading from alpha_max > alpha_y: radius R_c = 4/3 E* a_c^3/F_c and residual overlap
     alpha_max - a_c^2/R_c, F_c = F_y (2 alpha_max/alpha_y - 1), a_c = a_y (F_c/F_y)^1/2."""
@@ -33,7 +33,7 @@ def unloading(E_star, alpha_y, f_y, radius, alpha_max):
     return r_c, alpha_max - a_c_sq / r_c
 
 
-@njit(cache=True)
+@compiled
 def force(p1, p2, p3, p4, radius, alpha, alpha_max):
     """Hertz to alpha_y, F_y (2 alpha/alpha_y - 1), Hertz unloading with R_c (slots E*, alpha_y, F_y)."""
     a_y = math.sqrt(radius * p2)
@@ -51,20 +51,20 @@ def force(p1, p2, p3, p4, radius, alpha, alpha_max):
     return hertz(p1, r_c, delta)
 
 
-@njit(cache=True)
+@compiled
 def residual(p1, p2, p3, p4, radius, alpha_max):
     if alpha_max > p2:
         return unloading(p1, p2, p3, radius, alpha_max)[1]
     return 0.0
 
 
-@njit(cache=True)
+@compiled
 def kink(p1, p2, p3, p4):
     """The loading curve bends at alpha_y."""
     return p2
 
 
-@njit(cache=True)
+@compiled
 def slope(p1, p2, p3, p4, radius, alpha, loading, f, a):
     """2 F_y/alpha_y on the plastic line, where a = a_y (F/F_y)^1/2; Hertzian elsewhere."""
     if loading and alpha >= p2:

@@ -2,8 +2,8 @@
 unloading with the radius R_p (docs/laws.md#normal-laws)."""
 import math
 
-from numba import njit
 
+from ...jit import compiled
 from .. import calibration as cal
 from ..base import NormalModel, NormalParameters
 from .hertz import Hertz
@@ -57,7 +57,7 @@ class Thornton(NormalModel):
         return max(k_p, k_hertz, 0.6 * f_max ** 2 / (e_n ** 2 * energy)), alpha
 
 
-@njit(cache=True)
+@compiled
 def unloading(E_star, p_y, alpha_y, f_y, radius, alpha_max):
     """Thornton's unloading from alpha_max > alpha_y: radius R_p = 4/3 E* a*^3/F* and residual overlap
     alpha_max - a*^2/R_p, a*^2 = R alpha_max, F* = F_y + pi p_y R (alpha_max - alpha_y)."""
@@ -67,7 +67,7 @@ def unloading(E_star, p_y, alpha_y, f_y, radius, alpha_max):
     return r_p, alpha_max - a_star_sq / r_p
 
 
-@njit(cache=True)
+@compiled
 def force(p1, p2, p3, p4, radius, alpha, alpha_max):
     """Hertz to alpha_y, F_y + pi p_y R (alpha - alpha_y), Hertz unloading with R_p (slots E*, p_y, alpha_y, F_y)."""
     if alpha >= alpha_max:
@@ -83,7 +83,7 @@ def force(p1, p2, p3, p4, radius, alpha, alpha_max):
     return hertz(p1, r_p, delta)
 
 
-@njit(cache=True)
+@compiled
 def residual(p1, p2, p3, p4, radius, alpha_max):
     """The dent alpha_p of the unloading curve (0 below yield)."""
     if alpha_max > p3:
@@ -91,13 +91,13 @@ def residual(p1, p2, p3, p4, radius, alpha_max):
     return 0.0
 
 
-@njit(cache=True)
+@compiled
 def kink(p1, p2, p3, p4):
     """The loading curve bends at alpha_y."""
     return p3
 
 
-@njit(cache=True)
+@compiled
 def slope(p1, p2, p3, p4, radius, alpha, loading, f, a):
     """pi p_y R on the plastic line (a = sqrt(R alpha)), Hertzian elsewhere."""
     if loading and alpha >= p3:

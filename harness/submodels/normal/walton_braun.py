@@ -2,8 +2,8 @@
 e = sqrt(K1/K2) (docs/laws.md#normal-laws)."""
 import math
 
-from numba import njit
 
+from ...jit import compiled
 from .. import calibration as cal
 from ..base import NormalModel, NormalParameters
 
@@ -31,7 +31,7 @@ class WaltonBraun(NormalModel):
         return max(k1, k2), speed * math.sqrt(contact.mass / k1)
 
 
-@njit(cache=True)
+@compiled
 def force(p1, p2, p3, p4, radius, alpha, alpha_max):
     """Loading K1 alpha; unloading K2 (alpha - alpha0), alpha0 = alpha_max (1 - K1/K2) (Walton & Braun 1986)."""
     if alpha >= alpha_max:
@@ -40,13 +40,13 @@ def force(p1, p2, p3, p4, radius, alpha, alpha_max):
     return p2 * (alpha - alpha0), math.sqrt(radius * alpha)
 
 
-@njit(cache=True)
+@compiled
 def residual(p1, p2, p3, p4, radius, alpha_max):
     """The dent alpha_max (1 - K1/K2) where the unloading force returns to 0."""
     return alpha_max * (1.0 - p1 / p2)
 
 
-@njit(cache=True)
+@compiled
 def slope(p1, p2, p3, p4, radius, alpha, loading, f, a):
     """K1 loading, K2 unloading; a = sqrt(R alpha)."""
     return (p1 if loading else p2), 0.5 / alpha

@@ -1,7 +1,7 @@
 """YADE Law2_ScGeom_LudingPhys_Basic with kc = 0, against a huge fixed sphere (an engine dialect's incremental normal
 law, docs/yade-dialect.md)."""
-from numba import njit
 
+from ...jit import compiled
 from ..base import NormalParameters
 from .liggghts_hysteresis import LudingHysteresis
 
@@ -39,7 +39,7 @@ class YadeLuding(LudingHysteresis):
         return d_p_max * (kp - k1) / (kp * 2.0 * self.reduced_radius(contact))
 
 
-@njit(cache=True)
+@compiled
 def luding(k1, kp, delt_p_max, delt_p_null, delt, delt_max, delt_null, delt_prev):
     """k2 from the previous largest overlap, k2 = k1 + (kp - k1) DeltMax/DeltPMax (<= kp); a new maximum moves
     DeltNull = min((1 - k1/k2) DeltMax, DeltPNull); force k1 d while k2 (d - DeltNull) >= k1 d (k2 line beyond
@@ -65,7 +65,7 @@ def luding(k1, kp, delt_p_max, delt_p_null, delt, delt_max, delt_null, delt_prev
     return force, delt_max, delt_null
 
 
-@njit(cache=True)
+@compiled
 def step(p1, p2, p3, p4, radius, alpha, alpha_old, f_old, alpha_max, history, new_history):
     """One step of YADE's Luding law at overlap alpha: (F, 0) and its history after the step."""
     f, new_history[DELT_MAX], new_history[DELT_NULL] = luding(p1, p2, p3, p4, alpha, history[DELT_MAX],

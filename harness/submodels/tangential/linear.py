@@ -1,6 +1,6 @@
 """Linear tangential spring: dF_t = -k_t V_s dt, k_t = q k_n, capped by Coulomb (docs/laws.md#tangential-laws)."""
-from numba import njit
 
+from ...jit import compiled
 from ..base import TangentialModel
 from .ratio import parse_ratio, ratio_label, ratio_value
 
@@ -21,13 +21,13 @@ class LinearTangential(TangentialModel):
         return ratio_value(self.kt_kn, contact) * k_n
 
 
-@njit(cache=True)
+@compiled
 def stiffness(p1, a):
     """k_t: the constant p1."""
     return p1
 
 
-@njit(cache=True)
+@compiled
 def spring(f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, scratch, midpoint):
     """F_s - k_t dd."""
     return f_s - p1 * dd

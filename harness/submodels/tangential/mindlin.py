@@ -2,8 +2,8 @@
 total displacement (LIGGGHTS) (docs/laws.md#tangential-laws)."""
 import math
 
-from numba import njit
 
+from ...jit import compiled
 from ...errors import UserError
 from ..base import TangentialModel
 from .state import T_AUX1
@@ -27,19 +27,19 @@ class Mindlin(TangentialModel):
         return contact.G_star
 
 
-@njit(cache=True)
+@compiled
 def stiffness(p1, a):
     """k_t = 8 G* a (p1 = G*)."""
     return 8.0 * p1 * a
 
 
-@njit(cache=True)
+@compiled
 def incremental(f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, scratch, midpoint):
     """F_s - 8 G* a dd, not reduced as a falls (YADE)."""
     return f_s - stiffness(p1, a_mid) * dd
 
 
-@njit(cache=True)
+@compiled
 def rescale(f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, scratch, midpoint):
     """Paper eq. 18b: on unloading (a < a_old) F_s <- F_s a/a_old, split around the increment -8 G* a dd."""
     if a >= a_old:
@@ -48,14 +48,14 @@ def rescale(f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, scratch, midpoin
     return (f_s * half - 8.0 * p1 * a_mid * dd) * half
 
 
-@njit(cache=True)
+@compiled
 def total(f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, scratch, midpoint):
     """F = -8 G* a xi, xi the total tangential displacement (LIGGGHTS)."""
     st[T_AUX1] += dd
     return -8.0 * p1 * a * st[T_AUX1]
 
 
-@njit(cache=True)
+@compiled
 def total_after_cap(f_s, p1, a, st):
     """Keep the total displacement consistent with a capped force: xi = -F/k_t."""
     k_t = 8.0 * p1 * a

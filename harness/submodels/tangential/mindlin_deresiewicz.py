@@ -1,7 +1,7 @@
 """Mindlin-Deresiewicz as Thornton & Yin (1991): dT = 8 G* a theta_k dd + (-1)^k mu dN (1 - theta_k)
 (docs/laws.md#tangential-laws)."""
-from numba import njit
 
+from ...jit import compiled
 from .mindlin import Mindlin, stiffness
 from .state import N_TSTATE, T_AUX1, T_AUX2, T_DIR, T_MODE
 
@@ -19,7 +19,7 @@ class MindlinDeresiewicz(Mindlin):
         return self.name
 
 
-@njit(cache=True)
+@compiled
 def mindlin_deresiewicz(f_s, dd, k_t, mu, n_new, n_old, st, t_eval):
     """Thornton & Yin (1991): dT = k_t theta_k dd + (-1)^k mu dN (1 - theta_k), k = 0/1/2 (docs/laws.md).
 
@@ -61,7 +61,7 @@ def mindlin_deresiewicz(f_s, dd, k_t, mu, n_new, n_old, st, t_eval):
     return -t * sgn
 
 
-@njit(cache=True)
+@compiled
 def spring(f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, scratch, midpoint):
     """A predictor-corrector on T: the increment at the mid-step T."""
     for k in range(N_TSTATE):

@@ -2,8 +2,8 @@
 'tangential no_history'); needs a tangential-damping rule."""
 import math
 
-from numba import njit
 
+from ...jit import compiled
 from ...errors import UserError
 from ..base import TangentialModel
 
@@ -28,17 +28,17 @@ class ViscousTangential(TangentialModel):
         return k_n if self.form == "linear" else contact.G_star
 
 
-@njit(cache=True)
+@compiled
 def linear_stiffness(p1, a):
     return p1
 
 
-@njit(cache=True)
+@compiled
 def mindlin_stiffness(p1, a):
     return 8.0 * p1 * a
 
 
-@njit(cache=True)
+@compiled
 def friction(k_t, c_factor, slip, limit):
     """F = -sign(V_s) min(c_t |V_s|, mu F_n), c_t = c_factor sqrt(k_t)."""
     c_t = c_factor * math.sqrt(k_t)

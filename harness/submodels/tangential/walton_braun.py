@@ -3,8 +3,8 @@ k_t0 [1 - (T* - T)/(mu N + T*)]^1/3 while it falls, T* set at each reversal and 
 (docs/laws.md#tangential-laws). Stiff at full mobilisation: the converged mode integrates it implicitly in
 w = x^1/3, x = (mu N - d T)/(mu N - d T*), where F_s = -d mu N (1 - (1 - d sigma*) w^3) and F_s' = -k_t0 w V_s."""
 import numpy as np
-from numba import njit
 
+from ...jit import compiled
 from .linear import LinearTangential
 from .ratio import ratio_label
 from .state import N_TSTATE, T_AUX1, T_DIR
@@ -20,13 +20,13 @@ class WaltonBraunTangential(LinearTangential):
         return f"walton-braun(k_t0/k_n={ratio_label(self.kt_kn)})"
 
 
-@njit(cache=True)
+@compiled
 def stiffness(p1, a):
     """k_t0 (the initial stiffness; the kernel's spring lowers it towards full mobilisation)."""
     return p1
 
 
-@njit(cache=True)
+@compiled
 def walton_braun_history(t, dd, n_new, n_old, st):
     """Walton & Braun's turning-point force T*: scaled with the normal force, reset to T at a reversal of the
     displacement; returns the direction of this increment (+1, -1)."""
@@ -39,7 +39,7 @@ def walton_braun_history(t, dd, n_new, n_old, st):
     return direction
 
 
-@njit(cache=True)
+@compiled
 def walton_braun(f_s, dd, k_t0, mu, n_new, n_old, st, t_eval):
     """Walton & Braun (1986): k_t = k_t0 [1 - (T - T*)/(mu N - T*)]^1/3 rising, [1 - (T* - T)/(mu N + T*)]^1/3 falling.
 
@@ -57,7 +57,7 @@ def walton_braun(f_s, dd, k_t0, mu, n_new, n_old, st, t_eval):
     return -(t + k_t * dd)
 
 
-@njit(cache=True)
+@compiled
 def cubic_root(c, rest):
     """The root z >= 0 of z^3 + c z = rest (c >= 0; 0 if rest <= 0): Newton from z = rest^(1/3), where
     f(z) = z^3 + c z - rest >= 0; f is increasing and convex there, so the iterates fall monotonically onto it."""
@@ -72,7 +72,7 @@ def cubic_root(c, rest):
     return z
 
 
-@njit(cache=True)
+@compiled
 def walton_braun_implicit(f_s, dd, k_t0, mu, n_new, n_old, st):
     """Walton & Braun's rate form dT = k_t0 x^1/3 dd, x = (mu N - T)/(mu N - T*) rising ((mu N + T)/(mu N + T*)
     falling), by the trapezoidal rule in x at the mean normal force: x1 = x0 - c (x0^1/3 + x1^1/3), c = k_t0 |dd| /
@@ -99,7 +99,7 @@ def walton_braun_implicit(f_s, dd, k_t0, mu, n_new, n_old, st):
     return -direction * (mu_n - span * z * z * z)
 
 
-@njit(cache=True)
+@compiled
 def spring(f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, scratch, midpoint):
     """The paper scheme's implicit trapezoid in x (midpoint), or the engines' predictor-corrector on T."""
     if midpoint:
@@ -110,13 +110,13 @@ def spring(f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, scratch, midpoint
     return walton_braun(f_s, dd, p1, mu, n_new, n_old, st, 0.5 * (f_s + predicted))
 
 
-@njit(cache=True)
+@compiled
 def force_from_w(d, star, cone, w):
     """F_s of the sticking spring at w: -d mu N (1 - (1 - d sigma*) w^3)."""
     return -d * cone * (1.0 - (1.0 - d * star) * w * w * w)
 
 
-@njit(cache=True)
+@compiled
 def w_from_force(d, star, cone, f_s):
     """w = x^(1/3) of the sticking spring from F_s: x = (mu N + d F_s)/((1 - d sigma*) mu N); 1 where mu N = 0."""
     share = 1.0 - d * star
@@ -125,7 +125,7 @@ def w_from_force(d, star, cone, f_s):
     return 1.0
 
 
-@njit(cache=True)
+@compiled
 def edge_w(d, star, sign):
     """w of the spring held on the cone's edge F_s = sigma mu N: x = (1 + d sigma)/(1 - d sigma*), 0 on the loading
     side; 0 too where T* itself is at full mobilisation."""
@@ -133,7 +133,7 @@ def edge_w(d, star, sign):
     return np.cbrt((1.0 + d * sign) / share) if share > 0.0 else 0.0
 
 
-@njit(cache=True)
+@compiled
 def onset_w(p1, v_s, rise):
     """w at first touch where mu N rises from 0 at the rate `rise`: 1 - x = beta x^(1/3), beta = k_t0 |V_s|/rise,
     i.e. w^3 + beta w = 1 (0 where mu N does not rise: the spring rides the cone)."""
