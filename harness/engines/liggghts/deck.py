@@ -10,6 +10,7 @@ import numpy as np
 from ...version import __version__
 from ...render import render
 from ..batches import max_steps_of, run_grouped
+from ..dumps import read_final
 from ..runner import EngineFailure, run_engine
 from .binary import binary
 from .dialect import COUNTERPARTS
@@ -95,33 +96,8 @@ def deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, 
 
 
 def read_dump(path, n_atoms):
-    """Final (z, vx, vz, omegay) per atom id from the dump; EngineFailure when it is missing, cut (its last line must
-    end, and its rows must be the number of atoms its header declares) or holds another number of spheres."""
-    try:
-        with open(path) as handle:
-            text = handle.read()
-    except OSError:
-        raise EngineFailure("LIGGGHTS wrote no final dump") from None
-    lines = text.splitlines()
-    try:
-        declared = int(lines[lines.index("ITEM: NUMBER OF ATOMS") + 1])
-        start = next(i for i, line in enumerate(lines) if line.startswith("ITEM: ATOMS")) + 1
-        rows = np.array([[float(x) for x in line.split()] for line in lines[start:] if line.strip()])
-    except (StopIteration, ValueError, IndexError):
-        raise EngineFailure("LIGGGHTS final dump is malformed") from None
-    ended = text.endswith("\n")
-    if not ended or len(rows) < declared:
-        complete = len(rows) - (0 if ended else 1)
-        raise EngineFailure(f"LIGGGHTS final dump is cut short: {complete} complete rows of {declared}"
-                            + ("" if ended else ", the last unterminated"))
-    if rows.ndim != 2 or rows.shape[1] != 5 or len(rows) != declared:
-        raise EngineFailure(f"LIGGGHTS final dump is malformed: {len(rows)} rows where its header says {declared}")
-    if declared != n_atoms:
-        raise EngineFailure(f"LIGGGHTS final dump holds {declared} spheres where the deck made {n_atoms}")
-    rows = rows[np.argsort(rows[:, 0])]
-    if not np.array_equal(rows[:, 0], np.arange(1, n_atoms + 1)):
-        raise EngineFailure("LIGGGHTS final dump lacks some sphere ids")
-    return rows[:, 1:]
+    """Final (z, vx, vz, omegay) per atom id from LIGGGHTS' final dump (see dumps.read_final)."""
+    return read_final(path, n_atoms, "LIGGGHTS")
 
 
 def dump_rows(path):

@@ -1,7 +1,6 @@
 """Hertz F = 4/3 E* R^1/2 alpha^3/2 (paper eq. 1)."""
 import math
 
-
 from ...jit import compiled
 from .. import calibration as cal
 from ..base import NormalModel, NormalParameters

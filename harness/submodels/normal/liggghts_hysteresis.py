@@ -1,7 +1,6 @@
 """LIGGGHTS hooke/hysteresis without adhesion (an engine dialect's normal law, docs/liggghts-dialect.md)."""
 import math
 
-
 from ...jit import compiled
 from .. import calibration as cal
 from ..base import NormalModel, NormalParameters

@@ -1,7 +1,6 @@
 """LIGGGHTS thornton_ning with surfaceEnergy 0 (an engine dialect's incremental normal law, docs/liggghts-dialect.md)."""
 import math
 
-
 from ...jit import compiled
 from .thornton import Thornton
 

@@ -2,9 +2,8 @@
 overlap (LIGGGHTS hooke's) (docs/laws.md#normal-laws)."""
 import math
 
-
-from ...jit import compiled
 from ...errors import UserError
+from ...jit import compiled
 from .. import calibration as cal
 from ..base import NormalModel, NormalParameters
 

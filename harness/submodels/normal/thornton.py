@@ -2,7 +2,6 @@
 unloading with the radius R_p (docs/laws.md#normal-laws)."""
 import math
 
-
 from ...jit import compiled
 from .. import calibration as cal
 from ..base import NormalModel, NormalParameters

@@ -2,9 +2,8 @@
 total displacement (LIGGGHTS) (docs/laws.md#tangential-laws)."""
 import math
 
-
-from ...jit import compiled
 from ...errors import UserError
+from ...jit import compiled
 from ..base import TangentialModel
 from .state import T_AUX1
 
