@@ -123,7 +123,8 @@ def test_models_json_lists_every_law():
 def test_compare_without_engines_runs_the_reference_and_names_what_it_skipped(tmp_path):
     proc = harness("compare", "--model", "hertz-mindlin", "--en", "0.5", "--angles", "0:80:20", "-o",
                    str(tmp_path / "out"), env={"HARNESS_LIGGGHTS": str(tmp_path / "no-such-liggghts"),
-                                               "HARNESS_YADE_PYTHON": str(tmp_path / "no-such-python")})
+                                               "HARNESS_YADE_PYTHON": str(tmp_path / "no-such-python"),
+                                               "HARNESS_LAMMPS": str(tmp_path / "no-such-lmp")})
     assert proc.returncode == 3, proc.stderr                # nothing was compared
     assert (tmp_path / "out" / "results.csv").exists()
     html = (tmp_path / "out" / "report.html").read_text()
@@ -132,6 +133,7 @@ def test_compare_without_engines_runs_the_reference_and_names_what_it_skipped(tm
         in proc.stdout                                      # what was looked for, and where
     assert f"skipped yade: no Python interpreter at HARNESS_YADE_PYTHON={str(tmp_path / 'no-such-python')!r}" \
         in proc.stdout
+    assert f"skipped lammps: HARNESS_LAMMPS={str(tmp_path / 'no-such-lmp')!r} is not an executable file" in proc.stdout
     assert proc.stdout.splitlines()[-1] == "agreement: not checked: no engine ran"
 
 

@@ -16,7 +16,7 @@ import difflib
 import numpy as np
 import pytest
 
-from harness.engines import liggghts, yade
+from harness.engines import lammps, liggghts, yade
 from harness.engines import ENGINES
 from harness.engines.runner import EngineFailure
 from harness.laws import compose
@@ -30,8 +30,9 @@ ROUND_OFF = 1e-8                 # engine vs dialect at equal dt, relative (docs
 ANGLES = (0.0, 30.0, 60.0)
 CASES = ([("liggghts", name, {}, e_n) for name in liggghts.DIALECTS for e_n in (0.5, 0.1)]
          + [("yade", name, {}, e_n) for name in yade.DIALECTS for e_n in (0.5, 0.1)]
-         + [("yade", "linear-spring-dashpot", {"linear": "cundall-strack"}, 0.5)])
-CONTACT_OFFSET = {"liggghts": 0, "yade": -1}     # engine minus dialect contact time, in steps (docstring above)
+         + [("yade", "linear-spring-dashpot", {"linear": "cundall-strack"}, 0.5)]
+         + [("lammps", name, {}, e_n) for name in lammps.DIALECTS for e_n in (0.5, 0.1)])
+CONTACT_OFFSET = {"liggghts": 0, "yade": -1, "lammps": 0}     # engine minus dialect contact time, in steps (docstring above)
 
 
 def peak_and_bound(samples):
@@ -94,7 +95,7 @@ def test_observed_peaks_and_contact_time_agree_with_the_dialect(engine, name, op
 
 
 @pytest.mark.engine
-@pytest.mark.parametrize("engine", ["liggghts", "yade"])
+@pytest.mark.parametrize("engine", ["liggghts", "yade", "lammps"])
 def test_observing_does_not_change_the_run(engine, tmp_path):
     """Same velocities bit for bit with and without observe; unobserved rows carry no observations."""
     (tmp_path / "plain").mkdir()
@@ -109,7 +110,8 @@ def test_observing_does_not_change_the_run(engine, tmp_path):
 
 
 RENDER_CASES = ([(liggghts, name, {}) for name in liggghts.DIALECTS] + [(liggghts, "hertz-mindlin", {"limitForce": "on"})]
-                + [(yade, name, {}) for name in yade.DIALECTS] + [(yade, "linear-spring-dashpot", {"linear": "cundall-strack"})])
+                + [(yade, name, {}) for name in yade.DIALECTS] + [(yade, "linear-spring-dashpot", {"linear": "cundall-strack"})]
+                + [(lammps, name, {}) for name in lammps.DIALECTS])
 
 
 @pytest.mark.parametrize("adapter,name,options", RENDER_CASES)

@@ -1,10 +1,11 @@
 """The engines: one subpackage each behind the protocol of protocol.py, and this registry, one line each."""
-from . import liggghts, reference, yade
+from . import lammps, liggghts, reference, yade
 
 ENGINES = {
     "reference": reference,
     "liggghts": liggghts,
     "yade": yade,
+    "lammps": lammps,
 }
 EXTERNAL = tuple(name for name in ENGINES if name != "reference")     # the engines harness checks
 

@@ -9,12 +9,12 @@ from ..submodels.damping.none import NoDamping
 from ..submodels.damping.tsuji import TsujiDashpot
 from ..submodels.normal.hertz import Hertz
 from ..submodels.normal.linear import LinearSpring
-from ..submodels.registry import (DAMPING_MODELS, ENGINE_NORMAL_MODELS, NORMAL_MODELS, TANGENTIAL_MODELS,
-                                  kernel_code, kernel_of)
+from ..submodels.registry import (DAMPING_MODELS, ENGINE_NORMAL_MODELS, ENGINE_TANGENTIAL_MODELS, NORMAL_MODELS,
+                                  TANGENTIAL_MODELS, kernel_code, kernel_of)
 from ..submodels.tangential_damping import TangentialDashpot
 
 END_RULES = ("tension", "no-tension")
-INTEGRATORS = ("paper", "velocity-verlet", "leapfrog")
+INTEGRATORS = ("paper", "velocity-verlet", "leapfrog", "lammps")
 SLIPS = ("lever", "noratch", "noratch-sphere")
 LEVERS = ("0", "0.5", "1")
 SUBMODEL_KEYS = ("normal", "damping", "end", "tangential", "tangential-damping", "integrator", "lever", "slip")
@@ -29,7 +29,7 @@ class Law:
     end: str
     tangential: object
     tangential_damping: TangentialDashpot = TangentialDashpot("none")
-    integrator: str = "paper"            # time stepping: 'paper' (second order) or 'velocity-verlet' (LIGGGHTS)
+    integrator: str = "paper"            # time stepping: 'paper' (second order), 'velocity-verlet' (LIGGGHTS), 'lammps'
     lever: float = 0.0                   # lever arm R - lever * alpha for slip and torque (paper 0, LIGGGHTS 1/2)
     slip: str = "lever"                  # slip V_t - lever omega, or YADE's noRatch form with the wall's reference
                                          # radius 1e8 R ('noratch', hertzian wall) or R ('noratch-sphere')
@@ -63,9 +63,10 @@ def _damping(spec):
 
 def _tangential(spec):
     name, option = _split(spec)
-    if name not in TANGENTIAL_MODELS:
+    models = {**TANGENTIAL_MODELS, **ENGINE_TANGENTIAL_MODELS}
+    if name not in models:
         raise UserError(f"unknown tangential model {name!r}; known: {', '.join(TANGENTIAL_MODELS)}")
-    cls = TANGENTIAL_MODELS[name]
+    cls = models[name]
     return cls(option) if option else cls()
 
 

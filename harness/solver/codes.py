@@ -9,8 +9,9 @@ END_FORCE = 1              # no tension: F clipped at 0, contact ends when F ret
 INTEGRATOR_PAPER = 0            # second-order splitting on u = m alpha_dot + D(alpha), release located in-step
 INTEGRATOR_VELOCITY_VERLET = 1  # LIGGGHTS nve/sphere: forces from half-step velocities, release at the step
 INTEGRATOR_LEAPFROG = 2         # YADE NewtonIntegrator: forces at x(t) from v(t - h/2), then v, then x
+INTEGRATOR_LAMMPS = 3           # LAMMPS nve/sphere: LIGGGHTS' steps; the Coulomb cap on spring plus dashpot
 INTEGRATORS = {"paper": INTEGRATOR_PAPER, "velocity-verlet": INTEGRATOR_VELOCITY_VERLET,
-               "leapfrog": INTEGRATOR_LEAPFROG}
+               "leapfrog": INTEGRATOR_LEAPFROG, "lammps": INTEGRATOR_LAMMPS}
 
 # per-impact parameter slots (columns of the float parameter matrix)
 P_MASS, P_INERTIA, P_RADIUS, P_DT, P_GRAVITY, P_MU = 0, 1, 2, 3, 4, 5

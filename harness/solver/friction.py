@@ -27,6 +27,8 @@ def friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, in_contact, scheme
         ot[T_MARGIN] = ot[T_HELD] = abs(f_s) - limit
         if paper and p[C.P_TDAMP] != 0.0:
             f_t, f_s = damped_friction(ot, p, code, h, a, f_s, slip, limit, lever)
+        elif scheme == C.INTEGRATOR_LAMMPS:
+            f_t, f_s = capped_total(ot, p, code, a, f_s, slip, limit)
         elif abs(f_s) > limit:
             f_s = cap(f_s, limit)
             tangential_after_cap(code, f_s, p[C.P_T1], a, ot)
@@ -38,6 +40,20 @@ def friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, in_contact, scheme
     else:
         for k in range(N_TSTATE):
             ot[k] = 0.0
+    return f_t, f_s
+
+
+@njit(cache=True, inline="always")
+def capped_total(ot, p, code, a, f_s, slip, limit):
+    """LAMMPS' granular friction: the spring and its dashpot together, F_s - c_t V_s, capped at mu |F_n|; when capped,
+    the spring is set to what the capped total leaves to it, F_t + c_t V_s. Returns (F_t, F_s)."""
+    c_t = p[C.P_TDAMP] * math.sqrt(tangential_stiffness(code, p[C.P_T1], a)) if p[C.P_TDAMP] != 0.0 else 0.0
+    total = f_s - c_t * slip
+    if abs(total) <= limit:
+        return total, f_s
+    f_t = cap(total, limit)
+    f_s = f_t + c_t * slip
+    tangential_after_cap(code, f_s, p[C.P_T1], a, ot)
     return f_t, f_s
 
 

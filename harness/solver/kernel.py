@@ -55,8 +55,10 @@ def integrate_rows(first, last, params, ints, out, history, stride, ext, advance
             s[S_C] = p[C.P_DAMP_C0]
         # the spring starts at 0, inside the Coulomb cone (strictly: a slide starting in the first step is an event)
         st[T_MARGIN] = st[T_HELD] = -p[C.P_MU] * abs(s[S_FN]) - 1e-300
-        if row_ints[C.I_INTEGRATOR] == C.INTEGRATOR_VELOCITY_VERLET and row_ints[C.I_TANGENTIAL] != TANGENTIAL_NONE:
-            # LIGGGHTS' setup force at first touch (gap 0 counts as contact): the tangential dashpot alone
+        engine_setup = row_ints[C.I_INTEGRATOR] in (C.INTEGRATOR_VELOCITY_VERLET, C.INTEGRATOR_LAMMPS)
+        if engine_setup and row_ints[C.I_TANGENTIAL] != TANGENTIAL_NONE:
+            # the engines' setup force at first touch (gap 0 counts as contact): the tangential dashpot alone; LAMMPS
+            # drops it when it exceeds mu |F_n|, its spring being empty
             code = row_ints[C.I_TANGENTIAL]
             slip0 = p[C.P_VX0] - p[C.P_RADIUS] * p[C.P_W0]
             if TANGENTIAL_VISCOUS[code]:
@@ -64,6 +66,8 @@ def integrate_rows(first, last, params, ints, out, history, stride, ext, advance
                                            p[C.P_MU] * abs(s[S_FN]))
             else:
                 s[S_FT] = -p[C.P_TDAMP] * math.sqrt(tangential_stiffness(code, p[C.P_T1], 0.0)) * slip0
+            if row_ints[C.I_INTEGRATOR] == C.INTEGRATOR_LAMMPS and abs(s[S_FT]) > p[C.P_MU] * abs(s[S_FN]):
+                s[S_FT] = 0.0
         elif (row_ints[C.I_INTEGRATOR] == C.INTEGRATOR_PAPER and p[C.P_TDAMP] != 0.0
               and row_ints[C.I_TANGENTIAL] != TANGENTIAL_NONE and not TANGENTIAL_VISCOUS[row_ints[C.I_TANGENTIAL]]):
             first_touch(s, st, p, row_ints, ext)
@@ -179,7 +183,7 @@ def integrate_paper(first, last, params, ints, out, history, stride, ext):
 
 @njit(cache=True, nogil=True)
 def integrate_velocity_verlet(first, last, params, ints, out, history, stride, ext):
-    """LIGGGHTS' scheme."""
+    """LIGGGHTS' and LAMMPS' scheme."""
     integrate_rows(first, last, params, ints, out, history, stride, ext, step_velocity_verlet, no_split, no_release,
                    no_first_touch)
 
@@ -206,7 +210,7 @@ def kernel_of_batch(params, ints):
     scheme = schemes.pop()
     if scheme == C.INTEGRATOR_PAPER:
         return integrate_paper
-    if scheme == C.INTEGRATOR_VELOCITY_VERLET:
+    if scheme in (C.INTEGRATOR_VELOCITY_VERLET, C.INTEGRATOR_LAMMPS):
         return integrate_velocity_verlet
     if (params[:, C.P_BIG_R] > 0.0).any():
         return integrate_leapfrog_sphere

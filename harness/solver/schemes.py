@@ -140,7 +140,7 @@ def step_velocity_verlet(s, st, o, ot, p, ints, h, scratch, ext):
             f_n = 0.0
     o[S_ALPHA], o[S_VZ], o[S_FN], o[S_FEL] = alpha, vz_half + 0.5 * h * (f_n / m - g), f_n, f_el
     o[S_AMAX] = alpha if alpha > amax else amax
-    tangential_update(s, st, o, ot, p, ints, h, scratch, alpha, a, f_n, alpha > 0.0, C.INTEGRATOR_VELOCITY_VERLET)
+    tangential_update(s, st, o, ot, p, ints, h, scratch, alpha, a, f_n, alpha > 0.0, ints[C.I_INTEGRATOR])
     return alpha
 
 

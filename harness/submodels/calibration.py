@@ -47,6 +47,15 @@ def thornton_appendix_b_g(e):
     return math.sqrt(1.0 / (1.0 - (1.0 + e) ** 2 * math.exp(x)) - 1.0)
 
 
+LAMMPS_TSUJI = (1.2728, -4.2783, 11.087, -22.348, 27.467, -18.022, 4.8218)
+
+
+def lammps_tsuji_A(e):
+    """LAMMPS' `damping tsuji`: A = 1.2728 - 4.2783 e + 11.087 e^2 - 22.348 e^3 + 27.467 e^4 - 18.022 e^5 + 4.8218 e^6
+    (a fit of A against e for Hertz with its dashpot, fix_wall_gran.cpp and pair_granular.cpp)."""
+    return sum(c * e ** i for i, c in enumerate(LAMMPS_TSUJI))
+
+
 def tsuji_tension_A(e):
     """A = sqrt5 beta, beta = -ln e / sqrt(ln^2 e + pi^2): exact for F = k a^3/2 + A sqrt(mk) a^1/4 a' ending at a = 0."""
     return math.sqrt(5.0) * lsd_tension_g(e)

@@ -11,6 +11,7 @@ from .damping.linear import LinearDashpot
 from .damping.none import NoDamping
 from .damping.tsuji import TsujiDashpot
 from .normal.hertz import Hertz
+from .normal.lammps_wall_hertz import LammpsWallHertz
 from .normal.liggghts_hysteresis import LudingHysteresis
 from .normal.liggghts_thornton_ning import ThorntonNing
 from .normal.linear import LinearSpring
@@ -20,6 +21,7 @@ from .normal.thornton import Thornton
 from .normal.walton_braun import WaltonBraun
 from .normal.yade_cundall_strack import CundallStrackSpring
 from .normal.yade_luding import YadeLuding
+from .tangential.lammps_wall_mindlin import LammpsWallMindlin
 from .tangential.linear import LinearTangential
 from .tangential.mindlin import Mindlin
 from .tangential.mindlin_deresiewicz import MindlinDeresiewicz
@@ -83,9 +85,11 @@ TANGENTIAL_KERNELS = (
 
 # sub-models by the name --with takes; engine dialects' own sub-models are listed apart (engines name them)
 NORMAL_MODELS = {cls.name: cls for cls in (LinearSpring, Hertz, WaltonBraun, PartiallyLatchingSpring, Thornton, Stronge)}
-ENGINE_NORMAL_MODELS = {cls.name: cls for cls in (LudingHysteresis, ThorntonNing, CundallStrackSpring, YadeLuding)}
+ENGINE_NORMAL_MODELS = {cls.name: cls for cls in (LudingHysteresis, ThorntonNing, CundallStrackSpring, YadeLuding,
+                                                   LammpsWallHertz)}
 TANGENTIAL_MODELS = {cls.name: cls for cls in (LinearTangential, Mindlin, MindlinDeresiewicz, WaltonBraunTangential,
                                                ViscousTangential)}
+ENGINE_TANGENTIAL_MODELS = {cls.name: cls for cls in (LammpsWallMindlin,)}
 DAMPING_MODELS = {cls.name: cls for cls in (NoDamping, LinearDashpot, TsujiDashpot, KuwabaraKonoDashpot)}
 
 EXTENSION_SLOTS = 4         # normal kernels registered at run time, beyond the generated dispatch

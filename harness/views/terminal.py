@@ -30,7 +30,8 @@ def print_summary(record, comparison, written):
     largest deviations from the paper law in physical units, then findings, skipped engines and failed runs (with
     their log tails), then where the files are."""
     engines = record["engines"]
-    ran = " and ".join(f"{e['engine']} {e['version']}" for e in engines) or "no engine"
+    names = [f"{e['engine']} {e['version']}" for e in engines]
+    ran = " and ".join(filter(None, [", ".join(names[:-1]), names[-1]])) if names else "no engine"
     print(f"{record['model']}: the paper law against {ran}; {len(record['e_n'])} e_n x "
           f"{record['impacts'] // max(len(record['e_n']), 1)} impacts")
     if engines:

@@ -10,7 +10,7 @@ import numpy as np
 from ...version import __version__
 from ...render import render
 from ..batches import max_steps_of, run_grouped
-from ..dumps import read_final
+from ..dumps import read_final, read_observed
 from ..runner import EngineFailure, run_engine
 from .binary import binary
 from .dialect import COUNTERPARTS
@@ -19,7 +19,6 @@ TEMPLATES = Path(__file__).resolve().parent / "templates"
 MIN_RESTITUTION = 0.05          # LIGGGHTS refuses coefficientRestitution <= 0.05 and poissonsRatio < 0; youngsModulus
                                 # < 5e6 or > 1e9 only with soft_particles/hard_particles yes (sanity checks only)
 OBSERVE_DUMP = "observe.dump"   # observe mode: `id z fz` of every sphere in contact, every step
-DUMP_HEADER_LINES = 9           # TIMESTEP, NUMBER OF ATOMS, BOX BOUNDS (3 lines) and ATOMS items
 
 
 @dataclass(frozen=True)
@@ -100,54 +99,9 @@ def read_dump(path, n_atoms):
     return read_final(path, n_atoms, "LIGGGHTS")
 
 
-def dump_rows(path):
-    """(step, atom index, z, fz) of every row of the observe dump, one array each; EngineFailure when missing or
-    malformed."""
-    try:
-        with open(path) as handle:
-            frames = handle.read().split("ITEM: TIMESTEP\n")
-    except OSError:
-        raise EngineFailure("LIGGGHTS wrote no observe dump") from None
-    try:
-        heads = [frame.split("\n", DUMP_HEADER_LINES - 1) for frame in frames[1:]]
-        if frames[0] or any(not head[-2].startswith("ITEM: ATOMS") for head in heads):
-            raise ValueError("not a dump of `id z fz` frames")
-        counts = np.array([int(head[2]) for head in heads], dtype=int)
-        step = np.repeat([int(head[0]) for head in heads], counts).astype(int)
-        rows = np.array(" ".join(head[-1] for head in heads).split(), dtype=float).reshape(len(step), 3)
-    except (IndexError, ValueError):
-        raise EngineFailure("LIGGGHTS observe dump is malformed") from None
-    return step, rows[:, 0].astype(int) - 1, rows[:, 1], rows[:, 2]
-
-
-def first_contact(step, atom):
-    """Mask of the rows in each atom's first run of consecutive steps (a repeated frame or a later contact is not)."""
-    order = np.lexsort((step, atom))
-    s, a = step[order], atom[order]
-    new_atom = np.r_[True, a[1:] != a[:-1]]
-    gap = np.diff(s, prepend=0)
-    breaks = np.cumsum(~new_atom & (gap > 1))
-    run = breaks - np.maximum.accumulate(np.where(new_atom, breaks, 0))      # contacts before this one, per atom
-    mask = np.empty(len(step), dtype=bool)
-    mask[order] = (run == 0) & (new_atom | (gap != 0))
-    return mask
-
-
 def read_observation(path, n_atoms, radius, dt):
-    """Per atom: contact time in whole steps (first step in contact to the first step out, dt each), peak fz (the
-    wall force: no gravity, no sphere-sphere contact) and peak overlap R - z, over its first contact."""
-    step, atom, z, fz = dump_rows(path)
-    if np.any((atom < 0) | (atom >= n_atoms)) or len(np.unique(atom)) != n_atoms:
-        raise EngineFailure("LIGGGHTS observe dump lacks some sphere ids")
-    keep = first_contact(step, atom)
-    step, atom, z, fz = step[keep], atom[keep], z[keep], fz[keep]
-    first, last = np.full(n_atoms, np.iinfo(int).max), np.full(n_atoms, -1)
-    force, overlap = np.full(n_atoms, -np.inf), np.full(n_atoms, -np.inf)
-    np.minimum.at(first, atom, step)
-    np.maximum.at(last, atom, step)
-    np.maximum.at(force, atom, fz)
-    np.maximum.at(overlap, atom, radius - z)
-    return {"t_contact": (last - first + 1) * dt, "f_n_max": force, "overlap_max": overlap}
+    """Per atom: contact time, peak wall force and peak overlap over its first contact (see dumps.read_observed)."""
+    return read_observed(path, n_atoms, radius, dt, "LIGGGHTS")
 
 
 def run_deck(text, n_atoms, timeout_s, workdir):

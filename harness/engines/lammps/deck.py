@@ -1,0 +1,115 @@
+"""LAMMPS' input and output: one batched deck per (law, e_n), every impact its own sphere against a `fix wall/gran
+granular` plane, run in its own directory, and its final dump read back (docs/lammps-dialect.md)."""
+import math
+import os
+from pathlib import Path
+
+import numpy as np
+
+from ...render import render
+from ...version import __version__
+from ..batches import max_steps_of, run_grouped
+from ..dumps import read_final, read_observed
+from ..runner import EngineFailure, run_engine
+from .binary import binary
+from .dialect import COUNTERPARTS, dialect
+
+TEMPLATES = Path(__file__).resolve().parent / "templates"
+INPUT = "in.harness"
+OBSERVE_DUMP = "observe.dump"   # observe mode: `id z fz` of every sphere in contact, every step
+
+
+def settings(law, scene, e_n):
+    """The granular sub-model words and coefficients that make LAMMPS compute the dialect of `law` at e_n: (normal,
+    its coefficients, damping, tangential, k_t or None for Mindlin's NULL, x_gamma_t). LAMMPS' damping coefficient is
+    e itself for tsuji, c/m for mass_velocity and c/(m sqrt R) for viscoelastic; x_gamma_t = c_t/c_n, a constant for
+    each counterpart (Mindlin's k_t and the Tsuji dashpot both grow as alpha^1/2 and alpha^1/4)."""
+    normal, damping, tangential = COUNTERPARTS[law.name]
+    own = dialect(law.name)
+    c = scene.contact
+    stiffness = own.normal.parameters(c, e_n, scene.speed)
+    dashpot = own.damping.dashpot(own.normal, c, e_n, scene.speed, own.end)
+    k_t = own.tangential.parameter(c, stiffness.linear_stiffness)
+    g_t = own.tangential_damping.ratio(dashpot, stiffness.linear_stiffness,
+                                       k_t if own.tangential.constant_stiffness else None, e_n)
+    c_t = 2.0 * g_t * math.sqrt(c.mass)                 # c_t = this sqrt(k_t)
+    if normal == "hooke":
+        coefficients = [stiffness.values[0], dashpot.c0 / c.mass]
+        x_gamma_t = c_t * math.sqrt(k_t) / dashpot.c0 if dashpot.c0 else 0.0
+        return normal, coefficients, damping, tangential, k_t, x_gamma_t
+    coefficient = {"tsuji": e_n, "viscoelastic": dashpot.c0 / (c.mass * math.sqrt(c.radius))}[damping]
+    x_gamma_t = c_t * math.sqrt(8.0 * k_t * math.sqrt(c.radius)) / dashpot.c0 if g_t else 0.0
+    return normal, [scene.E, coefficient, scene.nu], damping, tangential, None, x_gamma_t
+
+
+def deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, observe=False):
+    """Render the batched deck (validated numbers and fixed words only; see harness.render); `observe` adds the
+    per-step contact dump (OBSERVE_DUMP)."""
+    if scene.wall != "same":
+        raise EngineFailure("LAMMPS decks use a wall of the sphere's own material")
+    normal, coefficients, damping, tangential, k_t, x_gamma_t = settings(law, scene, e_n)
+    radius = scene.radius
+    spacing = 4.0 * radius
+    atoms = [{"x": i * spacing, "vx": float(vt), "vz": -float(vn), "omegay": float(w)}
+             for i, (vn, vt, w) in enumerate(zip(v_n0, v_t0, omega0))]
+    chunk = max(10, int(steps_per_contact // 10))
+    return render(TEMPLATES, "batch.in.j2", harness_version=__version__, law=law.name, normal=normal,
+                  normal_args=coefficients, damping=damping, tangential=tangential, k_t=k_t, x_gamma_t=x_gamma_t,
+                  mu=scene.mu, e_n=e_n, atoms=atoms, x_lo=-2.0 * radius, x_hi=len(atoms) * spacing,
+                  box_half=2.0 * radius, z_lo=-radius, z_hi=4.0 * radius, skin=0.5 * radius, dt=dt, radius=radius,
+                  rho=scene.rho, chunk=chunk, max_chunks=max(1, max_steps // chunk + 1), observe=bool(observe))
+
+
+def run_batch(paper_law, scene, batch, max_steps, timeout_s, workdir, options=None, observe=False):
+    """One batch (one e_n) in LAMMPS, in `workdir`: (final state as read_batch gives it, wall seconds, log tail)."""
+    with open(os.path.join(workdir, INPUT), "w") as handle:
+        handle.write(render_batch(paper_law, scene, batch, max_steps, options, observe))
+    done = run_engine([binary(), "-in", INPUT, "-log", "none", "-echo", "none", "-nocite"], workdir, timeout_s)
+    try:
+        return read_outputs(workdir, batch, scene.radius, observe), done.wall_s, done.log_tail
+    except EngineFailure as exc:
+        raise EngineFailure(str(exc), exc.log_tail or done.log_tail) from None
+
+
+def run_inputs(_, count, timeout_s, workdir):
+    """The decks batch<k>/in.harness in one LAMMPS process (one start-up; `clear` between them, each writing into its
+    own directory): each batch's share of the wall seconds."""
+    lines = []
+    for k in range(count):
+        lines += [f"shell cd batch{k}", f"include {INPUT}", "clear", "shell cd .."]
+    with open(os.path.join(workdir, "in.driver"), "w") as handle:
+        handle.write("\n".join(lines) + "\n")
+    done = run_engine([binary(), "-in", "in.driver", "-log", "none", "-echo", "none", "-nocite"], workdir, timeout_s)
+    return [done.wall_s / count] * count
+
+
+def read_batch(run, batch, directory):
+    """Rebound velocities and separation of one batch run in `directory` (and what observe mode saw)."""
+    return read_outputs(directory, batch, run.scene.radius, run.observe)
+
+
+def read_outputs(directory, batch, radius, observe):
+    """Rebound velocities and separation from the final dump in `directory`; with `observe` also t_contact, f_n_max
+    and overlap_max from the observe dump."""
+    z, vx, vz, omegay = read_final(os.path.join(directory, "final.dump"), len(batch.v_n0), "LAMMPS").T
+    if not (np.all(np.isfinite(vx)) and np.all(np.isfinite(vz)) and np.all(np.isfinite(omegay))):
+        raise EngineFailure("LAMMPS returned non-finite velocities")
+    final = {"v_n1": vz, "v_t1": vx, "omega1": omegay, "separated": z > radius}
+    if observe:
+        final.update(read_observed(os.path.join(directory, OBSERVE_DUMP), len(batch.v_n0), radius, batch.dt,
+                                   "LAMMPS"))
+    return final
+
+
+def render_batch(paper_law, scene, batch, max_steps, options=None, observe=False):
+    """The deck text for one batch (for `harness render` and the runs)."""
+    return deck(paper_law, scene, batch.e_n, batch.dt, batch.v_n0, batch.v_t0, batch.omega0,
+                batch.steps_per_contact, max_steps, observe)
+
+
+def run_together(runs, engine_version):
+    """(results frame, failure or None) of each run; the runs share one LAMMPS process per core."""
+    return run_grouped("lammps", engine_version, runs, INPUT,
+                       lambda run, batch: render_batch(run.law, run.scene, batch, max_steps_of(batch),
+                                                       run.options_dict, run.observe),
+                       lambda run: None, run_inputs, read_batch)
