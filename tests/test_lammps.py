@@ -29,13 +29,20 @@ def agreement(frame):
     return max(worst + [np.max(np.abs(eng.omega1 - ref.omega1)) * radius / speed])
 
 
+CASES = ([(name, {}) for name in sorted(lammps.DIALECTS)]
+         + [(name, {"tangential": form}) for name in ("hertz-mindlin", "hertz-kuwabara-kono")
+            for form in ("mindlin_rescale", "mindlin/force", "mindlin_rescale/force")]
+         + [(name, {"style": "history"}) for name in sorted(lammps.HISTORY_STYLES)])
+
+
 @needs_lammps
-@pytest.mark.parametrize("name", sorted(lammps.DIALECTS))
+@pytest.mark.parametrize("name,options", CASES)
 @pytest.mark.parametrize("omega0", [0.0, -20.0])
-def test_lammps_agrees_with_its_dialect_at_equal_dt(name, omega0):
-    """Every supported law x 3 e_n x 6 angles, with and without spin: the real binary within 1e-6 of its dialect."""
+def test_lammps_agrees_with_its_dialect_at_equal_dt(name, options, omega0):
+    """Every supported law and form x 3 e_n x 6 angles, with and without spin: the real binary within 1e-6 of its
+    dialect."""
     scene = Scene(e_n=(0.3, 0.6, 0.9), angles_deg=ANGLES, psi1_star=None, omega0=omega0)
-    frame, failures = execute(engine_plan(lammps, compose(name), scene, 200))
+    frame, failures = execute(engine_plan(lammps, compose(name), scene, 200, options))
     assert failures == []
     assert agreement(frame) < 1e-6
 
@@ -106,3 +113,29 @@ def test_version_is_read_without_writing_here(tmp_path, monkeypatch):
     from harness.engines.lammps.binary import _version
     _version.cache_clear()
     assert lammps.version() == "29Sep2021_update2" and os.listdir(tmp_path) == []
+
+
+@needs_lammps
+def test_each_mindlin_form_and_style_changes_what_lammps_computes():
+    """The options are not decoration: every Mindlin form moves LAMMPS' rebound spin, and so does hertz/history (the
+    pair's E* and G*, not the granular wall's); hooke/history is granular hooke + mass_velocity + linear_history
+    written otherwise, and the two styles agree to round-off."""
+    scene = Scene(e_n=(0.6,), angles_deg=(10.0, 30.0), psi1_star=None, omega0=-20.0)
+    spins = {}
+    for name, options in CASES:
+        frame, _ = execute(engine_runs(lammps, compose(name), scene, 200, options))
+        spins[(name, tuple(options.items()))] = frame.omega1.to_numpy()
+    for name in ("hertz-mindlin", "hertz-kuwabara-kono"):
+        mine = [v for (n, _), v in spins.items() if n == name]
+        assert len(mine) >= 4
+        assert all(np.abs(a - b).max() > 1e-3 for i, a in enumerate(mine) for b in mine[i + 1:]), name
+    granular, history = [v for (n, _), v in spins.items() if n == "linear-spring-dashpot"]
+    assert np.abs(granular - history).max() < 1e-9 * 20.0
+
+
+def test_options_where_their_law_has_none_are_one_line_errors():
+    from harness.errors import UserError
+    with pytest.raises(UserError, match="no older wall style for hertz-mindlin"):
+        lammps.dialect("hertz-mindlin", {"style": "history"})
+    with pytest.raises(UserError, match="Mindlin springs are for the granular style's hertz/material laws"):
+        lammps.dialect("linear-spring-dashpot", {"tangential": "mindlin_rescale"})

@@ -20,6 +20,7 @@ from ..submodels.tangential import mindlin as tangential_mindlin
 from ..submodels.tangential import mindlin_deresiewicz as tangential_mindlin_deresiewicz
 from ..submodels.tangential import walton_braun as tangential_walton_braun
 from ..submodels.tangential import viscous as tangential_viscous
+from ..submodels.tangential import lammps_wall_mindlin as tangential_lammps_wall_mindlin
 from .extension import BELOW, FORCE, KINK, RESIDUAL, SLOPE, call
 
 N_NORMAL = 8
@@ -43,9 +44,11 @@ TANGENTIAL_MINDLIN_DERESIEWICZ = 5
 TANGENTIAL_WALTON_BRAUN = 6
 TANGENTIAL_VISCOUS_LINEAR = 7
 TANGENTIAL_VISCOUS_MINDLIN = 8
-TANGENTIAL_VISCOUS = np.array([False, False, False, False, False, False, False, True, True], dtype=np.bool_)
-TANGENTIAL_IMPLICIT = np.array([False, False, False, False, False, False, True, False, False], dtype=np.bool_)
-TANGENTIAL_LOG_RATE = np.array([0, 0, 0, 1, 2, 0, 0, 0, 0], dtype=np.int64)
+TANGENTIAL_LAMMPS_MINDLIN_TOTAL_RESCALE = 9
+TANGENTIAL_LAMMPS_MINDLIN_FORCE_RESCALE = 10
+TANGENTIAL_VISCOUS = np.array([False, False, False, False, False, False, False, True, True, False, False], dtype=np.bool_)
+TANGENTIAL_IMPLICIT = np.array([False, False, False, False, False, False, True, False, False, False, False], dtype=np.bool_)
+TANGENTIAL_LOG_RATE = np.array([0, 0, 0, 1, 2, 0, 0, 0, 0, 0, 0], dtype=np.int64)
 
 
 @compiled
@@ -146,6 +149,10 @@ def tangential_stiffness(code, p1, a):
         return tangential_viscous.linear_stiffness(p1, a)
     if code == 8:
         return tangential_viscous.mindlin_stiffness(p1, a)
+    if code == 9:
+        return tangential_lammps_wall_mindlin.stiffness(p1, a)
+    if code == 10:
+        return tangential_lammps_wall_mindlin.stiffness(p1, a)
     return math.nan
 
 
@@ -163,6 +170,10 @@ def tangential_spring(code, f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, 
         return tangential_mindlin_deresiewicz.spring(f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, scratch, midpoint)
     if code == 6:
         return tangential_walton_braun.spring(f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, scratch, midpoint)
+    if code == 9:
+        return tangential_lammps_wall_mindlin.total_rescale(f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, scratch, midpoint)
+    if code == 10:
+        return tangential_lammps_wall_mindlin.force_rescale(f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, scratch, midpoint)
     return math.nan
 
 
@@ -170,6 +181,9 @@ def tangential_spring(code, f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, 
 def tangential_after_cap(code, f_s, p1, a, st):
     if code == 4:
         tangential_mindlin.total_after_cap(f_s, p1, a, st)
+        return
+    if code == 9:
+        tangential_lammps_wall_mindlin.total_after_cap(f_s, p1, a, st)
         return
     return
 

@@ -81,6 +81,10 @@ TANGENTIAL_KERNELS = (
                       implicit=True),
     tangential_kernel("viscous:linear", "viscous", stiffness="linear_stiffness", viscous=True),
     tangential_kernel("viscous:mindlin", "viscous", stiffness="mindlin_stiffness", viscous=True),
+    tangential_kernel("lammps-mindlin:total-rescale", "lammps_wall_mindlin", stiffness="stiffness",
+                      spring="total_rescale", after_cap="total_after_cap"),
+    tangential_kernel("lammps-mindlin:force-rescale", "lammps_wall_mindlin", stiffness="stiffness",
+                      spring="force_rescale"),
 )
 
 # sub-models by the name --with takes; engine dialects' own sub-models are listed apart (engines name them)

@@ -5,7 +5,7 @@ from ..batches import render_input
 from ..protocol import Status
 from .binary import BINARY_VARIABLE, available, binary, missing_reason, version
 from .deck import OBSERVE_DUMP, TEMPLATES, deck, read_batch, render_batch, run_batch, run_together, settings
-from .dialect import COUNTERPARTS, DIALECTS, OPTIONS, check_options, dialect
+from .dialect import COUNTERPARTS, DIALECTS, HISTORY_STYLES, OPTIONS, check_options, dialect, words
 
 NAME = "lammps"
 INPUT_SUFFIX = ".in"
@@ -34,6 +34,6 @@ def render(run):
     return render_input(NAME, INPUT_SUFFIX, render_batch, run)
 
 
-__all__ = ["BINARY_VARIABLE", "COUNTERPARTS", "DIALECTS", "NAME", "OBSERVE_DUMP", "OPTIONS", "TEMPLATES", "available",
+__all__ = ["BINARY_VARIABLE", "COUNTERPARTS", "DIALECTS", "HISTORY_STYLES", "NAME", "OBSERVE_DUMP", "OPTIONS", "TEMPLATES", "available",
            "binary", "check_options", "deck", "dialect", "missing_reason", "read_batch", "render", "render_batch", "run",
-           "run_batch", "run_together", "settings", "status", "supports", "version"]
+           "run_batch", "run_together", "settings", "status", "supports", "version", "words"]

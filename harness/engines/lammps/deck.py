@@ -12,20 +12,21 @@ from ..batches import max_steps_of, run_grouped
 from ..dumps import read_final, read_observed
 from ..runner import EngineFailure, run_engine
 from .binary import binary
-from .dialect import COUNTERPARTS, dialect
+from .dialect import dialect, words
 
 TEMPLATES = Path(__file__).resolve().parent / "templates"
 INPUT = "in.harness"
 OBSERVE_DUMP = "observe.dump"   # observe mode: `id z fz` of every sphere in contact, every step
 
 
-def settings(law, scene, e_n):
-    """The granular sub-model words and coefficients that make LAMMPS compute the dialect of `law` at e_n: (normal,
-    its coefficients, damping, tangential, k_t or None for Mindlin's NULL, x_gamma_t). LAMMPS' damping coefficient is
-    e itself for tsuji, c/m for mass_velocity and c/(m sqrt R) for viscoelastic; x_gamma_t = c_t/c_n, a constant for
-    each counterpart (Mindlin's k_t and the Tsuji dashpot both grow as alpha^1/2 and alpha^1/4)."""
-    normal, damping, tangential = COUNTERPARTS[law.name]
-    own = dialect(law.name)
+def settings(law, scene, e_n, options=None):
+    """The words and coefficients that make LAMMPS compute the dialect of `law` at e_n, as the template's values.
+    granular: LAMMPS' damping coefficient is e itself for tsuji, c/m for mass_velocity and c/(m sqrt R) for
+    viscoelastic; x_gamma_t = c_t/c_n, a constant for each counterpart (Mindlin's k_t and the Tsuji dashpot both grow
+    as alpha^1/2 and alpha^1/4). history: k_n (4/3 E* for hertz/history), k_t (8 G*), gamma_n = c_n/m (c_n/(m sqrt R)
+    for hertz/history), gamma_t = c_t/m, and dampflag 1 where there is a tangential dashpot."""
+    style, normal, damping, tangential = words(law.name, options)
+    own = dialect(law.name, options)
     c = scene.contact
     stiffness = own.normal.parameters(c, e_n, scene.speed)
     dashpot = own.damping.dashpot(own.normal, c, e_n, scene.speed, own.end)
@@ -33,31 +34,39 @@ def settings(law, scene, e_n):
     g_t = own.tangential_damping.ratio(dashpot, stiffness.linear_stiffness,
                                        k_t if own.tangential.constant_stiffness else None, e_n)
     c_t = 2.0 * g_t * math.sqrt(c.mass)                 # c_t = this sqrt(k_t)
-    if normal == "hooke":
-        coefficients = [stiffness.values[0], dashpot.c0 / c.mass]
-        x_gamma_t = c_t * math.sqrt(k_t) / dashpot.c0 if dashpot.c0 else 0.0
-        return normal, coefficients, damping, tangential, k_t, x_gamma_t
-    coefficient = {"tsuji": e_n, "viscoelastic": dashpot.c0 / (c.mass * math.sqrt(c.radius))}[damping]
-    x_gamma_t = c_t * math.sqrt(8.0 * k_t * math.sqrt(c.radius)) / dashpot.c0 if g_t else 0.0
-    return normal, [scene.E, coefficient, scene.nu], damping, tangential, None, x_gamma_t
+    values = dict(style=style, normal=normal, damping=damping, tangential=tangential, normal_args=[],
+                  history_args=[], dampflag=0, k_t=None, x_gamma_t=0.0)
+    if style == "hooke/history":
+        values.update(history_args=[stiffness.values[0], k_t, dashpot.c0 / c.mass, c_t * math.sqrt(k_t) / c.mass,
+                                    scene.mu], dampflag=1 if g_t else 0)
+    elif style == "hertz/history":
+        values.update(history_args=[4.0 / 3.0 * stiffness.values[0], 8.0 * k_t,
+                                    dashpot.c0 / (c.mass * math.sqrt(c.radius)), 0.0, scene.mu])
+    elif normal == "hooke":
+        values.update(normal_args=[stiffness.values[0], dashpot.c0 / c.mass], k_t=k_t,
+                      x_gamma_t=c_t * math.sqrt(k_t) / dashpot.c0 if dashpot.c0 else 0.0)
+    else:
+        coefficient = {"tsuji": e_n, "viscoelastic": dashpot.c0 / (c.mass * math.sqrt(c.radius))}[damping]
+        values.update(normal_args=[scene.E, coefficient, scene.nu],
+                      x_gamma_t=c_t * math.sqrt(8.0 * k_t * math.sqrt(c.radius)) / dashpot.c0 if g_t else 0.0)
+    return values
 
 
-def deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, observe=False):
+def deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, options=None, observe=False):
     """Render the batched deck (validated numbers and fixed words only; see harness.render); `observe` adds the
     per-step contact dump (OBSERVE_DUMP)."""
     if scene.wall != "same":
         raise EngineFailure("LAMMPS decks use a wall of the sphere's own material")
-    normal, coefficients, damping, tangential, k_t, x_gamma_t = settings(law, scene, e_n)
     radius = scene.radius
     spacing = 4.0 * radius
     atoms = [{"x": i * spacing, "vx": float(vt), "vz": -float(vn), "omegay": float(w)}
              for i, (vn, vt, w) in enumerate(zip(v_n0, v_t0, omega0))]
     chunk = max(10, int(steps_per_contact // 10))
-    return render(TEMPLATES, "batch.in.j2", harness_version=__version__, law=law.name, normal=normal,
-                  normal_args=coefficients, damping=damping, tangential=tangential, k_t=k_t, x_gamma_t=x_gamma_t,
-                  mu=scene.mu, e_n=e_n, atoms=atoms, x_lo=-2.0 * radius, x_hi=len(atoms) * spacing,
-                  box_half=2.0 * radius, z_lo=-radius, z_hi=4.0 * radius, skin=0.5 * radius, dt=dt, radius=radius,
-                  rho=scene.rho, chunk=chunk, max_chunks=max(1, max_steps // chunk + 1), observe=bool(observe))
+    return render(TEMPLATES, "batch.in.j2", harness_version=__version__, law=law.name, mu=scene.mu, e_n=e_n,
+                  atoms=atoms, x_lo=-2.0 * radius, x_hi=len(atoms) * spacing, box_half=2.0 * radius, z_lo=-radius,
+                  z_hi=4.0 * radius, skin=0.5 * radius, dt=dt, radius=radius, rho=scene.rho, chunk=chunk,
+                  max_chunks=max(1, max_steps // chunk + 1), observe=bool(observe),
+                  **settings(law, scene, e_n, options))
 
 
 def run_batch(paper_law, scene, batch, max_steps, timeout_s, workdir, options=None, observe=False):
@@ -104,7 +113,7 @@ def read_outputs(directory, batch, radius, observe):
 def render_batch(paper_law, scene, batch, max_steps, options=None, observe=False):
     """The deck text for one batch (for `harness render` and the runs)."""
     return deck(paper_law, scene, batch.e_n, batch.dt, batch.v_n0, batch.v_t0, batch.omega0,
-                batch.steps_per_contact, max_steps, observe)
+                batch.steps_per_contact, max_steps, options, observe)
 
 
 def run_together(runs, engine_version):

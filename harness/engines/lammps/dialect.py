@@ -1,33 +1,68 @@
-"""What LAMMPS (29 Sep 2021) computes for each law through `fix wall/gran granular` and `fix nve/sphere`, as a
-composition of sub-models (docs/lammps-dialect.md), and its options."""
-from ..protocol import check_options as check_declared
+"""What LAMMPS (29 Sep 2021) computes for each law through `fix wall/gran` and `fix nve/sphere`, as a composition of
+sub-models (docs/lammps-dialect.md), and its options."""
+from ...errors import UserError
+from ..protocol import Option, check_options as check_declared
 
 COUNTERPARTS = {              # harness law -> LAMMPS granular (normal, damping, tangential) sub-models
     "linear-spring-dashpot": ("hooke", "mass_velocity", "linear_history"),
     "hertz-mindlin": ("hertz/material", "tsuji", "mindlin"),
     "hertz-kuwabara-kono": ("hertz/material", "viscoelastic", "mindlin"),
 }
-OPTIONS = {}                 # none yet: each law has one counterpart
+HISTORY_STYLES = {"linear-spring-dashpot": "hooke/history", "hertz-kuwabara-kono": "hertz/history"}
+MINDLIN_FORMS = {"mindlin": "total", "mindlin_rescale": "total-rescale", "mindlin/force": "force",
+                 "mindlin_rescale/force": "force-rescale"}
+OPTIONS = {                  # declared options, default first (`--engine-option lammps:KEY=VALUE`)
+    "style": Option(("granular", "history"),
+                    "wall/gran granular, or the older hooke/history (linear-spring-dashpot), hertz/history "
+                    "(hertz-kuwabara-kono)"),
+    "tangential": Option(tuple(MINDLIN_FORMS), "the Mindlin spring of the granular style's hertz/material laws"),
+}
 COMMON = {"end": "tension", "integrator": "lammps", "lever": "0"}
-HERTZ = {**COMMON, "normal": "lammps-wall-hertz", "tangential": "lammps-wall-mindlin:total"}
+HERTZ = {**COMMON, "normal": "lammps-wall-hertz"}
 DIALECTS = {                 # sub-models that make the paper law compute what LAMMPS computes
     "linear-spring-dashpot": {**COMMON},
     "hertz-mindlin": {**HERTZ, "damping": "tsuji:lammps"},
     "hertz-kuwabara-kono": {**HERTZ},
 }
+HISTORY_DIALECTS = {         # the older styles take harness' own k_n, E* and G* (no mixing of their own)
+    "linear-spring-dashpot": {**COMMON},
+    "hertz-kuwabara-kono": {**COMMON, "tangential": "mindlin:total", "tangential-damping": "none"},
+}
 
 
 def check_options(law_name, options):
-    """The LAMMPS options given, validated; one clear line for a bad one."""
-    return check_declared("lammps", OPTIONS, options)
+    """The LAMMPS options given, validated; one clear line for a bad one (each option where its law has it)."""
+    options = check_declared("lammps", OPTIONS, options)
+    if options.get("style", "granular") == "history" and law_name not in HISTORY_STYLES:
+        raise UserError(f"LAMMPS has no older wall style for {law_name}; style history is for "
+                        f"{', '.join(HISTORY_STYLES)}")
+    if "tangential" in options and (COUNTERPARTS.get(law_name, ("",))[0] != "hertz/material"
+                                    or options.get("style", "granular") != "granular"):
+        raise UserError(f"the Mindlin springs are for the granular style's hertz/material laws, not {law_name}")
+    return options
+
+
+def words(law_name, options):
+    """(style, normal, damping, tangential) words of the deck for `law_name` with the options given."""
+    options = check_options(law_name, options)
+    if options.get("style", "granular") == "history":
+        return HISTORY_STYLES[law_name], None, None, None
+    normal, damping, tangential = COUNTERPARTS[law_name]
+    return "granular", normal, damping, options.get("tangential", tangential)
 
 
 def dialect(law_name, options=None):
-    """The law as LAMMPS computes it through fix wall/gran granular and fix nve/sphere: LIGGGHTS' velocity Verlet
-    steps (forces from the half-step velocities, contact from gap 0, no clipping of the normal force), the wall's own
-    moduli E_w = E/(2(1 - nu)) and K = E/4 (2 - nu)(1 + nu), the spring on the total displacement, and the Coulomb
-    cap on spring plus dashpot with lever R."""
+    """The law as LAMMPS computes it through fix wall/gran and fix nve/sphere: LIGGGHTS' velocity Verlet steps
+    (forces from the half-step velocities, contact from gap 0, no clipping of the normal force), lever R, the Coulomb
+    cap on spring plus dashpot (scheme `lammps`); the granular style's own wall moduli E_w = E/(2(1 - nu)) and
+    K = E/4 (2 - nu)(1 + nu) and its Mindlin forms; the older styles with the numbers harness gives them."""
     from ...laws import compose
     from ...laws.law import replace_submodels
-    check_options(law_name, options)
-    return replace_submodels(compose(law_name), DIALECTS[law_name], "lammps")
+    options = check_options(law_name, options)
+    if options.get("style", "granular") == "history":
+        return replace_submodels(compose(law_name), HISTORY_DIALECTS[law_name], "lammps")
+    overrides = dict(DIALECTS[law_name])
+    if COUNTERPARTS[law_name][0] == "hertz/material":
+        form = MINDLIN_FORMS[options.get("tangential", "mindlin")]
+        overrides["tangential"] = f"lammps-wall-mindlin:{form}"
+    return replace_submodels(compose(law_name), overrides, "lammps")

@@ -1,7 +1,14 @@
-"""LAMMPS' wall Mindlin spring (fix wall/gran granular, tangential mindlin NULL): F = -K a xi on the total tangential
-displacement xi, with K = E/4 (2 - nu)(1 + nu) the wall's own stiffness coefficient from the sphere's E and nu
-(docs/lammps-dialect.md); the total-displacement Mindlin kernel."""
-from .mindlin import Mindlin
+"""LAMMPS' wall Mindlin springs (fix wall/gran granular, tangential mindlin* NULL): k_t = K a with K = E/4 (2 - nu)
+(1 + nu), the wall's own stiffness coefficient from the sphere's E and nu, on the total displacement xi (`mindlin`,
+F = -k_t xi) or on the force (`mindlin/force`, F - k_t dd), each rescaled by a/a_old while a falls in its `_rescale`
+form (docs/lammps-dialect.md)."""
+from ...errors import UserError
+from ...jit import compiled
+from .mindlin import Mindlin, stiffness, total_after_cap  # noqa: F401  (the dispatch points its kernels share)
+from .state import T_AUX1
+
+FORMS = {"total": "mindlin:total", "force": "mindlin:incremental", "total-rescale": "lammps-mindlin:total-rescale",
+         "force-rescale": "lammps-mindlin:force-rescale"}
 
 
 def wall_coefficient(contact):
@@ -14,10 +21,29 @@ class LammpsWallMindlin(Mindlin):
     name = "lammps-wall-mindlin"
 
     def __init__(self, form="total"):
-        super().__init__(form)
+        if form not in FORMS:
+            raise UserError(f"lammps-wall-mindlin form must be one of {', '.join(FORMS)}, got {form!r}")
+        self.form, self.kernel = form, FORMS[form]
 
     def label(self):
         return f"lammps-wall-mindlin({self.form})"
 
     def parameter(self, contact, k_n):
         return wall_coefficient(contact) / 8.0          # the kernel's k_t = 8 p1 a
+
+
+@compiled
+def total_rescale(f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, scratch, midpoint):
+    """mindlin_rescale: xi <- xi a/a_old while a falls, then xi + dd; F = -8 p1 a xi (LAMMPS)."""
+    if a < a_old:
+        st[T_AUX1] *= a / a_old
+    st[T_AUX1] += dd
+    return -8.0 * p1 * a * st[T_AUX1]
+
+
+@compiled
+def force_rescale(f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, scratch, midpoint):
+    """mindlin_rescale/force: F <- F a/a_old while a falls, then F - 8 p1 a dd (LAMMPS)."""
+    if a < a_old:
+        f_s *= a / a_old
+    return f_s - 8.0 * p1 * a * dd
