@@ -53,11 +53,12 @@ def statuses(request):
     names = [e for e in (request.engines if request.engines is not None else EXTERNAL) if e != "reference"]
     out = []
     scene = request.scene
-    unsupported = ("engine inputs do not model gravity" if scene.gravity else
-                   "engine inputs use a wall of the sphere's own material" if scene.wall != "same" else None)
     for name in names:
         engine = ENGINES[name]
         status = engine.status(request.law.name, request.engine_options.get(name))
+        unsupported = ("engine inputs do not model gravity" if scene.gravity else
+                       f"its {request.law.name} inputs use a wall of the sphere's own material"
+                       if scene.wall not in engine.walls(request.law.name) else None)
         if status.available and unsupported:
             status = Status(name, False, unsupported)
         out.append(status)

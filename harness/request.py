@@ -33,9 +33,17 @@ def scene_from(en=DEFAULT_EN, angles=None, psi=None, vt=None, mu=None, material=
 
 
 def wall_fields(text):
-    """--wall same|rigid|MATERIAL -> Scene wall fields."""
+    """--wall same|rigid|MATERIAL|E=PASCAL,nu=RATIO -> Scene wall fields."""
     if text in ("same", "rigid"):
         return {"wall": text}
+    if "=" in text:
+        fields = dict(part.partition("=")[::2] for part in text.split(","))
+        if set(fields) != {"E", "nu"}:
+            raise UserError(f"--wall E=PASCAL,nu=RATIO takes E and nu, got {text!r}")
+        try:
+            return {"wall": "other", "wall_E": float(fields["E"]), "wall_nu": float(fields["nu"])}
+        except ValueError:
+            raise UserError(f"--wall E and nu must be numbers, got {text!r}") from None
     from .materials import get_material
     mat = get_material(text)
     return {"wall": "other", "wall_E": mat.E, "wall_nu": mat.nu}

@@ -165,3 +165,10 @@ def test_rows_with_a_negative_e_n_or_a_non_finite_energy_are_invalid():
                          status="ok", message="")
     assert frame.status.tolist() == ["invalid", "ok", "invalid"]
     assert "e_n -0.88 < 0" in frame.message[0] and "not finite" in frame.message[2]
+
+
+@pytest.mark.parametrize("wall", ["E=2e11", "E=2e11,nu=0.3,rho=1", "E=steel,nu=0.3", "E=2e11,nu=0.7", "E=-1,nu=0.3"])
+def test_a_numeric_wall_that_is_not_one_is_a_one_line_error(wall, tmp_path, capsys):
+    assert main(["run", "--model", "hertz-mindlin", "--wall", wall, "-o", str(tmp_path / "r.csv")]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and "wall" in err and not (tmp_path / "r.csv").exists()

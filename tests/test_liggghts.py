@@ -293,3 +293,31 @@ def test_render_writes_runnable_decks_and_refuses_what_liggghts_cannot_take(tmp_
                          timeout=120)
     assert low.returncode == 2 and "coefficientRestitution in (0.05, 1]" in low.stderr
     assert not (tmp_path / "low").exists()
+
+
+@needs_liggghts
+@pytest.mark.parametrize("name", ["hertz-mindlin", "linear-spring-dashpot"])
+@pytest.mark.parametrize("wall", ["rigid", "E=2.1e11,nu=0.29"])
+def test_walls_of_another_material_run_and_agree_with_the_dialect(name, wall):
+    """A second atom type for the wall (a rigid one at youngsModulus 1e300): LIGGGHTS mixes E* and G* as the scene
+    does, so the engine agrees with its dialect on the scene's contact; and the wall changed the rebound."""
+    from harness.plan import engine_plan
+    from harness.request import wall_fields
+    scene = Scene(e_n=(0.3, 0.9), angles_deg=(0.0, 30.0, 60.0), psi1_star=None, omega0=-20.0, **wall_fields(wall))
+    frame, failures = execute(engine_plan(liggghts, compose(name), scene, 200))
+    assert failures == []
+    ref, eng = (frame[frame.engine == e].reset_index(drop=True) for e in ("reference", "liggghts"))
+    assert np.abs(eng[["v_n1", "v_t1"]].to_numpy() - ref[["v_n1", "v_t1"]].to_numpy()).max() < 1e-6 * scene.speed
+    same = execute(engine_runs(liggghts, compose(name), Scene(e_n=(0.3, 0.9), angles_deg=(0.0, 30.0, 60.0),
+                                                               psi1_star=None, omega0=-20.0), 200))[0]
+    assert np.abs(same.omega1.to_numpy() - eng.omega1.to_numpy()).max() > 1e-3
+
+
+@needs_liggghts
+def test_models_with_per_type_properties_skip_other_walls_with_the_reason():
+    from harness.api import statuses
+    from harness.request import Request
+    request = Request.from_keywords("thornton", engines=["liggghts"], wall="rigid")
+    (status,) = statuses(request)
+    assert not status.available and status.reason == "its thornton inputs use a wall of the sphere's own material"
+    assert liggghts.walls("hertz-mindlin") == ("same", "other", "rigid")

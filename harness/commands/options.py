@@ -115,8 +115,8 @@ def add_scene_options(parser, resolution=True):
                             "paper's figures)")
     g.add_argument("--omega0", type=number, default=0.0, help="initial spin omega_y [rad/s] (default 0)")
     g.add_argument("--gravity", type=number, default=0.0, help="gravity towards the wall [m/s^2] (default 0)")
-    g.add_argument("--wall", default="same", metavar="same|rigid|MATERIAL",
-                   help="wall of the same material (the paper's case), rigid, or a preset material")
+    g.add_argument("--wall", default="same", metavar="same|rigid|MATERIAL|E=PA,nu=R",
+                   help="wall of the same material (the paper's case), rigid, a preset material, or E and nu")
     g.add_argument("--with", dest="overrides", type=submodel, action="append", default=[], metavar="KEY=VALUE",
                    help="replace one sub-model: normal=, damping=, end=, tangential=, tangential-damping= "
                         "(e.g. --with tangential=mindlin:incremental)")

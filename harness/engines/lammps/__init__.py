@@ -11,6 +11,11 @@ NAME = "lammps"
 INPUT_SUFFIX = ".in"
 
 
+
+def walls(law_name):
+    """A wall of the sphere's own material only: the granular wall takes one E and nu and mixes them itself."""
+    return ("same",)
+
 def supports(law_name):
     return law_name in COUNTERPARTS and law_name in DIALECTS
 
@@ -36,4 +41,4 @@ def render(run):
 
 __all__ = ["BINARY_VARIABLE", "COUNTERPARTS", "DIALECTS", "HISTORY_STYLES", "NAME", "OBSERVE_DUMP", "OPTIONS", "TEMPLATES", "available",
            "binary", "check_options", "deck", "dialect", "missing_reason", "read_batch", "render", "render_batch", "run",
-           "run_batch", "run_together", "settings", "status", "supports", "version", "words"]
+           "run_batch", "run_together", "settings", "status", "supports", "version", "words", "walls"]

@@ -3,13 +3,18 @@ are in dialect.py, its input and output in deck.py, its binary in binary.py."""
 from ..batches import render_input
 from ..protocol import Status
 from .binary import BINARY_VARIABLE, available, binary, missing_reason, version
-from .deck import (OBSERVE_DUMP, TEMPLATES, deck, read_dump, read_observation, render_batch, run_batch, run_deck,
+from .deck import (OBSERVE_DUMP, OTHER_WALL_MODELS, TEMPLATES, deck, read_dump, read_observation, render_batch, run_batch, run_deck,
                    run_together, settings)
 from .dialect import DIALECTS, COUNTERPARTS, OPTIONS, dialect
 
 NAME = "liggghts"
 INPUT_SUFFIX = ".in"
 
+
+
+def walls(law_name):
+    """hooke and hertz against any wall (a second atom type), the others against the sphere's material only."""
+    return ("same", "other", "rigid") if COUNTERPARTS.get(law_name) in OTHER_WALL_MODELS else ("same",)
 
 def supports(law_name):
     return law_name in COUNTERPARTS and law_name in DIALECTS
@@ -36,4 +41,4 @@ def render(run):
 
 __all__ = ["BINARY_VARIABLE", "DIALECTS", "COUNTERPARTS", "NAME", "OBSERVE_DUMP", "OPTIONS", "TEMPLATES", "available",
            "binary", "deck", "dialect", "read_dump", "read_observation", "render", "render_batch", "run", "run_batch", "run_deck",
-           "settings", "status", "supports", "version"]
+           "settings", "status", "supports", "version", "walls"]

@@ -73,6 +73,21 @@ def settings(law, scene, e_n, options=None):
     return model, tangential, sorted(options.items()), properties, restitution
 
 
+RIGID_E = 1e300        # a rigid wall's youngsModulus: (1 - nu^2)/E vanishes beside the sphere's in double precision
+OTHER_WALL_MODELS = ("hooke", "hertz")    # their only per-type properties are E and nu, mixed as harness mixes them
+
+
+def wall_material(scene, model):
+    """[] for a wall of the sphere's own material (one atom type), else [(E, nu)] of the wall (atom type 2): LIGGGHTS
+    mixes Y* = 1/((1 - nu1^2)/Y1 + (1 - nu2^2)/Y2) and G* = 1/(2(2 - nu1)(1 + nu1)/Y1 + 2(2 - nu2)(1 + nu2)/Y2), the
+    scene's E* and G*; the other models' per-type properties are left to a later version."""
+    if scene.wall == "same":
+        return []
+    if model not in OTHER_WALL_MODELS:
+        raise EngineFailure(f"LIGGGHTS {model} runs against a wall of the sphere's own material only")
+    return [(RIGID_E, 0.0)] if scene.wall == "rigid" else [(scene.wall_E, scene.wall_nu)]
+
+
 def deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, options=None, observe=False):
     """Render the batched deck (validated numbers and fixed words only; see harness.render); `observe` adds the
     per-step contact dump (OBSERVE_DUMP)."""
@@ -81,14 +96,16 @@ def deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, 
         raise EngineFailure(f"LIGGGHTS accepts coefficientRestitution in (0.05, 1] only; e_n = {e_n:g} was not run")
     if scene.nu < 0.0:
         raise EngineFailure(f"LIGGGHTS accepts poissonsRatio in [0, 0.5] only; nu = {scene.nu:g} was not run")
+    walls = wall_material(scene, model)
     radius = scene.radius
     spacing = 4.0 * radius
     atoms = [{"x": i * spacing, "vx": float(vt), "vz": -float(vn), "omegay": float(w)}
              for i, (vn, vt, w) in enumerate(zip(v_n0, v_t0, omega0))]
     chunk = max(10, int(steps_per_contact // 10))
     text = render(TEMPLATES, "batch.in.j2", harness_version=__version__, law=law.name, model=model, e_n=restitution,
+                  types=1 + len(walls), E=[scene.E] + [w[0] for w in walls], nu=[scene.nu] + [w[1] for w in walls],
                   atoms=atoms, x_lo=-2.0 * radius, x_hi=len(atoms) * spacing, box_half=2.0 * radius,
-                  z_lo=-radius, z_hi=4.0 * radius, skin=0.5 * radius, E=scene.E, nu=scene.nu, mu=scene.mu,
+                  z_lo=-radius, z_hi=4.0 * radius, skin=0.5 * radius, mu=scene.mu,
                   properties=properties, tangential=tangential, options=options, dt=dt, radius=radius,
                   rho=scene.rho, chunk=chunk, max_chunks=max(1, max_steps // chunk + 1), observe=bool(observe))
     return Deck(text, model, len(atoms))

@@ -22,6 +22,11 @@ def version():
     return __version__
 
 
+
+def walls(law_name):
+    """Every wall: the contact's E* and G* carry it."""
+    return ("same", "other", "rigid")
+
 def supports(law_name):
     return law_name in LAWS
 

@@ -14,6 +14,11 @@ NAME = "yade"
 INPUT_SUFFIX = ".py"
 
 
+
+def walls(law_name):
+    """A wall of the sphere's own material only."""
+    return ("same",)
+
 def supports(law_name):
     return law_name in COUNTERPARTS and law_name in DIALECTS
 
@@ -46,4 +51,4 @@ def arithmetic(options):
 __all__ = ["ARITHMETIC", "DIALECTS", "FLAVOURS", "COUNTERPARTS", "NAME", "OBSERVE_FILE", "OPTIONS", "PYTHON_VARIABLE", "TEMPLATES",
            "arithmetic", "available", "dialect", "environment", "flavour_path", "HIGH", "precision_runs", "python",
            "read_observation", "read_result", "render", "render_batch", "run", "run_batch", "run_script", "script",
-           "status", "supports", "version"]
+           "status", "supports", "version", "walls"]
