@@ -36,13 +36,14 @@ def print_summary(record, comparison, written):
           f"{record['impacts'] // max(len(record['e_n']), 1)} impacts")
     if engines:
         print(f"agreement with its own formulas at equal time step (tolerance {engines[0]['tolerance']:.0e}):")
+        width = max(18, *(len(f"{e['engine']} {e['version']}") for e in engines))
         for e in engines:
             worst = e["worst"]
             where = ("no impact compared" if not e["compared"] else
                      f"worst {worst['relative']:.1e} in {worst['metric']} at e_n {worst['e_n_target']:g}, "
                      f"{worst['theta_deg']:g} deg")
             state = "agrees" if e["agrees"] else "DISAGREES" if e["compared"] else "not compared"
-            print(f"  {e['engine'] + ' ' + e['version']:18s} {state:12s} {where}")
+            print(f"  {e['engine'] + ' ' + e['version']:{width}s} {state:12s} {where}")
         print("largest deviation from the paper law (relative to the incident speed V; the spin as R omega1/V):")
         for e in engines:
             for d in e["deviation"]:
