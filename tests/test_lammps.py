@@ -55,6 +55,9 @@ def test_tsuji_damping_returns_the_reported_restitution_and_the_dialect_says_why
     scene = Scene(e_n=(0.3, 0.6, 0.9), angles_deg=(0.0,), psi1_star=None)
     frame, _ = execute(engine_runs(lammps, compose("hertz-mindlin"), scene, 1000))
     assert np.allclose(frame.e_n, [0.44, 0.70, 0.93], atol=0.006)
+    from harness.analyses.findings import findings
+    (finding,) = findings(frame).to_dict("records")
+    assert finding["kind"] == "e_n off target" and "Tsuji polynomial is 1/sqrt2" in finding["detail"]
     for e in (0.3, 0.6, 0.9):
         assert cal.lammps_tsuji_A(e) / cal.tsuji_tension_A(e) == pytest.approx(1.0 / math.sqrt(2.0), rel=3e-3)
     exact = compose("hertz-mindlin", {"damping": "tsuji:tension", "end": "tension"})

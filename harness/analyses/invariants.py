@@ -41,6 +41,13 @@ KNOWN_CAUSES = {              # (dialect, model, kind) -> the documented cause, 
     ("liggghts", "thornton", "energy gain"): "thornton_ning's tangential damping has the wrong sign (docs/liggghts-dialect.md)",
     ("liggghts", "thornton", "Coulomb bound"): "thornton_ning's tangential damping has the wrong sign: it pushes "
                                                "(docs/liggghts-dialect.md)",
+    ("lammps", "hertz-mindlin", "e_n off target"):
+        "LAMMPS' Tsuji polynomial is 1/sqrt2 of the coefficient that returns e (docs/lammps-dialect.md)",
+    ("lammps", "hertz-kuwabara-kono", "e_n off target"):
+        "LAMMPS' wall modulus E/(2(1 - nu)) is (1 + nu) E*; the viscoelastic dashpot's e moves with it "
+        "(docs/lammps-dialect.md)",
+    ("lammps", "linear-spring-dashpot", "e_n off target"):
+        "the paper's dashpot is calibrated for a force clipped at 0; LAMMPS does not clip (docs/lammps-dialect.md)",
     ("paper", "stronge", "energy gain"): "the provisional reconstruction gains energy for 1 < V/V_y < 1.55 (README)",
     **{("yade", model, "Coulomb bound"):
        "its formulas in the reference do the same; with its leapfrog step alone switched to the paper scheme the "
