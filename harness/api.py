@@ -1,5 +1,4 @@
 """The Python API: `run` and `compare` with the CLI's option names as keywords (docs/user-guide.md)."""
-from concurrent.futures import ThreadPoolExecutor
 from dataclasses import replace
 
 import pandas as pd
@@ -14,6 +13,7 @@ from .execute import execute, run_all
 from .plan import CONVERGED, compare_plan, reference_runs
 from .request import Request
 from .solver.reference import simulate
+from .solver.threads import in_background
 
 HISTORY_POINTS = 400
 
@@ -83,20 +83,19 @@ def compare_request(request, on_frame=None, progress=None, partial=None):
     extra = [run_ for _, pair in checks for run_ in pair]
     if progress:
         progress.expect(len(plan) + len(extra) + 1)
-    with ThreadPoolExecutor(max_workers=1) as beside:
-        measured = beside.submit(measurements, law, scene, engines, engine_resolution)
-        in_plan = {id(run_) for run_ in plan}
+    measured = in_background(measurements, law, scene, engines, engine_resolution)
+    in_plan = {id(run_) for run_ in plan}
 
-        def finished(run_, frame, failure=None):
-            if on_frame is not None and id(run_) in in_plan:
-                on_frame(frame)
-            if progress:
-                progress.advance(f"{run_.engine} ({run_.dialect.dialect} formulas) e_n {run_.e_n:g}"
-                                 + "".join(f" {k} {v}" for k, v in run_.options))
-        done = run_all(plan + extra, finished, partial)
-        attributions, sliding, histories = measured.result()
+    def finished(run_, frame, failure=None):
+        if on_frame is not None and id(run_) in in_plan:
+            on_frame(frame)
         if progress:
-            progress.advance("attribution, sliding threshold, force histories")
+            progress.advance(f"{run_.engine} ({run_.dialect.dialect} formulas) e_n {run_.e_n:g}"
+                             + "".join(f" {k} {v}" for k, v in run_.options))
+    done = run_all(plan + extra, finished, partial)
+    attributions, sliding, histories = measured.result()
+    if progress:
+        progress.advance("attribution, sliding threshold, force histories")
     results = pd.concat([frame for frame, _ in done[:len(plan)]], ignore_index=True)
     failures = [failure for _, failure in done[:len(plan)] if failure is not None]
     precision, checked = None, iter(done[len(plan):])

@@ -408,3 +408,23 @@ def test_ctrl_c_inside_the_compiled_kernel_stops_at_once_and_says_nothing_was_wr
     _, err = proc.communicate(timeout=60)
     assert time.perf_counter() - stopped < 3.0
     assert proc.returncode == 130 and "nothing had been written yet" in err and not out.exists()
+
+
+def test_ctrl_c_while_the_measurements_beside_the_engines_run_exits_at_once(tmp_path):
+    """What runs beside the engines (attribution, sliding threshold, histories; compiling on a first run) must not
+    hold harness after Ctrl-C: made to take a minute here, the interrupted compare still ends within seconds."""
+    code = ("import sys, time, harness.api as api\n"
+            "api.measurements = lambda *a: time.sleep(60)\n"
+            "from harness.commands import main\n"
+            f"sys.exit(main(['compare', '--model', 'hertz-mindlin', '--en', '0.5', '--angles', '10', '--engines', "
+            f"'reference', '-o', {str(tmp_path / 'out')!r}]))\n")
+    proc = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    deadline = time.time() + 60
+    while not (tmp_path / "out" / ".partial").is_dir() or not os.listdir(tmp_path / "out" / ".partial"):
+        assert time.time() < deadline and proc.poll() is None, proc.communicate()
+        time.sleep(0.1)
+    time.sleep(0.5)
+    stopped = time.perf_counter()
+    proc.send_signal(signal.SIGINT)
+    _, err = proc.communicate(timeout=30)
+    assert time.perf_counter() - stopped < 5.0 and proc.returncode == 130, err

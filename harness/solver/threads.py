@@ -23,17 +23,29 @@ class DaemonPool:
 
     def work(self):
         while True:
-            future, fn, args = self.tasks.get()
-            if future.set_running_or_notify_cancel():
-                try:
-                    future.set_result(fn(*args))
-                except BaseException as exc:
-                    future.set_exception(exc)
+            fulfil(*self.tasks.get())
 
     def submit(self, fn, *args):
         future = Future()
         self.tasks.put((future, fn, args))
         return future
+
+
+def fulfil(future, fn, args):
+    """Run fn(*args) into `future` (its result, or the exception it raised)."""
+    if future.set_running_or_notify_cancel():
+        try:
+            future.set_result(fn(*args))
+        except BaseException as exc:
+            future.set_exception(exc)
+
+
+def in_background(fn, *args):
+    """fn(*args) on a daemon thread of its own, as a Future: a caller stopped by Ctrl-C or a signal exits without
+    waiting for it (a ThreadPoolExecutor would join it, compiling or not, before the process could end)."""
+    future = Future()
+    threading.Thread(target=fulfil, args=(future, fn, args), name="harness-beside", daemon=True).start()
+    return future
 
 
 def pool():
