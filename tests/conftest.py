@@ -49,6 +49,14 @@ def engines_only_where_marked(request, monkeypatch):
             monkeypatch.setenv(name, value)
 
 
+def interruptible():
+    """Popen's preexec_fn for a child that a test interrupts with SIGINT: the signal back to its default, so that the
+    child's Python turns it into KeyboardInterrupt even when this session started with SIGINT ignored (as a
+    background job of a non-interactive shell does, and passes on)."""
+    import signal
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
+
+
 def fake_executable(directory, body, name="fake-engine"):
     """A small shell script standing in for an engine that crashes, hangs or writes a truncated result."""
     import stat

@@ -8,7 +8,7 @@ import sys
 import pandas as pd
 import pytest
 
-from conftest import needs
+from conftest import interruptible, needs
 from harness.campaign.driver import dry_run, keyed, run_campaign
 from harness.campaign.executors import InProcess, OnDask, local_cluster, slurm_cluster
 from harness.campaign.spec import from_dict, load
@@ -232,7 +232,8 @@ def test_a_campaign_on_dask_stopped_by_sigint_leaves_whole_fragments_and_no_proc
     store = tmp_path / "store"
     command = [sys.executable, "-m", "harness", "campaign", str(path), "-o", str(store), "--executor", "dask",
                "--workers", "2"]
-    proc = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    proc = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            preexec_fn=interruptible)
     deadline = time.time() + 180
     while not (store.is_dir() and [n for n in os.listdir(store) if n.startswith("part-")]):
         assert time.time() < deadline and proc.poll() is None, proc.communicate()

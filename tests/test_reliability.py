@@ -11,7 +11,7 @@ import time
 import numpy as np
 import pytest
 
-from conftest import fake_executable, needs
+from conftest import fake_executable, interruptible, needs
 from harness.engines import liggghts
 from harness.engines.liggghts.binary import VERSION_TIMEOUT_S
 from harness.engines.runner import read_tail, run_engine, sweep_stale
@@ -123,7 +123,8 @@ def start_hung_compare(tmp_path):
     env = {**os.environ, liggghts.BINARY_VARIABLE: fake, "TMPDIR": str(scratch)}
     proc = subprocess.Popen([sys.executable, "-m", "harness", "compare", "--model", "hertz-mindlin", "--en", "0.5",
                              "--angles", "10", "--engines", "liggghts", "-o", str(tmp_path / "out")], env=env,
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            preexec_fn=interruptible)
     deadline = time.time() + 120
     while not (pidfile.exists() and pidfile.read_text().strip()):
         assert time.time() < deadline and proc.poll() is None, proc.communicate()
@@ -380,7 +381,8 @@ def test_a_real_liggghts_run_ends_with_harness(tmp_path, signum, code):
     proc = subprocess.Popen([sys.executable, "-m", "harness", "compare", "--model", "hertz-mindlin", "--en", "0.5",
                              "--angles", "10", "--engines", "liggghts", "--steps-per-contact", "1000000", "-o",
                              str(tmp_path / "out")], env={**os.environ, "TMPDIR": str(scratch)},
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            preexec_fn=interruptible)
     deadline, engines = time.time() + 120, []
     while not engines:
         assert time.time() < deadline and proc.poll() is None, proc.communicate()
@@ -400,7 +402,8 @@ def test_ctrl_c_inside_the_compiled_kernel_stops_at_once_and_says_nothing_was_wr
     out = tmp_path / "r.csv"
     proc = subprocess.Popen([sys.executable, "-m", "harness", "run", "--model", "hertz-mindlin", "--en", "0.5",
                              "--angles", "0:89:0.5", "--steps-per-contact", "1000000", "-o", str(out)],
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            preexec_fn=interruptible)
     time.sleep(4.0)                       # start-up and the cached kernel's load, then well inside the loop
     assert proc.poll() is None
     stopped = time.perf_counter()
@@ -418,7 +421,8 @@ def test_ctrl_c_while_the_measurements_beside_the_engines_run_exits_at_once(tmp_
             "from harness.commands import main\n"
             f"sys.exit(main(['compare', '--model', 'hertz-mindlin', '--en', '0.5', '--angles', '10', '--engines', "
             f"'reference', '-o', {str(tmp_path / 'out')!r}]))\n")
-    proc = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    proc = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            preexec_fn=interruptible)
     deadline = time.time() + 60
     while not (tmp_path / "out" / ".partial").is_dir() or not os.listdir(tmp_path / "out" / ".partial"):
         assert time.time() < deadline and proc.poll() is None, proc.communicate()
