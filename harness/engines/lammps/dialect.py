@@ -3,11 +3,12 @@ sub-models (docs/lammps-dialect.md), and its options."""
 from ...errors import UserError
 from ..protocol import Option, check_options as check_declared
 
-COUNTERPARTS = {              # harness law -> LAMMPS granular (normal, damping, tangential) sub-models
+GRANULAR = {                  # harness law -> LAMMPS granular (normal, damping, tangential) sub-models
     "linear-spring-dashpot": ("hooke", "mass_velocity", "linear_history"),
     "hertz-mindlin": ("hertz/material", "tsuji", "mindlin"),
     "hertz-kuwabara-kono": ("hertz/material", "viscoelastic", "mindlin"),
 }
+COUNTERPARTS = {law: " + ".join(words) for law, words in GRANULAR.items()}     # as `harness models` prints them
 HISTORY_STYLES = {"linear-spring-dashpot": "hooke/history", "hertz-kuwabara-kono": "hertz/history"}
 MINDLIN_FORMS = {"mindlin": "total", "mindlin_rescale": "total-rescale", "mindlin/force": "force",
                  "mindlin_rescale/force": "force-rescale"}
@@ -36,7 +37,7 @@ def check_options(law_name, options):
     if options.get("style", "granular") == "history" and law_name not in HISTORY_STYLES:
         raise UserError(f"LAMMPS has no older wall style for {law_name}; style history is for "
                         f"{', '.join(HISTORY_STYLES)}")
-    if "tangential" in options and (COUNTERPARTS.get(law_name, ("",))[0] != "hertz/material"
+    if "tangential" in options and (GRANULAR.get(law_name, ("",))[0] != "hertz/material"
                                     or options.get("style", "granular") != "granular"):
         raise UserError(f"the Mindlin springs are for the granular style's hertz/material laws, not {law_name}")
     return options
@@ -47,7 +48,7 @@ def words(law_name, options):
     options = check_options(law_name, options)
     if options.get("style", "granular") == "history":
         return HISTORY_STYLES[law_name], None, None, None
-    normal, damping, tangential = COUNTERPARTS[law_name]
+    normal, damping, tangential = GRANULAR[law_name]
     return "granular", normal, damping, options.get("tangential", tangential)
 
 
@@ -62,7 +63,7 @@ def dialect(law_name, options=None):
     if options.get("style", "granular") == "history":
         return replace_submodels(compose(law_name), HISTORY_DIALECTS[law_name], "lammps")
     overrides = dict(DIALECTS[law_name])
-    if COUNTERPARTS[law_name][0] == "hertz/material":
+    if GRANULAR[law_name][0] == "hertz/material":
         form = MINDLIN_FORMS[options.get("tangential", "mindlin")]
         overrides["tangential"] = f"lammps-wall-mindlin:{form}"
     return replace_submodels(compose(law_name), overrides, "lammps")
