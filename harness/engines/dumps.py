@@ -38,6 +38,14 @@ def read_final(path, n_atoms, engine):
     return rows[:, 1:]
 
 
+
+def rebound(state, radius, engine, log_tail=""):
+    """Rebound velocities and separation from a final dump's (z, vx, vz, omegay); EngineFailure if not finite."""
+    z, vx, vz, omegay = state.T
+    if not np.all(np.isfinite(state)):
+        raise EngineFailure(f"{engine} returned non-finite velocities", log_tail)
+    return {"v_n1": vz, "v_t1": vx, "omega1": omegay, "separated": z > radius}
+
 def dump_rows(path, engine):
     """(step, atom index, z, fz) of every row of the observe dump, one array each; EngineFailure when missing or
     malformed."""

@@ -57,6 +57,16 @@ class Engine(Protocol):
         """(file name, text) of the input a run would give the engine (harness render)."""
 
 
+def status_of(name, installed, missing_reason, supported, law_name):
+    """An external engine's Status for a law: installed (else what was looked for, `missing_reason()`), with a dialect
+    of the law (`supported`)."""
+    if not installed:
+        return Status(name, False, missing_reason())
+    if not supported:
+        return Status(name, False, f"{name} has no counterpart of {law_name}")
+    return Status(name, True)
+
+
 def check_options(name, declared, options):
     """The options given, validated against an engine's declared ones: one clear line for an unknown key or value."""
     options = dict(options or {})

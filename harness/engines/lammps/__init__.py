@@ -2,7 +2,7 @@
 granular`, run as a subprocess; its dialects are in dialect.py, its input and output in deck.py, its binary in
 binary.py."""
 from ..batches import render_input
-from ..protocol import Status
+from ..protocol import status_of
 from .binary import BINARY_VARIABLE, available, binary, missing_reason, version
 from .deck import OBSERVE_DUMP, TEMPLATES, deck, read_batch, render_batch, run_batch, run_together, settings
 from .dialect import COUNTERPARTS, DIALECTS, HISTORY_STYLES, OPTIONS, check_options, dialect, words
@@ -11,10 +11,10 @@ NAME = "lammps"
 INPUT_SUFFIX = ".in"
 
 
-
 def walls(law_name):
     """A wall of the sphere's own material only: the granular wall takes one E and nu and mixes them itself."""
     return ("same",)
+
 
 def supports(law_name):
     return law_name in COUNTERPARTS and law_name in DIALECTS
@@ -22,11 +22,7 @@ def supports(law_name):
 
 def status(law_name, options=None):
     """Installed (the binary named, or `lmp` on PATH), with a dialect of the law?"""
-    if not available():
-        return Status(NAME, False, missing_reason())
-    if not supports(law_name):
-        return Status(NAME, False, f"lammps has no counterpart of {law_name}")
-    return Status(NAME, True)
+    return status_of(NAME, available(), missing_reason, supports(law_name), law_name)
 
 
 def run(runs):

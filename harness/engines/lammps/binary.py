@@ -1,29 +1,22 @@
-"""Which LAMMPS binary runs, whether it is there, and its version (read from its help text in a temporary
-directory, never in the user's)."""
-import os
+"""Which LAMMPS binary runs, whether it is there, and its version (harness.engines.executable)."""
 import re
-import shutil
 from functools import lru_cache
 
-from ..runner import EngineFailure, run_engine, scratch
+from ..executable import banner, chosen, missing, present
 
 BINARY_VARIABLE = "HARNESS_LAMMPS"      # path of another lmp binary (a custom build, or a test's fake)
-VERSION_TIMEOUT_S = 5.0
 
 
 def binary():
-    return os.environ.get(BINARY_VARIABLE, "lmp")
+    return chosen(BINARY_VARIABLE, "lmp")
 
 
 def available():
-    return shutil.which(binary()) is not None
+    return present(BINARY_VARIABLE, "lmp")
 
 
 def missing_reason():
-    """What was looked for, and where, when the binary is not there."""
-    if BINARY_VARIABLE in os.environ:
-        return f"{BINARY_VARIABLE}={os.environ[BINARY_VARIABLE]!r} is not an executable file"
-    return "no `lmp` on PATH (apt-get install -y lammps, or bash tools/setup.sh)"
+    return missing(BINARY_VARIABLE, "lmp", "lammps")
 
 
 def version():
@@ -33,17 +26,8 @@ def version():
 @lru_cache(maxsize=None)
 def _version(path):
     """'29Sep2021_update2' (the stable release's own spelling) from the banner of `lmp -h`, '29 Sep 2021 - Update 2'."""
-    with scratch("lammps-version") as workdir:
-        try:
-            run_engine([path, "-h"], workdir, VERSION_TIMEOUT_S)
-        except EngineFailure:
-            pass
-        try:
-            with open(os.path.join(workdir, "engine.log"), errors="replace") as handle:
-                log = handle.read(20000)
-        except OSError:
-            log = ""
-    match = re.search(r"Simulator - ([0-9]+) ([A-Za-z]+) ([0-9]+)(?: - Update ([0-9]+))?\s*$", log, re.MULTILINE)
+    match = re.search(r"Simulator - ([0-9]+) ([A-Za-z]+) ([0-9]+)(?: - Update ([0-9]+))?\s*$", banner(path, "lammps"),
+                      re.MULTILINE)
     if not match:
         return "unknown"
     day, month, year, update = match.groups()

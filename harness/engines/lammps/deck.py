@@ -4,12 +4,10 @@ import math
 import os
 from pathlib import Path
 
-import numpy as np
-
 from ...render import render
 from ...version import __version__
 from ..batches import max_steps_of, run_grouped
-from ..dumps import read_final, read_observed
+from ..dumps import read_final, read_observed, rebound
 from ..runner import EngineFailure, run_engine
 from .binary import binary
 from .dialect import dialect, words
@@ -100,10 +98,7 @@ def read_batch(run, batch, directory):
 def read_outputs(directory, batch, radius, observe):
     """Rebound velocities and separation from the final dump in `directory`; with `observe` also t_contact, f_n_max
     and overlap_max from the observe dump."""
-    z, vx, vz, omegay = read_final(os.path.join(directory, "final.dump"), len(batch.v_n0), "LAMMPS").T
-    if not (np.all(np.isfinite(vx)) and np.all(np.isfinite(vz)) and np.all(np.isfinite(omegay))):
-        raise EngineFailure("LAMMPS returned non-finite velocities")
-    final = {"v_n1": vz, "v_t1": vx, "omega1": omegay, "separated": z > radius}
+    final = rebound(read_final(os.path.join(directory, "final.dump"), len(batch.v_n0), "LAMMPS"), radius, "LAMMPS")
     if observe:
         final.update(read_observed(os.path.join(directory, OBSERVE_DUMP), len(batch.v_n0), radius, batch.dt,
                                    "LAMMPS"))

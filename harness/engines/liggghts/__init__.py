@@ -1,7 +1,7 @@
 """LIGGGHTS 3.8.0 as an engine (docs/engines.md): one batched deck per (law, e_n), run as a subprocess; its dialects
 are in dialect.py, its input and output in deck.py, its binary in binary.py."""
 from ..batches import render_input
-from ..protocol import Status
+from ..protocol import status_of
 from .binary import BINARY_VARIABLE, available, binary, missing_reason, version
 from .deck import (OBSERVE_DUMP, OTHER_WALL_MODELS, TEMPLATES, deck, read_dump, read_observation, render_batch, run_batch, run_deck,
                    run_together, settings)
@@ -11,10 +11,10 @@ NAME = "liggghts"
 INPUT_SUFFIX = ".in"
 
 
-
 def walls(law_name):
     """hooke and hertz against any wall (a second atom type), the others against the sphere's material only."""
     return ("same", "other", "rigid") if COUNTERPARTS.get(law_name) in OTHER_WALL_MODELS else ("same",)
+
 
 def supports(law_name):
     return law_name in COUNTERPARTS and law_name in DIALECTS
@@ -22,11 +22,7 @@ def supports(law_name):
 
 def status(law_name, options=None):
     """Installed (the binary named, or `liggghts` on PATH), with a dialect of the law?"""
-    if not available():
-        return Status(NAME, False, missing_reason())
-    if not supports(law_name):
-        return Status(NAME, False, f"liggghts has no counterpart of {law_name}")
-    return Status(NAME, True)
+    return status_of(NAME, available(), missing_reason, supports(law_name), law_name)
 
 
 def run(runs):

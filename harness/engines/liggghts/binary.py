@@ -1,29 +1,22 @@
-"""Which LIGGGHTS binary runs, whether it is there, and its version (read in a temporary directory, where the
-binary's log.liggghts lands, never in the user's)."""
-import os
+"""Which LIGGGHTS binary runs, whether it is there, and its version (harness.engines.executable)."""
 import re
-import shutil
 from functools import lru_cache
 
-from ..runner import EngineFailure, run_engine, scratch
+from ..executable import BANNER_TIMEOUT_S as VERSION_TIMEOUT_S, banner, chosen, missing, present
 
 BINARY_VARIABLE = "HARNESS_LIGGGHTS"     # path of another liggghts binary (a custom build, or a test's fake)
-VERSION_TIMEOUT_S = 5.0                 # the banner comes in well under a second; a hung binary costs no more
 
 
 def binary():
-    return os.environ.get(BINARY_VARIABLE, "liggghts")
+    return chosen(BINARY_VARIABLE, "liggghts")
 
 
 def available():
-    return shutil.which(binary()) is not None
+    return present(BINARY_VARIABLE, "liggghts")
 
 
 def missing_reason():
-    """What was looked for, and where, when the binary is not there."""
-    if BINARY_VARIABLE in os.environ:
-        return f"{BINARY_VARIABLE}={os.environ[BINARY_VARIABLE]!r} is not an executable file"
-    return "no `liggghts` on PATH (apt-get install -y liggghts, or bash tools/setup.sh)"
+    return missing(BINARY_VARIABLE, "liggghts", "liggghts")
 
 
 def version():
@@ -33,15 +26,8 @@ def version():
 @lru_cache(maxsize=None)
 def _version(path):
     """'3.8.0' from the banner the binary prints."""
-    with scratch("liggghts-version") as workdir:
-        try:
-            run_engine([path, "-h"], workdir, VERSION_TIMEOUT_S)
-        except EngineFailure:
-            pass
-        try:
-            with open(os.path.join(workdir, "engine.log"), errors="replace") as handle:
-                log = handle.read(20000)               # the banner is at the top of the help text
-        except OSError:
-            log = ""
-    match = re.search(r"LIGGGHTS-PUBLIC ([0-9.]+)", log)
+    match = re.search(r"LIGGGHTS-PUBLIC ([0-9.]+)", banner(path, "liggghts"))
     return match.group(1) if match else "unknown"
+
+
+__all__ = ["BINARY_VARIABLE", "VERSION_TIMEOUT_S", "available", "binary", "missing_reason", "version"]

@@ -5,12 +5,10 @@ import os
 from dataclasses import dataclass
 from pathlib import Path
 
-import numpy as np
-
 from ...version import __version__
 from ...render import render
 from ..batches import max_steps_of, run_grouped
-from ..dumps import read_final, read_observed
+from ..dumps import read_final, read_observed, rebound
 from ..runner import EngineFailure, run_engine
 from .binary import binary
 from .dialect import COUNTERPARTS
@@ -147,11 +145,8 @@ def run_inputs(_, count, timeout_s, workdir):
 
 
 def final_state(state, radius, log_tail=""):
-    """Rebound velocities and separation from the final dump's (z, vx, vz, omegay)."""
-    z, vx, vz, omegay = state.T
-    if not np.all(np.isfinite(state)):
-        raise EngineFailure("LIGGGHTS returned non-finite velocities", log_tail)
-    return {"v_n1": vz, "v_t1": vx, "omega1": omegay, "separated": z > radius}
+    """Rebound velocities and separation from the final dump's (z, vx, vz, omegay) (see dumps.rebound)."""
+    return rebound(state, radius, "LIGGGHTS", log_tail)
 
 
 def read_batch(run, batch, directory):

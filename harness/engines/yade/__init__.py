@@ -2,7 +2,7 @@
 yade launcher; its dialects are in dialect.py, its input and output in script.py, its interpreter and flavours in
 flavours.py. It also checks its own arithmetic (precision.py)."""
 from ..batches import render_input
-from ..protocol import Status
+from ..protocol import status_of
 from .dialect import DIALECTS, COUNTERPARTS, OPTIONS, check_options, dialect
 from .flavours import (ARITHMETIC, FLAVOURS, PYTHON_VARIABLE, available, environment, flavour_path, missing_reason,
                        python, version)
@@ -14,10 +14,10 @@ NAME = "yade"
 INPUT_SUFFIX = ".py"
 
 
-
 def walls(law_name):
     """A wall of the sphere's own material only."""
     return ("same",)
+
 
 def supports(law_name):
     return law_name in COUNTERPARTS and law_name in DIALECTS
@@ -26,11 +26,7 @@ def supports(law_name):
 def status(law_name, options=None):
     """Debian's python3.11 and the chosen flavour's module directory, with a dialect of the law?"""
     precision = check_options(options).get("precision", "double")
-    if not available(precision):
-        return Status(NAME, False, missing_reason(precision))
-    if not supports(law_name):
-        return Status(NAME, False, f"yade has no counterpart of {law_name}")
-    return Status(NAME, True)
+    return status_of(NAME, available(precision), lambda: missing_reason(precision), supports(law_name), law_name)
 
 
 def run(runs):

@@ -2,7 +2,6 @@
 (1 + nu), the wall's own stiffness coefficient from the sphere's E and nu, on the total displacement xi (`mindlin`,
 F = -k_t xi) or on the force (`mindlin/force`, F - k_t dd), each rescaled by a/a_old while a falls in its `_rescale`
 form (docs/lammps-dialect.md)."""
-from ...errors import UserError
 from ...jit import compiled
 from .mindlin import Mindlin, stiffness, total_after_cap  # noqa: F401  (the dispatch points its kernels share)
 from .state import T_AUX1
@@ -17,16 +16,9 @@ def wall_coefficient(contact):
 
 
 class LammpsWallMindlin(Mindlin):
-    """k_t = K a, K = E/4 (2 - nu)(1 + nu) (LAMMPS' wall), on the total displacement."""
+    """k_t = K a, K = E/4 (2 - nu)(1 + nu) (LAMMPS' wall), on the total displacement or the force."""
     name = "lammps-wall-mindlin"
-
-    def __init__(self, form="total"):
-        if form not in FORMS:
-            raise UserError(f"lammps-wall-mindlin form must be one of {', '.join(FORMS)}, got {form!r}")
-        self.form, self.kernel = form, FORMS[form]
-
-    def label(self):
-        return f"lammps-wall-mindlin({self.form})"
+    FORMS, DEFAULT_FORM = FORMS, "total"
 
     def parameter(self, contact, k_n):
         return wall_coefficient(contact) / 8.0          # the kernel's k_t = 8 p1 a

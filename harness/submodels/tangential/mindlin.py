@@ -13,14 +13,16 @@ FORMS = {"rescale": "mindlin:rescale", "incremental": "mindlin:incremental", "to
 class Mindlin(TangentialModel):
     """No-slip Mindlin k_t = 8 G* a: 'rescale' = paper eq. 18b, 'incremental' (YADE), 'total' (LIGGGHTS)."""
     name = "mindlin"
+    FORMS, DEFAULT_FORM = FORMS, "rescale"          # form -> kernel
 
-    def __init__(self, form="rescale"):
-        if form not in FORMS:
-            raise UserError(f"mindlin form must be one of {', '.join(FORMS)}, got {form!r}")
-        self.form, self.kernel = form, FORMS[form]
+    def __init__(self, form=None):
+        form = form or self.DEFAULT_FORM
+        if form not in self.FORMS:
+            raise UserError(f"{self.name} form must be one of {', '.join(self.FORMS)}, got {form!r}")
+        self.form, self.kernel = form, self.FORMS[form]
 
     def label(self):
-        return f"mindlin({self.form})"
+        return f"{self.name}({self.form})"
 
     def parameter(self, contact, k_n):
         return contact.G_star
