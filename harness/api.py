@@ -14,6 +14,7 @@ from .plan import CONVERGED, compare_plan, reference_runs
 from .request import Request
 from .solver.reference import simulate
 from .solver.threads import in_background
+from .two_spheres import with_bodies
 
 HISTORY_POINTS = 400
 
@@ -37,7 +38,7 @@ def run_request(request, on_frame=None, progress=None):
         if progress:
             progress.advance(f"e_n {frame.e_n_target.iloc[0]:g}")
     table, _ = execute(runs, done)
-    return table
+    return with_bodies(table, request.scene) if request.scene.spheres else table
 
 
 def compare(model, engines=None, engine_options=None, **keywords):
@@ -56,10 +57,11 @@ def statuses(request):
     for name in names:
         engine = ENGINES[name]
         status = engine.status(request.law.name, request.engine_options.get(name))
-        unsupported = ("engine inputs do not model gravity" if scene.gravity else
+        unsupported = ("a sphere target is not in its inputs yet (the reference runs it)" if scene.spheres else
+                       "engine inputs do not model gravity" if scene.gravity else
                        f"its {request.law.name} inputs use a wall of the sphere's own material"
                        if scene.wall not in engine.walls(request.law.name) else None)
-        if status.available and unsupported:
+        if unsupported:
             status = Status(name, False, unsupported)
         out.append(status)
     return out

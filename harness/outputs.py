@@ -99,13 +99,13 @@ def load_comparison(out_dir):
     """The Comparison saved in DIR (its analyses follow from the table again)."""
     from .comparison import Comparison
     from .laws import compose
-    from .scene import Scene
+    from .scene import scene_of_record
     frame = read_csv(os.path.join(out_dir, "results.csv"))
     if frame.empty:
         raise UserError(f"{out_dir}/results.csv holds no results")
     run = _load_json(out_dir, RUN, ("model", "scene"))
     try:
-        scene = Scene(**{k: tuple(v) if isinstance(v, list) else v for k, v in dict(run["scene"]).items()})
+        scene = scene_of_record(run["scene"])
     except (TypeError, ValueError, UserError) as exc:
         raise UserError(f"{out_dir}/{RUN} is damaged or foreign: in its scene, {exc}") from None
     attribution_table = _read(out_dir, ATTRIBUTION)

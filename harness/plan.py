@@ -42,11 +42,15 @@ class Run:
         resolution = (self.resolution.seconds if isinstance(self.resolution, FixedTimeStep) else self.resolution)
         identity = {"schema": SCHEMA, "engine": self.engine, "version": engine_version, "law": self.law.name,
                     "dialect": self.dialect.dialect, "submodels": self.dialect.describe(),
-                    "scenes": [{k: v for k, v in asdict(s).items() if k != "extra"}
-                               for s in (self.scene,) + self.together],
+                    "scenes": [scene_identity(s) for s in (self.scene,) + self.together],
                     "resolution": [type(self.resolution).__name__, resolution], "options": list(self.options),
                     "observe": self.observe}
         return hashlib.sha256(json.dumps(identity, sort_keys=True, default=repr).encode()).hexdigest()[:20]
+
+
+def scene_identity(scene):
+    """The scene's fields that make a run what it is: not `extra`, nor `spheres` of a wall impact (None)."""
+    return {k: v for k, v in asdict(scene).items() if k != "extra" and not (k == "spheres" and v is None)}
 
 
 def per_e_n(scene):

@@ -11,12 +11,16 @@ from .scene import DEFAULT_ANGLES, DEFAULT_EN, DEFAULT_SPEED, from_material
 from .solver.plan import FixedTimeStep
 
 SCENE_KEYWORDS = ("en", "angles", "psi", "vt", "mu", "material", "radius", "E", "nu", "rho", "speed", "normal_speed",
-                  "omega0", "gravity", "wall")
+                  "omega0", "gravity", "wall", "target", "target_radius", "target_material", "target_omega",
+                  "target_fixed")
+TARGETS = ("wall", "sphere")
 
 
 def scene_from(en=DEFAULT_EN, angles=None, psi=None, vt=None, mu=None, material="tcc13", radius=None, E=None,
-               nu=None, rho=None, speed=None, normal_speed=None, omega0=0.0, gravity=0.0, wall="same"):
-    """The validated Scene of the scene keywords."""
+               nu=None, rho=None, speed=None, normal_speed=None, omega0=0.0, gravity=0.0, wall="same", target="wall",
+               target_radius=None, target_material="same", target_omega=0.0, target_fixed=False):
+    """The validated Scene of the scene keywords; with target="sphere", the equivalent wall impact of the sphere
+    hitting a target sphere at rest (harness.two_spheres.reduce)."""
     if speed is not None and normal_speed is not None:
         raise UserError("give --speed or --normal-speed, not both")
     if sum(x is not None for x in (angles, psi, vt)) > 1:
@@ -25,11 +29,62 @@ def scene_from(en=DEFAULT_EN, angles=None, psi=None, vt=None, mu=None, material=
         angles = DEFAULT_ANGLES
     speed_is = "normal" if normal_speed is not None else "resultant"
     speed = normal_speed if normal_speed is not None else speed
-    return from_material(material, radius=radius, E=E, nu=nu, rho=rho, mu=mu,
+    sphere = target_sphere(target, target_radius, target_material, target_omega, target_fixed)
+    scene = from_material(material, radius=radius, E=E, nu=nu, rho=rho, mu=mu,
                          speed=DEFAULT_SPEED if speed is None else speed, speed_is=speed_is, e_n=tuple(en),
                          angles_deg=None if angles is None else tuple(angles), psi1_star=None if psi is None else
                          tuple(psi), v_t=None if vt is None else tuple(vt), omega0=omega0, gravity=gravity,
                          **wall_fields(wall))
+    if sphere is None:
+        return scene
+    from .two_spheres import reduce
+    return reduce(scene, sphere(scene))
+
+
+def target_sphere(target, radius, material, omega, fixed):
+    """--target wall|sphere and the target sphere's options -> None (a wall) or a function of the projectile's scene
+    giving the target Sphere (its radius and material default to the projectile's)."""
+    from .bodies import Sphere
+    if target not in TARGETS:
+        raise UserError(f"--target must be one of {', '.join(TARGETS)}, got {target!r}")
+    if target == "wall":
+        given = [name for name, value, default in (("radius", radius, None), ("material", material, "same"),
+                                                   ("omega", omega, 0.0), ("fixed", fixed, False))
+                 if value != default]
+        if given:
+            raise UserError(f"--target-{given[0]} describes a sphere target: give --target sphere")
+        return None
+    if radius is not None and not (isinstance(radius, (int, float)) and math.isfinite(radius) and radius > 0):
+        raise UserError(f"--target-radius must be a positive number of metres, got {radius!r}")
+    if not (isinstance(omega, (int, float)) and math.isfinite(omega)):
+        raise UserError(f"--target-omega must be a finite number, got {omega!r}")
+    fields = target_material_fields(material)
+
+    def sphere(scene):
+        own = {"E": scene.E, "nu": scene.nu, "rho": scene.rho, **fields}
+        return Sphere(scene.radius if radius is None else float(radius), own["E"], own["nu"], own["rho"],
+                      omega=float(omega), fixed=bool(fixed))
+    return sphere
+
+
+def target_material_fields(text):
+    """--target-material same|MATERIAL|E=PASCAL,nu=RATIO,rho=KG_M3 -> the target's E, nu, rho (same: the projectile's)."""
+    if text == "same":
+        return {}
+    if "=" in text:
+        fields = dict(part.partition("=")[::2] for part in text.split(","))
+        if set(fields) != {"E", "nu", "rho"}:
+            raise UserError(f"--target-material E=PASCAL,nu=RATIO,rho=KG_M3 takes E, nu and rho, got {text!r}")
+        try:
+            values = {k: float(v) for k, v in fields.items()}
+        except ValueError:
+            raise UserError(f"--target-material E, nu and rho must be numbers, got {text!r}") from None
+        if not (values["E"] > 0 and -1.0 < values["nu"] < 0.5 and values["rho"] > 0):
+            raise UserError(f"--target-material needs E > 0, -1 < nu < 0.5 and rho > 0, got {text!r}")
+        return values
+    from .materials import get_material
+    mat = get_material(text)
+    return {"E": mat.E, "nu": mat.nu, "rho": mat.rho}
 
 
 def wall_fields(text):
@@ -118,5 +173,8 @@ class Request:
                             f"({', '.join(engines)})")
         request = cls(model, scene_from(**keywords), resolution_from(steps_per_contact, dt, converged),
                       tuple(pairs), None if engines is None else tuple(engines), options)
-        request.law                          # unknown law or sub-model: refused here, before anything runs
+        law = request.law                    # unknown law or sub-model: refused here, before anything runs
+        if request.scene.spheres:
+            from .two_spheres import refuse_engine_levers
+            refuse_engine_levers(law)
         return request

@@ -5,6 +5,7 @@ from numbers import Real
 
 import numpy as np
 
+from .bodies import Sphere
 from .errors import UserError
 from .materials import get_material
 
@@ -43,7 +44,8 @@ class Scene:
     """A sphere of radius R hitting a wall: at the listed angles (deg from the normal) with speed V the resultant
     (speed_is 'resultant', LIGGGHTS-PFM's way) or the normal speed (speed_is 'normal', Kratos' way: V_t = V tan
     theta), or at normal speed V with the listed Psi1* values or tangential speeds v_t. Defaults: the paper's scene
-    (material tcc13, 5 m/s, e_n 0.25/0.5/0.75/0.9)."""
+    (material tcc13, 5 m/s, e_n 0.25/0.5/0.75/0.9). With `spheres` (projectile, target: bodies.Sphere) the target is
+    a sphere and the scene is their relative motion's equivalent wall impact (harness.two_spheres.reduce)."""
     radius: float = 25e-3
     E: float = 70e9
     nu: float = 0.3
@@ -61,6 +63,7 @@ class Scene:
     gravity: float = 0.0
     material: str = "tcc13"
     speed_is: str = "resultant"
+    spheres: tuple | None = None
     extra: dict = field(default_factory=dict, compare=False)
 
     def __post_init__(self):
@@ -88,6 +91,14 @@ class Scene:
             v_n = np.full_like(v_t, self.speed)
             theta_deg = np.degrees(np.arctan2(v_t, v_n))
         return v_n, v_t, np.full_like(v_n, self.omega0), theta_deg
+
+
+def scene_of_record(record):
+    """The Scene of its fields as written to JSON: lists back to tuples, the two spheres back to bodies."""
+    fields = {k: tuple(v) if isinstance(v, list) else v for k, v in dict(record).items()}
+    if fields.get("spheres"):
+        fields["spheres"] = tuple(Sphere(**body) for body in fields["spheres"])
+    return Scene(**fields)
 
 
 def contact_properties(scene):
@@ -119,16 +130,19 @@ def _positive(name, value):
 # the physical range a scene may take: contact mechanics of solid spheres, not molecules, planets or shock waves
 BOUNDS = {"radius": (1e-7, 10.0, "m"), "E": (1e3, 1e13, "Pa"), "rho": (1.0, 1e5, "kg/m^3"),
           "speed": (1e-6, 1e3, "m/s"), "gravity": (0.0, 1e3, "m/s^2"), "mu": (0.0, 10.0, "")}
+BODY = ("rho",)                 # a bound that holds per body when the target is a sphere (R* <= R1 is bounded)
 MAX_SURFACE_SPEED = 1e3          # m/s: tangential speed, R omega0
 MAX_IMPACTS = 10 ** 6            # per run: e_n values x impacts
 
 
 def within_bounds(scene):
-    """One line naming the bound a scene value lies outside (UserError)."""
+    """One line naming the bound a scene value lies outside (UserError); of two spheres, each body's rho
+    (their equivalent sphere's is derived)."""
     for name, (low, high, unit) in BOUNDS.items():
-        value = getattr(scene, name)
-        if not low <= value <= high:
-            raise UserError(f"{name} must lie in [{low:g}, {high:g}] {unit}, got {value!r}".replace(" ,", ","))
+        values = [getattr(b, name) for b in scene.spheres] if scene.spheres and name in BODY else [getattr(scene, name)]
+        for value in values:
+            if not low <= value <= high:
+                raise UserError(f"{name} must lie in [{low:g}, {high:g}] {unit}, got {value!r}".replace(" ,", ","))
     if abs(scene.omega0) * scene.radius > MAX_SURFACE_SPEED:
         raise UserError(f"|omega0| R must be at most {MAX_SURFACE_SPEED:g} m/s, got {abs(scene.omega0) * scene.radius:g}")
     surface = list(scene.v_t or ()) + [p * scene.mu * scene.speed for p in scene.psi1_star or ()]   # V_t at e_n 1

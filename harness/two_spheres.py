@@ -12,34 +12,16 @@ Frame: the projectile above the target, the line of centres along z at contact; 
 centres count positive towards the other sphere; tangential velocities along one x axis; spins about one y axis.
 """
 import math
-from dataclasses import dataclass
+from dataclasses import replace
 
+import numpy as np
 import pandas as pd
 
+from .bodies import Sphere
 from .errors import UserError
 from .scene import Scene
 
-
-@dataclass(frozen=True)
-class Sphere:
-    """One body: radius, material, and its velocity at first touch (v_n towards the other sphere, v_t along x, omega
-    about y); a fixed sphere neither moves nor turns whatever its mass."""
-    radius: float
-    E: float = 70e9
-    nu: float = 0.3
-    rho: float = 2650.0
-    v_n: float = 0.0
-    v_t: float = 0.0
-    omega: float = 0.0
-    fixed: bool = False
-
-    @property
-    def mass(self):
-        return 4.0 / 3.0 * math.pi * self.radius ** 3 * self.rho
-
-    @property
-    def inertia(self):
-        return 0.4 * self.mass * self.radius ** 2
+BODY_COLUMNS = ("J_n", "J_t", "v1_n", "v1_t", "omega1_after", "v2_n", "v2_t", "omega2_after")
 
 
 def effective(projectile, target):
@@ -48,23 +30,52 @@ def effective(projectile, target):
     return projectile.radius * target.radius / (projectile.radius + target.radius), 1.0 / inverse_mass
 
 
+def reduce(scene, target):
+    """The wall impact equivalent to `scene`'s sphere (the projectile: its material and spin omega0, its sweep the
+    velocities relative to the target) hitting `target` (a Sphere): radius R*, mass m*, spin (R1 omega1 + R2 omega2)/R*,
+    a wall of the target's material; the scene's `spheres` keep both bodies."""
+    if target.fixed and (target.v_n or target.v_t or target.omega):
+        raise UserError("a fixed target has no velocity or spin")
+    if scene.wall != "same":
+        raise UserError("a sphere target has its own material: give it instead of --wall")
+    projectile = Sphere(scene.radius, scene.E, scene.nu, scene.rho, omega=scene.omega0)
+    r_star, m_star = effective(projectile, target)
+    same = (target.E, target.nu) == (projectile.E, projectile.nu)
+    wall = {"wall": "same"} if same else {"wall": "other", "wall_E": target.E, "wall_nu": target.nu}
+    return replace(scene, radius=r_star, rho=m_star / (4.0 / 3.0 * math.pi * r_star ** 3),
+                   omega0=(projectile.radius * projectile.omega + target.radius * target.omega) / r_star,
+                   material=f"{scene.material} on a sphere", spheres=(projectile, target), **wall)
+
+
 def equivalent_scene(projectile, target, e_n=0.5, mu=0.1):
     """The sphere-wall scene of the pair's relative motion (one impact, at target e_n)."""
     if projectile.fixed:
         raise UserError("the projectile cannot be fixed; fix the target")
-    if target.fixed and (target.v_n or target.v_t or target.omega):
-        raise UserError("a fixed target has no velocity or spin")
     speed = projectile.v_n + target.v_n
     if not speed > 0.0:
         raise UserError(f"the spheres must approach: v_n of projectile and target sum to {speed:g} m/s")
+    own = Scene(radius=projectile.radius, E=projectile.E, nu=projectile.nu, rho=projectile.rho, mu=mu, speed=speed,
+                e_n=(e_n,), angles_deg=None, v_t=(abs(projectile.v_t - target.v_t),), omega0=projectile.omega,
+                material="two spheres")
+    return reduce(own, target)
+
+
+def with_bodies(frame, scene):
+    """`frame` (the equivalent impacts of a two-sphere scene) with each body's velocities after the collision and the
+    impulses on the projectile: J_n = m* (v_n1 + v_n0), J_t = m* (v_t1 - v_t0), applied to the projectile (its incident
+    velocity the relative one plus the target's) and, opposite, to the target unless it is fixed."""
+    projectile, target = scene.spheres
     r_star, m_star = effective(projectile, target)
-    same = (target.E, target.nu) == (projectile.E, projectile.nu)
-    wall = {"wall": "same"} if same else {"wall": "other", "wall_E": target.E, "wall_nu": target.nu}
-    return Scene(radius=r_star, E=projectile.E, nu=projectile.nu, rho=m_star / (4.0 / 3.0 * math.pi * r_star ** 3),
-                 mu=mu, speed=speed, e_n=(e_n,), angles_deg=None, psi1_star=None,
-                 v_t=(projectile.v_t - target.v_t,),
-                 omega0=(projectile.radius * projectile.omega + target.radius * target.omega) / r_star,
-                 material="two spheres", **wall)
+    j_n = m_star * (frame.v_n1 + frame.v_n0)
+    j_t = m_star * (frame.v_t1 - frame.v_t0)
+    moving = 0.0 if target.fixed else 1.0
+    after = {"J_n": j_n, "J_t": j_t,
+             "v1_n": frame.v_n0 - target.v_n - j_n / projectile.mass,
+             "v1_t": frame.v_t0 + target.v_t + j_t / projectile.mass,
+             "omega1_after": projectile.omega - projectile.radius * j_t / projectile.inertia,
+             "v2_n": target.v_n - moving * j_n / target.mass, "v2_t": target.v_t - moving * j_t / target.mass,
+             "omega2_after": target.omega - moving * target.radius * j_t / target.inertia}
+    return frame.assign(**{k: np.asarray(v, dtype=float) for k, v in after.items()})
 
 
 def collide(law, projectile, target, e_n=0.5, mu=0.1, steps_per_contact=1000):
@@ -73,19 +84,20 @@ def collide(law, projectile, target, e_n=0.5, mu=0.1, steps_per_contact=1000):
     body's velocities after it (v1_n, v1_t, omega1_after, v2_n, v2_t, omega2_after, the same conventions as the
     inputs) with the impulses J_n, J_t on the projectile."""
     from .solver.reference import simulate
+    refuse_engine_levers(law)
+    scene = equivalent_scene(projectile, target, e_n, mu)
+    flip = -1.0 if projectile.v_t - target.v_t < 0 else 1.0      # the sweep's v_t is >= 0: mirror x when it is not
+    mirrored = (replace(scene, omega0=flip * scene.omega0,
+                        spheres=tuple(replace(b, v_t=flip * b.v_t, omega=flip * b.omega) for b in scene.spheres)))
+    frame = with_bodies(simulate(law, mirrored, steps_per_contact=steps_per_contact)[0].reset_index(drop=True),
+                        mirrored)
+    for column in ("v_t0", "v_t1", "omega0", "omega1", "J_t", "v1_t", "omega1_after", "v2_t", "omega2_after"):
+        frame[column] = flip * frame[column]
+    return frame
+
+
+def refuse_engine_levers(law):
+    """Two spheres reduce to one wall impact only with the paper's levers R1, R2 (UserError otherwise)."""
     if law.lever != 0.0 or law.slip != "lever":
         raise UserError(f"two spheres reduce to one only with levers R1 and R2; {law.name} in the {law.dialect} "
                         f"dialect has lever {law.describe()['lever']} and slip {law.slip}")
-    scene = equivalent_scene(projectile, target, e_n, mu)
-    frame = simulate(law, scene, steps_per_contact=steps_per_contact)[0]
-    _, m_star = effective(projectile, target)
-    row = frame.iloc[0]
-    j_n = m_star * (row.v_n1 + scene.speed)
-    j_t = m_star * (row.v_t1 - (projectile.v_t - target.v_t))
-    moving = 0.0 if target.fixed else 1.0
-    after = {"J_n": j_n, "J_t": j_t,
-             "v1_n": projectile.v_n - j_n / projectile.mass, "v1_t": projectile.v_t + j_t / projectile.mass,
-             "omega1_after": projectile.omega - projectile.radius * j_t / projectile.inertia,
-             "v2_n": target.v_n - moving * j_n / target.mass, "v2_t": target.v_t - moving * j_t / target.mass,
-             "omega2_after": target.omega - moving * target.radius * j_t / target.inertia}
-    return pd.concat([frame.reset_index(drop=True), pd.DataFrame([after])], axis=1)

@@ -117,6 +117,17 @@ def add_scene_options(parser, resolution=True):
     g.add_argument("--gravity", type=number, default=0.0, help="gravity towards the wall [m/s^2] (default 0)")
     g.add_argument("--wall", default="same", metavar="same|rigid|MATERIAL|E=PA,nu=R",
                    help="wall of the same material (the paper's case), rigid, a preset material, or E and nu")
+    t = parser.add_argument_group("target (default: the wall)")
+    t.add_argument("--target", default="wall", choices=("wall", "sphere"),
+                   help="what the sphere hits: the wall, or a sphere at rest (the sweep's velocities are then the "
+                        "relative ones; the results add each body's velocities after the collision)")
+    t.add_argument("--target-radius", type=number, metavar="M", help="the target sphere's radius (default: the "
+                   "projectile's)")
+    t.add_argument("--target-material", default="same", metavar="same|MATERIAL|E=PA,nu=R,rho=KG_M3",
+                   help="the target sphere's material (default: the projectile's)")
+    t.add_argument("--target-omega", type=number, default=0.0, metavar="RAD_S",
+                   help="the target sphere's spin about the same axis as --omega0 (default 0)")
+    t.add_argument("--target-fixed", action="store_true", help="the target sphere neither moves nor turns")
     g.add_argument("--with", dest="overrides", type=submodel, action="append", default=[], metavar="KEY=VALUE",
                    help="replace one sub-model: normal=, damping=, end=, tangential=, tangential-damping= "
                         "(e.g. --with tangential=mindlin:incremental)")
@@ -173,6 +184,8 @@ def keywords(args, resolution=True):
     out = dict(en=args.en, angles=args.angles, psi=args.psi, vt=args.vt, mu=args.mu, material=args.material,
                radius=args.radius, E=args.E, nu=args.nu, rho=args.rho, speed=args.speed,
                normal_speed=args.normal_speed, omega0=args.omega0, gravity=args.gravity, wall=args.wall,
+               target=args.target, target_radius=args.target_radius, target_material=args.target_material,
+               target_omega=args.target_omega, target_fixed=args.target_fixed,
                overrides=tuple(args.overrides))
     if resolution:
         out.update(steps_per_contact=args.steps_per_contact, dt=args.dt, converged=args.converged)
