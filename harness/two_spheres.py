@@ -15,7 +15,6 @@ import math
 from dataclasses import replace
 
 import numpy as np
-import pandas as pd
 
 from .bodies import Sphere
 from .errors import UserError
