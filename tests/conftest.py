@@ -18,7 +18,8 @@ EXAMPLE = dict(radius=5e-3, mu=0.3, speed=1.0, material="example-5mm")
 settings.register_profile("repeatable", derandomize=True)
 settings.load_profile("repeatable")
 
-NOWHERE = {"HARNESS_LIGGGHTS": "/nonexistent/liggghts", "HARNESS_YADE_PYTHON": "/nonexistent/python3.11"}
+NOWHERE = {"HARNESS_LIGGGHTS": "/nonexistent/liggghts", "HARNESS_YADE_PYTHON": "/nonexistent/python3.11",
+           "HARNESS_LAMMPS": "/nonexistent/lmp"}
 
 
 def pytest_configure(config):
@@ -42,7 +43,7 @@ def needs(engine, flavour=None):
 
 @pytest.fixture(autouse=True)
 def engines_only_where_marked(request, monkeypatch):
-    """A test not marked `engine` sees no engine (both engines' paths point nowhere, for this process and the
+    """A test not marked `engine` sees no engine (every engine's path points nowhere, for this process and the
     commands it starts): `pytest -m "not engine"` can never run one, and a test that needs one must say so."""
     if "engine" not in request.node.keywords:
         for name, value in NOWHERE.items():

@@ -19,14 +19,14 @@ def describe(sub, name, summary, example):
 
 
 def build_parser():
-    from . import campaign, check, compare, cost, models, paper, query, render, report, run
+    from . import benchmark, campaign, check, compare, cost, models, paper, query, render, report, run
     parser = Parser(prog="harness", formatter_class=argparse.RawDescriptionHelpFormatter,
                     description="Cross-validate DEM contact force models against the literature (Thornton, Cummins "
                                 "& Cleary 2013) and against LIGGGHTS and YADE.",
                     epilog=f"example:\n  harness compare --model hertz-mindlin\n\n{EXIT_CODES}")
     parser.add_argument("--version", action="version", version=f"harness {__version__}")
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND", parser_class=Parser)
-    for module in (models, run, compare, cost, paper, render, report, check, campaign, query):
+    for module in (models, run, compare, cost, paper, benchmark, render, report, check, campaign, query):
         module.add(sub, describe)
     return parser
 
