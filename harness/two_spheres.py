@@ -62,18 +62,23 @@ def equivalent_scene(projectile, target, e_n=0.5, mu=0.1):
 def with_bodies(frame, scene):
     """`frame` (the equivalent impacts of a two-sphere scene) with each body's velocities after the collision and the
     impulses on the projectile: J_n = m* (v_n1 + v_n0), J_t = m* (v_t1 - v_t0), applied to the projectile (its incident
-    velocity the relative one plus the target's) and, opposite, to the target unless it is fixed."""
+    velocity the relative one plus the target's) and, opposite, to the target unless it is fixed. Each spin takes
+    -(R_i J_t - M/2)/I_i, M = int alpha F_t dt the moment of a lever R_i - alpha/2 (0 for levers R_i), found from the
+    equivalent spin: R* (w* - w*0) = -J_t (R1^2/I1 + R2^2/I2) + M/2 (R1/I1 + R2/I2)."""
     projectile, target = scene.spheres
     r_star, m_star = effective(projectile, target)
     j_n = m_star * (frame.v_n1 + frame.v_n0)
     j_t = m_star * (frame.v_t1 - frame.v_t0)
     moving = 0.0 if target.fixed else 1.0
+    r1, i1, r2, i2 = projectile.radius, projectile.inertia, target.radius, target.inertia
+    half_moment = ((r_star * (frame.omega1 - frame.omega0) + j_t * (r1 * r1 / i1 + moving * r2 * r2 / i2))
+                   / (r1 / i1 + moving * r2 / i2))
     after = {"J_n": j_n, "J_t": j_t,
              "v1_n": frame.v_n0 - target.v_n - j_n / projectile.mass,
              "v1_t": frame.v_t0 + target.v_t + j_t / projectile.mass,
-             "omega1_after": projectile.omega - projectile.radius * j_t / projectile.inertia,
+             "omega1_after": projectile.omega - (r1 * j_t - half_moment) / i1,
              "v2_n": target.v_n - moving * j_n / target.mass, "v2_t": target.v_t - moving * j_t / target.mass,
-             "omega2_after": target.omega - moving * target.radius * j_t / target.inertia}
+             "omega2_after": target.omega - moving * (r2 * j_t - half_moment) / i2}
     return frame.assign(**{k: np.asarray(v, dtype=float) for k, v in after.items()})
 
 
@@ -96,7 +101,8 @@ def collide(law, projectile, target, e_n=0.5, mu=0.1, steps_per_contact=1000):
 
 
 def refuse_engine_levers(law):
-    """Two spheres reduce to one wall impact only with the paper's levers R1, R2 (UserError otherwise)."""
+    """Two spheres reduce to one wall impact only with slip levers R1, R2 (the torque's may be R_i - alpha/2: its
+    equivalent lever is solver.plan.contact_point_lever) (UserError otherwise)."""
     if law.lever != 0.0 or law.slip != "lever":
         raise UserError(f"two spheres reduce to one only with levers R1 and R2; {law.name} in the {law.dialect} "
                         f"dialect has lever {law.describe()['lever']} and slip {law.slip}")

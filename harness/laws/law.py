@@ -16,8 +16,10 @@ from ..submodels.tangential_damping import TangentialDashpot
 END_RULES = ("tension", "no-tension")
 INTEGRATORS = ("paper", "velocity-verlet", "leapfrog", "lammps")
 SLIPS = ("lever", "noratch", "noratch-sphere")
+TORQUES = ("lever", "contact-point")
 LEVERS = ("0", "0.5", "1")
-SUBMODEL_KEYS = ("normal", "damping", "end", "tangential", "tangential-damping", "integrator", "lever", "slip")
+SUBMODEL_KEYS = ("normal", "damping", "end", "tangential", "tangential-damping", "integrator", "lever", "slip",
+                 "torque")
 
 
 @dataclass(frozen=True)
@@ -33,6 +35,8 @@ class Law:
     lever: float = 0.0                   # lever arm R - lever * alpha for slip and torque (paper 0, LIGGGHTS 1/2)
     slip: str = "lever"                  # slip V_t - lever omega, or YADE's noRatch form with the wall's reference
                                          # radius 1e8 R ('noratch', hertzian wall) or R ('noratch-sphere')
+    torque: str = "lever"                # torque lever: the slip's ('lever'), or each body's R_i - d/2 ('contact-point',
+                                         # LAMMPS' pairs; Verlet schemes)
     summary: str = ""
     dialect: str = "paper"               # whose formulas these are: the paper's, or an engine's
 
@@ -41,7 +45,9 @@ class Law:
         damping = self.damping.name + (f":{self.damping.calibration}" if self.damping.calibration else "")
         return {"normal": self.normal.label(), "damping": damping, "end": self.end,
                 "tangential": self.tangential.label(), "tangential-damping": self.tangential_damping.label(),
-                "integrator": self.integrator, "lever": {0.0: "R", 0.5: "R - d/2", 1.0: "R - d"}.get(self.lever, f"R - {self.lever:g} d"), "slip": self.slip}
+                "integrator": self.integrator,
+                "lever": {0.0: "R", 0.5: "R - d/2", 1.0: "R - d"}.get(self.lever, f"R - {self.lever:g} d"),
+                "slip": self.slip, "torque": self.torque}
 
     @property
     def provisional(self):
@@ -102,6 +108,8 @@ def replace_submodels(law, overrides, dialect=None):
             changes["lever"] = float(_choice(key, spec, LEVERS))
         elif key == "slip":
             changes["slip"] = _choice(key, spec, SLIPS)
+        elif key == "torque":
+            changes["torque"] = _choice(key, spec, TORQUES)
         else:
             raise UserError(f"unknown sub-model {key!r}; known: {', '.join(SUBMODEL_KEYS)}")
     law = replace(law, **changes) if changes else law

@@ -25,7 +25,9 @@ P_MAXSTEPS = 19
 P_SLIP_R1 = 20                               # slip form: 0 -> V_t - lever omega; r1 > 0 -> YADE noRatch
 P_BIG_R = 21                                 # > 0: the wall is a fixed sphere of this radius (YADE Luding set-up)
 P_GRADE_T, P_GRADE_N = 22, 23                # > 0: graded steps, N of them over [0, T] (paper scheme, converged mode)
-N_PARAMS = 24
+P_TORQUE_LEVER = 24                          # torque lever R - P_TORQUE_LEVER alpha in the Verlet schemes (= P_LEVER
+                                             # but for LAMMPS' pairs: slip from full radii, torque from R_i - d/2)
+N_PARAMS = 25
 
 # per-impact integer slots
 I_NORMAL, I_END, I_TANGENTIAL, I_INTEGRATOR = 0, 1, 2, 3

@@ -95,10 +95,11 @@ def tangential_update(s, st, o, ot, p, ints, h, scratch, alpha, a, f_n, in_conta
         o[S_VX], o[S_W], o[S_FT], o[S_FS], o[S_NOLD] = s[S_VX], s[S_W], 0.0, 0.0, f_n
         return
     m, inertia, radius = p[C.P_MASS], p[C.P_INERTIA], p[C.P_RADIUS]
-    lever_old = radius - p[C.P_LEVER] * s[S_ALPHA]
     lever = radius - p[C.P_LEVER] * alpha
+    torque_old = radius - p[C.P_TORQUE_LEVER] * s[S_ALPHA]
+    torque = radius - p[C.P_TORQUE_LEVER] * alpha
     vx_half = s[S_VX] + 0.5 * h * s[S_FT] / m
-    w_half = s[S_W] - 0.5 * h * lever_old * s[S_FT] / inertia
+    w_half = s[S_W] - 0.5 * h * torque_old * s[S_FT] / inertia
     slip = slip_velocity(p, alpha, vx_half, w_half, lever)
     f_t, f_s = friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, in_contact, scheme, lever)
     kick = f_t
@@ -107,7 +108,7 @@ def tangential_update(s, st, o, ot, p, ints, h, scratch, alpha, a, f_n, in_conta
     if scheme == C.INTEGRATOR_PAPER and sliding and f_n > 0.0 and not TANGENTIAL_VISCOUS[code]:
         kick = sliding_kick(s, o, m, h, f_t / f_n)
     o[S_VX] = vx_half + 0.5 * h * kick / m
-    o[S_W] = w_half - 0.5 * h * lever * kick / inertia
+    o[S_W] = w_half - 0.5 * h * torque * kick / inertia
     o[S_FT], o[S_FS], o[S_NOLD] = f_t, f_s, abs(f_n)
     ot[T_STEP] = h
 

@@ -52,6 +52,19 @@ def needs_tangential(scene, v_t0, omega0, law=None):
     return acts & ((v_t0 != 0.0) | (omega0 != 0.0))
 
 
+def contact_point_lever(scene):
+    """c of the torque lever R* - c alpha that gives each body the lever R_i - alpha/2 (docs/two-spheres.md): from
+    dw*/dt = -F_t (R1 (R1 - alpha/2)/I1 + R2 (R2 - alpha/2)/I2)/R* with w* = (R1 w1 + R2 w2)/R* and solid spheres,
+    c = m* R* (1/(m1 R1) + 1/(m2 R2))/2 (a fixed target's term 0); 1/2 against a wall."""
+    if not scene.spheres:
+        return 0.5
+    projectile, target = scene.spheres
+    contact = scene.contact
+    spread = 1.0 / (projectile.mass * projectile.radius) + (0.0 if target.fixed else
+                                                              1.0 / (target.mass * target.radius))
+    return 0.5 * contact.mass * contact.radius * spread
+
+
 def plan_batch(law, scene, e_n, steps_per_contact, check_stability=True, every_effect=False):
     """Kernel rows for every impact of the scene at target e_n; dt = (contact-time estimate at V) / steps, or the
     given FixedTimeStep; a dt above the stability limit is refused (harness.stability) unless the rows are for the
@@ -87,6 +100,7 @@ def plan_batch(law, scene, e_n, steps_per_contact, check_stability=True, every_e
         g_t = law.tangential_damping.ratio(dashpot, normal.linear_stiffness, constant_k_t, e_n)
         params[:, C.P_TDAMP] = 2.0 * g_t * np.sqrt(contact.mass)
     params[:, C.P_LEVER] = law.lever
+    params[:, C.P_TORQUE_LEVER] = law.lever if law.torque == "lever" else contact_point_lever(scene)
     params[:, C.P_BIG_R] = law.normal.stand_in_radius(contact) if hasattr(law.normal, "stand_in_radius") else 0.0
     params[:, C.P_SLIP_R1] = {"noratch": NORATCH_WALL_RADIUS * contact.radius, "noratch-sphere": contact.radius}.get(
         law.slip, 0.0)
