@@ -10,7 +10,7 @@ from .comparison import Comparison
 from .engines import ENGINES, EXTERNAL
 from .engines.protocol import Status
 from .execute import execute, run_all
-from .plan import CONVERGED, compare_plan, reference_runs
+from .plan import CONVERGED, compare_plan, reference_runs, target_of
 from .request import Request
 from .solver.reference import simulate
 from .solver.threads import in_background
@@ -57,10 +57,11 @@ def statuses(request):
     for name in names:
         engine = ENGINES[name]
         status = engine.status(request.law.name, request.engine_options.get(name))
-        unsupported = ("a sphere target is not in its inputs yet (the reference runs it)" if scene.spheres else
+        unsupported = ("a sphere target is not in its inputs yet (the reference runs it)"
+                       if target_of(scene) not in engine.targets(request.law.name) else
                        "engine inputs do not model gravity" if scene.gravity else
                        f"its {request.law.name} inputs use a wall of the sphere's own material"
-                       if scene.wall not in engine.walls(request.law.name) else None)
+                       if not scene.spheres and scene.wall not in engine.walls(request.law.name) else None)
         if unsupported:
             status = Status(name, False, unsupported)
         out.append(status)
@@ -117,7 +118,7 @@ def measurements(law, scene, engines, steps):
     def simulate_at(l, s):
         return simulate(l, s, steps_per_contact=steps)[0]
 
-    dialects = {engine.NAME: engine.dialect(law.name, options) for engine, options in engines.items()}
+    dialects = {engine.NAME: engine.dialect(law.name, options, target_of(scene)) for engine, options in engines.items()}
     attributions = {f"{name} dialect -> paper": attribution(law, dialect, scene, simulate_at)
                     for name, dialect in dialects.items()}
     names = list(dialects)

@@ -53,6 +53,11 @@ def scene_identity(scene):
     return {k: v for k, v in asdict(scene).items() if k != "extra" and not (k == "spheres" and v is None)}
 
 
+def target_of(scene):
+    """What the sphere hits: 'sphere' or 'wall'."""
+    return "sphere" if scene.spheres else "wall"
+
+
 def per_e_n(scene):
     """The scene once per e_n (a run's scene)."""
     return [replace(scene, e_n=(e_n,)) for e_n in scene.e_n]
@@ -66,13 +71,13 @@ def reference_runs(law, scene, resolution, dialect=None):
 def engine_runs(engine, law, scene, resolution, options=None, observe=False):
     """An engine running its dialect of `law` at every e_n."""
     options = tuple(sorted(dict(options or {}).items()))
-    dialect = engine.dialect(law.name, dict(options))
+    dialect = engine.dialect(law.name, dict(options), target_of(scene))
     return [Run(engine.NAME, law, dialect, s, resolution, options, observe) for s in per_e_n(scene)]
 
 
 def engine_plan(engine, law, scene, resolution, options=None):
     """What checks one engine: its dialect on the reference solver, then the engine itself, at equal dt."""
-    dialect = engine.dialect(law.name, dict(options or {}))
+    dialect = engine.dialect(law.name, dict(options or {}), target_of(scene))
     return reference_runs(law, scene, resolution, dialect) + engine_runs(engine, law, scene, resolution, options)
 
 

@@ -7,10 +7,10 @@ from .runner import EngineFailure
 DUMP_HEADER_LINES = 9           # TIMESTEP, NUMBER OF ATOMS, BOX BOUNDS (3 lines) and ATOMS items
 
 
-def read_final(path, n_atoms, engine):
-    """Final (z, vx, vz, omegay) per atom id from the `id z vx vz omegay` dump `engine` wrote; EngineFailure when it
-    is missing, cut (its last line must end, and its rows must be the number of atoms its header declares) or holds
-    another number of spheres."""
+def read_final(path, n_atoms, engine, columns=5):
+    """Final (z, vx, vz, omegay) per atom id from the `id z vx vz omegay` dump `engine` wrote (with columns=6, (x, z,
+    vx, vz, omegay) from `id x z vx vz omegay`); EngineFailure when it is missing, cut (its last line must end, and
+    its rows must be the number of atoms its header declares) or holds another number of spheres."""
     try:
         with open(path) as handle:
             text = handle.read()
@@ -28,7 +28,7 @@ def read_final(path, n_atoms, engine):
         complete = len(rows) - (0 if ended else 1)
         raise EngineFailure(f"{engine} final dump is cut short: {complete} complete rows of {declared}"
                             + ("" if ended else ", the last unterminated"))
-    if rows.ndim != 2 or rows.shape[1] != 5 or len(rows) != declared:
+    if rows.ndim != 2 or rows.shape[1] != columns or len(rows) != declared:
         raise EngineFailure(f"{engine} final dump is malformed: {len(rows)} rows where its header says {declared}")
     if declared != n_atoms:
         raise EngineFailure(f"{engine} final dump holds {declared} spheres where the deck made {n_atoms}")

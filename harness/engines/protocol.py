@@ -47,8 +47,12 @@ class Engine(Protocol):
     def supports(self, law_name: str) -> bool:
         """Has a counterpart of the law and a verified dialect of it."""
 
-    def dialect(self, law_name: str, options: dict):
-        """The law as this engine computes it (a harness.laws.Law), for the options given."""
+    def targets(self, law_name: str) -> tuple:
+        """What its inputs can put the sphere against for the law: 'wall', and 'sphere' where they can."""
+
+    def dialect(self, law_name: str, options: dict, target: str = "wall"):
+        """The law as this engine computes it (a harness.laws.Law), for the options given, against a wall or a
+        sphere (the engine's two-sphere dialect, reduced to the equivalent wall impact)."""
 
     def run(self, runs: list) -> list:
         """Each run of the plan (one batch: a law, an e_n, every impact) as (results frame, failure or None)."""

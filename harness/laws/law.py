@@ -14,7 +14,7 @@ from ..submodels.registry import (DAMPING_MODELS, ENGINE_NORMAL_MODELS, ENGINE_T
 from ..submodels.tangential_damping import TangentialDashpot
 
 END_RULES = ("tension", "no-tension")
-INTEGRATORS = ("paper", "velocity-verlet", "leapfrog", "lammps")
+INTEGRATORS = ("paper", "velocity-verlet", "leapfrog", "lammps", "lammps-pair")
 SLIPS = ("lever", "noratch", "noratch-sphere")
 TORQUES = ("lever", "contact-point")
 LEVERS = ("0", "0.5", "1")

@@ -52,6 +52,14 @@ def needs_tangential(scene, v_t0, omega0, law=None):
     return acts & ((v_t0 != 0.0) | (omega0 != 0.0))
 
 
+def centres_less_radius(scene):
+    """R1 + R2 - R*: where the pair stepper puts the target's centre below the equivalent sphere's (solver/pair.py)."""
+    if not scene.spheres:
+        raise ValueError("the pair integrator needs two spheres")
+    projectile, target = scene.spheres
+    return projectile.radius + target.radius - scene.contact.radius
+
+
 def contact_point_lever(scene):
     """c of the torque lever R* - c alpha that gives each body the lever R_i - alpha/2 (docs/two-spheres.md): from
     dw*/dt = -F_t (R1 (R1 - alpha/2)/I1 + R2 (R2 - alpha/2)/I2)/R* with w* = (R1 w1 + R2 w2)/R* and solid spheres,
@@ -101,7 +109,8 @@ def plan_batch(law, scene, e_n, steps_per_contact, check_stability=True, every_e
         params[:, C.P_TDAMP] = 2.0 * g_t * np.sqrt(contact.mass)
     params[:, C.P_LEVER] = law.lever
     params[:, C.P_TORQUE_LEVER] = law.lever if law.torque == "lever" else contact_point_lever(scene)
-    params[:, C.P_BIG_R] = law.normal.stand_in_radius(contact) if hasattr(law.normal, "stand_in_radius") else 0.0
+    params[:, C.P_BIG_R] = (law.normal.stand_in_radius(contact) if hasattr(law.normal, "stand_in_radius") else
+                            centres_less_radius(scene) if law.integrator == "lammps-pair" else 0.0)
     params[:, C.P_SLIP_R1] = {"noratch": NORATCH_WALL_RADIUS * contact.radius, "noratch-sphere": contact.radius}.get(
         law.slip, 0.0)
     params[:, C.P_VZ0] = -v_n0

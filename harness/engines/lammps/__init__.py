@@ -5,7 +5,7 @@ from ..batches import render_input
 from ..protocol import status_of
 from .binary import BINARY_VARIABLE, available, binary, missing_reason, version
 from .deck import OBSERVE_DUMP, TEMPLATES, deck, read_batch, render_batch, run_batch, run_together, settings
-from .dialect import COUNTERPARTS, DIALECTS, HISTORY_STYLES, OPTIONS, check_options, dialect, words
+from .dialect import COUNTERPARTS, DIALECTS, HISTORY_STYLES, OPTIONS, PAIR_DIALECTS, check_options, dialect, words
 
 NAME = "lammps"
 INPUT_SUFFIX = ".in"
@@ -14,6 +14,11 @@ INPUT_SUFFIX = ".in"
 def walls(law_name):
     """A wall of the sphere's own material only: the granular wall takes one E and nu and mixes them itself."""
     return ("same",)
+
+
+def targets(law_name):
+    """A wall, and for its Hertz laws a sphere (pair granular between two atoms)."""
+    return ("wall", "sphere") if law_name in PAIR_DIALECTS else ("wall",)
 
 
 def supports(law_name):
@@ -37,4 +42,4 @@ def render(run):
 
 __all__ = ["BINARY_VARIABLE", "COUNTERPARTS", "DIALECTS", "HISTORY_STYLES", "NAME", "OBSERVE_DUMP", "OPTIONS", "TEMPLATES", "available",
            "binary", "check_options", "deck", "dialect", "missing_reason", "read_batch", "render", "render_batch", "run",
-           "run_batch", "run_together", "settings", "status", "supports", "version", "words", "walls"]
+           "run_batch", "run_together", "settings", "status", "supports", "targets", "version", "words", "walls"]

@@ -4,6 +4,8 @@ import math
 import os
 from pathlib import Path
 
+import numpy as np
+
 from ...render import render
 from ...version import __version__
 from ..batches import max_steps_of, run_grouped
@@ -24,7 +26,7 @@ def settings(law, scene, e_n, options=None):
     as alpha^1/2 and alpha^1/4). history: k_n (4/3 E* for hertz/history), k_t (8 G*), gamma_n = c_n/m (c_n/(m sqrt R)
     for hertz/history), gamma_t = c_t/m, and dampflag 1 where there is a tangential dashpot."""
     style, normal, damping, tangential = words(law.name, options)
-    own = dialect(law.name, options)
+    own = dialect(law.name, options, "sphere" if scene.spheres else "wall")
     c = scene.contact
     stiffness = own.normal.parameters(c, e_n, scene.speed)
     dashpot = own.damping.dashpot(own.normal, c, e_n, scene.speed, own.end)
@@ -50,9 +52,47 @@ def settings(law, scene, e_n, options=None):
     return values
 
 
+def pair_material(contact):
+    """(E, nu) whose own mixing, E/(2(1 - nu^2)) and E/(4 (2 - nu)(1 + nu)), gives the pair's E* and G*: with
+    r = E*/G* = 2 (2 - nu)/(1 - nu), nu = (4 - r)/(2 - r) and E = 2 (1 - nu^2) E* (pair_coeff 1 2 mixes one
+    material with itself; its mixing of 1 1 and 2 2 is unusable in this version: docs/lammps-dialect.md)."""
+    r = contact.E_star / contact.G_star
+    nu = (4.0 - r) / (2.0 - r)
+    return {"E": 2.0 * (1.0 - nu * nu) * contact.E_star, "nu": nu}
+
+
+def pair_deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, options=None):
+    """The batched deck of two-sphere impacts: pair k is atoms 2k-1 (the projectile, above) and 2k (its target, at
+    rest, frozen when fixed), touching, their relative velocity the impact's; omega0 is the equivalent spin, so the
+    projectile's own is (R* omega0 - R2 omega2)/R1."""
+    projectile, target = scene.spheres
+    r1, r2, r_star = projectile.radius, target.radius, scene.contact.radius
+    spacing = 3.0 * (r1 + r2)
+    pairs = [{"x": i * spacing, "vx": float(vt), "vz": -float(vn),
+              "omega1": (r_star * float(w) - r2 * target.omega) / r1}
+             for i, (vn, vt, w) in enumerate(zip(v_n0, v_t0, omega0))]
+    values = settings(law, scene, e_n, options)
+    coefficient = values.pop("normal_args")[1]
+    materials = [(1, 1, {"E": projectile.E, "nu": projectile.nu}), (2, 2, {"E": target.E, "nu": target.nu}),
+                 (1, 2, pair_material(scene.contact))]
+    chunk = max(10, int(steps_per_contact // 10))
+    big = max(r1, r2)
+    return render(TEMPLATES, "pair.in.j2", harness_version=__version__, law=law.name, mu=scene.mu, e_n=e_n,
+                  pairs=pairs, coefficients=materials, coefficient=coefficient, x_lo=-2.0 * big,
+                  x_hi=len(pairs) * spacing, box_half=2.0 * big, z_lo=-2.0 * r2, z_hi=2.0 * (r1 + r2) + 2.0 * r1,
+                  skin=0.5 * min(r1, r2), dt=dt, centres=r1 + r2, r1=r1, r2=r2, rho1=projectile.rho, rho2=target.rho,
+                  omega2=target.omega, fixed=target.fixed, chunk=chunk, max_chunks=max(1, max_steps // chunk + 1),
+                  normal=values["normal"], damping=values["damping"], tangential=values["tangential"],
+                  x_gamma_t=values["x_gamma_t"])
+
+
 def deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, options=None, observe=False):
     """Render the batched deck (validated numbers and fixed words only; see harness.render); `observe` adds the
     per-step contact dump (OBSERVE_DUMP)."""
+    if scene.spheres:
+        if observe:
+            raise EngineFailure("LAMMPS' pair decks have no observe mode yet")
+        return pair_deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, options)
     if scene.wall != "same":
         raise EngineFailure("LAMMPS decks use a wall of the sphere's own material")
     radius = scene.radius
@@ -92,7 +132,24 @@ def run_inputs(_, count, timeout_s, workdir):
 
 def read_batch(run, batch, directory):
     """Rebound velocities and separation of one batch run in `directory` (and what observe mode saw)."""
+    if run.scene.spheres:
+        return pair_rebound(read_final(os.path.join(directory, "final.dump"), 2 * len(batch.v_n0), "LAMMPS", 6),
+                            run.scene)
     return read_outputs(directory, batch, run.scene.radius, run.observe)
+
+
+def pair_rebound(state, scene):
+    """The equivalent impact's rebound from each pair's final (x, z, vx, vz, omegay): v_n1 = vz1 - vz2, v_t1 =
+    vx1 - vx2, omega1 = (R1 w1 + R2 w2)/R* in the frame where the line of centres was z at first touch, separated
+    when the centres are more than R1 + R2 apart."""
+    projectile, target = scene.spheres
+    one, two = state[0::2], state[1::2]
+    gap = np.hypot(one[:, 0] - two[:, 0], one[:, 1] - two[:, 1]) - (projectile.radius + target.radius)
+    equivalent = np.column_stack([gap, one[:, 2] - two[:, 2], one[:, 3] - two[:, 3],
+                                  (projectile.radius * one[:, 4] + target.radius * two[:, 4]) / scene.contact.radius])
+    out = rebound(equivalent, 0.0, "LAMMPS")
+    out["separated"] = gap > 0.0
+    return out
 
 
 def read_outputs(directory, batch, radius, observe):

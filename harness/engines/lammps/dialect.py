@@ -25,6 +25,12 @@ DIALECTS = {                 # sub-models that make the paper law compute what L
     "hertz-mindlin": {**HERTZ, "damping": "tsuji:lammps"},
     "hertz-kuwabara-kono": {**HERTZ},
 }
+PAIR_DIALECTS = {            # pair granular between two spheres: the pair's own mixing of E* and G* (the paper's), the
+    "hertz-mindlin": {**COMMON, "integrator": "lammps-pair", "damping": "tsuji:lammps", "tangential": "mindlin:total",
+                      "torque": "contact-point"},
+    "hertz-kuwabara-kono": {**COMMON, "integrator": "lammps-pair", "tangential": "mindlin:total",
+                            "torque": "contact-point"},
+}                            # slip from the full radii, the torque from each R_i - d/2
 HISTORY_DIALECTS = {         # the older styles take harness' own k_n, E* and G* (no mixing of their own)
     "linear-spring-dashpot": {**COMMON},
     "hertz-kuwabara-kono": {**COMMON, "tangential": "mindlin:total", "tangential-damping": "none"},
@@ -52,14 +58,20 @@ def words(law_name, options):
     return "granular", normal, damping, options.get("tangential", tangential)
 
 
-def dialect(law_name, options=None):
+def dialect(law_name, options=None, target="wall"):
     """The law as LAMMPS computes it through fix wall/gran and fix nve/sphere: LIGGGHTS' velocity Verlet steps
     (forces from the half-step velocities, contact from gap 0, no clipping of the normal force), lever R, the Coulomb
     cap on spring plus dashpot (scheme `lammps`); the granular style's own wall moduli E_w = E/(2(1 - nu)) and
-    K = E/4 (2 - nu)(1 + nu) and its Mindlin forms; the older styles with the numbers harness gives them."""
+    K = E/4 (2 - nu)(1 + nu) and its Mindlin forms; the older styles with the numbers harness gives them. Against a
+    sphere (target 'sphere', pair granular): E* and G* mixed as the paper does, `mindlin` on the total displacement,
+    slip from the full radii and torque from R_i - d/2, contact from overlap > 0."""
     from ...laws import compose
     from ...laws.law import replace_submodels
     options = check_options(law_name, options)
+    if target == "sphere":
+        if options:
+            raise UserError(f"LAMMPS' pair inputs take no option, got {', '.join(options)}")
+        return replace_submodels(compose(law_name), PAIR_DIALECTS[law_name], "lammps")
     if options.get("style", "granular") == "history":
         return replace_submodels(compose(law_name), HISTORY_DIALECTS[law_name], "lammps")
     overrides = dict(DIALECTS[law_name])

@@ -16,6 +16,11 @@ def walls(law_name):
     return ("same", "other", "rigid") if COUNTERPARTS.get(law_name) in OTHER_WALL_MODELS else ("same",)
 
 
+def targets(law_name):
+    """A wall only: its inputs have no sphere target yet."""
+    return ("wall",)
+
+
 def supports(law_name):
     return law_name in COUNTERPARTS and law_name in DIALECTS
 
@@ -37,4 +42,4 @@ def render(run):
 
 __all__ = ["BINARY_VARIABLE", "DIALECTS", "COUNTERPARTS", "NAME", "OBSERVE_DUMP", "OPTIONS", "TEMPLATES", "available",
            "binary", "deck", "dialect", "read_dump", "read_observation", "render", "render_batch", "run", "run_batch", "run_deck",
-           "settings", "status", "supports", "version", "walls"]
+           "settings", "status", "supports", "targets", "version", "walls"]

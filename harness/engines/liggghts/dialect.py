@@ -44,7 +44,7 @@ def check_options(law_name, options):
     return options
 
 
-def dialect(law_name, options=None):
+def dialect(law_name, options=None, target="wall"):
     """The law as LIGGGHTS 3.8.0 computes it: velocity Verlet with half-step velocities in the forces,
     lever R - d/2, setup force at first touch, total-displacement tangential spring with its dashpot added after the
     Coulomb test; options change what the model honours (limitForce clips; tangential_damping off removes c_t;

@@ -31,8 +31,13 @@ def supports(law_name):
     return law_name in LAWS
 
 
-def dialect(law_name, options=None):
-    """The paper's law: the reference's own formulas."""
+def targets(law_name):
+    """A wall, or a sphere (the equivalent wall impact, harness.two_spheres)."""
+    return ("wall", "sphere")
+
+
+def dialect(law_name, options=None, target="wall"):
+    """The paper's law: the reference's own formulas (against a sphere too: levers R1, R2)."""
     return compose(law_name)
 
 

@@ -19,6 +19,11 @@ def walls(law_name):
     return ("same",)
 
 
+def targets(law_name):
+    """A wall only: its inputs have no sphere target yet."""
+    return ("wall",)
+
+
 def supports(law_name):
     return law_name in COUNTERPARTS and law_name in DIALECTS
 
@@ -47,4 +52,4 @@ def arithmetic(options):
 __all__ = ["ARITHMETIC", "DIALECTS", "FLAVOURS", "COUNTERPARTS", "NAME", "OBSERVE_FILE", "OPTIONS", "PYTHON_VARIABLE", "TEMPLATES",
            "arithmetic", "available", "dialect", "environment", "flavour_path", "HIGH", "precision_runs", "python",
            "read_observation", "read_result", "render", "render_batch", "run", "run_batch", "run_script", "script",
-           "status", "supports", "version", "walls"]
+           "status", "supports", "targets", "version", "walls"]

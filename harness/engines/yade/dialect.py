@@ -24,7 +24,7 @@ CUNDALL_STRACK = {             # K_n = E R, K_s = nu K_n, no damping (e = 1 what
     "integrator": "leapfrog", "lever": "0.5", "slip": "noratch-sphere"}
 
 
-def dialect(law_name, options=None):
+def dialect(law_name, options=None, target="wall"):
     """The law as YADE 2023.02a computes it: leapfrog with forces from the half-step velocities, contact from
     overlap >= 0 until the first negative overlap, App. B damping with the normal force clipped at 0, incremental
     8G*a shear spring (not reduced as a falls), dashpot after the Coulomb test, torque lever R - d, noRatch slip."""

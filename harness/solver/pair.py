@@ -1,0 +1,58 @@
+"""LAMMPS' pair granular between two spheres, stepped in their relative motion (docs/two-spheres.md)."""
+import math
+
+from ..jit import compiled
+from ..submodels.tangential.state import N_TSTATE, T_STEP
+from . import codes as C
+from .dispatch import NORMAL_HISTORY, TANGENTIAL_NONE, normal_step
+from .friction import friction
+from .schemes import damping_power
+from .state import (N_STATE, S_ALPHA, S_AMAX, S_FEL, S_FN, S_FS, S_FT, S_HISTORY, S_NOLD, S_NX, S_NZ, S_VX, S_VZ,
+                    S_W, S_X, S_Z, reset_history)
+
+
+@compiled
+def step_lammps_pair(s, st, o, ot, p, ints, h, scratch, ext):
+    """fix nve/sphere on both spheres with pair granular, as the relative motion r = x1 - x2 (mass m*) and the
+    equivalent spin w* = (R1 w1 + R2 w2)/R*: half kicks with the last force, drift, then from r the overlap
+    R1 + R2 - |r| and the normal n = r/|r|, which turns as the spheres pass each other; slip u.t - R* w* along
+    t = (n_z, -n_x); the tangential history kept along t at its length (LAMMPS projects it onto the new tangent plane
+    and rescales it); contact while the overlap is > 0. Returns the overlap."""
+    m, inertia, radius = p[C.P_MASS], p[C.P_INERTIA], p[C.P_RADIUS]
+    centres = radius + p[C.P_BIG_R]
+    for k in range(N_STATE):
+        o[k] = s[k]
+    for k in range(N_TSTATE):
+        ot[k] = st[k]
+    vx = s[S_VX] + 0.5 * h * (s[S_FN] * s[S_NX] + s[S_FT] * s[S_NZ]) / m
+    vz = s[S_VZ] + 0.5 * h * (s[S_FN] * s[S_NZ] - s[S_FT] * s[S_NX]) / m
+    w = s[S_W] - 0.5 * h * (radius - p[C.P_TORQUE_LEVER] * s[S_ALPHA]) * s[S_FT] / inertia
+    x, z = s[S_X] + h * vx, s[S_Z] + h * vz
+    dist = math.sqrt(x * x + (z + p[C.P_BIG_R]) * (z + p[C.P_BIG_R]))
+    alpha = centres - dist
+    amax = s[S_AMAX]
+    f_n, f_t, f_s, f_el, nx, nz = 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
+    reset_history(ints[C.I_NORMAL], o)
+    code = ints[C.I_TANGENTIAL]
+    if alpha > 0.0:
+        nx, nz = x / dist, (z + p[C.P_BIG_R]) / dist
+        f_el, a = normal_step(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], radius, alpha, s[S_ALPHA],
+                              s[S_FEL], amax, s[S_HISTORY:S_HISTORY + NORMAL_HISTORY],
+                              o[S_HISTORY:S_HISTORY + NORMAL_HISTORY], ext)
+        c = p[C.P_DAMP_C0] * damping_power(alpha, p[C.P_DAMP_POWER]) if p[C.P_DAMP_C0] != 0.0 else 0.0
+        f_n = f_el - c * (vx * nx + vz * nz)
+        if f_n < 0.0 and ints[C.I_END] == C.END_FORCE:
+            f_n = 0.0
+        if code != TANGENTIAL_NONE:
+            slip = (vx * nz - vz * nx) - radius * w
+            f_t, f_s = friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, True, C.INTEGRATOR_LAMMPS, radius)
+    else:
+        for k in range(N_TSTATE):
+            ot[k] = 0.0
+    o[S_VX] = vx + 0.5 * h * (f_n * nx + f_t * nz) / m
+    o[S_VZ] = vz + 0.5 * h * (f_n * nz - f_t * nx) / m
+    o[S_W] = w - 0.5 * h * (radius - p[C.P_TORQUE_LEVER] * alpha) * f_t / inertia
+    o[S_X], o[S_Z], o[S_ALPHA], o[S_AMAX] = x, z, alpha, alpha if alpha > amax else amax
+    o[S_FN], o[S_FT], o[S_FS], o[S_FEL], o[S_NOLD], o[S_NX], o[S_NZ] = f_n, f_t, f_s, f_el, abs(f_n), nx, nz
+    ot[T_STEP] = h
+    return alpha
