@@ -9,7 +9,6 @@ import pytest
 from conftest import fake_executable, needs
 
 from harness.engines import lammps
-from harness.engines.runner import EngineFailure
 from harness.execute import execute
 from harness.laws import compose
 from harness.plan import engine_plan, engine_runs
