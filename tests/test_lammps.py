@@ -200,3 +200,20 @@ def test_a_pair_deck_names_both_materials_and_the_pair_mixing():
     assert E12 / (2 * (1 - nu12 ** 2)) == pytest.approx(contact.E_star, rel=1e-14)
     assert E12 / (4 * (2 - nu12) * (1 + nu12)) == pytest.approx(contact.G_star, rel=1e-14)
     assert "fix hold targets freeze" in text and "id x z vx vz omegay" in text
+
+
+@needs_lammps
+def test_lammps_pairs_observed_contact_agrees_with_the_dialect():
+    """Observe mode of the pair deck: contact time to the step (both from the touch at step 0 to the first step out),
+    peak normal force F1.n and overlap R1 + R2 - |r| within the parabola's O(1/N^2) of the dialect's interpolated peaks
+    (tests/test_observe.py: up to 30/N^2), here with the normal turning (40 and 70 deg)."""
+    from harness.plan import reference_runs
+    from harness.request import scene_from
+    scene = scene_from(en=(0.5,), angles=(0.0, 40.0, 70.0), omega0=20.0, target="sphere", target_radius=0.04)
+    law = compose("hertz-mindlin")
+    seen, failures = execute(engine_runs(lammps, law, scene, 200, observe=True))
+    own, _ = execute(reference_runs(law, scene, 200, lammps.dialect("hertz-mindlin", {}, "sphere")))
+    assert failures == [] and (seen.status == "ok").all()
+    assert np.array_equal(np.round(seen.t_contact / seen.dt), np.round(own.t_contact / own.dt))
+    for column in ("f_n_max", "overlap_max"):
+        assert np.max(np.abs(seen[column] / own[column] - 1.0)) < 30.0 / 200 ** 2, column

@@ -46,8 +46,8 @@ def rebound(state, radius, engine, log_tail=""):
         raise EngineFailure(f"{engine} returned non-finite velocities", log_tail)
     return {"v_n1": vz, "v_t1": vx, "omega1": omegay, "separated": z > radius}
 
-def dump_rows(path, engine):
-    """(step, atom index, z, fz) of every row of the observe dump, one array each; EngineFailure when missing or
+def dump_frames(path, engine, columns):
+    """(step, rows) of every row of a per-step dump of `columns` numbers each; EngineFailure when missing or
     malformed."""
     try:
         with open(path) as handle:
@@ -57,13 +57,46 @@ def dump_rows(path, engine):
     try:
         heads = [frame.split("\n", DUMP_HEADER_LINES - 1) for frame in frames[1:]]
         if frames[0] or any(not head[-2].startswith("ITEM: ATOMS") for head in heads):
-            raise ValueError("not a dump of `id z fz` frames")
+            raise ValueError("not a dump of atom frames")
         counts = np.array([int(head[2]) for head in heads], dtype=int)
         step = np.repeat([int(head[0]) for head in heads], counts).astype(int)
-        rows = np.array(" ".join(head[-1] for head in heads).split(), dtype=float).reshape(len(step), 3)
+        rows = np.array(" ".join(head[-1] for head in heads).split(), dtype=float).reshape(len(step), columns)
     except (IndexError, ValueError):
         raise EngineFailure(f"{engine} observe dump is malformed") from None
+    return step, rows
+
+
+def dump_rows(path, engine):
+    """(step, atom index, z, fz) of every row of the observe dump, one array each; EngineFailure when missing or
+    malformed."""
+    step, rows = dump_frames(path, engine, 3)
     return step, rows[:, 0].astype(int) - 1, rows[:, 1], rows[:, 2]
+
+
+def read_observed_pairs(path, n_pairs, centres, dt, engine):
+    """Per pair (atoms 2k-1 above 2k, touching at step 0) from an `id x z fx fz` dump of the atoms in contact: contact
+    time from the touch to the first step out (dt each), peak normal force F1.n and peak overlap R1 + R2 - |r| with
+    r = x1 - x2 and n = r/|r|, over its first contact."""
+    step, rows = dump_frames(path, engine, 5)
+    ids = rows[:, 0].astype(int) - 1
+    order = np.lexsort((ids % 2, step, ids // 2))
+    step, rows, ids = step[order], rows[order], ids[order]
+    one, two = rows[0::2], rows[1::2]
+    if len(rows) % 2 or np.any(ids[0::2] % 2 != 0) or np.any(ids[1::2] != ids[0::2] + 1) or \
+            np.any(step[0::2] != step[1::2]):
+        raise EngineFailure(f"{engine} observe dump holds a sphere in contact without its partner")
+    pair, step = ids[0::2] // 2, step[0::2]
+    if np.any(pair >= n_pairs) or len(np.unique(pair)) != n_pairs:
+        raise EngineFailure(f"{engine} observe dump lacks some pairs")
+    dx, dz = one[:, 1] - two[:, 1], one[:, 2] - two[:, 2]
+    dist = np.hypot(dx, dz)
+    force, overlap = (one[:, 3] * dx + one[:, 4] * dz) / dist, centres - dist
+    keep = first_contact(step, pair)
+    last, peak, deepest = np.full(n_pairs, -1), np.full(n_pairs, -np.inf), np.full(n_pairs, -np.inf)
+    np.maximum.at(last, pair[keep], step[keep])
+    np.maximum.at(peak, pair[keep], force[keep])
+    np.maximum.at(deepest, pair[keep], overlap[keep])
+    return {"t_contact": (last + 1) * dt, "f_n_max": peak, "overlap_max": deepest}
 
 
 def first_contact(step, atom):

@@ -187,7 +187,7 @@ def applicable(case, engine):
     if case.target is not None:
         if "sphere" not in ENGINES[engine].targets(LAW):
             return "a sphere target is not in its inputs yet"
-        return "" if case.test != 1 else "its pair inputs have no observe mode yet (peak force, overlap, duration)"
+        return ""
     if case.scene.wall not in ENGINES[engine].walls(LAW):
         return f"its {LAW} inputs have no {case.scene.wall} wall"
     return ""

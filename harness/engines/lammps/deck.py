@@ -9,7 +9,7 @@ import numpy as np
 from ...render import render
 from ...version import __version__
 from ..batches import max_steps_of, run_grouped
-from ..dumps import read_final, read_observed, rebound
+from ..dumps import read_final, read_observed, read_observed_pairs, rebound
 from ..runner import EngineFailure, run_engine
 from .binary import binary
 from .dialect import dialect, words
@@ -61,7 +61,7 @@ def pair_material(contact):
     return {"E": 2.0 * (1.0 - nu * nu) * contact.E_star, "nu": nu}
 
 
-def pair_deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, options=None):
+def pair_deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, options=None, observe=False):
     """The batched deck of two-sphere impacts: pair k is atoms 2k-1 (the projectile, above) and 2k (its target, at
     rest, frozen when fixed), touching, their relative velocity the impact's; omega0 is the equivalent spin, so the
     projectile's own is (R* omega0 - R2 omega2)/R1."""
@@ -83,16 +83,14 @@ def pair_deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_st
                   skin=0.5 * min(r1, r2), dt=dt, centres=r1 + r2, r1=r1, r2=r2, rho1=projectile.rho, rho2=target.rho,
                   omega2=target.omega, fixed=target.fixed, chunk=chunk, max_chunks=max(1, max_steps // chunk + 1),
                   normal=values["normal"], damping=values["damping"], tangential=values["tangential"],
-                  x_gamma_t=values["x_gamma_t"])
+                  x_gamma_t=values["x_gamma_t"], observe=bool(observe))
 
 
 def deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, options=None, observe=False):
     """Render the batched deck (validated numbers and fixed words only; see harness.render); `observe` adds the
     per-step contact dump (OBSERVE_DUMP)."""
     if scene.spheres:
-        if observe:
-            raise EngineFailure("LAMMPS' pair decks have no observe mode yet")
-        return pair_deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, options)
+        return pair_deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, options, observe)
     if scene.wall != "same":
         raise EngineFailure("LAMMPS decks use a wall of the sphere's own material")
     radius = scene.radius
@@ -133,8 +131,13 @@ def run_inputs(_, count, timeout_s, workdir):
 def read_batch(run, batch, directory):
     """Rebound velocities and separation of one batch run in `directory` (and what observe mode saw)."""
     if run.scene.spheres:
-        return pair_rebound(read_final(os.path.join(directory, "final.dump"), 2 * len(batch.v_n0), "LAMMPS", 6),
-                            run.scene)
+        final = pair_rebound(read_final(os.path.join(directory, "final.dump"), 2 * len(batch.v_n0), "LAMMPS", 6),
+                             run.scene)
+        if run.observe:
+            projectile, target = run.scene.spheres
+            final.update(read_observed_pairs(os.path.join(directory, OBSERVE_DUMP), len(batch.v_n0),
+                                             projectile.radius + target.radius, batch.dt, "LAMMPS"))
+        return final
     return read_outputs(directory, batch, run.scene.radius, run.observe)
 
 
