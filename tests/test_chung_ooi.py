@@ -99,3 +99,16 @@ def test_liggghts_on_the_rigid_plane_tests():
     assert rows[rows.test.isin([2, 3])].passed.all()
     sliding = rows[(rows.test == 6) & (rows.quantity == "v_t1 [m/s]")].iloc[0]
     assert abs(sliding.value) > 1.1 * abs(sliding.expected)
+
+
+def test_kratos_curve_error_is_the_l1_error_over_the_checked_points():
+    """sum |v - e| / sum |e| by hand on a small table: (|1.1 - 1| + |1.8 - 2|)/3 = 0.1 fails 5%, 0.02/1 passes;
+    unchecked rows (no expectation) do not count."""
+    rows = pd.DataFrame([
+        {"test": 4, "engine": "x", "quantity": "q", "value": 1.1, "expected": 1.0, "passed": False},
+        {"test": 4, "engine": "x", "quantity": "q", "value": 1.8, "expected": 2.0, "passed": False},
+        {"test": 4, "engine": "x", "quantity": "q", "value": 9.0, "expected": math.nan, "passed": None},
+        {"test": 4, "engine": "x", "quantity": "r", "value": 1.02, "expected": 1.0, "passed": True}])
+    curves = suite.curve_errors(rows).set_index("quantity")
+    assert curves.loc["q", "L1 error"] == pytest.approx(0.1) and curves.loc["q", "points"] == 2
+    assert not curves.loc["q", "within Kratos' 5%"] and curves.loc["r", "within Kratos' 5%"]

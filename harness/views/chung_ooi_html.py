@@ -55,8 +55,9 @@ def write_chung_ooi_report(out_dir, table, command):
     tests = []
     for number, (title, scene, expected) in suite.TESTS.items():
         rows = table[table.test == number].drop(columns="test")
+        curves = suite.curve_errors(table[table.test == number]).drop(columns="test")
         tests.append({"number": number, "title": title, "scene": scene, "expected": expected,
-                      "rows": records(rows) or ([], []), "open": len(rows) <= 12,
+                      "rows": records(rows) or ([], []), "open": len(rows) <= 12, "curves": records(curves),
                       "figure": sliding_figure(table, number) if number in (4, 5) else None})
     html = environment(autoescape=True).get_template("chung-ooi.html.j2").render(
         ok=ok, passed=passed, checked=checked, summary=records(summary(table)), tests=tests, command=command,
