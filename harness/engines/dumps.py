@@ -46,6 +46,20 @@ def rebound(state, radius, engine, log_tail=""):
         raise EngineFailure(f"{engine} returned non-finite velocities", log_tail)
     return {"v_n1": vz, "v_t1": vx, "omega1": omegay, "separated": z > radius}
 
+def pair_rebound(state, scene, engine):
+    """The equivalent impact's rebound from each pair's final (x, z, vx, vz, omegay): v_n1 = vz1 - vz2, v_t1 =
+    vx1 - vx2, omega1 = (R1 w1 + R2 w2)/R* in the frame where the line of centres was z at first touch, separated
+    when the centres are more than R1 + R2 apart."""
+    projectile, target = scene.spheres
+    one, two = state[0::2], state[1::2]
+    gap = np.hypot(one[:, 0] - two[:, 0], one[:, 1] - two[:, 1]) - (projectile.radius + target.radius)
+    equivalent = np.column_stack([gap, one[:, 2] - two[:, 2], one[:, 3] - two[:, 3],
+                                  (projectile.radius * one[:, 4] + target.radius * two[:, 4]) / scene.contact.radius])
+    out = rebound(equivalent, 0.0, engine)
+    out["separated"] = gap > 0.0
+    return out
+
+
 def dump_frames(path, engine, columns):
     """(step, rows) of every row of a per-step dump of `columns` numbers each; EngineFailure when missing or
     malformed."""

@@ -47,8 +47,9 @@ class Engine(Protocol):
     def supports(self, law_name: str) -> bool:
         """Has a counterpart of the law and a verified dialect of it."""
 
-    def targets(self, law_name: str) -> tuple:
-        """What its inputs can put the sphere against for the law: 'wall', and 'sphere' where they can."""
+    def target_reason(self, law_name: str, scene) -> str:
+        """Why its inputs cannot put the sphere against the scene's target (a wall, or a sphere: scene.spheres), ''
+        when they can."""
 
     def dialect(self, law_name: str, options: dict, target: str = "wall"):
         """The law as this engine computes it (a harness.laws.Law), for the options given, against a wall or a

@@ -14,10 +14,10 @@ from ..submodels.registry import (DAMPING_MODELS, ENGINE_NORMAL_MODELS, ENGINE_T
 from ..submodels.tangential_damping import TangentialDashpot
 
 END_RULES = ("tension", "no-tension")
-INTEGRATORS = ("paper", "velocity-verlet", "leapfrog", "lammps", "lammps-pair")
+INTEGRATORS = ("paper", "velocity-verlet", "leapfrog", "lammps", "lammps-pair", "liggghts-pair")
 SLIPS = ("lever", "noratch", "noratch-sphere")
 TORQUES = ("lever", "contact-point")
-LEVERS = ("0", "0.5", "1")
+LEVERS = ("0", "0.25", "0.5", "1")
 SUBMODEL_KEYS = ("normal", "damping", "end", "tangential", "tangential-damping", "integrator", "lever", "slip",
                  "torque")
 
@@ -46,7 +46,8 @@ class Law:
         return {"normal": self.normal.label(), "damping": damping, "end": self.end,
                 "tangential": self.tangential.label(), "tangential-damping": self.tangential_damping.label(),
                 "integrator": self.integrator,
-                "lever": {0.0: "R", 0.5: "R - d/2", 1.0: "R - d"}.get(self.lever, f"R - {self.lever:g} d"),
+                "lever": {0.0: "R", 0.25: "R - d/4", 0.5: "R - d/2", 1.0: "R - d"}.get(self.lever,
+                                                                                     f"R - {self.lever:g} d"),
                 "slip": self.slip, "torque": self.torque}
 
     @property

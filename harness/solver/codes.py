@@ -11,8 +11,10 @@ INTEGRATOR_VELOCITY_VERLET = 1  # LIGGGHTS nve/sphere: forces from half-step vel
 INTEGRATOR_LEAPFROG = 2         # YADE NewtonIntegrator: forces at x(t) from v(t - h/2), then v, then x
 INTEGRATOR_LAMMPS = 3           # LAMMPS nve/sphere: LIGGGHTS' steps; the Coulomb cap on spring plus dashpot
 INTEGRATOR_LAMMPS_PAIR = 4      # LAMMPS nve/sphere on two spheres: their relative motion, its normal turning
+INTEGRATOR_LIGGGHTS_PAIR = 5    # the same with LIGGGHTS' Coulomb rule (the spring capped, its dashpot added below it)
 INTEGRATORS = {"paper": INTEGRATOR_PAPER, "velocity-verlet": INTEGRATOR_VELOCITY_VERLET,
-               "leapfrog": INTEGRATOR_LEAPFROG, "lammps": INTEGRATOR_LAMMPS, "lammps-pair": INTEGRATOR_LAMMPS_PAIR}
+               "leapfrog": INTEGRATOR_LEAPFROG, "lammps": INTEGRATOR_LAMMPS, "lammps-pair": INTEGRATOR_LAMMPS_PAIR,
+               "liggghts-pair": INTEGRATOR_LIGGGHTS_PAIR}
 
 # per-impact parameter slots (columns of the float parameter matrix)
 P_MASS, P_INERTIA, P_RADIUS, P_DT, P_GRAVITY, P_MU = 0, 1, 2, 3, 4, 5

@@ -204,8 +204,8 @@ def integrate_leapfrog_sphere(first, last, params, ints, out, history, stride, e
 
 
 @njit(cache=True, nogil=True)
-def integrate_lammps_pair(first, last, params, ints, out, history, stride, ext):
-    """LAMMPS' scheme on two spheres (their relative motion)."""
+def integrate_pair(first, last, params, ints, out, history, stride, ext):
+    """LAMMPS' and LIGGGHTS' scheme on two spheres (their relative motion)."""
     integrate_rows(first, last, params, ints, out, history, stride, ext, step_lammps_pair, no_split, no_release,
                    no_first_touch)
 
@@ -220,8 +220,8 @@ def kernel_of_batch(params, ints):
         return integrate_paper
     if scheme in (C.INTEGRATOR_VELOCITY_VERLET, C.INTEGRATOR_LAMMPS):
         return integrate_velocity_verlet
-    if scheme == C.INTEGRATOR_LAMMPS_PAIR:
-        return integrate_lammps_pair
+    if scheme in (C.INTEGRATOR_LAMMPS_PAIR, C.INTEGRATOR_LIGGGHTS_PAIR):
+        return integrate_pair
     if (params[:, C.P_BIG_R] > 0.0).any():
         return integrate_leapfrog_sphere
     return integrate_leapfrog

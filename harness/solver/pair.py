@@ -1,4 +1,5 @@
-"""LAMMPS' pair granular between two spheres, stepped in their relative motion (docs/two-spheres.md)."""
+"""LAMMPS' pair granular and LIGGGHTS' pair gran between two spheres, stepped in their relative motion
+(docs/two-spheres.md)."""
 import math
 
 from ..jit import compiled
@@ -15,9 +16,10 @@ from .state import (N_STATE, S_ALPHA, S_AMAX, S_FEL, S_FN, S_FS, S_FT, S_HISTORY
 def step_lammps_pair(s, st, o, ot, p, ints, h, scratch, ext):
     """fix nve/sphere on both spheres with pair granular, as the relative motion r = x1 - x2 (mass m*) and the
     equivalent spin w* = (R1 w1 + R2 w2)/R*: half kicks with the last force, drift, then from r the overlap
-    R1 + R2 - |r| and the normal n = r/|r|, which turns as the spheres pass each other; slip u.t - R* w* along
-    t = (n_z, -n_x); the tangential history kept along t at its length (LAMMPS projects it onto the new tangent plane
-    and rescales it); contact while the overlap is > 0. Returns the overlap."""
+    R1 + R2 - |r| and the normal n = r/|r|, which turns as the spheres pass each other; slip u.t - (R* - lever d) w*
+    along t = (n_z, -n_x); the tangential history kept along t at its length (LAMMPS projects it onto the new tangent
+    plane and rescales it; LIGGGHTS projects it only: docs/liggghts-dialect.md); LAMMPS' Coulomb rule or LIGGGHTS'
+    (integrator lammps-pair or liggghts-pair); contact while the overlap is > 0. Returns the overlap."""
     m, inertia, radius = p[C.P_MASS], p[C.P_INERTIA], p[C.P_RADIUS]
     centres = radius + p[C.P_BIG_R]
     for k in range(N_STATE):
@@ -44,8 +46,11 @@ def step_lammps_pair(s, st, o, ot, p, ints, h, scratch, ext):
         if f_n < 0.0 and ints[C.I_END] == C.END_FORCE:
             f_n = 0.0
         if code != TANGENTIAL_NONE:
-            slip = (vx * nz - vz * nx) - radius * w
-            f_t, f_s = friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, True, C.INTEGRATOR_LAMMPS, radius)
+            lever = radius - p[C.P_LEVER] * alpha
+            slip = (vx * nz - vz * nx) - lever * w
+            rule = C.INTEGRATOR_LAMMPS if ints[C.I_INTEGRATOR] == C.INTEGRATOR_LAMMPS_PAIR else \
+                C.INTEGRATOR_VELOCITY_VERLET
+            f_t, f_s = friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, True, rule, lever)
     else:
         for k in range(N_TSTATE):
             ot[k] = 0.0

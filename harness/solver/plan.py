@@ -110,7 +110,7 @@ def plan_batch(law, scene, e_n, steps_per_contact, check_stability=True, every_e
     params[:, C.P_LEVER] = law.lever
     params[:, C.P_TORQUE_LEVER] = law.lever if law.torque == "lever" else contact_point_lever(scene)
     params[:, C.P_BIG_R] = (law.normal.stand_in_radius(contact) if hasattr(law.normal, "stand_in_radius") else
-                            centres_less_radius(scene) if law.integrator == "lammps-pair" else 0.0)
+                            centres_less_radius(scene) if law.integrator.endswith("-pair") else 0.0)
     params[:, C.P_SLIP_R1] = {"noratch": NORATCH_WALL_RADIUS * contact.radius, "noratch-sphere": contact.radius}.get(
         law.slip, 0.0)
     params[:, C.P_VZ0] = -v_n0

@@ -186,9 +186,7 @@ def applicable(case, engine):
     if engine == "reference":
         return ""
     if case.target is not None:
-        if "sphere" not in ENGINES[engine].targets(LAW):
-            return "a sphere target is not in its inputs yet"
-        return ""
+        return ENGINES[engine].target_reason(LAW, case.effective_scene)
     if case.scene.wall not in ENGINES[engine].walls(LAW):
         return f"its {LAW} inputs have no {case.scene.wall} wall"
     return ""

@@ -16,9 +16,12 @@ def walls(law_name):
     return ("same",)
 
 
-def targets(law_name):
-    """A wall, and for its Hertz laws a sphere (pair granular between two atoms)."""
-    return ("wall", "sphere") if law_name in PAIR_DIALECTS else ("wall",)
+def target_reason(law_name, scene):
+    """Why its inputs cannot put the sphere against the scene's target ('' when they can): a sphere target for its
+    Hertz laws (pair granular between two atoms), whose force at gap 0 is nil as its strict contact test needs."""
+    if scene.spheres and law_name not in PAIR_DIALECTS:
+        return f"its {law_name} inputs have no sphere target (its dashpot would act at gap 0 against a wall only)"
+    return ""
 
 
 def supports(law_name):
@@ -42,4 +45,4 @@ def render(run):
 
 __all__ = ["BINARY_VARIABLE", "COUNTERPARTS", "DIALECTS", "HISTORY_STYLES", "NAME", "OBSERVE_DUMP", "OPTIONS", "TEMPLATES", "available",
            "binary", "check_options", "deck", "dialect", "missing_reason", "read_batch", "render", "render_batch", "run",
-           "run_batch", "run_together", "settings", "status", "supports", "targets", "version", "words", "walls"]
+           "run_batch", "run_together", "settings", "status", "supports", "target_reason", "version", "words", "walls"]

@@ -4,12 +4,11 @@ import math
 import os
 from pathlib import Path
 
-import numpy as np
 
 from ...render import render
 from ...version import __version__
 from ..batches import max_steps_of, run_grouped
-from ..dumps import read_final, read_observed, read_observed_pairs, rebound
+from ..dumps import pair_rebound, read_final, read_observed, read_observed_pairs, rebound
 from ..runner import EngineFailure, run_engine
 from .binary import binary
 from .dialect import dialect, words
@@ -132,27 +131,13 @@ def read_batch(run, batch, directory):
     """Rebound velocities and separation of one batch run in `directory` (and what observe mode saw)."""
     if run.scene.spheres:
         final = pair_rebound(read_final(os.path.join(directory, "final.dump"), 2 * len(batch.v_n0), "LAMMPS", 6),
-                             run.scene)
+                             run.scene, "LAMMPS")
         if run.observe:
             projectile, target = run.scene.spheres
             final.update(read_observed_pairs(os.path.join(directory, OBSERVE_DUMP), len(batch.v_n0),
                                              projectile.radius + target.radius, batch.dt, "LAMMPS"))
         return final
     return read_outputs(directory, batch, run.scene.radius, run.observe)
-
-
-def pair_rebound(state, scene):
-    """The equivalent impact's rebound from each pair's final (x, z, vx, vz, omegay): v_n1 = vz1 - vz2, v_t1 =
-    vx1 - vx2, omega1 = (R1 w1 + R2 w2)/R* in the frame where the line of centres was z at first touch, separated
-    when the centres are more than R1 + R2 apart."""
-    projectile, target = scene.spheres
-    one, two = state[0::2], state[1::2]
-    gap = np.hypot(one[:, 0] - two[:, 0], one[:, 1] - two[:, 1]) - (projectile.radius + target.radius)
-    equivalent = np.column_stack([gap, one[:, 2] - two[:, 2], one[:, 3] - two[:, 3],
-                                  (projectile.radius * one[:, 4] + target.radius * two[:, 4]) / scene.contact.radius])
-    out = rebound(equivalent, 0.0, "LAMMPS")
-    out["separated"] = gap > 0.0
-    return out
 
 
 def read_outputs(directory, batch, radius, observe):

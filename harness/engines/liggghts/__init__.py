@@ -5,7 +5,7 @@ from ..protocol import status_of
 from .binary import BINARY_VARIABLE, available, binary, missing_reason, version
 from .deck import (OBSERVE_DUMP, OTHER_WALL_MODELS, TEMPLATES, deck, read_dump, read_observation, render_batch, run_batch, run_deck,
                    run_together, settings)
-from .dialect import DIALECTS, COUNTERPARTS, OPTIONS, dialect
+from .dialect import PAIR_DIALECTS, DIALECTS, COUNTERPARTS, OPTIONS, dialect
 
 NAME = "liggghts"
 INPUT_SUFFIX = ".in"
@@ -16,9 +16,19 @@ def walls(law_name):
     return ("same", "other", "rigid") if COUNTERPARTS.get(law_name) in OTHER_WALL_MODELS else ("same",)
 
 
-def targets(law_name):
-    """A wall only: its inputs have no sphere target yet."""
-    return ("wall",)
+def target_reason(law_name, scene):
+    """Why its inputs cannot put the sphere against the scene's target ('' when they can): `pair_style gran` between
+    two spheres for hertz-mindlin, of equal radii (its slip lever R_i - d/2 of each reduces to one body only then)."""
+    if not scene.spheres:
+        return ""
+    if law_name not in PAIR_DIALECTS:
+        return f"its {law_name} inputs have no sphere target yet"
+    projectile, target = scene.spheres
+    if projectile.radius != target.radius:
+        return "its pair slip lever R_i - d/2 reduces to one body for spheres of equal radii only"
+    if target.fixed:
+        return "its pair inputs have no fixed target (its effective mass mixes both spheres)"
+    return ""
 
 
 def supports(law_name):
@@ -42,4 +52,4 @@ def render(run):
 
 __all__ = ["BINARY_VARIABLE", "DIALECTS", "COUNTERPARTS", "NAME", "OBSERVE_DUMP", "OPTIONS", "TEMPLATES", "available",
            "binary", "deck", "dialect", "read_dump", "read_observation", "render", "render_batch", "run", "run_batch", "run_deck",
-           "settings", "status", "supports", "targets", "version", "walls"]
+           "settings", "status", "supports", "target_reason", "version", "walls"]

@@ -8,7 +8,7 @@ from pathlib import Path
 from ...version import __version__
 from ...render import render
 from ..batches import max_steps_of, run_grouped
-from ..dumps import read_final, read_observed, rebound
+from ..dumps import pair_rebound, read_final, read_observed, read_observed_pairs, rebound
 from ..runner import EngineFailure, run_engine
 from .binary import binary
 from .dialect import COUNTERPARTS
@@ -86,9 +86,33 @@ def wall_material(scene, model):
     return [(RIGID_E, 0.0)] if scene.wall == "rigid" else [(scene.wall_E, scene.wall_nu)]
 
 
+def pair_deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, observe=False):
+    """The batched deck of two-sphere impacts: pair k is atoms 2k-1 (the projectile, above) and 2k (its target, at
+    rest), touching, their relative velocity the impact's, each of its own material; omega0 is the equivalent spin,
+    so the projectile's own is (R* omega0 - R2 omega2)/R1."""
+    model, tangential, _, _, restitution = settings(law, scene, e_n, {})
+    projectile, target = scene.spheres
+    r1, r2, r_star = projectile.radius, target.radius, scene.contact.radius
+    spacing = 3.0 * (r1 + r2)
+    pairs = [{"x": i * spacing, "vx": float(vt), "vz": -float(vn),
+              "omega1": (r_star * float(w) - r2 * target.omega) / r1}
+             for i, (vn, vt, w) in enumerate(zip(v_n0, v_t0, omega0))]
+    chunk = max(10, int(steps_per_contact // 10))
+    big = max(r1, r2)
+    text = render(TEMPLATES, "pair.in.j2", harness_version=__version__, law=law.name, model=model, e_n=restitution,
+                  E1=projectile.E, E2=target.E, nu1=projectile.nu, nu2=target.nu, pairs=pairs,
+                  x_lo=-2.0 * big, x_hi=len(pairs) * spacing, box_half=2.0 * big, z_lo=-2.0 * r2,
+                  z_hi=2.0 * (r1 + r2) + 2.0 * r1, skin=0.5 * min(r1, r2), mu=scene.mu, tangential=tangential,
+                  dt=dt, centres=r1 + r2, r1=r1, r2=r2, rho1=projectile.rho, rho2=target.rho, omega2=target.omega,
+                  chunk=chunk, max_chunks=max(1, max_steps // chunk + 1), observe=bool(observe))
+    return Deck(text, model, 2 * len(pairs))
+
+
 def deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, options=None, observe=False):
     """Render the batched deck (validated numbers and fixed words only; see harness.render); `observe` adds the
     per-step contact dump (OBSERVE_DUMP)."""
+    if scene.spheres:
+        return pair_deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, observe)
     model, tangential, options, properties, restitution = settings(law, scene, e_n, options)
     if not MIN_RESTITUTION < restitution <= 1.0:
         raise EngineFailure(f"LIGGGHTS accepts coefficientRestitution in (0.05, 1] only; e_n = {e_n:g} was not run")
@@ -151,6 +175,14 @@ def final_state(state, radius, log_tail=""):
 
 def read_batch(run, batch, directory):
     """The final state of one batch run in `directory` (and what observe mode saw)."""
+    if run.scene.spheres:
+        final = pair_rebound(read_final(os.path.join(directory, "final.dump"), 2 * len(batch.v_n0), "LIGGGHTS", 6),
+                             run.scene, "LIGGGHTS")
+        if run.observe:
+            projectile, target = run.scene.spheres
+            final.update(read_observed_pairs(os.path.join(directory, OBSERVE_DUMP), len(batch.v_n0),
+                                             projectile.radius + target.radius, batch.dt, "LIGGGHTS"))
+        return final
     final = final_state(read_dump(os.path.join(directory, "final.dump"), len(batch.v_n0)), run.scene.radius)
     if run.observe:
         final.update(read_observation(os.path.join(directory, OBSERVE_DUMP), len(batch.v_n0), run.scene.radius,

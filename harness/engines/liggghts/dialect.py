@@ -32,6 +32,10 @@ DIALECTS = {                    # sub-models that make the paper law compute wha
     "thornton": {**COMMON, "end": "no-tension", "normal": "liggghts-thornton-ning", "tangential": "mindlin:total",
                  "tangential-damping": "reversed-beta"},
 }
+PAIR_DIALECTS = {              # pair gran between two spheres of equal radii: slip and torque from R - d/2 of each, which
+    "hertz-mindlin": {**DIALECTS["hertz-mindlin"], "integrator": "liggghts-pair", "lever": "0.25",   # on the
+                      "torque": "contact-point"},                                                      # equivalent
+}                                                                                                      # is R* - d/4
 KT_TO_KN_USER = "0.285714286"   # the literal LIGGGHTS multiplies by, not exactly 2/7
 
 
@@ -52,6 +56,10 @@ def dialect(law_name, options=None, target="wall"):
     from ...laws import compose
     from ...laws.law import replace_submodels
     options = check_options(law_name, options)
+    if target == "sphere":
+        if options:
+            raise UserError(f"LIGGGHTS' pair inputs take no option, got {', '.join(options)}")
+        return replace_submodels(compose(law_name), PAIR_DIALECTS[law_name], "liggghts")
     overrides = dict(DIALECTS[law_name])
     honoured = {key: value for key, value in options.items() if COUNTERPARTS[law_name] in HONOURED_BY[key]}
     if honoured.get("limitForce") == "on":

@@ -31,9 +31,9 @@ def supports(law_name):
     return law_name in LAWS
 
 
-def targets(law_name):
-    """A wall, or a sphere (the equivalent wall impact, harness.two_spheres)."""
-    return ("wall", "sphere")
+def target_reason(law_name, scene):
+    """'': a wall, or a sphere (the equivalent wall impact, harness.two_spheres)."""
+    return ""
 
 
 def dialect(law_name, options=None, target="wall"):

@@ -19,9 +19,9 @@ def walls(law_name):
     return ("same",)
 
 
-def targets(law_name):
-    """A wall only: its inputs have no sphere target yet."""
-    return ("wall",)
+def target_reason(law_name, scene):
+    """Why its inputs cannot put the sphere against the scene's target ('' for a wall): no sphere target yet."""
+    return "a sphere target is not in its inputs yet" if scene.spheres else ""
 
 
 def supports(law_name):
@@ -52,4 +52,4 @@ def arithmetic(options):
 __all__ = ["ARITHMETIC", "DIALECTS", "FLAVOURS", "COUNTERPARTS", "NAME", "OBSERVE_FILE", "OPTIONS", "PYTHON_VARIABLE", "TEMPLATES",
            "arithmetic", "available", "dialect", "environment", "flavour_path", "HIGH", "precision_runs", "python",
            "read_observation", "read_result", "render", "render_batch", "run", "run_batch", "run_script", "script",
-           "status", "supports", "targets", "version", "walls"]
+           "status", "supports", "target_reason", "version", "walls"]
