@@ -33,6 +33,11 @@ class OnDask:
     name = "dask"
 
     def __init__(self, client, cluster=None):
+        """`client` (and the local `cluster` it owns). Dask's garbage-collection diagnosis runs as a gc callback in
+        this process, and Python discards an exception raised inside one: a Ctrl-C landing during a collection
+        would be lost and the campaign run on. It is switched off here."""
+        from distributed.gc import disable_gc_diagnosis
+        disable_gc_diagnosis(force=True)
         self.client, self.cluster = client, cluster
 
     @property
