@@ -112,3 +112,11 @@ def test_kratos_curve_error_is_the_l1_error_over_the_checked_points():
     curves = suite.curve_errors(rows).set_index("quantity")
     assert curves.loc["q", "L1 error"] == pytest.approx(0.1) and curves.loc["q", "points"] == 2
     assert not curves.loc["q", "within Kratos' 5%"] and curves.loc["r", "within Kratos' 5%"]
+
+
+def test_benchmark_json_is_one_document_with_the_verdict(tmp_path, capsys):
+    import json
+    assert main(["benchmark", "chung-ooi", "--engines", "reference", "-o", str(tmp_path / "co"), "--json"]) == 0
+    summary = json.loads(capsys.readouterr().out)
+    assert summary["ok"] is True and summary["exit_code"] == 0 and summary["passed"] == summary["checked"] > 0
+    assert [row["engine"] for row in summary["engines"]] == ["reference"]

@@ -1,4 +1,5 @@
 """`harness benchmark chung-ooi`: Chung & Ooi (2011)'s eight tests on the reference and the engines; a CSV and a page."""
+import json
 import os
 import sys
 
@@ -25,7 +26,7 @@ def add(sub, describe):
                         "reported as not run)")
     p.add_argument("-o", "--output", default="harness-chung-ooi", metavar="DIR",
                    help="output directory (default %(default)s)")
-    add_output_options(p)
+    add_output_options(p, json=True)
     p.set_defaults(func=main)
 
 
@@ -38,18 +39,22 @@ def main(args):
     if unknown or not engines:
         raise UserError(f"unknown engine(s) {', '.join(unknown) or args.engines!r}; known: {', '.join(ENGINES)}")
     check_output_directory(args.output)
-    with Progress("benchmark chung-ooi", quiet=args.quiet) as progress:
+    with Progress("benchmark chung-ooi", quiet=args.quiet or args.json) as progress:
         table = run_suite(engines, progress=progress)
     with exclusive(args.output):
         write_csv(table, os.path.join(args.output, CSV))
         path = write_chung_ooi_report(args.output, table, "harness " + " ".join(sys.argv[1:]))
     ok, passed, checked = verdict(table)
-    if not args.quiet:
-        print(text_table(summary(table), ["engine", "passed", "checked", "not run", "why not"], {}))
     missing = [e for e in engines if ENGINES[e].status("hertz-mindlin").available is False] if named else []
     failed = sorted(set(table[table.quantity == "failed"].engine))
+    code = EXIT_DISAGREE if not ok else EXIT_ENGINE if missing or failed else EXIT_OK
+    if args.json:
+        print(json.dumps({"ok": ok, "exit_code": code, "passed": passed, "checked": checked,
+                          "could_not_run": missing + failed, "engines": summary(table).to_dict("records"),
+                          "csv": os.path.join(args.output, CSV), "report": path}, indent=1, default=str))
+        return code
+    if not args.quiet:
+        print(text_table(summary(table), ["engine", "passed", "checked", "not run", "why not"], {}))
     print(f"chung-ooi: {passed} of {checked} checks pass -> {path}"
           + (f"; could not run: {', '.join(missing + failed)}" if missing or failed else ""))
-    if not ok:
-        return EXIT_DISAGREE
-    return EXIT_ENGINE if missing or failed else EXIT_OK
+    return code
