@@ -31,7 +31,8 @@ P_BIG_R = 21                                 # > 0: the wall is a fixed sphere o
 P_GRADE_T, P_GRADE_N = 22, 23                # > 0: graded steps, N of them over [0, T] (paper scheme, converged mode)
 P_TORQUE_LEVER = 24                          # torque lever R - P_TORQUE_LEVER alpha in the Verlet schemes (= P_LEVER
                                              # but for LAMMPS' pairs: slip from full radii, torque from R_i - d/2)
-N_PARAMS = 25
+P_R1, P_R2, P_INV_I1, P_INV_I2, P_W2 = 25, 26, 27, 28, 29   # two spheres: radii, 1/inertias (0: fixed), target's spin
+N_PARAMS = 30
 
 # per-impact integer slots
 I_NORMAL, I_END, I_TANGENTIAL, I_INTEGRATOR = 0, 1, 2, 3

@@ -8,27 +8,34 @@ from . import codes as C
 from .dispatch import NORMAL_HISTORY, TANGENTIAL_NONE, normal_step
 from .friction import friction
 from .schemes import damping_power
-from .state import (N_STATE, S_ALPHA, S_AMAX, S_FEL, S_FN, S_FS, S_FT, S_HISTORY, S_NOLD, S_NX, S_NZ, S_VX, S_VZ,
-                    S_W, S_X, S_Z, reset_history)
+from .state import (N_STATE, S_ALPHA, S_AMAX, S_DW2, S_FEL, S_FN, S_FS, S_FT, S_HISTORY, S_NOLD, S_NX, S_NZ, S_VX,
+                    S_VZ, S_W, S_X, S_Z, reset_history)
 
 
 @compiled
 def step_lammps_pair(s, st, o, ot, p, ints, h, scratch, ext):
-    """fix nve/sphere on both spheres with pair granular, as the relative motion r = x1 - x2 (mass m*) and the
-    equivalent spin w* = (R1 w1 + R2 w2)/R*: half kicks with the last force, drift, then from r the overlap
-    R1 + R2 - |r| and the normal n = r/|r|, which turns as the spheres pass each other; slip u.t - (R* - lever d) w*
-    along t = (n_z, -n_x); the tangential history kept along t at its length (LAMMPS projects it onto the new tangent
-    plane and rescales it; LIGGGHTS projects it only: docs/liggghts-dialect.md); LAMMPS' Coulomb rule or LIGGGHTS'
-    (integrator lammps-pair or liggghts-pair); contact while the overlap is > 0. Returns the overlap."""
-    m, inertia, radius = p[C.P_MASS], p[C.P_INERTIA], p[C.P_RADIUS]
+    """fix nve/sphere on both spheres with pair granular (LAMMPS) or pair gran (LIGGGHTS), as the relative motion
+    r = x1 - x2 (mass m*) and each sphere's spin (the projectile's from the equivalent spin w* = (R1 w1 + R2 w2)/R*,
+    the target's from its change): half kicks with the last force, drift, then from r the overlap R1 + R2 - |r| and
+    the normal n = r/|r|, which turns as the spheres pass each other; slip u.t - (l1 w1 + l2 w2) along t = (n_z, -n_x)
+    with levers l_i = R_i - lever d, torques -(R_i - torque d) F_t on each; the tangential history kept along t at
+    its length (LAMMPS projects it onto the new tangent plane and rescales it; LIGGGHTS projects it only:
+    docs/liggghts-dialect.md); LAMMPS' Coulomb rule or LIGGGHTS' (integrator lammps-pair or liggghts-pair); contact
+    while the overlap is > 0. Returns the overlap."""
+    m, radius = p[C.P_MASS], p[C.P_RADIUS]
+    r1, r2, inv1, inv2 = p[C.P_R1], p[C.P_R2], p[C.P_INV_I1], p[C.P_INV_I2]
+    c_slip, c_torque = p[C.P_LEVER], p[C.P_TORQUE_LEVER]
     centres = radius + p[C.P_BIG_R]
     for k in range(N_STATE):
         o[k] = s[k]
     for k in range(N_TSTATE):
         ot[k] = st[k]
+    w2 = p[C.P_W2] + s[S_DW2]
+    w1 = (radius * s[S_W] - r2 * w2) / r1
     vx = s[S_VX] + 0.5 * h * (s[S_FN] * s[S_NX] + s[S_FT] * s[S_NZ]) / m
     vz = s[S_VZ] + 0.5 * h * (s[S_FN] * s[S_NZ] - s[S_FT] * s[S_NX]) / m
-    w = s[S_W] - 0.5 * h * (radius - p[C.P_TORQUE_LEVER] * s[S_ALPHA]) * s[S_FT] / inertia
+    w1 -= 0.5 * h * (r1 - c_torque * s[S_ALPHA]) * s[S_FT] * inv1
+    w2 -= 0.5 * h * (r2 - c_torque * s[S_ALPHA]) * s[S_FT] * inv2
     x, z = s[S_X] + h * vx, s[S_Z] + h * vz
     dist = math.sqrt(x * x + (z + p[C.P_BIG_R]) * (z + p[C.P_BIG_R]))
     alpha = centres - dist
@@ -46,17 +53,18 @@ def step_lammps_pair(s, st, o, ot, p, ints, h, scratch, ext):
         if f_n < 0.0 and ints[C.I_END] == C.END_FORCE:
             f_n = 0.0
         if code != TANGENTIAL_NONE:
-            lever = radius - p[C.P_LEVER] * alpha
-            slip = (vx * nz - vz * nx) - lever * w
+            slip = (vx * nz - vz * nx) - ((r1 - c_slip * alpha) * w1 + (r2 - c_slip * alpha) * w2)
             rule = C.INTEGRATOR_LAMMPS if ints[C.I_INTEGRATOR] == C.INTEGRATOR_LAMMPS_PAIR else \
                 C.INTEGRATOR_VELOCITY_VERLET
-            f_t, f_s = friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, True, rule, lever)
+            f_t, f_s = friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, True, rule, radius)
     else:
         for k in range(N_TSTATE):
             ot[k] = 0.0
+    w1 -= 0.5 * h * (r1 - c_torque * alpha) * f_t * inv1
+    w2 -= 0.5 * h * (r2 - c_torque * alpha) * f_t * inv2
     o[S_VX] = vx + 0.5 * h * (f_n * nx + f_t * nz) / m
     o[S_VZ] = vz + 0.5 * h * (f_n * nz - f_t * nx) / m
-    o[S_W] = w - 0.5 * h * (radius - p[C.P_TORQUE_LEVER] * alpha) * f_t / inertia
+    o[S_W], o[S_DW2] = (r1 * w1 + r2 * w2) / radius, w2 - p[C.P_W2]
     o[S_X], o[S_Z], o[S_ALPHA], o[S_AMAX] = x, z, alpha, alpha if alpha > amax else amax
     o[S_FN], o[S_FT], o[S_FS], o[S_FEL], o[S_NOLD], o[S_NX], o[S_NZ] = f_n, f_t, f_s, f_el, abs(f_n), nx, nz
     ot[T_STEP] = h

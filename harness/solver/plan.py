@@ -109,6 +109,12 @@ def plan_batch(law, scene, e_n, steps_per_contact, check_stability=True, every_e
         params[:, C.P_TDAMP] = 2.0 * g_t * np.sqrt(contact.mass)
     params[:, C.P_LEVER] = law.lever
     params[:, C.P_TORQUE_LEVER] = law.lever if law.torque == "lever" else contact_point_lever(scene)
+    if law.integrator.endswith("-pair"):                  # each body's own levers R_i - c alpha and spins
+        params[:, C.P_TORQUE_LEVER] = law.lever if law.torque == "lever" else 0.5
+        projectile, target = scene.spheres
+        params[:, C.P_R1], params[:, C.P_R2], params[:, C.P_W2] = projectile.radius, target.radius, target.omega
+        params[:, C.P_INV_I1] = 1.0 / projectile.inertia
+        params[:, C.P_INV_I2] = 0.0 if target.fixed else 1.0 / target.inertia
     params[:, C.P_BIG_R] = (law.normal.stand_in_radius(contact) if hasattr(law.normal, "stand_in_radius") else
                             centres_less_radius(scene) if law.integrator.endswith("-pair") else 0.0)
     params[:, C.P_SLIP_R1] = {"noratch": NORATCH_WALL_RADIUS * contact.radius, "noratch-sphere": contact.radius}.get(

@@ -18,15 +18,12 @@ def walls(law_name):
 
 def target_reason(law_name, scene):
     """Why its inputs cannot put the sphere against the scene's target ('' when they can): `pair_style gran` between
-    two spheres for hertz-mindlin, of equal radii (its slip lever R_i - d/2 of each reduces to one body only then)."""
+    two free spheres for hertz-mindlin."""
     if not scene.spheres:
         return ""
     if law_name not in PAIR_DIALECTS:
         return f"its {law_name} inputs have no sphere target yet"
-    projectile, target = scene.spheres
-    if projectile.radius != target.radius:
-        return "its pair slip lever R_i - d/2 reduces to one body for spheres of equal radii only"
-    if target.fixed:
+    if scene.spheres[1].fixed:
         return "its pair inputs have no fixed target (its effective mass mixes both spheres)"
     return ""
 

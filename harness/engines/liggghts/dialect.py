@@ -32,10 +32,9 @@ DIALECTS = {                    # sub-models that make the paper law compute wha
     "thornton": {**COMMON, "end": "no-tension", "normal": "liggghts-thornton-ning", "tangential": "mindlin:total",
                  "tangential-damping": "reversed-beta"},
 }
-PAIR_DIALECTS = {              # pair gran between two spheres of equal radii: slip and torque from R - d/2 of each, which
-    "hertz-mindlin": {**DIALECTS["hertz-mindlin"], "integrator": "liggghts-pair", "lever": "0.25",   # on the
-                      "torque": "contact-point"},                                                      # equivalent
-}                                                                                                      # is R* - d/4
+PAIR_DIALECTS = {              # pair gran between two spheres: slip and torque from each sphere's own R_i - d/2
+    "hertz-mindlin": {**DIALECTS["hertz-mindlin"], "integrator": "liggghts-pair", "torque": "contact-point"},
+}
 KT_TO_KN_USER = "0.285714286"   # the literal LIGGGHTS multiplies by, not exactly 2/7
 
 
