@@ -323,10 +323,11 @@ def test_models_with_per_type_properties_skip_other_walls_with_the_reason():
     assert liggghts.walls("hertz-mindlin") == ("same", "other", "rigid")
 
 
-LIGGGHTS_PAIRS = {   # free targets: identical, or smaller steel spinning
+LIGGGHTS_PAIRS = {   # targets: identical and free, smaller steel spinning, frozen (fix freeze: m* = m1)
     "identical": dict(target_material="same", target_omega=0.0),
     "steel, smaller, spinning": dict(target_radius=0.01, target_material="E=2.1e11,nu=0.29,rho=7800",
                                      target_omega=15.0),
+    "frozen": dict(target_radius=0.05, target_fixed=True),
 }
 
 
@@ -356,11 +357,10 @@ def test_liggghts_two_spheres_agree_with_their_dialect_at_equal_dt(pair, omega0)
     assert pair_agreement(frame) < 1e-6
 
 
-def test_liggghts_takes_free_targets_only():
+def test_liggghts_takes_a_sphere_target_for_hertz_mindlin_only():
     from harness.request import scene_from
     law = "hertz-mindlin"
     assert liggghts.target_reason(law, scene_from(target="sphere")) == ""
-    assert liggghts.target_reason(law, scene_from(target="sphere", target_radius=0.01)) == ""
-    assert "fixed target" in liggghts.target_reason(law, scene_from(target="sphere", target_fixed=True))
+    assert liggghts.target_reason(law, scene_from(target="sphere", target_radius=0.01, target_fixed=True)) == ""
     assert "no sphere target" in liggghts.target_reason("thornton", scene_from(target="sphere"))
     assert liggghts.target_reason(law, scene_from()) == ""

@@ -18,13 +18,11 @@ def walls(law_name):
 
 def target_reason(law_name, scene):
     """Why its inputs cannot put the sphere against the scene's target ('' when they can): `pair_style gran` between
-    two free spheres for hertz-mindlin."""
+    two spheres for hertz-mindlin."""
     if not scene.spheres:
         return ""
     if law_name not in PAIR_DIALECTS:
         return f"its {law_name} inputs have no sphere target yet"
-    if scene.spheres[1].fixed:
-        return "its pair inputs have no fixed target (its effective mass mixes both spheres)"
     return ""
 
 

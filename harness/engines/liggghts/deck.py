@@ -88,7 +88,8 @@ def wall_material(scene, model):
 
 def pair_deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, observe=False):
     """The batched deck of two-sphere impacts: pair k is atoms 2k-1 (the projectile, above) and 2k (its target, at
-    rest), touching, their relative velocity the impact's, each of its own material; omega0 is the equivalent spin,
+    rest, frozen when fixed), touching, their relative velocity the impact's, each of its own material; omega0 is the
+    equivalent spin,
     so the projectile's own is (R* omega0 - R2 omega2)/R1."""
     model, tangential, _, _, restitution = settings(law, scene, e_n, {})
     projectile, target = scene.spheres
@@ -104,6 +105,7 @@ def pair_deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_st
                   x_lo=-2.0 * big, x_hi=len(pairs) * spacing, box_half=2.0 * big, z_lo=-2.0 * r2,
                   z_hi=2.0 * (r1 + r2) + 2.0 * r1, skin=0.5 * min(r1, r2), mu=scene.mu, tangential=tangential,
                   dt=dt, centres=r1 + r2, r1=r1, r2=r2, rho1=projectile.rho, rho2=target.rho, omega2=target.omega,
+                  fixed=target.fixed,
                   chunk=chunk, max_chunks=max(1, max_steps // chunk + 1), observe=bool(observe))
     return Deck(text, model, 2 * len(pairs))
 
