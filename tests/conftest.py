@@ -18,6 +18,27 @@ EXAMPLE = dict(radius=5e-3, mu=0.3, speed=1.0, material="example-5mm")
 settings.register_profile("repeatable", derandomize=True)
 settings.load_profile("repeatable")
 
+# Targets of the two-sphere agreement tests: identical and free, smaller of another material and spinning, frozen
+PAIR_TARGETS = {
+    "identical": dict(target_material="same", target_omega=0.0),
+    "steel, smaller, spinning": dict(target_radius=0.01, target_material="E=2.1e11,nu=0.29,rho=7800",
+                                     target_omega=-30.0),
+    "frozen": dict(target_radius=0.05, target_fixed=True),
+}
+
+
+def agreement(frame, engine):
+    """Worst |engine - dialect| over the rows of each, relative to the largest incident speed V (the spin as
+    R omega/V)."""
+    import numpy as np
+    ref = frame[frame.engine == "reference"].reset_index(drop=True)
+    eng = frame[frame.engine == engine].reset_index(drop=True)
+    assert len(ref) == len(eng) > 0 and (eng.status == "ok").all() and (ref.status == "ok").all()
+    speed = np.hypot(ref.v_n0, ref.v_t0).max()
+    worst = [np.max(np.abs(eng[c] - ref[c])) / speed for c in ("v_n1", "v_t1")]
+    return max(worst + [np.max(np.abs(eng.omega1 - ref.omega1)) * ref.radius[0] / speed])
+
+
 NOWHERE = {"HARNESS_LIGGGHTS": "/nonexistent/liggghts", "HARNESS_YADE_PYTHON": "/nonexistent/python3.11",
            "HARNESS_LAMMPS": "/nonexistent/lmp"}
 

@@ -101,6 +101,22 @@ def test_liggghts_on_the_rigid_plane_tests():
     assert abs(sliding.value) > 1.1 * abs(sliding.expected)
 
 
+@needs("yade")
+def test_yade_on_two_spheres_and_a_rigid_plane():
+    """YADE's Mindlin law between two identical spheres (test 1, observed) and against a rigid wall (test 2) is
+    Hertz's; under spin (test 8) its tangential impulse exceeds mu J_n: below the Coulomb cap it adds its shear
+    dashpot to the spring, uncapped (docs/findings.md)."""
+    rows = []
+    for c in [case(1, "glass"), case(2, "aluminium alloy"), case(8, "omega 20 rad/s")]:
+        table, failure = suite.results(c, "yade")
+        assert failure is None
+        rows += suite.checks(c, "yade", table)
+    rows = pd.DataFrame(rows)
+    assert rows[rows.test.isin([1, 2])].passed.all() and len(rows[rows.test.isin([1, 2])]) == 6
+    target = rows[(rows.test == 8) & (rows.quantity == "v2_t [m/s]")].iloc[0]
+    assert abs(target.value) > 1.1 * abs(target.expected)
+
+
 def test_kratos_curve_error_is_the_l1_error_over_the_checked_points():
     """sum |v - e| / sum |e| by hand on a small table: (|1.1 - 1| + |1.8 - 2|)/3 = 0.1 fails 5%, 0.02/1 passes;
     unchecked rows (no expectation) do not count."""

@@ -6,7 +6,7 @@ import os
 import numpy as np
 
 import pytest
-from conftest import fake_executable, needs
+from conftest import PAIR_TARGETS, agreement, fake_executable, needs
 
 from harness.engines import lammps
 from harness.execute import execute
@@ -17,16 +17,6 @@ from harness.submodels import calibration as cal
 
 needs_lammps = needs("lammps")
 ANGLES = (0.0, 10.0, 30.0, 50.0, 70.0, 85.0)
-
-
-def agreement(frame):
-    """Worst |engine - dialect| over the rows of each, relative to V (and to V/R for the spin)."""
-    ref = frame[frame.engine == "reference"].reset_index(drop=True)
-    eng = frame[frame.engine == "lammps"].reset_index(drop=True)
-    assert len(ref) == len(eng) > 0 and (eng.status == "ok").all()
-    speed, radius = ref.v_n0.abs().max() / np.cos(np.radians(ref.theta_deg.min())), ref.radius[0]
-    worst = [np.max(np.abs(eng[c] - ref[c])) / speed for c in ("v_n1", "v_t1")]
-    return max(worst + [np.max(np.abs(eng.omega1 - ref.omega1)) * radius / speed])
 
 
 CASES = ([(name, {}) for name in sorted(lammps.DIALECTS)]
@@ -44,7 +34,7 @@ def test_lammps_agrees_with_its_dialect_at_equal_dt(name, options, omega0):
     scene = Scene(e_n=(0.3, 0.6, 0.9), angles_deg=ANGLES, psi1_star=None, omega0=omega0)
     frame, failures = execute(engine_plan(lammps, compose(name), scene, 200, options))
     assert failures == []
-    assert agreement(frame) < 1e-6
+    assert agreement(frame, "lammps") < 1e-6
 
 
 @needs_lammps
@@ -144,28 +134,20 @@ def test_options_where_their_law_has_none_are_one_line_errors():
         lammps.dialect("linear-spring-dashpot", {"tangential": "mindlin_rescale"})
 
 
-PAIRS = {   # the target sphere: identical and free, smaller of another material and spinning, frozen
-    "identical": dict(target_radius=None, target_material="same", target_omega=0.0, target_fixed=False),
-    "steel, smaller, spinning": dict(target_radius=0.01, target_material="E=2.1e11,nu=0.29,rho=7800",
-                                     target_omega=-30.0, target_fixed=False),
-    "frozen": dict(target_radius=0.05, target_material="same", target_omega=0.0, target_fixed=True),
-}
-
-
 @needs_lammps
 @pytest.mark.parametrize("name", sorted(lammps.PAIR_DIALECTS))
-@pytest.mark.parametrize("pair", sorted(PAIRS))
+@pytest.mark.parametrize("pair", sorted(PAIR_TARGETS))
 @pytest.mark.parametrize("omega0", [0.0, 20.0])
 def test_lammps_two_spheres_agree_with_their_dialect_at_equal_dt(name, pair, omega0):
     """pair granular between two spheres, every supported law x 3 e_n x 6 angles, with and without spin, against
     targets free or frozen, of the same or another size and material: the real binary within 1e-6 of its dialect
     (the relative motion with the turning normal, solver/pair.py)."""
     from harness.request import scene_from
-    scene = scene_from(en=(0.3, 0.6, 0.9), angles=ANGLES, omega0=omega0, target="sphere", **PAIRS[pair])
+    scene = scene_from(en=(0.3, 0.6, 0.9), angles=ANGLES, omega0=omega0, target="sphere", **PAIR_TARGETS[pair])
     dialect = lammps.dialect(name, {}, "sphere")
     frame, failures = execute(engine_plan(lammps, compose(name), scene, 200))
     assert failures == [] and dialect.integrator == "lammps-pair"
-    assert agreement(frame) < 1e-6
+    assert agreement(frame, "lammps") < 1e-6
 
 
 def test_the_pair_stepper_head_on_is_the_wall_stepper():

@@ -6,8 +6,7 @@ import sys
 
 import numpy as np
 import pytest
-from conftest import EXAMPLE
-from conftest import fake_executable, needs
+from conftest import EXAMPLE, PAIR_TARGETS, agreement, fake_executable, needs
 
 from harness.engines import liggghts
 from harness.engines.runner import EngineFailure, run_engine
@@ -323,26 +322,8 @@ def test_models_with_per_type_properties_skip_other_walls_with_the_reason():
     assert liggghts.walls("hertz-mindlin") == ("same", "other", "rigid")
 
 
-LIGGGHTS_PAIRS = {   # targets: identical and free, smaller steel spinning, frozen (fix freeze: m* = m1)
-    "identical": dict(target_material="same", target_omega=0.0),
-    "steel, smaller, spinning": dict(target_radius=0.01, target_material="E=2.1e11,nu=0.29,rho=7800",
-                                     target_omega=15.0),
-    "frozen": dict(target_radius=0.05, target_fixed=True),
-}
-
-
-def pair_agreement(frame):
-    """Worst |engine - dialect| relative to V (the spin as R* omega/V) over the rows of each."""
-    ref = frame[frame.engine == "reference"].reset_index(drop=True)
-    eng = frame[frame.engine == "liggghts"].reset_index(drop=True)
-    assert len(ref) == len(eng) > 0 and (eng.status == "ok").all() and (ref.status == "ok").all()
-    speed = np.hypot(ref.v_n0, ref.v_t0).max()
-    worst = [np.max(np.abs(eng[c] - ref[c])) / speed for c in ("v_n1", "v_t1")]
-    return max(worst + [np.max(np.abs(eng.omega1 - ref.omega1)) * ref.radius[0] / speed])
-
-
 @needs_liggghts
-@pytest.mark.parametrize("pair", sorted(LIGGGHTS_PAIRS))
+@pytest.mark.parametrize("pair", sorted(PAIR_TARGETS))
 @pytest.mark.parametrize("omega0", [0.0, -20.0])
 def test_liggghts_two_spheres_agree_with_their_dialect_at_equal_dt(pair, omega0):
     """pair gran between two spheres, hertz-mindlin x 3 e_n x 6 angles, with and without spin: the real binary within
@@ -351,10 +332,10 @@ def test_liggghts_two_spheres_agree_with_their_dialect_at_equal_dt(pair, omega0)
     from harness.plan import engine_plan
     from harness.request import scene_from
     scene = scene_from(en=(0.3, 0.6, 0.9), angles=(0.0, 10.0, 30.0, 50.0, 70.0, 85.0), omega0=omega0,
-                       target="sphere", **LIGGGHTS_PAIRS[pair])
+                       target="sphere", **PAIR_TARGETS[pair])
     frame, failures = execute(engine_plan(liggghts, compose("hertz-mindlin"), scene, 200))
     assert failures == []
-    assert pair_agreement(frame) < 1e-6
+    assert agreement(frame, "liggghts") < 1e-6
 
 
 def test_liggghts_takes_a_sphere_target_for_hertz_mindlin_only():

@@ -121,7 +121,7 @@ def test_run_against_a_free_sphere_conserves_momentum(tmp_path):
 
 
 def test_compare_names_why_an_engine_cannot_hit_a_sphere(tmp_path, capfd):
-    code = main(["compare", "--model", "hertz-mindlin", "--target", "sphere", "--en", "0.5", "--angles", "10",
+    code = main(["compare", "--model", "walton-braun", "--target", "sphere", "--en", "0.5", "--angles", "10",
                  "--engines", "yade", "-o", str(tmp_path / "out")])
     out = capfd.readouterr().out
-    assert code == 3 and "skipped yade: a sphere target is not in its inputs yet" in out
+    assert code == 3 and "skipped yade: its walton-braun inputs have no sphere target yet" in out

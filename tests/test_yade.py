@@ -5,10 +5,11 @@ import sys
 
 import numpy as np
 import pytest
-from conftest import fake_executable, needs
+from conftest import PAIR_TARGETS, agreement, fake_executable, needs
 
 from harness.engines import yade
 from harness.engines.runner import EngineFailure
+from harness.execute import execute
 from harness.laws import compose
 from harness.scene import Scene
 from harness.solver.plan import plan_batch
@@ -229,3 +230,84 @@ def test_luding_at_e_n_1_is_refused_with_one_line_not_an_abort():
     assert [f.message for f in failures] == ["YADE's Luding law needs kp > k1, i.e. e_n < 1; e_n = 1 was not run"]
     by_e_n = frame.groupby("e_n_target").status.unique()
     assert list(by_e_n[0.5]) == ["ok"] and list(by_e_n[1.0]) == ["failed"]
+
+
+@needs_yade
+@pytest.mark.parametrize("pair", sorted(PAIR_TARGETS))
+@pytest.mark.parametrize("omega0", [0.0, -20.0])
+def test_yade_two_spheres_agree_with_their_dialect_at_equal_dt(pair, omega0):
+    """Ig2_Sphere_Sphere_ScGeom + Law2_ScGeom_MindlinPhys_Mindlin between two spheres, hertz-mindlin x 3 e_n x 6
+    angles, with and without spin, against targets free or fixed, of the same or another size and material: the real
+    module within 1e-6 of its dialect (noRatch slip from R1 + R2, the shear vector turned with the normal, torques
+    from R_i - d/2, the dashpot on the plain normal speed: solver/pair.py)."""
+    from harness.plan import engine_plan
+    from harness.request import scene_from
+    scene = scene_from(en=(0.3, 0.6, 0.9), angles=(0.0, 10.0, 30.0, 50.0, 70.0, 85.0), omega0=omega0,
+                       target="sphere", **PAIR_TARGETS[pair])
+    frame, failures = execute(engine_plan(yade, compose("hertz-mindlin"), scene, 200))
+    assert failures == [] and yade.dialect("hertz-mindlin", {}, "sphere").integrator == "yade-pair"
+    assert agreement(frame, "yade") < 1e-6
+
+
+def test_the_yade_pair_stepper_head_on_is_the_wall_stepper():
+    """Two code paths, one answer: head-on without spin the normal never turns and nothing slips, so YADE's pair
+    stepper on the relative motion equals its wall leapfrog on the equivalent sphere (the pair's own moduli and
+    mass), to round-off."""
+    from harness.laws.law import replace_submodels
+    from harness.request import scene_from
+    from harness.solver.reference import simulate
+    scene = scene_from(en=(0.3, 0.8), angles=(0.0,), target="sphere", target_radius=0.04)
+    pair = yade.dialect("hertz-mindlin", {}, "sphere")
+    wall = replace_submodels(pair, {"integrator": "leapfrog", "slip": "lever", "torque": "lever"})
+    a = simulate(pair, scene, steps_per_contact=300)[0]
+    b = simulate(wall, scene, steps_per_contact=300)[0]
+    for column in ("v_n1", "t_contact", "f_n_max", "overlap_max"):
+        assert np.allclose(a[column], b[column], rtol=1e-12, atol=0), column
+    assert (a.v_n1 > 0).all()
+
+
+def test_yade_takes_a_sphere_target_for_hertz_mindlin_only():
+    from harness.errors import UserError
+    from harness.request import scene_from
+    assert yade.target_reason("hertz-mindlin", scene_from(target="sphere", target_fixed=True)) == ""
+    assert yade.target_reason("walton-braun", scene_from(target="sphere")) == \
+        "its walton-braun inputs have no sphere target yet"
+    assert yade.target_reason("walton-braun", scene_from()) == ""
+    with pytest.raises(UserError, match="sphere-target inputs run hertz-mindlin only"):
+        yade.dialect("linear-spring-dashpot", {}, "sphere")
+
+
+@needs_yade
+@pytest.mark.parametrize("wall", ["rigid", "E=2.1e11,nu=0.29"])
+def test_yade_walls_of_another_material_agree_with_the_dialect(wall):
+    """A wall of its own FrictMat (a rigid one at young 1e100): Ip2_FrictMat_FrictMat_MindlinPhys mixes E* and G* as
+    the scene does, so the module agrees with its dialect on the scene's contact; and the wall changed the rebound."""
+    from harness.execute import execute
+    from harness.plan import engine_plan, engine_runs
+    from harness.request import wall_fields
+    kwargs = dict(e_n=(0.3, 0.9), angles_deg=(0.0, 30.0, 60.0), psi1_star=None, omega0=-20.0)
+    scene = Scene(**kwargs, **wall_fields(wall))
+    frame, failures = execute(engine_plan(yade, compose("hertz-mindlin"), scene, 200))
+    assert failures == [] and agreement(frame, "yade") < 1e-6
+    same = execute(engine_runs(yade, compose("hertz-mindlin"), Scene(**kwargs), 200))[0]
+    engine = frame[frame.engine == "yade"].reset_index(drop=True)
+    assert np.abs(same.omega1.to_numpy() - engine.omega1.to_numpy()).max() * scene.radius > 1e-4 * scene.speed
+    assert yade.walls("hertz-mindlin") == ("same", "other", "rigid") and yade.walls("walton-braun") == ("same",)
+
+
+@needs_yade
+def test_yade_pairs_observed_contact_agrees_with_the_dialect():
+    """Observe mode of the pair script: contact time to the step (one step less than the dialect, which counts the
+    step that sees the negative overlap, as against a wall: tests/test_observe.py), peak normal force and overlap
+    within the parabola's O(1/N^2) of the dialect's interpolated peaks, with the normal turning."""
+    from harness.execute import execute
+    from harness.plan import engine_runs, reference_runs
+    from harness.request import scene_from
+    scene = scene_from(en=(0.5,), angles=(0.0, 40.0, 70.0), omega0=20.0, target="sphere", target_radius=0.04)
+    law = compose("hertz-mindlin")
+    seen, failures = execute(engine_runs(yade, law, scene, 200, observe=True))
+    own, _ = execute(reference_runs(law, scene, 200, yade.dialect("hertz-mindlin", {}, "sphere")))
+    assert failures == [] and (seen.status == "ok").all()
+    assert np.array_equal(np.round(seen.t_contact / seen.dt), np.round(own.t_contact / own.dt) - 1)
+    for column in ("f_n_max", "overlap_max"):
+        assert np.max(np.abs(seen[column] / own[column] - 1.0)) < 30.0 / 200 ** 2, column

@@ -14,8 +14,8 @@ from ..submodels.registry import (DAMPING_MODELS, ENGINE_NORMAL_MODELS, ENGINE_T
 from ..submodels.tangential_damping import TangentialDashpot
 
 END_RULES = ("tension", "no-tension")
-INTEGRATORS = ("paper", "velocity-verlet", "leapfrog", "lammps", "lammps-pair", "liggghts-pair")
-SLIPS = ("lever", "noratch", "noratch-sphere")
+INTEGRATORS = ("paper", "velocity-verlet", "leapfrog", "lammps", "lammps-pair", "liggghts-pair", "yade-pair")
+SLIPS = ("lever", "noratch", "noratch-sphere", "noratch-pair")
 TORQUES = ("lever", "contact-point")
 LEVERS = ("0", "0.25", "0.5", "1")
 SUBMODEL_KEYS = ("normal", "damping", "end", "tangential", "tangential-damping", "integrator", "lever", "slip",
@@ -34,7 +34,8 @@ class Law:
     integrator: str = "paper"            # time stepping: 'paper' (second order), 'velocity-verlet' (LIGGGHTS), 'lammps'
     lever: float = 0.0                   # lever arm R - lever * alpha for slip and torque (paper 0, LIGGGHTS 1/2)
     slip: str = "lever"                  # slip V_t - lever omega, or YADE's noRatch form with the wall's reference
-                                         # radius 1e8 R ('noratch', hertzian wall) or R ('noratch-sphere')
+                                         # radius 1e8 R ('noratch', hertzian wall) or R ('noratch-sphere'), or
+                                         # with two spheres' R1 + R2 ('noratch-pair')
     torque: str = "lever"                # torque lever: the slip's ('lever'), or each body's R_i - d/2 ('contact-point',
                                          # LAMMPS' pairs; Verlet schemes)
     summary: str = ""

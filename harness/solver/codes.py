@@ -12,9 +12,10 @@ INTEGRATOR_LEAPFROG = 2         # YADE NewtonIntegrator: forces at x(t) from v(t
 INTEGRATOR_LAMMPS = 3           # LAMMPS nve/sphere: LIGGGHTS' steps; the Coulomb cap on spring plus dashpot
 INTEGRATOR_LAMMPS_PAIR = 4      # LAMMPS nve/sphere on two spheres: their relative motion, its normal turning
 INTEGRATOR_LIGGGHTS_PAIR = 5    # the same with LIGGGHTS' Coulomb rule (the spring capped, its dashpot added below it)
+INTEGRATOR_YADE_PAIR = 6        # YADE NewtonIntegrator on two spheres: leapfrog on their relative motion, vector shear
 INTEGRATORS = {"paper": INTEGRATOR_PAPER, "velocity-verlet": INTEGRATOR_VELOCITY_VERLET,
                "leapfrog": INTEGRATOR_LEAPFROG, "lammps": INTEGRATOR_LAMMPS, "lammps-pair": INTEGRATOR_LAMMPS_PAIR,
-               "liggghts-pair": INTEGRATOR_LIGGGHTS_PAIR}
+               "liggghts-pair": INTEGRATOR_LIGGGHTS_PAIR, "yade-pair": INTEGRATOR_YADE_PAIR}
 
 # per-impact parameter slots (columns of the float parameter matrix)
 P_MASS, P_INERTIA, P_RADIUS, P_DT, P_GRAVITY, P_MU = 0, 1, 2, 3, 4, 5
@@ -27,7 +28,7 @@ P_VZ0, P_VX0, P_W0 = 16, 17, 18              # initial velocities (vz < 0 approa
 P_MAXSTEPS = 19
 P_SLIP_R1 = 20                               # slip form: 0 -> V_t - lever omega; r1 > 0 -> YADE noRatch
 P_BIG_R = 21                                 # > 0: the wall is a fixed sphere of this radius (YADE Luding set-up);
-                                             # lammps-pair: R1 + R2 - R*, the centres' distance at touch less R*
+                                             # *-pair: R1 + R2 - R*, the centres' distance at touch less R*
 P_GRADE_T, P_GRADE_N = 22, 23                # > 0: graded steps, N of them over [0, T] (paper scheme, converged mode)
 P_TORQUE_LEVER = 24                          # torque lever R - P_TORQUE_LEVER alpha in the Verlet schemes (= P_LEVER
                                              # but for LAMMPS' pairs: slip from full radii, torque from R_i - d/2)

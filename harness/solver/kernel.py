@@ -21,7 +21,7 @@ from .compiled import announce_compiling
 from .dispatch import TANGENTIAL_NONE, TANGENTIAL_VISCOUS, tangential_stiffness
 from .events import locate_release, split_at_event
 from .mesh import PEAK_POINTS, graded_step, parabola_peak, polynomial_peak
-from .pair import step_lammps_pair
+from .pair import step_lammps_pair, step_yade_pair
 from .schemes import paper_first_touch, step, step_leapfrog, step_leapfrog_sphere, step_velocity_verlet
 from .state import N_STATE, S_ALPHA, S_C, S_FN, S_FT, S_U, S_VX, S_VZ, S_W, S_Z, reset_history
 from .threads import in_threads
@@ -210,6 +210,13 @@ def integrate_pair(first, last, params, ints, out, history, stride, ext):
                    no_first_touch)
 
 
+@njit(cache=True, nogil=True)
+def integrate_yade_pair(first, last, params, ints, out, history, stride, ext):
+    """YADE's scheme on two spheres (their relative motion)."""
+    integrate_rows(first, last, params, ints, out, history, stride, ext, step_yade_pair, no_split, no_release,
+                   no_first_touch)
+
+
 def kernel_of_batch(params, ints):
     """The compiled integrator of a batch's scheme (one scheme per batch: its law's); only that one is compiled."""
     schemes = set(ints[:, C.I_INTEGRATOR].tolist())
@@ -222,6 +229,8 @@ def kernel_of_batch(params, ints):
         return integrate_velocity_verlet
     if scheme in (C.INTEGRATOR_LAMMPS_PAIR, C.INTEGRATOR_LIGGGHTS_PAIR):
         return integrate_pair
+    if scheme == C.INTEGRATOR_YADE_PAIR:
+        return integrate_yade_pair
     if (params[:, C.P_BIG_R] > 0.0).any():
         return integrate_leapfrog_sphere
     return integrate_leapfrog

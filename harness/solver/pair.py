@@ -1,15 +1,15 @@
-"""LAMMPS' pair granular and LIGGGHTS' pair gran between two spheres, stepped in their relative motion
-(docs/two-spheres.md)."""
+"""LAMMPS' pair granular, LIGGGHTS' pair gran and YADE's sphere-sphere Mindlin law between two spheres, stepped in
+their relative motion (docs/two-spheres.md)."""
 import math
 
 from ..jit import compiled
 from ..submodels.tangential.state import N_TSTATE, T_STEP
 from . import codes as C
-from .dispatch import NORMAL_HISTORY, TANGENTIAL_NONE, normal_step
+from .dispatch import NORMAL_HISTORY, TANGENTIAL_NONE, normal_step, tangential_stiffness
 from .friction import friction
 from .schemes import damping_power
-from .state import (N_STATE, S_ALPHA, S_AMAX, S_DW2, S_FEL, S_FN, S_FS, S_FT, S_HISTORY, S_NOLD, S_NX, S_NZ, S_VX,
-                    S_VZ, S_W, S_X, S_Z, reset_history)
+from .state import (N_STATE, S_ALPHA, S_AMAX, S_DW2, S_FEL, S_FN, S_FS, S_FT, S_HISTORY, S_NOLD, S_NX, S_NZ, S_SX,
+                    S_SZ, S_VX, S_VZ, S_W, S_X, S_Z, reset_history)
 
 
 @compiled
@@ -69,3 +69,78 @@ def step_lammps_pair(s, st, o, ot, p, ints, h, scratch, ext):
     o[S_FN], o[S_FT], o[S_FS], o[S_FEL], o[S_NOLD], o[S_NX], o[S_NZ] = f_n, f_t, f_s, f_el, abs(f_n), nx, nz
     ot[T_STEP] = h
     return alpha
+
+
+@compiled
+def step_yade_pair(s, st, o, ot, p, ints, h, scratch, ext):
+    """YADE's NewtonIntegrator on both spheres with Ig2_Sphere_Sphere_ScGeom and Law2_ScGeom_MindlinPhys_Mindlin, as
+    the relative motion r = x1 - x2 (mass m*) and each sphere's spin: forces at r(t) from the half-step velocities,
+    then u += h F/m*, spins += h T_i/I_i, r += h u. Overlap d = R1 + R2 - |r|, normal n = r/|r|; the normal dashpot
+    sees u.n, the slip noRatch's alpha_f u.t - (R1 w1 + R2 w2) along t = (n_z, -n_x) with
+    alpha_f = (R1 + R2)/(R1 + R2 - d); the shear force is a vector in the plane, turned with the normal by
+    ScGeom::rotate (S -= S x (n_old x n)) and incremented by -k_s slip h t (k_s not reduced as it falls); normal force
+    clipped at 0, the spring capped at mu F_n, else the dashpot -c_s slip t added; torques -(R_i - d/2) (n x F)_y on
+    each. Contact while d >= 0; the first negative overlap applies no force and ends it (returns -1)."""
+    m, radius = p[C.P_MASS], p[C.P_RADIUS]
+    r1, r2, inv1, inv2 = p[C.P_R1], p[C.P_R2], p[C.P_INV_I1], p[C.P_INV_I2]
+    c_slip, c_torque = p[C.P_LEVER], p[C.P_TORQUE_LEVER]
+    centres = radius + p[C.P_BIG_R]
+    for k in range(N_STATE):
+        o[k] = s[k]
+    for k in range(N_TSTATE):
+        ot[k] = st[k]
+    w2 = p[C.P_W2] + s[S_DW2]
+    w1 = (radius * s[S_W] - r2 * w2) / r1
+    vx, vz = s[S_VX], s[S_VZ]
+    x, z = s[S_X], s[S_Z] + p[C.P_BIG_R]
+    dist = math.sqrt(x * x + z * z)
+    alpha = centres - dist
+    amax = s[S_AMAX] if s[S_AMAX] > alpha else alpha
+    f_n, f_t, f_el, sx, sz, nx, nz, torque = 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
+    fx, fz = 0.0, 0.0
+    in_contact = alpha >= 0.0
+    if in_contact:
+        nx, nz = x / dist, z / dist
+        if s[S_NX] != 0.0 or s[S_NZ] != 0.0:
+            axis = s[S_NZ] * nx - s[S_NX] * nz            # y component of n_old x n
+            sx, sz = s[S_SX] + axis * s[S_SZ], s[S_SZ] - axis * s[S_SX]
+        f_el, a = normal_step(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], radius, alpha, s[S_ALPHA],
+                              s[S_FEL], amax, s[S_HISTORY:S_HISTORY + NORMAL_HISTORY],
+                              o[S_HISTORY:S_HISTORY + NORMAL_HISTORY], ext)
+        noratch = 1.0 if p[C.P_SLIP_R1] == 0.0 else (p[C.P_SLIP_R1] + radius) / (p[C.P_SLIP_R1] + radius - alpha)
+        c = p[C.P_DAMP_C0] * damping_power(alpha, p[C.P_DAMP_POWER]) if p[C.P_DAMP_C0] != 0.0 else 0.0
+        f_n = f_el - c * (vx * nx + vz * nz)
+        if f_n < 0.0 and ints[C.I_END] == C.END_FORCE:
+            f_n = 0.0
+        code = ints[C.I_TANGENTIAL]
+        tx, tz = nz, -nx
+        if code != TANGENTIAL_NONE:
+            slip = noratch * (vx * tx + vz * tz) - ((r1 - c_slip * alpha) * w1 + (r2 - c_slip * alpha) * w2)
+            k_s = tangential_stiffness(code, p[C.P_T1], a)
+            sx, sz = sx - k_s * slip * h * tx, sz - k_s * slip * h * tz
+            limit = p[C.P_MU] * abs(f_n)
+            if sx * sx + sz * sz > limit * limit:
+                ratio = limit / math.sqrt(sx * sx + sz * sz)
+                sx, sz = sx * ratio, sz * ratio
+                fx, fz = sx, sz
+            else:
+                c_s = p[C.P_TDAMP] * math.sqrt(k_s) if p[C.P_TDAMP] != 0.0 else 0.0
+                fx, fz = sx - c_s * slip * tx, sz - c_s * slip * tz
+            torque = nz * fx - nx * fz                    # (n x F)_y: the normal force has no moment
+            f_t = fx * tx + fz * tz
+        fx, fz = fx + f_n * nx, fz + f_n * nz
+    else:
+        for k in range(N_TSTATE):
+            ot[k] = 0.0
+        reset_history(ints[C.I_NORMAL], o)
+    vx, vz = vx + h * fx / m, vz + h * fz / m
+    w1 -= h * (r1 - c_torque * alpha) * torque * inv1
+    w2 -= h * (r2 - c_torque * alpha) * torque * inv2
+    o[S_VX], o[S_VZ] = vx, vz
+    o[S_X], o[S_Z] = x + h * vx, s[S_Z] + h * vz
+    o[S_W], o[S_DW2] = (r1 * w1 + r2 * w2) / radius, w2 - p[C.P_W2]
+    o[S_ALPHA], o[S_AMAX] = alpha, amax
+    o[S_FN], o[S_FT], o[S_FS], o[S_FEL], o[S_NOLD] = f_n, f_t, math.sqrt(sx * sx + sz * sz), f_el, abs(f_n)
+    o[S_NX], o[S_NZ], o[S_SX], o[S_SZ] = nx, nz, sx, sz
+    ot[T_STEP] = h
+    return 1.0 if in_contact else -1.0

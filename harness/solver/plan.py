@@ -117,8 +117,9 @@ def plan_batch(law, scene, e_n, steps_per_contact, check_stability=True, every_e
         params[:, C.P_INV_I2] = 0.0 if target.fixed else 1.0 / target.inertia
     params[:, C.P_BIG_R] = (law.normal.stand_in_radius(contact) if hasattr(law.normal, "stand_in_radius") else
                             centres_less_radius(scene) if law.integrator.endswith("-pair") else 0.0)
-    params[:, C.P_SLIP_R1] = {"noratch": NORATCH_WALL_RADIUS * contact.radius, "noratch-sphere": contact.radius}.get(
-        law.slip, 0.0)
+    params[:, C.P_SLIP_R1] = (NORATCH_WALL_RADIUS * contact.radius if law.slip == "noratch" else
+                              contact.radius if law.slip == "noratch-sphere" else
+                              centres_less_radius(scene) if law.slip == "noratch-pair" else 0.0)
     params[:, C.P_VZ0] = -v_n0
     params[:, C.P_VX0] = v_t0
     params[:, C.P_W0] = omega0

@@ -3,7 +3,7 @@ yade launcher; its dialects are in dialect.py, its input and output in script.py
 flavours.py. It also checks its own arithmetic (precision.py)."""
 from ..batches import render_input
 from ..protocol import status_of
-from .dialect import DIALECTS, COUNTERPARTS, OPTIONS, check_options, dialect
+from .dialect import DIALECTS, COUNTERPARTS, OPTIONS, PAIR_DIALECTS, check_options, dialect
 from .flavours import (ARITHMETIC, FLAVOURS, PYTHON_VARIABLE, available, environment, flavour_path, missing_reason,
                        python, version)
 from .precision import HIGH, precision_runs
@@ -15,13 +15,17 @@ INPUT_SUFFIX = ".py"
 
 
 def walls(law_name):
-    """A wall of the sphere's own material only."""
-    return ("same",)
+    """hertz-mindlin against any wall (FrictMat: E and nu mixed as harness mixes them), the others against the
+    sphere's own material only."""
+    return ("same", "other", "rigid") if law_name == "hertz-mindlin" else ("same",)
 
 
 def target_reason(law_name, scene):
-    """Why its inputs cannot put the sphere against the scene's target ('' for a wall): no sphere target yet."""
-    return "a sphere target is not in its inputs yet" if scene.spheres else ""
+    """Why its inputs cannot put the sphere against the scene's target ('' when they can): Ig2_Sphere_Sphere_ScGeom
+    between two spheres for hertz-mindlin."""
+    if scene.spheres and law_name not in PAIR_DIALECTS:
+        return f"its {law_name} inputs have no sphere target yet"
+    return ""
 
 
 def supports(law_name):
@@ -49,7 +53,7 @@ def arithmetic(options):
     return ARITHMETIC[check_options(options).get("precision", "double")]
 
 
-__all__ = ["ARITHMETIC", "DIALECTS", "FLAVOURS", "COUNTERPARTS", "NAME", "OBSERVE_FILE", "OPTIONS", "PYTHON_VARIABLE", "TEMPLATES",
+__all__ = ["ARITHMETIC", "DIALECTS", "FLAVOURS", "COUNTERPARTS", "NAME", "OBSERVE_FILE", "OPTIONS", "PAIR_DIALECTS", "PYTHON_VARIABLE", "TEMPLATES",
            "arithmetic", "available", "dialect", "environment", "flavour_path", "HIGH", "precision_runs", "python",
            "read_observation", "read_result", "render", "render_batch", "run", "run_batch", "run_script", "script",
            "status", "supports", "target_reason", "version", "walls"]

@@ -1,4 +1,5 @@
 """What YADE 2023.02a computes for each law, as a composition of sub-models (docs/yade-dialect.md), and its options."""
+from ...errors import UserError
 from ..protocol import Option, check_options as check_declared
 
 COUNTERPARTS = {"hertz-mindlin": "Law2_ScGeom_MindlinPhys_Mindlin", "linear-spring-dashpot": "Law2_ScGeom_ViscElPhys_Basic",
@@ -11,6 +12,10 @@ DIALECTS = {                    # sub-models that make the paper law compute wha
                               "tangential-damping": "proportional", "integrator": "leapfrog", "lever": "1"},
     "walton-braun": {"normal": "yade-luding", "end": "no-tension", "tangential": "linear:2/7",
                      "tangential-damping": "none", "integrator": "leapfrog", "lever": "0.5"},
+}
+PAIR_DIALECTS = {              # Ig2_Sphere_Sphere_ScGeom between two spheres: slip from the full radii with noRatch
+    "hertz-mindlin": {**DIALECTS["hertz-mindlin"], "integrator": "yade-pair", "lever": "0", "slip": "noratch-pair",
+                      "torque": "contact-point"},       # (R1 + R2)/(R1 + R2 - d), torque from each R_i - d/2
 }
 OPTIONS = {                     # declared options, default first (`--engine-option yade:KEY=VALUE`)
     "precision": Option(("double", "long-double", "float128", "mpfr150"),
@@ -31,6 +36,12 @@ def dialect(law_name, options=None, target="wall"):
     from ...laws import compose
     from ...laws.law import replace_submodels
     options = check_options(options)
+    if target == "sphere":
+        if law_name not in PAIR_DIALECTS:
+            raise UserError(f"YADE's sphere-target inputs run hertz-mindlin only, not {law_name}")
+        if "linear" in options:
+            raise UserError("YADE's sphere-target inputs take the precision option only")
+        return replace_submodels(compose(law_name), PAIR_DIALECTS[law_name], "yade")
     if law_name == "linear-spring-dashpot" and options.get("linear") == "cundall-strack":
         return replace_submodels(compose(law_name), CUNDALL_STRACK, "yade")
     return replace_submodels(compose(law_name), DIALECTS[law_name], "yade")

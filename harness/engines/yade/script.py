@@ -8,6 +8,7 @@ import numpy as np
 from ...version import __version__
 from ...render import render
 from ..batches import max_steps_of, run_grouped
+from ..dumps import pair_rebound
 from ..runner import EngineFailure, remove_engine_tmpdir, run_engine
 from .dialect import COUNTERPARTS
 from .flavours import environment, python
@@ -15,6 +16,8 @@ from .flavours import environment, python
 TEMPLATES = Path(__file__).resolve().parent / "templates"
 
 OBSERVE_FILE = "observe.txt"    # observe mode: per sphere, first and last real step, peak normal force and overlap
+RIGID_E = 1e100     # a rigid wall's young: (1 - nu^2)/E vanishes beside the sphere's, and YADE's E_a E_b stays finite
+PAIR_COLUMNS = 11   # a pair's result row: index, then x, z, vx, vz, omega_y of the projectile and of its target
 
 
 def viscel_contact_time(law, scene, e_n):
@@ -34,8 +37,16 @@ def script(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps
                for i, (vn, vt, w) in enumerate(zip(v_n0, v_t0, omega0))]
     chunk = max(10, int(steps_per_contact // 10))
     common = dict(harness_version=__version__, law=law.name, law2=COUNTERPARTS[law.name], e_n=e_n, rho=scene.rho,
-                  friction_angle=math.atan(scene.mu), radius=radius, spheres=spheres, ig2="Ig2_Wall_Sphere_ScGeom",
-                  hertzian=True, dt=dt, chunk=chunk, max_chunks=max(1, max_steps // chunk + 1), observe=bool(observe))
+                  friction_angle=math.atan(scene.mu), radius=radius, height=radius, spheres=spheres,
+                  ig2="Ig2_Wall_Sphere_ScGeom", hertzian=True, dt=dt, chunk=chunk,
+                  max_chunks=max(1, max_steps // chunk + 1), observe=bool(observe), other=None, target=None)
+    if scene.spheres:
+        return pair_script(scene, e_n, v_n0, v_t0, omega0, common)
+    if scene.wall != "same":
+        if law.name != "hertz-mindlin":
+            raise EngineFailure(f"YADE runs {law.name} against a wall of the sphere's own material only")
+        common["other"] = ({"young": RIGID_E, "poisson": 0.0, "rho": scene.rho} if scene.wall == "rigid" else
+                           {"young": scene.wall_E, "poisson": scene.wall_nu, "rho": scene.rho})
     if law.name == "walton-braun":
         from ...submodels.normal.yade_luding import YadeLuding
         luding = YadeLuding()
@@ -61,9 +72,27 @@ def script(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps
                   ip2="Ip2_FrictMat_FrictMat_MindlinPhys", ip2_args=[("en", e_n), ("es", e_n)])
 
 
-def read_result(path, n_spheres, what="result file"):
-    """(left, vx, vz, wy) per sphere (or the four columns of the observe file); EngineFailure when missing or
-    truncated."""
+def pair_script(scene, e_n, v_n0, v_t0, omega0, common):
+    """The batched script of two-sphere impacts (Mindlin): every projectile touching its own target below it (at
+    rest, fixed or free, its own material and spin), their relative velocity the impact's; omega0 is the equivalent
+    spin, so the projectile's own is (R* omega0 - R2 omega2)/R1."""
+    projectile, target = scene.spheres
+    r1, r2, r_star = projectile.radius, target.radius, scene.contact.radius
+    spheres = [{"x": i * 3.0 * (r1 + r2), "vx": float(vt), "vz": -float(vn),
+                "omegay": (r_star * float(w) - r2 * target.omega) / r1}
+               for i, (vn, vt, w) in enumerate(zip(v_n0, v_t0, omega0))]
+    return render(TEMPLATES, "batch.py.j2", **{
+        **common, "radius": r1, "height": r1 + r2, "spheres": spheres, "rho": projectile.rho,
+        "ig2": "Ig2_Sphere_Sphere_ScGeom", "hertzian": False,
+        "other": {"young": target.E, "poisson": target.nu, "rho": target.rho},
+        "target": {"radius": r2, "fixed": target.fixed, "omega": target.omega}},
+        material="FrictMat", young=projectile.E, poisson=projectile.nu, ip2="Ip2_FrictMat_FrictMat_MindlinPhys",
+        ip2_args=[("en", e_n), ("es", e_n)])
+
+
+def read_result(path, n_spheres, what="result file", columns=5):
+    """(left, vx, vz, wy) per sphere (or the four columns of the observe file, or a pair's ten: see PAIR_COLUMNS);
+    EngineFailure when missing or truncated."""
     try:
         with open(path) as handle:
             lines = handle.read().splitlines()
@@ -77,7 +106,7 @@ def read_result(path, n_spheres, what="result file"):
         raise EngineFailure(f"YADE {what} is malformed") from None
     if len(rows) > n_spheres:
         raise EngineFailure(f"YADE {what} holds {len(rows)} rows for {n_spheres} spheres")
-    if rows.shape != (n_spheres, 5) or not np.array_equal(rows[:, 0], np.arange(n_spheres)):
+    if rows.shape != (n_spheres, columns) or not np.array_equal(rows[:, 0], np.arange(n_spheres)):
         raise EngineFailure(f"YADE {what} is truncated: {len(rows)} of {n_spheres} spheres")
     return rows[:, 1:]
 
@@ -120,7 +149,12 @@ def run_inputs(precision, count, timeout_s, workdir):
 
 def read_batch(run, batch, directory):
     """The final state of one batch run in `directory` (and what observe mode saw)."""
-    final = final_of(read_result(os.path.join(directory, "result.txt"), len(batch.v_n0)))
+    n = len(batch.v_n0)
+    if run.scene.spheres:
+        rows = read_result(os.path.join(directory, "result.txt"), n, columns=PAIR_COLUMNS)
+        final = pair_rebound(rows.reshape(2 * n, 5), run.scene, "YADE")
+    else:
+        final = final_of(read_result(os.path.join(directory, "result.txt"), n))
     if run.observe:
         final.update(read_observation(os.path.join(directory, OBSERVE_FILE), len(batch.v_n0), batch.dt))
     return final
