@@ -53,7 +53,8 @@ def arithmetic(options):
     return ARITHMETIC[check_options(options).get("precision", "double")]
 
 
-__all__ = ["ARITHMETIC", "DIALECTS", "FLAVOURS", "COUNTERPARTS", "NAME", "OBSERVE_FILE", "OPTIONS", "PAIR_DIALECTS", "PYTHON_VARIABLE", "TEMPLATES",
+__all__ = ["ARITHMETIC", "DIALECTS", "FLAVOURS", "COUNTERPARTS", "NAME", "OBSERVE_FILE", "OPTIONS", "PAIR_DIALECTS",
+           "PYTHON_VARIABLE", "TEMPLATES",
            "arithmetic", "available", "dialect", "environment", "flavour_path", "HIGH", "precision_runs", "python",
            "read_observation", "read_result", "render", "render_batch", "run", "run_batch", "run_script", "script",
            "status", "supports", "target_reason", "version", "walls"]
