@@ -39,22 +39,24 @@ def impact_frame(scene, batch, *, model, dialect, engine, engine_version, dt, st
     rows.update(rebound_quantities(scene.contact, scene.mu, batch.v_n0, batch.v_t0, batch.omega0,
                                    np.asarray(v_n1, dtype=float), np.asarray(v_t1, dtype=float),
                                    np.asarray(omega1, dtype=float)))
-    return mark_invalid(table(rows))
+    return mark_invalid(table(rows), pair=bool(scene.spheres))
 
 
 SMALL_STRAIN = 0.1     # overlap / R: contact radius a = sqrt(R alpha) <= 0.3 R, the range Hertz's theory and every
                        # law built on it assume (a << R)
 
 
-def mark_invalid(frame):
+def mark_invalid(frame, pair=False):
     """Rows that ran but whose result is physically meaningless get status "invalid" and the reason: an overlap
-    beyond the small-strain range, a negative e_n, a kinetic energy ratio that is not finite."""
+    beyond the small-strain range, a negative e_n (for two spheres: along the line of centres at first touch, which
+    an engine's turns as they pass each other), a kinetic energy ratio that is not finite."""
     ok = frame.status.to_numpy() == "ok"
     overlap = frame.overlap_max.to_numpy(float) / frame.radius.to_numpy(float)
     reasons = [(overlap > SMALL_STRAIN, lambda i: f"overlap {overlap[i]:.3g} R exceeds the small-strain range "
                                                   f"({SMALL_STRAIN:g} R) of the law"),
-               (frame.e_n.to_numpy(float) < 0.0, lambda i: f"e_n {frame.e_n.iat[i]:.3g} < 0: the sphere did not "
-                                                          "rebound"),
+               (frame.e_n.to_numpy(float) < 0.0, lambda i: f"e_n {frame.e_n.iat[i]:.3g} < 0: " + (
+                   "along the first line of centres, which turned as the spheres passed" if pair else
+                   "the sphere did not rebound")),
                (~np.isfinite(frame.ke_ratio.to_numpy(float)), lambda i: "kinetic energy ratio not finite")]
     for bad, why in reasons:
         for i in np.flatnonzero(ok & bad):

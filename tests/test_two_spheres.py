@@ -125,3 +125,19 @@ def test_compare_names_why_an_engine_cannot_hit_a_sphere(tmp_path, capfd):
                  "--engines", "yade", "-o", str(tmp_path / "out")])
     out = capfd.readouterr().out
     assert code == 3 and "skipped yade: its walton-braun inputs have no sphere target yet" in out
+
+
+def test_a_negative_e_n_between_two_spheres_is_named_by_the_turning_line_of_centres():
+    """Grazing two identical spheres (89 deg): the engines' line of centres turns as they pass, so the relative
+    velocity along the first one can end negative; the row says that, not that the sphere failed to rebound, and the
+    paper law (the normal fixed: the equivalent wall impact) rebounds."""
+    from harness.execute import execute
+    from harness.plan import reference_runs
+    from harness.request import scene_from
+    scene = scene_from(en=(0.25,), angles=(89.0,), target="sphere")
+    turning, _ = execute(reference_runs(compose("hertz-mindlin"), scene, 200,
+                                        liggghts.dialect("hertz-mindlin", {}, "sphere")))
+    fixed, _ = execute(reference_runs(compose("hertz-mindlin"), scene, 200))
+    assert turning.e_n.iloc[0] < 0 and turning.status.iloc[0] == "invalid"
+    assert "along the first line of centres" in turning.message.iloc[0]
+    assert fixed.e_n.iloc[0] > 0 and fixed.status.iloc[0] == "ok"
