@@ -57,11 +57,11 @@ def statuses(request):
     for name in names:
         engine = ENGINES[name]
         status = engine.status(request.law.name, request.engine_options.get(name))
+        options = request.engine_options.get(name)
         unsupported = (engine.target_reason(request.law.name, scene) or
                        ("engine inputs do not model gravity" if scene.gravity else
-                       "engine inputs do not model gravity" if scene.gravity else
                        f"its {request.law.name} inputs use a wall of the sphere's own material"
-                       if not scene.spheres and scene.wall not in engine.walls(request.law.name) else None))
+                       if not scene.spheres and scene.wall not in engine.walls(request.law.name, options) else None))
         if unsupported:
             status = Status(name, False, unsupported)
         out.append(status)

@@ -199,3 +199,44 @@ def test_lammps_pairs_observed_contact_agrees_with_the_dialect():
     assert np.array_equal(np.round(seen.t_contact / seen.dt), np.round(own.t_contact / own.dt))
     for column in ("f_n_max", "overlap_max"):
         assert np.max(np.abs(seen[column] / own[column] - 1.0)) < 30.0 / 200 ** 2, column
+
+
+WALL_CASES = [("linear-spring-dashpot", {}), ("linear-spring-dashpot", {"style": "history"}),
+              ("hertz-kuwabara-kono", {"style": "history"})]
+
+
+@needs_lammps
+@pytest.mark.parametrize("name,options", WALL_CASES)
+@pytest.mark.parametrize("wall", ["rigid", "E=2.1e11,nu=0.29"])
+def test_lammps_walls_of_another_material_agree_with_the_dialect(name, options, wall):
+    """Where the deck gives the wall's stiffnesses as numbers (granular hooke, hooke/history, hertz/history), they
+    are the scene's contact's, so any wall runs and agrees with the dialect; the steel wall changed the rebound (a
+    rigid one, doubling E* and G* together, leaves these e_n-calibrated laws' rebound as it was: see the deck test)."""
+    from harness.request import wall_fields
+    kwargs = dict(e_n=(0.3, 0.9), angles_deg=(0.0, 30.0, 60.0), psi1_star=None, omega0=-20.0)
+    scene = Scene(**kwargs, **wall_fields(wall))
+    frame, failures = execute(engine_plan(lammps, compose(name), scene, 200, options))
+    assert failures == [] and agreement(frame, "lammps") < 1e-6
+    if wall != "rigid":
+        same = execute(engine_runs(lammps, compose(name), Scene(**kwargs), 200, options))[0]
+        engine = frame[frame.engine == "lammps"].reset_index(drop=True)
+        assert np.abs(same.omega1.to_numpy() - engine.omega1.to_numpy()).max() * scene.radius > 1e-4 * scene.speed
+
+
+def test_lammps_wall_stiffness_numbers_follow_the_wall_and_hertz_material_keeps_its_own():
+    """hertz/history's k_n = 4/3 E* in the deck: E/(1 - nu^2) against a rigid wall, half that against the sphere's
+    own material; hertz/material (hertz-mindlin, granular hertz-kuwabara-kono) offers only the latter."""
+    from harness.request import wall_fields
+    coefficients = {}
+    for wall in ("same", "rigid"):
+        scene = Scene(e_n=(0.5,), angles_deg=(30.0,), **(wall_fields(wall) if wall != "same" else {}))
+        run = engine_runs(lammps, compose("hertz-kuwabara-kono"), scene, 200, {"style": "history"})[0]
+        text = lammps.render_batch(run.law, run.scene, run.batch(), 1000, run.options_dict)
+        line = next(line for line in text.splitlines() if line.startswith("fix wall all wall/gran hertz/history"))
+        coefficients[wall] = float(line.split()[5])
+    E, nu = Scene().E, Scene().nu
+    assert coefficients["rigid"] == pytest.approx(4.0 / 3.0 * E / (1.0 - nu ** 2), rel=1e-12)
+    assert coefficients["same"] == pytest.approx(4.0 / 3.0 * E / (2.0 * (1.0 - nu ** 2)), rel=1e-12)
+    assert lammps.walls("hertz-mindlin") == ("same",) and lammps.walls("hertz-kuwabara-kono") == ("same",)
+    assert lammps.walls("hertz-kuwabara-kono", {"style": "history"}) == ("same", "other", "rigid")
+    assert lammps.walls("linear-spring-dashpot") == ("same", "other", "rigid")

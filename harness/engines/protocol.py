@@ -41,8 +41,9 @@ class Engine(Protocol):
     def version(self) -> str:
         """The engine's version, read without writing into the user's directory."""
 
-    def walls(self, law_name: str) -> tuple:
-        """The walls its inputs model for the law: 'same' (the sphere's material), and 'other', 'rigid' where they can."""
+    def walls(self, law_name: str, options: dict | None = None) -> tuple:
+        """The walls its inputs model for the law (with the options given): 'same' (the sphere's material), and
+        'other', 'rigid' where they can."""
 
     def supports(self, law_name: str) -> bool:
         """Has a counterpart of the law and a verified dialect of it."""

@@ -5,15 +5,11 @@ from ..batches import render_input
 from ..protocol import status_of
 from .binary import BINARY_VARIABLE, available, binary, missing_reason, version
 from .deck import OBSERVE_DUMP, TEMPLATES, deck, read_batch, render_batch, run_batch, run_together, settings
-from .dialect import COUNTERPARTS, DIALECTS, HISTORY_STYLES, OPTIONS, PAIR_DIALECTS, check_options, dialect, words
+from .dialect import (COUNTERPARTS, DIALECTS, HISTORY_STYLES, OPTIONS, PAIR_DIALECTS, check_options, dialect, walls,
+                      words)
 
 NAME = "lammps"
 INPUT_SUFFIX = ".in"
-
-
-def walls(law_name):
-    """A wall of the sphere's own material only: the granular wall takes one E and nu and mixes them itself."""
-    return ("same",)
 
 
 def target_reason(law_name, scene):

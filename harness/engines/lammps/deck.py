@@ -11,7 +11,7 @@ from ..batches import max_steps_of, run_grouped
 from ..dumps import pair_rebound, read_final, read_observed, read_observed_pairs, rebound
 from ..runner import EngineFailure, run_engine
 from .binary import binary
-from .dialect import dialect, words
+from .dialect import dialect, walls, words
 
 TEMPLATES = Path(__file__).resolve().parent / "templates"
 INPUT = "in.harness"
@@ -90,8 +90,8 @@ def deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, 
     per-step contact dump (OBSERVE_DUMP)."""
     if scene.spheres:
         return pair_deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, options, observe)
-    if scene.wall != "same":
-        raise EngineFailure("LAMMPS decks use a wall of the sphere's own material")
+    if scene.wall not in walls(law.name, options):
+        raise EngineFailure(f"LAMMPS' {law.name} decks use a wall of the sphere's own material")
     radius = scene.radius
     spacing = 4.0 * radius
     atoms = [{"x": i * spacing, "vx": float(vt), "vz": -float(vn), "omegay": float(w)}

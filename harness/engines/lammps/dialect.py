@@ -58,6 +58,16 @@ def words(law_name, options):
     return "granular", normal, damping, options.get("tangential", tangential)
 
 
+def walls(law_name, options=None):
+    """Any wall where the deck gives the wall's stiffnesses as numbers (granular hooke, the older hooke/history and
+    hertz/history styles): harness computes them from the contact's E* and G*. hertz/material takes one E and nu and
+    mixes them with themselves, so its wall is of the sphere's own material."""
+    if law_name not in DIALECTS:
+        return ("same",)
+    style, normal, _, _ = words(law_name, options)
+    return ("same", "other", "rigid") if style in HISTORY_STYLES.values() or normal == "hooke" else ("same",)
+
+
 def dialect(law_name, options=None, target="wall"):
     """The law as LAMMPS computes it through fix wall/gran and fix nve/sphere: LIGGGHTS' velocity Verlet steps
     (forces from the half-step velocities, contact from gap 0, no clipping of the normal force), lever R, the Coulomb

@@ -11,7 +11,7 @@ NAME = "liggghts"
 INPUT_SUFFIX = ".in"
 
 
-def walls(law_name):
+def walls(law_name, options=None):
     """hooke and hertz against any wall (a second atom type), the others against the sphere's material only."""
     return ("same", "other", "rigid") if COUNTERPARTS.get(law_name) in OTHER_WALL_MODELS else ("same",)
 

@@ -14,7 +14,7 @@ NAME = "yade"
 INPUT_SUFFIX = ".py"
 
 
-def walls(law_name):
+def walls(law_name, options=None):
     """hertz-mindlin against any wall (FrictMat: E and nu mixed as harness mixes them), the others against the
     sphere's own material only."""
     return ("same", "other", "rigid") if law_name == "hertz-mindlin" else ("same",)
