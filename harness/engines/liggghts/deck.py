@@ -91,7 +91,9 @@ def pair_deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_st
     rest, frozen when fixed), touching, their relative velocity the impact's, each of its own material; omega0 is the
     equivalent spin,
     so the projectile's own is (R* omega0 - R2 omega2)/R1."""
-    model, tangential, _, _, restitution = settings(law, scene, e_n, {})
+    model, tangential, _, properties, restitution = settings(law, scene, e_n, {})
+    if any(style != "scalar" for _, style, _ in properties):
+        raise EngineFailure(f"LIGGGHTS' pair decks take no per-type property of {model}")
     projectile, target = scene.spheres
     r1, r2, r_star = projectile.radius, target.radius, scene.contact.radius
     spacing = 3.0 * (r1 + r2)
@@ -101,7 +103,7 @@ def pair_deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_st
     chunk = max(10, int(steps_per_contact // 10))
     big = max(r1, r2)
     text = render(TEMPLATES, "pair.in.j2", harness_version=__version__, law=law.name, model=model, e_n=restitution,
-                  E1=projectile.E, E2=target.E, nu1=projectile.nu, nu2=target.nu, pairs=pairs,
+                  E1=projectile.E, E2=target.E, nu1=projectile.nu, nu2=target.nu, pairs=pairs, properties=properties,
                   x_lo=-2.0 * big, x_hi=len(pairs) * spacing, box_half=2.0 * big, z_lo=-2.0 * r2,
                   z_hi=2.0 * (r1 + r2) + 2.0 * r1, skin=0.5 * min(r1, r2), mu=scene.mu, tangential=tangential,
                   dt=dt, centres=r1 + r2, r1=r1, r2=r2, rho1=projectile.rho, rho2=target.rho, omega2=target.omega,
