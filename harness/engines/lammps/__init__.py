@@ -13,10 +13,10 @@ INPUT_SUFFIX = ".in"
 
 
 def target_reason(law_name, scene):
-    """Why its inputs cannot put the sphere against the scene's target ('' when they can): a sphere target for its
-    Hertz laws (pair granular between two atoms), whose force at gap 0 is nil as its strict contact test needs."""
+    """Why its inputs cannot put the sphere against the scene's target ('' when they can): pair granular between
+    two atoms for every law it has."""
     if scene.spheres and law_name not in PAIR_DIALECTS:
-        return f"its {law_name} inputs have no sphere target (its dashpot would act at gap 0 against a wall only)"
+        return f"its {law_name} inputs have no sphere target"
     return ""
 
 

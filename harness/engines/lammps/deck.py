@@ -63,7 +63,8 @@ def pair_material(contact):
 def pair_deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, options=None, observe=False):
     """The batched deck of two-sphere impacts: pair k is atoms 2k-1 (the projectile, above) and 2k (its target, at
     rest, frozen when fixed), touching, their relative velocity the impact's; omega0 is the equivalent spin, so the
-    projectile's own is (R* omega0 - R2 omega2)/R1."""
+    projectile's own is (R* omega0 - R2 omega2)/R1. hertz/material gets each type's E and nu and the pair's mixing
+    (pair_material); hooke takes the pair's k_n, damping and k_t as numbers."""
     projectile, target = scene.spheres
     r1, r2, r_star = projectile.radius, target.radius, scene.contact.radius
     spacing = 3.0 * (r1 + r2)
@@ -71,7 +72,8 @@ def pair_deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_st
               "omega1": (r_star * float(w) - r2 * target.omega) / r1}
              for i, (vn, vt, w) in enumerate(zip(v_n0, v_t0, omega0))]
     values = settings(law, scene, e_n, options)
-    coefficient = values.pop("normal_args")[1]
+    normal_args = values.pop("normal_args")          # hooke: k_n, c_n/m; hertz/material: E, coefficient, nu
+    k_n, coefficient = normal_args[0], normal_args[1]
     materials = [(1, 1, {"E": projectile.E, "nu": projectile.nu}), (2, 2, {"E": target.E, "nu": target.nu}),
                  (1, 2, pair_material(scene.contact))]
     chunk = max(10, int(steps_per_contact // 10))
@@ -82,7 +84,7 @@ def pair_deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_st
                   skin=0.5 * min(r1, r2), dt=dt, centres=r1 + r2, r1=r1, r2=r2, rho1=projectile.rho, rho2=target.rho,
                   omega2=target.omega, fixed=target.fixed, chunk=chunk, max_chunks=max(1, max_steps // chunk + 1),
                   normal=values["normal"], damping=values["damping"], tangential=values["tangential"],
-                  x_gamma_t=values["x_gamma_t"], observe=bool(observe))
+                  x_gamma_t=values["x_gamma_t"], k_n=k_n, k_t=values["k_t"], observe=bool(observe))
 
 
 def deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, options=None, observe=False):

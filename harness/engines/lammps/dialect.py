@@ -30,6 +30,7 @@ PAIR_DIALECTS = {            # pair granular between two spheres: the pair's own
                       "torque": "contact-point"},
     "hertz-kuwabara-kono": {**COMMON, "integrator": "lammps-pair", "tangential": "mindlin:total",
                             "torque": "contact-point"},
+    "linear-spring-dashpot": {**COMMON, "integrator": "lammps-pair", "torque": "contact-point"},
 }                            # slip from the full radii, the torque from each R_i - d/2
 HISTORY_DIALECTS = {         # the older styles take harness' own k_n, E* and G* (no mixing of their own)
     "linear-spring-dashpot": {**COMMON},
