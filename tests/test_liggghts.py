@@ -327,9 +327,9 @@ def test_models_with_per_type_properties_skip_other_walls_with_the_reason():
 @pytest.mark.parametrize("pair", sorted(PAIR_TARGETS))
 @pytest.mark.parametrize("omega0", [0.0, -20.0])
 def test_liggghts_two_spheres_agree_with_their_dialect_at_equal_dt(name, pair, omega0):
-    """pair gran between two spheres, hertz and hooke x 3 e_n x 6 angles, with and without spin: the real binary
-    within 1e-6 of its dialect (slip and torque from each sphere's own R_i - d/2, both spins stepped; the normal
-    turning, solver/pair.py; hooke's characteristicVelocity from the pair's R*, m* and E*)."""
+    """pair gran between two spheres, hertz, hooke and hooke/hysteresis x 3 e_n x 6 angles, with and without spin:
+    the real binary within 1e-6 of its dialect (slip and torque from each sphere's own R_i - d/2, both spins stepped;
+    the normal turning, solver/pair.py; hooke's characteristicVelocity from the pair's R*, m* and E*)."""
     from harness.plan import engine_plan
     from harness.request import scene_from
     scene = scene_from(en=(0.3, 0.6, 0.9), angles=(0.0, 10.0, 30.0, 50.0, 70.0, 85.0), omega0=omega0,
@@ -339,12 +339,12 @@ def test_liggghts_two_spheres_agree_with_their_dialect_at_equal_dt(name, pair, o
     assert agreement(frame, "liggghts") < 1e-6
 
 
-def test_liggghts_takes_a_sphere_target_for_hooke_and_hertz_only():
+def test_liggghts_takes_a_sphere_target_for_all_but_thornton_ning():
     from harness.request import scene_from
     law = "hertz-mindlin"
     assert liggghts.target_reason(law, scene_from(target="sphere")) == ""
     assert liggghts.target_reason(law, scene_from(target="sphere", target_radius=0.01, target_fixed=True)) == ""
     assert "no sphere target" in liggghts.target_reason("thornton", scene_from(target="sphere"))
-    assert "no sphere target" in liggghts.target_reason("walton-braun", scene_from(target="sphere"))
+    assert liggghts.target_reason("walton-braun", scene_from(target="sphere")) == ""
     assert liggghts.target_reason("linear-spring-dashpot", scene_from(target="sphere")) == ""
     assert liggghts.target_reason(law, scene_from()) == ""

@@ -18,7 +18,7 @@ def walls(law_name, options=None):
 
 def target_reason(law_name, scene):
     """Why its inputs cannot put the sphere against the scene's target ('' when they can): `pair_style gran` between
-    two spheres for hertz-mindlin (hertz) and linear-spring-dashpot (hooke)."""
+    two spheres for hertz-mindlin (hertz), linear-spring-dashpot (hooke) and walton-braun (hooke/hysteresis)."""
     if not scene.spheres:
         return ""
     if law_name not in PAIR_DIALECTS:

@@ -92,7 +92,7 @@ def pair_deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_st
     equivalent spin,
     so the projectile's own is (R* omega0 - R2 omega2)/R1."""
     model, tangential, _, properties, restitution = settings(law, scene, e_n, {})
-    if any(style != "scalar" for _, style, _ in properties):
+    if any(style not in ("scalar", "peratomtypepair") for _, style, _ in properties):
         raise EngineFailure(f"LIGGGHTS' pair decks take no per-type property of {model}")
     projectile, target = scene.spheres
     r1, r2, r_star = projectile.radius, target.radius, scene.contact.radius

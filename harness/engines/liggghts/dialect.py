@@ -32,10 +32,11 @@ DIALECTS = {                    # sub-models that make the paper law compute wha
     "thornton": {**COMMON, "end": "no-tension", "normal": "liggghts-thornton-ning", "tangential": "mindlin:total",
                  "tangential-damping": "reversed-beta"},
 }
-PAIR_DIALECTS = {              # pair gran between two spheres (hertz, hooke): slip and torque from each sphere's R_i - d/2
+PAIR_DIALECTS = {              # pair gran between two spheres: slip and torque from each sphere's own R_i - d/2
     "hertz-mindlin": {**DIALECTS["hertz-mindlin"], "integrator": "liggghts-pair", "torque": "contact-point"},
     "linear-spring-dashpot": {**DIALECTS["linear-spring-dashpot"], "integrator": "liggghts-pair",
                               "torque": "contact-point"},
+    "walton-braun": {**DIALECTS["walton-braun"], "integrator": "liggghts-pair", "torque": "contact-point"},
 }
 KT_TO_KN_USER = "0.285714286"   # the literal LIGGGHTS multiplies by, not exactly 2/7
 
