@@ -295,7 +295,7 @@ def test_render_writes_runnable_decks_and_refuses_what_liggghts_cannot_take(tmp_
 
 
 @needs_liggghts
-@pytest.mark.parametrize("name", ["hertz-mindlin", "linear-spring-dashpot"])
+@pytest.mark.parametrize("name", ["hertz-mindlin", "linear-spring-dashpot", "walton-braun"])
 @pytest.mark.parametrize("wall", ["rigid", "E=2.1e11,nu=0.29"])
 def test_walls_of_another_material_run_and_agree_with_the_dialect(name, wall):
     """A second atom type for the wall (a rigid one at youngsModulus 1e300): LIGGGHTS mixes E* and G* as the scene

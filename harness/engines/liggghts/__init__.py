@@ -12,7 +12,8 @@ INPUT_SUFFIX = ".in"
 
 
 def walls(law_name, options=None):
-    """hooke and hertz against any wall (a second atom type), the others against the sphere's material only."""
+    """hooke, hertz and hooke/hysteresis against any wall (a second atom type), thornton_ning against the sphere's
+    material only."""
     return ("same", "other", "rigid") if COUNTERPARTS.get(law_name) in OTHER_WALL_MODELS else ("same",)
 
 

@@ -72,13 +72,13 @@ def settings(law, scene, e_n, options=None):
 
 
 RIGID_E = 1e300        # a rigid wall's youngsModulus: (1 - nu^2)/E vanishes beside the sphere's in double precision
-OTHER_WALL_MODELS = ("hooke", "hertz")    # their only per-type properties are E and nu, mixed as harness mixes them
+OTHER_WALL_MODELS = ("hooke", "hertz", "hooke/hysteresis")   # per-type: E and nu (mixed as harness does), else per pair
 
 
 def wall_material(scene, model):
     """[] for a wall of the sphere's own material (one atom type), else [(E, nu)] of the wall (atom type 2): LIGGGHTS
     mixes Y* = 1/((1 - nu1^2)/Y1 + (1 - nu2^2)/Y2) and G* = 1/(2(2 - nu1)(1 + nu1)/Y1 + 2(2 - nu2)(1 + nu2)/Y2), the
-    scene's E* and G*; the other models' per-type properties are left to a later version."""
+    scene's E* and G*; thornton_ning's per-type yield ratio is left to a later version."""
     if scene.wall == "same":
         return []
     if model not in OTHER_WALL_MODELS:
