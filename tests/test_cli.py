@@ -140,12 +140,13 @@ def test_compare_without_engines_runs_the_reference_and_names_what_it_skipped(tm
 @needs("liggghts")
 @needs("yade")
 def test_compare_skips_engines_for_scenes_their_inputs_cannot_express(tmp_path):
-    """walton-braun: LIGGGHTS' hooke/hysteresis and YADE's Luding run against the sphere's own material only."""
-    proc = harness("compare", "--model", "walton-braun", "--en", "0.5", "--angles", "0", "--wall", "rigid",
-                   "-o", str(tmp_path))
-    assert proc.returncode == 3                              # nothing compared
-    assert "skipped liggghts: its walton-braun inputs use a wall of the sphere's own material" in proc.stdout
-    assert "skipped yade: its walton-braun inputs use a wall of the sphere's own material" in proc.stdout
+    """LIGGGHTS' thornton_ning and YADE's Luding run against the sphere's own material only: named, each is skipped
+    with that reason and nothing is compared (exit 3)."""
+    for model, engine in (("thornton", "liggghts"), ("walton-braun", "yade")):
+        proc = harness("compare", "--model", model, "--engines", engine, "--en", "0.5", "--angles", "0", "--wall",
+                       "rigid", "-o", str(tmp_path / engine))
+        assert proc.returncode == 3                          # nothing compared
+        assert f"skipped {engine}: its {model} inputs use a wall of the sphere's own material" in proc.stdout
 
 
 def test_engines_reference_alone_runs_the_paper_law_only(tmp_path):
