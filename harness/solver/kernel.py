@@ -18,11 +18,12 @@ from ..submodels.tangential.state import N_TSTATE, T_HELD, T_MARGIN
 from ..submodels.tangential.viscous import friction as viscous_friction
 from . import codes as C
 from .compiled import announce_compiling
-from .dispatch import TANGENTIAL_NONE, TANGENTIAL_VISCOUS, tangential_stiffness
+from .dispatch import N_NORMAL, TANGENTIAL_NONE, TANGENTIAL_VISCOUS, tangential_stiffness
 from .events import locate_release, split_at_event
 from .mesh import PEAK_POINTS, graded_step, parabola_peak, polynomial_peak
 from .pair import step_lammps_pair, step_yade_pair
 from .schemes import paper_first_touch, step, step_leapfrog, step_leapfrog_sphere, step_velocity_verlet
+from .specialise import specialised_kernel
 from .state import N_STATE, S_ALPHA, S_C, S_FN, S_FT, S_U, S_VX, S_VZ, S_W, S_Z, reset_history
 from .threads import in_threads
 
@@ -218,11 +219,22 @@ def integrate_yade_pair(first, last, params, ints, out, history, stride, ext):
 
 
 def kernel_of_batch(params, ints):
-    """The compiled integrator of a batch's scheme (one scheme per batch: its law's); only that one is compiled."""
+    """The compiled integrator of a batch's scheme (one scheme per batch: its law's); only that one is compiled, and
+    of a batch of one normal and one tangential kernel (not registered at run time) only with those kernels."""
     schemes = set(ints[:, C.I_INTEGRATOR].tolist())
     if len(schemes) != 1:
         raise ValueError(f"a batch holds one scheme, got {sorted(schemes)}")
-    scheme = schemes.pop()
+    normal, tangential = set(ints[:, C.I_NORMAL].tolist()), set(ints[:, C.I_TANGENTIAL].tolist())
+    general = integrator_of(schemes.pop(), params)
+    if len(normal) == 1 and len(tangential) == 1 and min(normal) < N_NORMAL:
+        specialised = specialised_kernel(normal.pop(), tangential.pop())
+        if specialised is not None:
+            return getattr(specialised, general.__name__)
+    return general
+
+
+def integrator_of(scheme, params):
+    """The integrator of one scheme in this module."""
     if scheme == C.INTEGRATOR_PAPER:
         return integrate_paper
     if scheme in (C.INTEGRATOR_VELOCITY_VERLET, C.INTEGRATOR_LAMMPS):

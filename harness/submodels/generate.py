@@ -52,14 +52,15 @@ def imports(kernels, family):
     return lines
 
 
-def chain(name, family, kernels, arguments, default, extension=None):
-    """One dispatch function: an if-chain over the kernels that define `name`, then the default."""
+def chain(name, family, kernels, arguments, default, extension=None, only=None):
+    """One dispatch function: an if-chain over the kernels that define `name` (those whose codes are in `only`, when
+    given), then the default."""
     decorator = "@compiled"
     tail = ", ext" if family == "normal" else ""
     lines = [decorator, f"def {family}_{name}(code, {arguments}{tail}):"]
     for code, kernel in enumerate(kernels):
         attribute = dict(kernel.functions).get(name)
-        if attribute:
+        if attribute and (only is None or code in only):
             call = f"{alias(family, kernel)}.{attribute}({arguments})"
             lines.append(f"    if code == {code}:")
             lines.append(f"        {'return ' if default != 'None' else ''}{call}")
@@ -72,12 +73,12 @@ def chain(name, family, kernels, arguments, default, extension=None):
     return "\n".join(lines)
 
 
-def normal_step():
+def normal_step(only=None):
     """An incremental law's own step; every other kernel's force, its history untouched."""
     arguments = "p1, p2, p3, p4, radius, alpha, alpha_old, f_old, alpha_max, history, new_history"
     lines = ["@compiled", f"def normal_step(code, {arguments}, ext):"]
     for code, kernel in enumerate(NORMAL_KERNELS):
-        if "step" in dict(kernel.functions):
+        if "step" in dict(kernel.functions) and (only is None or code in only):
             lines += [f"    if code == {code}:", f"        return {alias('normal', kernel)}.step({arguments})"]
     lines.append("    return normal_force(code, p1, p2, p3, p4, radius, alpha, alpha_max, ext)")
     return "\n".join(lines)
@@ -87,7 +88,9 @@ def capability_table(name, values, dtype):
     return f"{name} = np.array({list(values)!r}, dtype=np.{dtype})"
 
 
-def source():
+def source(normal=None, tangential=None):
+    """The dispatch module: every kernel, or only the normal and tangential kernels whose codes are given (the
+    codes, tables and defaults unchanged), so that numba types nothing else (solver/specialise.py)."""
     history = max(len(k.history_reset) for k in NORMAL_KERNELS)
     resets = [list(k.history_reset) + [0.0] * (history - len(k.history_reset)) for k in NORMAL_KERNELS]
     parts = [
@@ -112,10 +115,10 @@ def source():
         "",
     ]
     for name, (arguments, default) in NORMAL.items():
-        parts += ["", chain(name, "normal", NORMAL_KERNELS, arguments, default, EXTENSION_CALL[name]), ""]
-    parts += ["", normal_step(), ""]
+        parts += ["", chain(name, "normal", NORMAL_KERNELS, arguments, default, EXTENSION_CALL[name], normal), ""]
+    parts += ["", normal_step(normal), ""]
     for name, (arguments, default) in TANGENTIAL.items():
-        parts += ["", chain(name, "tangential", TANGENTIAL_KERNELS, arguments, default), ""]
+        parts += ["", chain(name, "tangential", TANGENTIAL_KERNELS, arguments, default, None, tangential), ""]
     return "\n".join(parts).rstrip() + "\n"
 
 
