@@ -3,6 +3,7 @@ engines' curves against their dialects, and the CLI and report."""
 import math
 import subprocess
 import sys
+from pathlib import Path
 
 import numpy as np
 import pandas as pd
@@ -246,7 +247,7 @@ def test_an_interrupted_study_keeps_its_rows_and_reports(tmp_path, monkeypatch):
     assert set(table.rung) == {"20", "100", "rayleigh", "converged"}     # the paper's dashpot: the ladder's rungs
     assert set(table.dialect) == {"paper", EXTRAPOLATED}                 # start at 20 and 100 too
     assert set(table.engine) == {"reference"}
-    assert "what accuracy costs in time" in open(rebuild(str(out))).read()
+    assert "what accuracy costs in time" in Path(rebuild(str(out))).read_text()
 
 
 def _truth_then(truth_of, then):

@@ -12,7 +12,8 @@ from numba.core import config
 
 from ..files import write_text
 from ..submodels.generate import source
-from ..submodels.registry import TANGENTIAL_KERNELS
+from ..submodels.registry import code_of
+from .dispatch import TANGENTIAL_VISCOUS
 
 SOLVER = os.path.dirname(os.path.abspath(__file__))
 _LOADING = threading.Lock()
@@ -29,8 +30,8 @@ def specialised_kernel(normal, tangential):
     solver's modules with its own dispatch.py, written under numba's cache directory (named by the compiled sources).
     numba names a cache by its source file, so the copy is what keeps the specialised functions' caches apart from
     the general ones'. None where the cache directory cannot be written (the general kernels run then)."""
-    alone = {code for code, kernel in enumerate(TANGENTIAL_KERNELS) if kernel.name in COMPILED_ALONE}
-    kept = {tangential} if tangential in alone else set(range(len(TANGENTIAL_KERNELS))) - alone
+    alone = {code_of("tangential", name) for name in COMPILED_ALONE}
+    kept = {tangential} if tangential in alone else set(range(len(TANGENTIAL_VISCOUS))) - alone
     label = f"n{normal}_t{tangential}" if tangential in alone else f"n{normal}"
     with _LOADING:
         return load(label, {normal}, kept)
