@@ -39,6 +39,21 @@ def agreement(frame, engine):
     return max(worst + [np.max(np.abs(eng.omega1 - ref.omega1)) * ref.radius[0] / speed])
 
 
+def assert_head_on_pair_is_wall(pair, wall_form):
+    """Head-on without spin the line of centres never turns: the pair dialect `pair` on the relative motion gives
+    what the same law with the submodels `wall_form` gives on the equivalent sphere against a wall, to round-off."""
+    import numpy as np
+    from harness.laws.law import replace_submodels
+    from harness.request import scene_from
+    from harness.solver.reference import simulate
+    scene = scene_from(en=(0.3, 0.8), angles=(0.0,), target="sphere", target_radius=0.04)
+    a = simulate(pair, scene, steps_per_contact=300)[0]
+    b = simulate(replace_submodels(pair, wall_form), scene, steps_per_contact=300)[0]
+    for column in ("v_n1", "t_contact", "f_n_max", "overlap_max"):
+        assert np.allclose(a[column], b[column], rtol=1e-12, atol=0), column
+    assert (a.v_n1 > 0).all()
+
+
 NOWHERE = {"HARNESS_LIGGGHTS": "/nonexistent/liggghts", "HARNESS_YADE_PYTHON": "/nonexistent/python3.11",
            "HARNESS_LAMMPS": "/nonexistent/lmp"}
 

@@ -6,7 +6,7 @@ import os
 import numpy as np
 
 import pytest
-from conftest import PAIR_TARGETS, agreement, fake_executable, needs
+from conftest import PAIR_TARGETS, agreement, assert_head_on_pair_is_wall, fake_executable, needs
 
 from harness.engines import lammps
 from harness.execute import execute
@@ -154,17 +154,8 @@ def test_the_pair_stepper_head_on_is_the_wall_stepper():
     """Two code paths, one answer: a head-on impact without spin never turns the normal, so the pair stepper
     (solver/pair.py) on the relative motion equals LAMMPS' wall scheme (solver/schemes.py) on the equivalent sphere
     with the pair's own moduli, to round-off."""
-    from harness.laws.law import replace_submodels
-    from harness.request import scene_from
-    from harness.solver.reference import simulate
-    scene = scene_from(en=(0.3, 0.8), angles=(0.0,), target="sphere", target_radius=0.04)
-    pair = lammps.dialect("hertz-mindlin", {}, "sphere")
-    wall = replace_submodels(pair, {"integrator": "lammps", "torque": "lever"})
-    a = simulate(pair, scene, steps_per_contact=300)[0]
-    b = simulate(wall, scene, steps_per_contact=300)[0]
-    for column in ("v_n1", "t_contact", "f_n_max", "overlap_max"):
-        assert np.allclose(a[column], b[column], rtol=1e-12, atol=0), column
-    assert (a.v_n1 > 0).all()
+    assert_head_on_pair_is_wall(lammps.dialect("hertz-mindlin", {}, "sphere"),
+                                {"integrator": "lammps", "torque": "lever"})
 
 
 def test_a_pair_deck_names_both_materials_and_the_pair_mixing():

@@ -5,7 +5,7 @@ import sys
 
 import numpy as np
 import pytest
-from conftest import PAIR_TARGETS, agreement, fake_executable, needs
+from conftest import PAIR_TARGETS, agreement, assert_head_on_pair_is_wall, fake_executable, needs
 
 from harness.engines import yade
 from harness.engines.runner import EngineFailure
@@ -253,17 +253,8 @@ def test_the_yade_pair_stepper_head_on_is_the_wall_stepper():
     """Two code paths, one answer: head-on without spin the normal never turns and nothing slips, so YADE's pair
     stepper on the relative motion equals its wall leapfrog on the equivalent sphere (the pair's own moduli and
     mass), to round-off."""
-    from harness.laws.law import replace_submodels
-    from harness.request import scene_from
-    from harness.solver.reference import simulate
-    scene = scene_from(en=(0.3, 0.8), angles=(0.0,), target="sphere", target_radius=0.04)
-    pair = yade.dialect("hertz-mindlin", {}, "sphere")
-    wall = replace_submodels(pair, {"integrator": "leapfrog", "slip": "lever", "torque": "lever"})
-    a = simulate(pair, scene, steps_per_contact=300)[0]
-    b = simulate(wall, scene, steps_per_contact=300)[0]
-    for column in ("v_n1", "t_contact", "f_n_max", "overlap_max"):
-        assert np.allclose(a[column], b[column], rtol=1e-12, atol=0), column
-    assert (a.v_n1 > 0).all()
+    assert_head_on_pair_is_wall(yade.dialect("hertz-mindlin", {}, "sphere"),
+                                {"integrator": "leapfrog", "slip": "lever", "torque": "lever"})
 
 
 def test_yade_takes_a_sphere_target_for_hertz_mindlin_only():

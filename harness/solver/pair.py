@@ -13,6 +13,18 @@ from .state import (N_STATE, S_ALPHA, S_AMAX, S_DW2, S_FEL, S_FN, S_FS, S_FT, S_
 
 
 @compiled
+def carry_and_spins(s, st, o, ot, p):
+    """Copy the state into the step's output; both spins: the target's from its change, the projectile's from the
+    equivalent spin w* = (R1 w1 + R2 w2)/R*."""
+    for k in range(N_STATE):
+        o[k] = s[k]
+    for k in range(N_TSTATE):
+        ot[k] = st[k]
+    w2 = p[C.P_W2] + s[S_DW2]
+    return (p[C.P_RADIUS] * s[S_W] - p[C.P_R2] * w2) / p[C.P_R1], w2
+
+
+@compiled
 def step_lammps_pair(s, st, o, ot, p, ints, h, scratch, ext):
     """fix nve/sphere on both spheres with pair granular (LAMMPS) or pair gran (LIGGGHTS), as the relative motion
     r = x1 - x2 (mass m*) and each sphere's spin (the projectile's from the equivalent spin w* = (R1 w1 + R2 w2)/R*,
@@ -26,12 +38,7 @@ def step_lammps_pair(s, st, o, ot, p, ints, h, scratch, ext):
     r1, r2, inv1, inv2 = p[C.P_R1], p[C.P_R2], p[C.P_INV_I1], p[C.P_INV_I2]
     c_slip, c_torque = p[C.P_LEVER], p[C.P_TORQUE_LEVER]
     centres = radius + p[C.P_BIG_R]
-    for k in range(N_STATE):
-        o[k] = s[k]
-    for k in range(N_TSTATE):
-        ot[k] = st[k]
-    w2 = p[C.P_W2] + s[S_DW2]
-    w1 = (radius * s[S_W] - r2 * w2) / r1
+    w1, w2 = carry_and_spins(s, st, o, ot, p)
     vx = s[S_VX] + 0.5 * h * (s[S_FN] * s[S_NX] + s[S_FT] * s[S_NZ]) / m
     vz = s[S_VZ] + 0.5 * h * (s[S_FN] * s[S_NZ] - s[S_FT] * s[S_NX]) / m
     w1 -= 0.5 * h * (r1 - c_torque * s[S_ALPHA]) * s[S_FT] * inv1
@@ -85,12 +92,7 @@ def step_yade_pair(s, st, o, ot, p, ints, h, scratch, ext):
     r1, r2, inv1, inv2 = p[C.P_R1], p[C.P_R2], p[C.P_INV_I1], p[C.P_INV_I2]
     c_slip, c_torque = p[C.P_LEVER], p[C.P_TORQUE_LEVER]
     centres = radius + p[C.P_BIG_R]
-    for k in range(N_STATE):
-        o[k] = s[k]
-    for k in range(N_TSTATE):
-        ot[k] = st[k]
-    w2 = p[C.P_W2] + s[S_DW2]
-    w1 = (radius * s[S_W] - r2 * w2) / r1
+    w1, w2 = carry_and_spins(s, st, o, ot, p)
     vx, vz = s[S_VX], s[S_VZ]
     x, z = s[S_X], s[S_Z] + p[C.P_BIG_R]
     dist = math.sqrt(x * x + z * z)
