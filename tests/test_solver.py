@@ -192,7 +192,9 @@ def test_regime_changes_located_in_their_step_make_the_error_smooth(name, overri
 def test_graded_mesh_grows_like_s4_from_both_ends_and_covers_its_span():
     """Phi(s) of the converged mode's mesh: 0 and 1 at the ends, increasing, Phi ~ c s^4 at first touch and
     1 - Phi ~ c (1 - s)^4 at the end (so alpha^(1/4) ~ s there: smooth), uniform steps in the middle."""
-    from harness.solver.mesh import graded_step, graded_time
+    from harness.jit import python_twin
+    from harness.solver import mesh
+    graded_step, graded_time = python_twin(mesh.graded_step), python_twin(mesh.graded_time)
     assert graded_time(0.0) == 0.0 and graded_time(1.0) == pytest.approx(1.0, abs=1e-15)
     s = np.linspace(0.0, 1.0, 2001)
     phi = np.array([graded_time(x) for x in s])

@@ -12,7 +12,7 @@ from harness.laws import compose
 from harness.scene import Scene
 from harness.solver import codes as C
 from harness.solver.extension import table as extension_table
-from harness.solver.kernel import integrator_of, kernel_of_batch
+from harness.solver.kernel import WORK, integrator_of, kernel_of_batch
 from harness.solver.plan import plan_batch
 
 SCENE = Scene(e_n=(0.5,), angles_deg=(0.0, 20.0, 45.0, 70.0, 88.0), omega0=-20.0)
@@ -24,7 +24,8 @@ LAWS = {"hertz-mindlin": compose("hertz-mindlin"), "thornton": compose("thornton
 def outcomes(kernel, batch):
     out = np.zeros((len(batch.params), C.N_OUT))
     history = np.zeros((len(batch.params), 0, 4))
-    kernel(0, len(batch.params), batch.params, batch.ints, out, history, 0, extension_table())
+    kernel(0, len(batch.params), batch.params, batch.ints, out, history, 0, extension_table(),
+           np.full((len(batch.params), WORK), np.nan))
     return out
 
 

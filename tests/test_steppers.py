@@ -3,7 +3,9 @@ from fractions import Fraction
 
 import numpy as np
 
-from harness.solver.steppers import SD_A, SD_E, SD_GAMMA, lu_factor, lu_solve
+from harness.jit import python_twin
+from harness.solver import steppers
+from harness.solver.steppers import SD_A, SD_E, SD_GAMMA
 
 
 def order_conditions(a, b):
@@ -34,6 +36,7 @@ def test_sdirk_tableau_is_fourth_order_with_a_third_order_estimate():
 def test_lu_solver_matches_numpy_with_pivoting():
     """Random 5x5 systems, rows scaled so that partial pivoting swaps at every column: the solution is numpy's
     within round-off times the condition number."""
+    lu_factor, lu_solve = python_twin(steppers.lu_factor), python_twin(steppers.lu_solve)
     rng = np.random.default_rng(7)
     for _ in range(200):
         matrix = rng.normal(size=(5, 5)) * np.logspace(-3, 3, 5)[:, None]

@@ -27,24 +27,28 @@ from .specialise import specialised_kernel
 from .state import N_STATE, S_ALPHA, S_C, S_FN, S_FT, S_U, S_VX, S_VZ, S_W, S_Z, reset_history
 from .threads import in_threads
 
+S_END = 4 * N_STATE                     # work row: four states, five tangential states, four sample vectors
+T_END = S_END + 5 * N_TSTATE
+WORK = T_END + 4 * PEAK_POINTS
 CONE_BAND = 1e-9          # relative: a tangential force this close to mu F_n counts as on the Coulomb cone
 
 
 @njit(cache=True, inline="always")
-def integrate_rows(first, last, params, ints, out, history, stride, ext, advance, split, release, first_touch):
+def integrate_rows(first, last, params, ints, out, history, stride, ext, work, advance, split, release, first_touch):
     """Integrate rows first..last-1 of `params`/`ints` with one scheme (its step `advance`, and the paper scheme's
-    event `split`, located `release` and `first_touch`); fill `out` and, if stride > 0, `history`."""
+    event `split`, located `release` and `first_touch`); fill `out` and, if stride > 0, `history`. `work`: a row of
+    WORK floats per row, the states and samples it steps through."""
     n_hist = history.shape[1]
     for i in range(first, last):
-        s = np.zeros(N_STATE)
-        o = np.zeros(N_STATE)
-        st = np.zeros(N_TSTATE)
-        ot = np.zeros(N_TSTATE)
-        lo = np.zeros(N_STATE)
-        lot = np.zeros(N_TSTATE)
-        at_event = np.zeros(N_STATE)
-        at_event_t = np.zeros(N_TSTATE)
-        scratch = np.zeros(N_TSTATE)
+        w = work[i]
+        for j in range(WORK):
+            w[j] = 0.0
+        s, o, lo, at_event = w[0:N_STATE], w[N_STATE:2 * N_STATE], w[2 * N_STATE:3 * N_STATE], w[3 * N_STATE:S_END]
+        st, ot, lot = w[S_END:S_END + N_TSTATE], w[S_END + N_TSTATE:S_END + 2 * N_TSTATE], \
+            w[S_END + 2 * N_TSTATE:S_END + 3 * N_TSTATE]
+        at_event_t, scratch = w[S_END + 3 * N_TSTATE:S_END + 4 * N_TSTATE], w[S_END + 4 * N_TSTATE:T_END]
+        sample_t, sample_f = w[T_END:T_END + PEAK_POINTS], w[T_END + PEAK_POINTS:T_END + 2 * PEAK_POINTS]
+        peak_x, peak_coef = w[T_END + 2 * PEAK_POINTS:T_END + 3 * PEAK_POINTS], w[T_END + 3 * PEAK_POINTS:WORK]
         p = params[i]
         row_ints = ints[i]
         h = p[C.P_DT]
@@ -76,8 +80,6 @@ def integrate_rows(first, last, params, ints, out, history, stride, ext, advance
         stick_steps = 0
         f_prev2, f_prev1 = 0.0, 0.0
         h_prev = h
-        sample_t = np.zeros(PEAK_POINTS)
-        sample_f = np.zeros(PEAK_POINTS)
         a_prev2, a_prev1 = 0.0, 0.0
         f_peak, a_peak = s[S_FN], 0.0
         status = C.STATUS_NO_SEPARATION
@@ -117,7 +119,7 @@ def integrate_rows(first, last, params, ints, out, history, stride, ext, advance
                 sample_t[PEAK_POINTS - 1], sample_f[PEAK_POINTS - 1] = t_now + h_last, f_now
             if f_sampled and f_prev1 >= f_prev2 and f_prev1 > f_now and f_prev1 >= f_peak and k >= 2:
                 if paper and k >= PEAK_POINTS:
-                    f_peak = polynomial_peak(sample_t, sample_f)
+                    f_peak = polynomial_peak(sample_t, sample_f, peak_x, peak_coef)
                 else:
                     f_peak = parabola_peak(f_prev2, f_prev1, f_now, h_prev, h_last)
             if not paper and a_prev1 >= a_prev2 and a_prev1 > a_now and a_prev1 >= a_peak and k >= 2:
@@ -177,45 +179,45 @@ def no_first_touch(s, st, p, ints, ext):
 
 
 @njit(cache=True, nogil=True)
-def integrate_paper(first, last, params, ints, out, history, stride, ext):
+def integrate_paper(first, last, params, ints, out, history, stride, ext, work):
     """The paper scheme's rows (docstring of the module)."""
-    integrate_rows(first, last, params, ints, out, history, stride, ext, step, split_at_event, paper_release,
-                   paper_first_touch)
+    integrate_rows(first, last, params, ints, out, history, stride, ext, work, step, split_at_event,
+                   paper_release, paper_first_touch)
 
 
 @njit(cache=True, nogil=True)
-def integrate_velocity_verlet(first, last, params, ints, out, history, stride, ext):
+def integrate_velocity_verlet(first, last, params, ints, out, history, stride, ext, work):
     """LIGGGHTS' and LAMMPS' scheme."""
-    integrate_rows(first, last, params, ints, out, history, stride, ext, step_velocity_verlet, no_split, no_release,
-                   no_first_touch)
+    integrate_rows(first, last, params, ints, out, history, stride, ext, work, step_velocity_verlet, no_split,
+                   no_release, no_first_touch)
 
 
 @njit(cache=True, nogil=True)
-def integrate_leapfrog(first, last, params, ints, out, history, stride, ext):
+def integrate_leapfrog(first, last, params, ints, out, history, stride, ext, work):
     """YADE's scheme against a wall."""
-    integrate_rows(first, last, params, ints, out, history, stride, ext, step_leapfrog, no_split, no_release,
-                   no_first_touch)
+    integrate_rows(first, last, params, ints, out, history, stride, ext, work, step_leapfrog, no_split,
+                   no_release, no_first_touch)
 
 
 @njit(cache=True, nogil=True)
-def integrate_leapfrog_sphere(first, last, params, ints, out, history, stride, ext):
+def integrate_leapfrog_sphere(first, last, params, ints, out, history, stride, ext, work):
     """YADE's scheme against its stand-in sphere (Luding)."""
-    integrate_rows(first, last, params, ints, out, history, stride, ext, step_leapfrog_sphere, no_split, no_release,
-                   no_first_touch)
+    integrate_rows(first, last, params, ints, out, history, stride, ext, work, step_leapfrog_sphere, no_split,
+                   no_release, no_first_touch)
 
 
 @njit(cache=True, nogil=True)
-def integrate_pair(first, last, params, ints, out, history, stride, ext):
+def integrate_pair(first, last, params, ints, out, history, stride, ext, work):
     """LAMMPS' and LIGGGHTS' scheme on two spheres (their relative motion)."""
-    integrate_rows(first, last, params, ints, out, history, stride, ext, step_lammps_pair, no_split, no_release,
-                   no_first_touch)
+    integrate_rows(first, last, params, ints, out, history, stride, ext, work, step_lammps_pair, no_split,
+                   no_release, no_first_touch)
 
 
 @njit(cache=True, nogil=True)
-def integrate_yade_pair(first, last, params, ints, out, history, stride, ext):
+def integrate_yade_pair(first, last, params, ints, out, history, stride, ext, work):
     """YADE's scheme on two spheres (their relative motion)."""
-    integrate_rows(first, last, params, ints, out, history, stride, ext, step_yade_pair, no_split, no_release,
-                   no_first_touch)
+    integrate_rows(first, last, params, ints, out, history, stride, ext, work, step_yade_pair, no_split,
+                   no_release, no_first_touch)
 
 
 def kernel_of_batch(params, ints):
@@ -253,4 +255,5 @@ def integrate(params, ints, out, history, stride, ext, threads=None):
     if len(params):
         kernel = kernel_of_batch(params, ints)
         announce_compiling(kernel, f"the {kernel.__name__.removeprefix('integrate_').replace('_', ' ')} integrator")
-        in_threads(kernel, len(params), params, ints, out, history, stride, ext, threads=threads)
+        work = np.empty((len(params), WORK))
+        in_threads(kernel, len(params), params, ints, out, history, stride, ext, work, threads=threads)

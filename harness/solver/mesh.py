@@ -1,6 +1,6 @@
 """The graded mesh of the converged ladder (steps that shrink like s^3 at both ends of the contact) and the
 interpolated peak of F_n from its last samples."""
-from numba import njit
+from ..jit import compiled
 
 PEAK_POINTS = 5           # samples of F_n through which its peak is interpolated (paper scheme)
 
@@ -9,14 +9,14 @@ GRADE_ZONE = 0.1            # share of the graded steps spent at each end of [0,
 RAMP_AREA = 4.0 / 7.0      # integral of the ramp over [0, 1]
 
 
-@njit(cache=True)
+@compiled
 def ramp_integral(x):
     """Integral of the step-size ramp x^3 (20 - 45 x + 36 x^2 - 10 x^3), which rises from 0 like x^3 and meets 1 with
     three vanishing derivatives."""
     return x ** 4 * (5.0 + x * (-9.0 + x * (6.0 - x * (10.0 / 7.0))))
 
 
-@njit(cache=True)
+@compiled
 def graded_time(s):
     """Time fraction Phi(s) of the graded mesh at uniform s in [0, 1]: Phi ~ s^4 at both ends, so that alpha^(1/4),
     alpha^(1/2) and alpha^(3/2) at first touch and at release become smooth in s and the error expands in powers
@@ -37,7 +37,7 @@ def graded_largest_step(n, span):
     return span / (n * (1.0 - 2.0 * GRADE_ZONE * (1.0 - RAMP_AREA)))
 
 
-@njit(cache=True)
+@compiled
 def graded_step(k, n, span):
     """Step k of n graded steps over [0, span]; beyond the span (a release later than foreseen), uniform span/n."""
     if k >= n:
@@ -47,7 +47,7 @@ def graded_step(k, n, span):
     return span * (graded_time((n - k) / n) - graded_time((n - k - 1.0) / n))   # mirrored: no cancellation near 1
 
 
-@njit(cache=True)
+@compiled
 def parabola_peak(y0, y1, y2, h1, h2):
     """Peak of the parabola through (-h1, y0), (0, y1), (h2, y2) with y1 the largest sample."""
     c = ((y0 - y1) / h1 + (y2 - y1) / h2) / (h1 + h2)
@@ -57,7 +57,7 @@ def parabola_peak(y0, y1, y2, h1, h2):
     return y1 - b * b / (4.0 * c)
 
 
-@njit(cache=True)
+@compiled
 def newton_value(coef, x, u):
     """Value and slope at u of the Newton-form polynomial with nodes x and divided differences coef."""
     value, slope = coef[len(coef) - 1], 0.0
@@ -67,14 +67,15 @@ def newton_value(coef, x, u):
     return value, slope
 
 
-@njit(cache=True)
-def polynomial_peak(times, values):
+@compiled
+def polynomial_peak(times, values, x, coef):
     """Largest value of the polynomial through the samples (times, values), the second newest sample being the
     largest, between the third newest and the newest: O(h^5) where the parabola's error, O(h^3) with a phase that
-    jumps with h, would spoil the extrapolation of F_max."""
+    jumps with h, would spoil the extrapolation of F_max. x and coef: work arrays of the samples' length."""
     m = len(times)
-    x = times - times[m - 2]
-    coef = values.copy()
+    for i in range(m):
+        x[i] = times[i] - times[m - 2]
+        coef[i] = values[i]
     for j in range(1, m):
         for i in range(m - 1, j - 1, -1):
             coef[i] = (coef[i] - coef[i - 1]) / (x[i] - x[i - j])

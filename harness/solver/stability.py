@@ -10,7 +10,7 @@ import math
 from dataclasses import dataclass
 
 from ..errors import UserError
-from ..submodels.registry import kernel_code
+from ..submodels.registry import kernel_code, python_point
 from . import codes as C
 
 
@@ -54,9 +54,10 @@ def stability_limit(law, scene, e_n, params, tangential=True):
     modes = [("normal", k_n, c_n, mass)]
     code = kernel_code(law.tangential)
     if tangential and scene.mu > 0.0:
-        from .dispatch import TANGENTIAL_VISCOUS, tangential_stiffness
+        from .dispatch import TANGENTIAL_VISCOUS
         p1 = law.tangential.parameter(contact, law.normal.parameters(contact, e_n, scene.speed).linear_stiffness)
-        k_t = abs(tangential_stiffness(code, p1, math.sqrt(contact.radius * alpha)))   # |k_s| = |nu| k_n for YADE
+        stiffness = python_point("tangential", code, "stiffness")
+        k_t = abs(stiffness(p1, math.sqrt(contact.radius * alpha)))                 # |k_s| = |nu| k_n for YADE
         c_t = abs(params[C.P_TDAMP]) * math.sqrt(k_t)                               # CundallStrack with nu < 0
         m_t = 1.0 / (1.0 / mass + contact.radius ** 2 / contact.inertia)
         spring = 0.0 if TANGENTIAL_VISCOUS[code] else k_t

@@ -121,6 +121,13 @@ def kernel_of(family, code):
     return kernels(family)[code]
 
 
+def python_point(family, code, point):
+    """A kernel's dispatch point as plain Python (its compiled function's source, run by the interpreter): for the
+    few evaluations outside the integrators, where compiling would cost more than it saves. Leaf functions only."""
+    kernel = kernel_of(family, code)
+    return getattr(importlib.import_module(kernel.module), dict(kernel.functions)[point]).py_func
+
+
 def register_normal(model, module):
     """Register a normal sub-model class and the module of its compiled functions at run time: one call where a
     built-in is one registry line. The module defines NAME, ADAPTIVE and `extension(point, p1, p2, p3, p4, radius,
