@@ -1,5 +1,6 @@
-"""A batch of one law compiles only its own sub-model kernels (solver/specialise.py): the specialised integrators give
-the general ones' results bit for bit, and a first run leaves every other kernel uncompiled."""
+"""A batch compiles only its own stepper and, of one law, only its own sub-model kernels (solver/specialise.py): the
+specialised integrators give the general one's results bit for bit, and a first run leaves every other stepper and
+kernel uncompiled."""
 import os
 import subprocess
 import sys
@@ -12,7 +13,8 @@ from harness.laws import compose
 from harness.scene import Scene
 from harness.solver import codes as C
 from harness.solver.extension import table as extension_table
-from harness.solver.kernel import WORK, integrator_of, kernel_of_batch
+from harness.solver import kernel
+from harness.solver.kernel import WORK, kernel_of_batch
 from harness.solver.plan import plan_batch
 
 SCENE = Scene(e_n=(0.5,), angles_deg=(0.0, 20.0, 45.0, 70.0, 88.0), omega0=-20.0)
@@ -32,31 +34,35 @@ def outcomes(kernel, batch):
 @pytest.mark.parametrize("name", sorted(LAWS))
 def test_the_specialised_integrator_is_the_general_one_bit_for_bit(name):
     batch = plan_batch(LAWS[name], SCENE, 0.5, 300)
-    specialised = kernel_of_batch(batch.params, batch.ints)
-    general = integrator_of(int(batch.ints[0, C.I_INTEGRATOR]), batch.params)
-    assert specialised is not general and specialised.__name__ == general.__name__
-    assert specialised.py_func.__module__.startswith("harness.solver_n")
-    assert np.array_equal(outcomes(specialised, batch), outcomes(general, batch))
+    specialised, stepper = kernel_of_batch(batch.params, batch.ints)
+    assert specialised is not kernel.integrate_rows
+    assert specialised.py_func.__module__.startswith(f"harness.solver_{stepper.lower()}_n")
+    assert np.array_equal(outcomes(specialised, batch), outcomes(kernel.integrate_rows, batch))
 
 
 FIRST_RUN = """
 from harness.laws import compose
 from harness.scene import Scene
 from harness.solver.reference import simulate
+import sys
 from harness.submodels.normal import hertz, thornton, stronge
 from harness.submodels.tangential import mindlin, walton_braun
 simulate(compose("hertz-mindlin"), Scene(e_n=(0.5,), angles_deg=(30.0,)), steps_per_contact=100)
 print(bool(hertz.force.signatures), bool(mindlin.rescale.signatures), bool(thornton.force.signatures),
       bool(stronge.force.signatures), bool(walton_braun.spring.signatures))
+schemes, pair = sys.modules["harness.solver_paper_n1.schemes"], sys.modules["harness.solver_paper_n1.pair"]
+print(bool(schemes.step.signatures), bool(schemes.step_velocity_verlet.signatures),
+      bool(schemes.step_leapfrog.signatures), bool(pair.step_yade_pair.signatures))
 """
 
 
 def test_a_first_run_compiles_only_its_laws_kernels(tmp_path):
-    """With an empty cache, a hertz-mindlin run compiles Hertz and its Mindlin spring, and no other law's kernel."""
+    """With an empty cache, a hertz-mindlin run compiles Hertz, its Mindlin spring and the paper scheme's step, and
+    no other law's kernel nor any engine's stepper."""
     done = subprocess.run([sys.executable, "-c", FIRST_RUN], capture_output=True, text=True, timeout=300,
                           env={**os.environ, "NUMBA_CACHE_DIR": str(tmp_path)})
     assert done.returncode == 0, done.stderr
-    assert done.stdout.split() == ["True", "True", "False", "False", "False"]
+    assert done.stdout.split() == ["True", "True", "False", "False", "False", "True", "False", "False", "False"]
 
 
 def test_an_unwritable_cache_runs_the_general_kernels(tmp_path, monkeypatch):
@@ -67,5 +73,5 @@ def test_an_unwritable_cache_runs_the_general_kernels(tmp_path, monkeypatch):
     blocker.write_text("")
     monkeypatch.setattr(config, "CACHE_DIR", str(blocker / "cache"))
     batch = plan_batch(compose("stronge"), SCENE, 0.5, 100)
-    monkeypatch.delitem(sys.modules, "harness.solver_n4", raising=False)
-    assert kernel_of_batch(batch.params, batch.ints) is integrator_of(C.INTEGRATOR_PAPER, batch.params)
+    monkeypatch.delitem(sys.modules, "harness.solver_paper_n4", raising=False)
+    assert kernel_of_batch(batch.params, batch.ints) == (kernel.integrate_rows, "PAPER")

@@ -7,6 +7,7 @@ from numba import njit
 from ..submodels.tangential.state import N_TSTATE, T_HELD, T_MARGIN, T_STEP
 from ..submodels.tangential.viscous import friction as viscous_friction
 from . import codes as C
+from .compiles import PAPER, VELOCITY_VERLET
 from .dispatch import TANGENTIAL_NONE, TANGENTIAL_VISCOUS, tangential_after_cap, tangential_stiffness
 from .spring import cap, spring_force
 from .state import S_ALPHA, S_FEL, S_FS, S_FT, S_NOLD, S_U, S_VX, S_VZ, S_W
@@ -25,9 +26,9 @@ def friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, in_contact, scheme
         limit = p[C.P_MU] * abs(f_n)
         f_s = spring_force(code, s[S_FS], slip * h, a, p[C.P_T1], p[C.P_MU], abs(f_n), s[S_NOLD], ot, scratch, paper)
         ot[T_MARGIN] = ot[T_HELD] = abs(f_s) - limit
-        if paper and p[C.P_TDAMP] != 0.0:
+        if PAPER and paper and p[C.P_TDAMP] != 0.0:
             f_t, f_s = damped_friction(ot, p, code, h, a, f_s, slip, limit, lever)
-        elif scheme == C.INTEGRATOR_LAMMPS:
+        elif VELOCITY_VERLET and scheme == C.INTEGRATOR_LAMMPS:
             f_t, f_s = capped_total(ot, p, code, a, f_s, slip, limit)
         elif abs(f_s) > limit:
             f_s = cap(f_s, limit)
@@ -105,7 +106,7 @@ def tangential_update(s, st, o, ot, p, ints, h, scratch, alpha, a, f_n, in_conta
     kick = f_t
     sliding = (st[T_HELD] >= 0.0 and ot[T_HELD] > 0.0        # on the same side of the Coulomb cone at both ends
                and s[S_FT] * f_t >= 0.0)                     # (a dashpot-held force may cross to the other side)
-    if scheme == C.INTEGRATOR_PAPER and sliding and f_n > 0.0 and not TANGENTIAL_VISCOUS[code]:
+    if PAPER and scheme == C.INTEGRATOR_PAPER and sliding and f_n > 0.0 and not TANGENTIAL_VISCOUS[code]:
         kick = sliding_kick(s, o, m, h, f_t / f_n)
     o[S_VX] = vx_half + 0.5 * h * kick / m
     o[S_W] = w_half - 0.5 * h * torque * kick / inertia

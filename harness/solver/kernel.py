@@ -18,6 +18,7 @@ from ..submodels.tangential.state import N_TSTATE, T_HELD, T_MARGIN
 from ..submodels.tangential.viscous import friction as viscous_friction
 from . import codes as C
 from .compiled import announce_compiling
+from .compiles import LEAPFROG, LEAPFROG_SPHERE, PAIR, PAPER, VELOCITY_VERLET, YADE_PAIR
 from .dispatch import N_NORMAL, TANGENTIAL_NONE, TANGENTIAL_VISCOUS, tangential_stiffness
 from .events import locate_release, split_at_event
 from .mesh import PEAK_POINTS, graded_step, parabola_peak, polynomial_peak
@@ -34,9 +35,27 @@ CONE_BAND = 1e-9          # relative: a tangential force this close to mu F_n co
 
 
 @njit(cache=True, inline="always")
-def integrate_rows(first, last, params, ints, out, history, stride, ext, work, advance, split, release, first_touch):
-    """Integrate rows first..last-1 of `params`/`ints` with one scheme (its step `advance`, and the paper scheme's
-    event `split`, located `release` and `first_touch`); fill `out` and, if stride > 0, `history`. `work`: a row of
+def advance(scheme, s, st, o, ot, p, ints, h, scratch, ext):
+    """One step of the row's scheme, among the steppers this copy of the solver compiles (compiles.py)."""
+    if PAPER and scheme == C.INTEGRATOR_PAPER:
+        return step(s, st, o, ot, p, ints, h, scratch, ext)
+    if VELOCITY_VERLET and (scheme == C.INTEGRATOR_VELOCITY_VERLET or scheme == C.INTEGRATOR_LAMMPS):
+        return step_velocity_verlet(s, st, o, ot, p, ints, h, scratch, ext)
+    if LEAPFROG and scheme == C.INTEGRATOR_LEAPFROG and p[C.P_BIG_R] == 0.0:
+        return step_leapfrog(s, st, o, ot, p, ints, h, scratch, ext)
+    if LEAPFROG_SPHERE and scheme == C.INTEGRATOR_LEAPFROG and p[C.P_BIG_R] > 0.0:
+        return step_leapfrog_sphere(s, st, o, ot, p, ints, h, scratch, ext)
+    if PAIR and (scheme == C.INTEGRATOR_LAMMPS_PAIR or scheme == C.INTEGRATOR_LIGGGHTS_PAIR):
+        return step_lammps_pair(s, st, o, ot, p, ints, h, scratch, ext)
+    if YADE_PAIR and scheme == C.INTEGRATOR_YADE_PAIR:
+        return step_yade_pair(s, st, o, ot, p, ints, h, scratch, ext)
+    return math.nan
+
+
+@njit(cache=True, nogil=True)
+def integrate_rows(first, last, params, ints, out, history, stride, ext, work):
+    """Integrate rows first..last-1 of `params`/`ints`, each with its scheme's step (advance) and, for the paper
+    scheme, its located events, release and first touch; fill `out` and, if stride > 0, `history`. `work`: a row of
     WORK floats per row, the states and samples it steps through."""
     n_hist = history.shape[1]
     for i in range(first, last):
@@ -62,7 +81,7 @@ def integrate_rows(first, last, params, ints, out, history, stride, ext, work, a
         # the spring starts at 0, inside the Coulomb cone (strictly: a slide starting in the first step is an event)
         st[T_MARGIN] = st[T_HELD] = -p[C.P_MU] * abs(s[S_FN]) - 1e-300
         engine_setup = row_ints[C.I_INTEGRATOR] in (C.INTEGRATOR_VELOCITY_VERLET, C.INTEGRATOR_LAMMPS)
-        if engine_setup and row_ints[C.I_TANGENTIAL] != TANGENTIAL_NONE:
+        if VELOCITY_VERLET and engine_setup and row_ints[C.I_TANGENTIAL] != TANGENTIAL_NONE:
             # the engines' setup force at first touch (gap 0 counts as contact): the tangential dashpot alone; LAMMPS
             # drops it when it exceeds mu |F_n|, its spring being empty
             code = row_ints[C.I_TANGENTIAL]
@@ -74,9 +93,9 @@ def integrate_rows(first, last, params, ints, out, history, stride, ext, work, a
                 s[S_FT] = -p[C.P_TDAMP] * math.sqrt(tangential_stiffness(code, p[C.P_T1], 0.0)) * slip0
             if row_ints[C.I_INTEGRATOR] == C.INTEGRATOR_LAMMPS and abs(s[S_FT]) > p[C.P_MU] * abs(s[S_FN]):
                 s[S_FT] = 0.0
-        elif (row_ints[C.I_INTEGRATOR] == C.INTEGRATOR_PAPER and p[C.P_TDAMP] != 0.0
+        elif (PAPER and row_ints[C.I_INTEGRATOR] == C.INTEGRATOR_PAPER and p[C.P_TDAMP] != 0.0
               and row_ints[C.I_TANGENTIAL] != TANGENTIAL_NONE and not TANGENTIAL_VISCOUS[row_ints[C.I_TANGENTIAL]]):
-            first_touch(s, st, p, row_ints, ext)
+            paper_first_touch(s, st, p, row_ints, ext)
         stick_steps = 0
         f_prev2, f_prev1 = 0.0, 0.0
         h_prev = h
@@ -94,18 +113,19 @@ def integrate_rows(first, last, params, ints, out, history, stride, ext, work, a
         for k in range(max_steps):
             if grade_n > 0:
                 h = graded_step(k, grade_n, p[C.P_GRADE_T])
-            indicator = advance(s, st, o, ot, p, row_ints, h, scratch, ext)
+            indicator = advance(row_ints[C.I_INTEGRATOR], s, st, o, ot, p, row_ints, h, scratch, ext)
             h_last = h
-            if indicator > 0.0 and paper:
-                a_peak, f_peak, indicator, _ = split(s, st, o, ot, lo, lot, at_event, at_event_t, p, row_ints, h,
-                                                     scratch, a_peak, f_peak, h, indicator, ext)
+            if PAPER and indicator > 0.0 and paper:
+                a_peak, f_peak, indicator, _ = split_at_event(s, st, o, ot, lo, lot, at_event, at_event_t, p,
+                                                              row_ints, h, scratch, a_peak, f_peak, h, indicator, ext)
             steps = k + 1
             if indicator <= 0.0 and not paper:
                 t_end = t_now + h                          # the engine ends contact at the step, not inside it
                 status = C.STATUS_OK
-            elif indicator <= 0.0:                         # release inside the step; a regime change before it too
-                a_peak, f_peak, indicator, h_last = release(s, st, o, ot, lo, lot, at_event, at_event_t, p, row_ints,
-                                                            h, scratch, a_peak, f_peak, indicator, ext)
+            elif PAPER and indicator <= 0.0:               # release inside the step; a regime change before it too
+                a_peak, f_peak, indicator, h_last = paper_release(s, st, o, ot, lo, lot, at_event, at_event_t, p,
+                                                                  row_ints, h, scratch, a_peak, f_peak, indicator,
+                                                                  ext)
                 if indicator <= 0.0:
                     t_end = t_now + h_last
                     status = C.STATUS_OK
@@ -161,99 +181,40 @@ def paper_release(s, st, o, ot, lo, lot, at_event, at_event_t, p, ints, h, scrat
                           -1.0, ext)
 
 
-@njit(cache=True, inline="always")
-def no_split(s, st, o, ot, lo, lot, at_event, at_event_t, p, ints, h, scratch, a_peak, f_peak, h_full, indicator,
-             ext):
-    """Engine schemes end contact at a step and split no step."""
-    return a_peak, f_peak, indicator, h
-
-
-@njit(cache=True, inline="always")
-def no_release(s, st, o, ot, lo, lot, at_event, at_event_t, p, ints, h, scratch, a_peak, f_peak, indicator, ext):
-    return a_peak, f_peak, indicator, h
-
-
-@njit(cache=True, inline="always")
-def no_first_touch(s, st, p, ints, ext):
-    return
-
-
-@njit(cache=True, nogil=True)
-def integrate_paper(first, last, params, ints, out, history, stride, ext, work):
-    """The paper scheme's rows (docstring of the module)."""
-    integrate_rows(first, last, params, ints, out, history, stride, ext, work, step, split_at_event,
-                   paper_release, paper_first_touch)
-
-
-@njit(cache=True, nogil=True)
-def integrate_velocity_verlet(first, last, params, ints, out, history, stride, ext, work):
-    """LIGGGHTS' and LAMMPS' scheme."""
-    integrate_rows(first, last, params, ints, out, history, stride, ext, work, step_velocity_verlet, no_split,
-                   no_release, no_first_touch)
-
-
-@njit(cache=True, nogil=True)
-def integrate_leapfrog(first, last, params, ints, out, history, stride, ext, work):
-    """YADE's scheme against a wall."""
-    integrate_rows(first, last, params, ints, out, history, stride, ext, work, step_leapfrog, no_split,
-                   no_release, no_first_touch)
-
-
-@njit(cache=True, nogil=True)
-def integrate_leapfrog_sphere(first, last, params, ints, out, history, stride, ext, work):
-    """YADE's scheme against its stand-in sphere (Luding)."""
-    integrate_rows(first, last, params, ints, out, history, stride, ext, work, step_leapfrog_sphere, no_split,
-                   no_release, no_first_touch)
-
-
-@njit(cache=True, nogil=True)
-def integrate_pair(first, last, params, ints, out, history, stride, ext, work):
-    """LAMMPS' and LIGGGHTS' scheme on two spheres (their relative motion)."""
-    integrate_rows(first, last, params, ints, out, history, stride, ext, work, step_lammps_pair, no_split,
-                   no_release, no_first_touch)
-
-
-@njit(cache=True, nogil=True)
-def integrate_yade_pair(first, last, params, ints, out, history, stride, ext, work):
-    """YADE's scheme on two spheres (their relative motion)."""
-    integrate_rows(first, last, params, ints, out, history, stride, ext, work, step_yade_pair, no_split,
-                   no_release, no_first_touch)
-
-
 def kernel_of_batch(params, ints):
-    """The compiled integrator of a batch's scheme (one scheme per batch: its law's); only that one is compiled, and
-    of a batch of one normal and one tangential kernel (not registered at run time) only with those kernels."""
+    """The compiled integrator of a batch (one scheme per batch: its law's), from a copy of the solver that compiles
+    only that scheme's stepper and, for a batch of one normal and one tangential kernel (not registered at run time),
+    only those kernels; the integrator of this module (every stepper and kernel) where no copy can be written.
+    Returns (integrator, its stepper)."""
     schemes = set(ints[:, C.I_INTEGRATOR].tolist())
     if len(schemes) != 1:
         raise ValueError(f"a batch holds one scheme, got {sorted(schemes)}")
+    stepper = stepper_of(schemes.pop(), params)
     normal, tangential = set(ints[:, C.I_NORMAL].tolist()), set(ints[:, C.I_TANGENTIAL].tolist())
-    general = integrator_of(schemes.pop(), params)
     if len(normal) == 1 and len(tangential) == 1 and min(normal) < N_NORMAL:
-        specialised = specialised_kernel(normal.pop(), tangential.pop())
-        if specialised is not None:
-            return getattr(specialised, general.__name__)
-    return general
+        specialised = specialised_kernel(stepper, normal.pop(), tangential.pop())
+    else:
+        specialised = specialised_kernel(stepper)
+    return (integrate_rows if specialised is None else specialised.integrate_rows), stepper
 
 
-def integrator_of(scheme, params):
-    """The integrator of one scheme in this module."""
+def stepper_of(scheme, params):
+    """The stepper (compiles.STEPPERS) of a scheme's batch."""
     if scheme == C.INTEGRATOR_PAPER:
-        return integrate_paper
+        return "PAPER"
     if scheme in (C.INTEGRATOR_VELOCITY_VERLET, C.INTEGRATOR_LAMMPS):
-        return integrate_velocity_verlet
+        return "VELOCITY_VERLET"
     if scheme in (C.INTEGRATOR_LAMMPS_PAIR, C.INTEGRATOR_LIGGGHTS_PAIR):
-        return integrate_pair
+        return "PAIR"
     if scheme == C.INTEGRATOR_YADE_PAIR:
-        return integrate_yade_pair
-    if (params[:, C.P_BIG_R] > 0.0).any():
-        return integrate_leapfrog_sphere
-    return integrate_leapfrog
+        return "YADE_PAIR"
+    return "LEAPFROG_SPHERE" if (params[:, C.P_BIG_R] > 0.0).any() else "LEAPFROG"
 
 
 def integrate(params, ints, out, history, stride, ext, threads=None):
     """Integrate every row (fill `out` and, if stride > 0, `history`), rows split between threads."""
     if len(params):
-        kernel = kernel_of_batch(params, ints)
-        announce_compiling(kernel, f"the {kernel.__name__.removeprefix('integrate_').replace('_', ' ')} integrator")
+        kernel, stepper = kernel_of_batch(params, ints)
+        announce_compiling(kernel, f"the {stepper.lower().replace('_', ' ')} integrator")
         work = np.empty((len(params), WORK))
         in_threads(kernel, len(params), params, ints, out, history, stride, ext, work, threads=threads)

@@ -1,6 +1,6 @@
-"""Compile only what a batch's law needs: a copy of the solver package under its own name whose dispatch module holds
-only the law's normal and tangential kernels, so numba types none of the others
-(docs/performance.md#first-use-compiling-the-kernels)."""
+"""Compile only what a batch needs: a copy of the solver package under its own name that compiles only the batch's
+stepper (its compiles.py) and, for a batch of one law, whose dispatch module holds only that law's normal and
+tangential kernels, so numba types none of the others (docs/performance.md#first-use-compiling-the-kernels)."""
 import importlib
 import os
 import sys
@@ -13,6 +13,7 @@ from numba.core import config
 from ..files import write_text
 from ..submodels.generate import source
 from ..submodels.registry import code_of
+from .compiles import STEPPERS
 from .dispatch import TANGENTIAL_VISCOUS
 
 SOLVER = os.path.dirname(os.path.abspath(__file__))
@@ -24,27 +25,34 @@ COMPILED_ALONE = ("mindlin-deresiewicz", "walton-braun")   # tangential kernels 
                                                           # that a comparison's variants of its spring share one copy
 
 
-def specialised_kernel(normal, tangential):
-    """The kernel module of the solver specialised to one normal kernel and either its tangential kernel (one of
-    COMPILED_ALONE) or all the cheap ones: the package `harness.solver_n<normal>[_t<tangential>]`, a copy of the
-    solver's modules with its own dispatch.py, written under numba's cache directory (named by the compiled sources).
-    numba names a cache by its source file, so the copy is what keeps the specialised functions' caches apart from
-    the general ones'. None where the cache directory cannot be written (the general kernels run then)."""
-    alone = {code_of("tangential", name) for name in COMPILED_ALONE}
-    kept = {tangential} if tangential in alone else set(range(len(TANGENTIAL_VISCOUS))) - alone
-    label = f"n{normal}_t{tangential}" if tangential in alone else f"n{normal}"
+def specialised_kernel(stepper, normal=None, tangential=None):
+    """The kernel module of the solver specialised to one stepper (compiles.STEPPERS) and, given a normal kernel, to
+    it and either its tangential kernel (one of COMPILED_ALONE) or all the cheap ones: the package
+    `harness.solver_<stepper>[_n<normal>[_t<tangential>]]`, a copy of the solver's modules with its own compiles.py
+    and dispatch.py, written under numba's cache directory (named by the compiled sources). numba names a cache by
+    its source file, so the copy is what keeps the specialised functions' caches apart from the general ones'. None
+    where the cache directory cannot be written (the general kernels run then)."""
+    flags = "".join(f"{name} = {name == stepper}\n" for name in STEPPERS) + f"STEPPERS = {STEPPERS!r}\n"
+    label = stepper.lower()
+    kept_normal = kept_tangential = None
+    if normal is not None:
+        alone = {code_of("tangential", name) for name in COMPILED_ALONE}
+        kept_normal = {normal}
+        kept_tangential = {tangential} if tangential in alone else set(range(len(TANGENTIAL_VISCOUS))) - alone
+        label += f"_n{normal}_t{tangential}" if tangential in alone else f"_n{normal}"
     with _LOADING:
-        return load(label, {normal}, kept)
+        return load(label, {"compiles.py": flags, "dispatch.py": source(kept_normal, kept_tangential)})
 
 
-def load(label, normal, tangential):
-    """Write (when changed) and import (once) the specialised package; its kernel module."""
+def load(label, generated):
+    """Write (when changed) and import (once) the specialised package, the solver's modules but the `generated`
+    ones (file name -> text); its kernel module."""
     name = f"harness.solver_{label}"
     if name not in sys.modules:
         directory = os.path.join(config.CACHE_DIR, "specialised", label)
         files = {module: Path(SOLVER, module).read_text() for module in os.listdir(SOLVER)
-                 if module.endswith(".py") and module not in ("__init__.py", "dispatch.py")}
-        files["dispatch.py"] = source(normal, tangential)
+                 if module.endswith(".py") and module != "__init__.py"}
+        files.update(generated)
         try:
             os.makedirs(directory, exist_ok=True)
             for module, text in files.items():
