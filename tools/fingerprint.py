@@ -2,7 +2,8 @@
 
 Every law (and the spring-dashpot laws without their tangential dashpot, which the adaptive integrator covers) and
 every engine dialect, at e_n 0.9/0.5/0.1 and 30 impact angles on the paper's scene: the plain kernel at 1000 steps
-per contact and the converged mode (Dormand-Prince, SDIRK or the graded ladder, whichever each row takes). Floats are
+per contact and the converged mode (Dormand-Prince, SDIRK or the graded ladder, whichever each row takes); then
+every engine dialect between two spheres (a smaller steel target spinning against the projectile's spin). Floats are
 written in hexadecimal, so equal files mean bitwise equal results.
 
     python tools/fingerprint.py write before.csv     # before the change
@@ -15,11 +16,15 @@ import pandas as pd
 
 from harness.engines import ENGINES, EXTERNAL
 from harness.laws import LAWS, compose
+from harness.request import scene_from
 from harness.scene import Scene
 from harness.solver.reference import simulate
 
 COLUMNS = ("v_n1", "v_t1", "omega1", "t_contact", "f_n_max", "overlap_max", "steps_per_contact", "dt")
 SCENE = Scene(e_n=(0.9, 0.5, 0.1), angles_deg=tuple(float(a) for a in np.linspace(0.0, 87.0, 30)))
+PAIR_SCENE = scene_from(en=(0.9, 0.5, 0.1), angles=[float(a) for a in np.linspace(0.0, 87.0, 30)], omega0=-20.0,
+                        target="sphere", target_radius=0.01, target_material="E=2.1e11,nu=0.29,rho=7800",
+                        target_omega=-30.0)
 
 
 def laws():
@@ -32,6 +37,16 @@ def laws():
     return out
 
 
+def pair_laws():
+    """(label, law) of every engine dialect between two spheres."""
+    import importlib
+    out = []
+    for engine in EXTERNAL:
+        pairs = importlib.import_module(f"harness.engines.{engine}.dialect").PAIR_DIALECTS
+        out += [(f"{engine} {name} two spheres", ENGINES[engine].dialect(name, {}, "sphere")) for name in pairs]
+    return out
+
+
 def fingerprint():
     frames = []
     for label, law in laws():
@@ -40,6 +55,8 @@ def fingerprint():
                 continue
             frame = simulate(law, SCENE, **options)[0]
             frames.append(frame.assign(law=label, mode=mode))
+    for label, law in pair_laws():
+        frames.append(simulate(law, PAIR_SCENE, steps_per_contact=1000)[0].assign(law=label, mode="plain"))
     table = pd.concat(frames, ignore_index=True)[["law", "mode", "e_n_target", "theta_deg", *COLUMNS, "message"]]
     for column in COLUMNS:
         table[column] = [float(x).hex() for x in table[column]]

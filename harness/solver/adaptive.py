@@ -374,6 +374,11 @@ def adaptive_rows(first, last, params, ints, tol, t_ref, out, ext):
 
 
 def integrate_adaptive(params, ints, tol, t_ref, out, ext):
-    """Every row of params/ints at tolerance tol, rows split between threads."""
-    announce_compiling(adaptive_rows, "the adaptive integrator")
-    in_threads(adaptive_rows, len(params), params, ints, tol, t_ref, out, ext)
+    """Every row of params/ints at tolerance tol, rows split between threads; a batch of one law on the copy of the
+    solver that compiles only its kernels (specialise.py)."""
+    from .kernel import law_kernels
+    from .specialise import specialised
+    copy = specialised("adaptive", "PAPER", *law_kernels(ints))
+    rows = adaptive_rows if copy is None else copy.adaptive_rows
+    announce_compiling(rows, "the adaptive integrator")
+    in_threads(rows, len(params), params, ints, tol, t_ref, out, ext)

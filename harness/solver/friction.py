@@ -7,7 +7,7 @@ from numba import njit
 from ..submodels.tangential.state import N_TSTATE, T_HELD, T_MARGIN, T_STEP
 from ..submodels.tangential.viscous import friction as viscous_friction
 from . import codes as C
-from .compiles import PAPER, VELOCITY_VERLET
+from .compiles import PAIR, PAPER, VELOCITY_VERLET
 from .dispatch import TANGENTIAL_NONE, TANGENTIAL_VISCOUS, tangential_after_cap, tangential_stiffness
 from .spring import cap, spring_force
 from .state import S_ALPHA, S_FEL, S_FS, S_FT, S_NOLD, S_U, S_VX, S_VZ, S_W
@@ -28,7 +28,7 @@ def friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, in_contact, scheme
         ot[T_MARGIN] = ot[T_HELD] = abs(f_s) - limit
         if PAPER and paper and p[C.P_TDAMP] != 0.0:
             f_t, f_s = damped_friction(ot, p, code, h, a, f_s, slip, limit, lever)
-        elif VELOCITY_VERLET and scheme == C.INTEGRATOR_LAMMPS:
+        elif (VELOCITY_VERLET or PAIR) and scheme == C.INTEGRATOR_LAMMPS:      # LAMMPS: walls and pairs
             f_t, f_s = capped_total(ot, p, code, a, f_s, slip, limit)
         elif abs(f_s) > limit:
             f_s = cap(f_s, limit)

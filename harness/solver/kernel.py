@@ -24,7 +24,7 @@ from .events import locate_release, split_at_event
 from .mesh import PEAK_POINTS, graded_step, parabola_peak, polynomial_peak
 from .pair import step_lammps_pair, step_yade_pair
 from .schemes import paper_first_touch, step, step_leapfrog, step_leapfrog_sphere, step_velocity_verlet
-from .specialise import specialised_kernel
+from .specialise import specialised
 from .state import N_STATE, S_ALPHA, S_C, S_FN, S_FT, S_U, S_VX, S_VZ, S_W, S_Z, reset_history
 from .threads import in_threads
 
@@ -190,12 +190,16 @@ def kernel_of_batch(params, ints):
     if len(schemes) != 1:
         raise ValueError(f"a batch holds one scheme, got {sorted(schemes)}")
     stepper = stepper_of(schemes.pop(), params)
+    copy = specialised("kernel", stepper, *law_kernels(ints))
+    return (integrate_rows if copy is None else copy.integrate_rows), stepper
+
+
+def law_kernels(ints):
+    """(normal, tangential) kernel codes of a batch of one law (normal not registered at run time), else ()."""
     normal, tangential = set(ints[:, C.I_NORMAL].tolist()), set(ints[:, C.I_TANGENTIAL].tolist())
     if len(normal) == 1 and len(tangential) == 1 and min(normal) < N_NORMAL:
-        specialised = specialised_kernel(stepper, normal.pop(), tangential.pop())
-    else:
-        specialised = specialised_kernel(stepper)
-    return (integrate_rows if specialised is None else specialised.integrate_rows), stepper
+        return normal.pop(), tangential.pop()
+    return ()
 
 
 def stepper_of(scheme, params):

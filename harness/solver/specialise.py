@@ -25,9 +25,9 @@ COMPILED_ALONE = ("mindlin-deresiewicz", "walton-braun")   # tangential kernels 
                                                           # that a comparison's variants of its spring share one copy
 
 
-def specialised_kernel(stepper, normal=None, tangential=None):
-    """The kernel module of the solver specialised to one stepper (compiles.STEPPERS) and, given a normal kernel, to
-    it and either its tangential kernel (one of COMPILED_ALONE) or all the cheap ones: the package
+def specialised(module, stepper, normal=None, tangential=None):
+    """`module` (kernel or adaptive) of the solver specialised to one stepper (compiles.STEPPERS) and, given a
+    normal kernel, to it and either its tangential kernel (one of COMPILED_ALONE) or all the cheap ones: the package
     `harness.solver_<stepper>[_n<normal>[_t<tangential>]]`, a copy of the solver's modules with its own compiles.py
     and dispatch.py, written under numba's cache directory (named by the compiled sources). numba names a cache by
     its source file, so the copy is what keeps the specialised functions' caches apart from the general ones'. None
@@ -41,22 +41,22 @@ def specialised_kernel(stepper, normal=None, tangential=None):
         kept_tangential = {tangential} if tangential in alone else set(range(len(TANGENTIAL_VISCOUS))) - alone
         label += f"_n{normal}_t{tangential}" if tangential in alone else f"_n{normal}"
     with _LOADING:
-        return load(label, {"compiles.py": flags, "dispatch.py": source(kept_normal, kept_tangential)})
+        return load(label, {"compiles.py": flags, "dispatch.py": source(kept_normal, kept_tangential)}, module)
 
 
-def load(label, generated):
+def load(label, generated, module):
     """Write (when changed) and import (once) the specialised package, the solver's modules but the `generated`
-    ones (file name -> text); its kernel module."""
+    ones (file name -> text); its `module`."""
     name = f"harness.solver_{label}"
     if name not in sys.modules:
         directory = os.path.join(config.CACHE_DIR, "specialised", label)
-        files = {module: Path(SOLVER, module).read_text() for module in os.listdir(SOLVER)
-                 if module.endswith(".py") and module != "__init__.py"}
+        files = {source: Path(SOLVER, source).read_text() for source in os.listdir(SOLVER)
+                 if source.endswith(".py") and source != "__init__.py"}
         files.update(generated)
         try:
             os.makedirs(directory, exist_ok=True)
-            for module, text in files.items():
-                path = Path(directory, module)
+            for source, text in files.items():
+                path = Path(directory, source)
                 if not path.exists() or path.read_text() != text:
                     write_text(path, text)
         except OSError:
@@ -65,4 +65,4 @@ def load(label, generated):
         package.__path__ = [directory]
         package.__package__ = name
         sys.modules[name] = package
-    return importlib.import_module(f"{name}.kernel")
+    return importlib.import_module(f"{name}.{module}")
