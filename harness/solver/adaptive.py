@@ -22,7 +22,8 @@ from .contact_ode import (A_DFN, A_FN, A_TRIAL, E_RELEASE, E_REVERSAL, E_SLIP, E
                           M_DIR, M_LOADING, M_SIGN, M_STAR, M_STICKS, M_TANGENTIAL, N_AUX, N_EVENTS, N_MODE, N_Y, SLIDE, STICK,
                           Y_ALPHA, Y_FS, Y_RATE, Y_VX, Y_W, cone_rate, coulomb_cone, edge_w, evaluate, events,
                           slip_velocity)
-from .dispatch import TANGENTIAL_IMPLICIT, TANGENTIAL_NONE, normal_residual, tangential_onset_w
+from .dispatch import (TANGENTIAL_ANY_IMPLICIT, TANGENTIAL_IMPLICIT, TANGENTIAL_NONE, normal_residual,
+                       tangential_onset_w)
 from .events import illinois
 from .steppers import J_END, J_START, STAGES, dp_step, hermite, sdirk_step
 from .threads import in_threads
@@ -81,7 +82,7 @@ def interpolated_root(kind, p, ints, y, y_end, f_start, f_end, mode, h, state, d
 def advance(implicit, p, ints, y, mode, h, k, y_new, stage, aux, scale, tol, work, jac, lu, pivot, spring, ext):
     """One step of length h with the row's stepper (spring[0]: w at y, spring[1]: at y_new); returns (error norm,
     force evaluations)."""
-    if implicit:
+    if TANGENTIAL_ANY_IMPLICIT and implicit:
         return sdirk_step(p, ints, y, spring[0], mode, h, k, y_new, work, jac, lu, pivot, aux, scale, tol,
                           spring[1:], ext)
     return dp_step(p, ints, y, mode, h, k, y_new, stage, aux, scale, tol, ext), STAGES - 1
@@ -228,7 +229,7 @@ def onset_mode(p, ints, y, mode, dy, aux, scale, spring, ext):
     if ints[C.I_TANGENTIAL] == TANGENTIAL_NONE or p[C.P_MU] == 0.0:
         mode[M_TANGENTIAL] = 0.0
         return
-    if TANGENTIAL_IMPLICIT[ints[C.I_TANGENTIAL]]:
+    if TANGENTIAL_ANY_IMPLICIT and TANGENTIAL_IMPLICIT[ints[C.I_TANGENTIAL]]:
         implicit_onset(p, ints, y, mode, dy, aux, scale, spring, ext)
         return
     mode[M_TANGENTIAL] = STICK
@@ -247,7 +248,7 @@ def onset_mode(p, ints, y, mode, dy, aux, scale, spring, ext):
 @njit(cache=True, inline="always")
 def spring_w(ints, mode, spring):
     """w to evaluate with: the sticking Walton-Braun spring's own, NaN (read from F_s) otherwise."""
-    if TANGENTIAL_IMPLICIT[ints[C.I_TANGENTIAL]] and mode[M_TANGENTIAL] == STICK:
+    if TANGENTIAL_ANY_IMPLICIT and TANGENTIAL_IMPLICIT[ints[C.I_TANGENTIAL]] and mode[M_TANGENTIAL] == STICK:
         return spring[0]
     return math.nan
 
@@ -326,10 +327,12 @@ def impact(p, ints, tol, t_ref, row_out, ext):
         if stalled > STALL_COUNT:                     # creeping: the step cannot grow (an implicit stage that
             status = C.STATUS_NONFINITE               # Newton solves only at ~1e-13 of a contact); the converged
             break                                     # mode takes such a row from the ladder
-        y[:] = y_new
-        spring[0] = spring[1]
-        if implicit:
-            jac[J_START] = jac[J_END]                 # the implicit stepper's Jacobian at the new start
+        copy_into(y, y_new)                           # (element loops: a slice assignment compiles its shape
+        spring[0] = spring[1]                         # error's message, seconds of a first run)
+        if TANGENTIAL_ANY_IMPLICIT and implicit:
+            for a in range(jac.shape[1]):             # the implicit stepper's Jacobian at the new start
+                for i in range(N_Y):
+                    copy_into(jac[J_START, a, i], jac[J_END, a, i])
         f_n = aux_new[A_FN]
         f_peak = max(f_peak, f_n)                     # exact at the located turn (undamped) or peak (damped)
         a_peak = max(a_peak, y[Y_ALPHA])
@@ -349,8 +352,8 @@ def impact(p, ints, tol, t_ref, row_out, ext):
             evaluate(p, ints, y, mode, spring_w(ints, mode, spring), k[0], aux, ext)     # the new regime's rates
             evaluations += 1
         else:
-            k[0, :] = k[STAGES - 1, :]
-            aux[:] = aux_new
+            copy_into(k[0], k[STAGES - 1])
+            copy_into(aux, aux_new)
         events(p, ints, y, mode, aux, scale, g_start, ext)
         for _ in range(SETTLE_ROUNDS):
             if not settle(p, ints, y, mode, g_start, aux, spring, ext):
@@ -364,6 +367,13 @@ def impact(p, ints, tol, t_ref, row_out, ext):
     row_out[C.O_TC], row_out[C.O_FMAX], row_out[C.O_AMAX] = t, f_peak, a_peak
     row_out[C.O_STEPS], row_out[C.O_STATUS], row_out[C.O_ACCEPTED] = evaluations, status, accepted
     row_out[C.O_STICKING] = mode[M_STICKS] + (1.0 if implicit else 0.0)   # an implicit spring is never on the cone
+
+
+@compiled
+def copy_into(target, source):
+    """target[:] = source, element by element."""
+    for i in range(len(target)):
+        target[i] = source[i]
 
 
 @njit(cache=True, nogil=True)

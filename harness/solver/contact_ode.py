@@ -15,8 +15,9 @@ from numba import njit
 
 from ..jit import compiled
 from . import codes as C
-from .dispatch import (TANGENTIAL_IMPLICIT, TANGENTIAL_LOG_RATE, normal_below, normal_force, normal_slope,
-                       tangential_edge_w, tangential_force_from_w, tangential_stiffness, tangential_w_from_force)
+from .dispatch import (TANGENTIAL_ANY_IMPLICIT, TANGENTIAL_IMPLICIT, TANGENTIAL_LOG_RATE, normal_below, normal_force,
+                       normal_slope, tangential_edge_w, tangential_force_from_w, tangential_stiffness,
+                       tangential_w_from_force)
 from .schemes import damping_power, loading_kink
 
 Y_ALPHA, Y_RATE, Y_VX, Y_W, Y_FS = 0, 1, 2, 3, 4
@@ -84,7 +85,7 @@ def evaluate(p, ints, y, mode, w, dy, aux, ext):
     lever = radius - p[C.P_LEVER] * alpha
     slide = mode[M_TANGENTIAL] == SLIDE
     v_s = slip_velocity(p, y)
-    if TANGENTIAL_IMPLICIT[code]:
+    if TANGENTIAL_ANY_IMPLICIT and TANGENTIAL_IMPLICIT[code]:
         trial = implicit_rate(code, p, y, mode, w, coulomb_cone(p, ints, f_n), v_s)
     else:
         trial = -tangential_stiffness(code, p[C.P_T1], a) * v_s
@@ -154,7 +155,7 @@ def events(p, ints, y, mode, aux, scale, g, ext):
     cone = coulomb_cone(p, ints, f_n)
     g[E_SLIP] = (abs(y[Y_FS]) - cone) / f_ref if mode[M_TANGENTIAL] == STICK else INACTIVE
     v_s = slip_velocity(p, y)
-    reversible = TANGENTIAL_IMPLICIT[ints[C.I_TANGENTIAL]] and mode[M_TANGENTIAL] != 0.0
+    reversible = TANGENTIAL_ANY_IMPLICIT and TANGENTIAL_IMPLICIT[ints[C.I_TANGENTIAL]] and mode[M_TANGENTIAL] != 0.0
     g[E_REVERSAL] = -mode[M_DIR] * v_s / scale[6] if reversible else INACTIVE
     inward = cone_rate(p, ints, aux) - mode[M_SIGN] * aux[A_TRIAL]
     g[E_STICK] = inward * t_ref / f_ref if mode[M_TANGENTIAL] == SLIDE else INACTIVE

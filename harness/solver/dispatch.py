@@ -49,6 +49,7 @@ TANGENTIAL_LAMMPS_MINDLIN_FORCE_RESCALE = 10
 TANGENTIAL_VISCOUS = np.array([False, False, False, False, False, False, False, True, True, False, False], dtype=np.bool_)
 TANGENTIAL_IMPLICIT = np.array([False, False, False, False, False, False, True, False, False, False, False], dtype=np.bool_)
 TANGENTIAL_LOG_RATE = np.array([0, 0, 0, 1, 2, 0, 0, 0, 0, 0, 0], dtype=np.int64)
+TANGENTIAL_ANY_IMPLICIT = True   # numba drops the implicit stepper where False
 
 
 @compiled

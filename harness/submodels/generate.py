@@ -60,7 +60,7 @@ def chain(name, family, kernels, arguments, default, extension=None, only=None):
     lines = [decorator, f"def {family}_{name}(code, {arguments}{tail}):"]
     for code, kernel in enumerate(kernels):
         attribute = dict(kernel.functions).get(name)
-        if attribute and (only is None or code in only):
+        if attribute and kept(code, only):
             call = f"{alias(family, kernel)}.{attribute}({arguments})"
             lines.append(f"    if code == {code}:")
             lines.append(f"        {'return ' if default != 'None' else ''}{call}")
@@ -78,10 +78,14 @@ def normal_step(only=None):
     arguments = "p1, p2, p3, p4, radius, alpha, alpha_old, f_old, alpha_max, history, new_history"
     lines = ["@compiled", f"def normal_step(code, {arguments}, ext):"]
     for code, kernel in enumerate(NORMAL_KERNELS):
-        if "step" in dict(kernel.functions) and (only is None or code in only):
+        if "step" in dict(kernel.functions) and kept(code, only):
             lines += [f"    if code == {code}:", f"        return {alias('normal', kernel)}.step({arguments})"]
     lines.append("    return normal_force(code, p1, p2, p3, p4, radius, alpha, alpha_max, ext)")
     return "\n".join(lines)
+
+
+def kept(code, only):
+    return only is None or code in only
 
 
 def capability_table(name, values, dtype):
@@ -112,6 +116,8 @@ def source(normal=None, tangential=None):
         capability_table("TANGENTIAL_VISCOUS", [k.viscous for k in TANGENTIAL_KERNELS], "bool_"),
         capability_table("TANGENTIAL_IMPLICIT", [k.implicit for k in TANGENTIAL_KERNELS], "bool_"),
         capability_table("TANGENTIAL_LOG_RATE", [k.log_rate for k in TANGENTIAL_KERNELS], "int64"),
+        f"TANGENTIAL_ANY_IMPLICIT = {any(k.implicit for c, k in enumerate(TANGENTIAL_KERNELS) if kept(c, tangential))}"
+        "   # numba drops the implicit stepper where False",
         "",
     ]
     for name, (arguments, default) in NORMAL.items():
