@@ -34,28 +34,10 @@ WORK = T_END + 4 * PEAK_POINTS
 CONE_BAND = 1e-9          # relative: a tangential force this close to mu F_n counts as on the Coulomb cone
 
 
-@njit(cache=True, inline="always")
-def advance(scheme, s, st, o, ot, p, ints, h, scratch, ext):
-    """One step of the row's scheme, among the steppers this copy of the solver compiles (compiles.py)."""
-    if PAPER and scheme == C.INTEGRATOR_PAPER:
-        return step(s, st, o, ot, p, ints, h, scratch, ext)
-    if VELOCITY_VERLET and (scheme == C.INTEGRATOR_VELOCITY_VERLET or scheme == C.INTEGRATOR_LAMMPS):
-        return step_velocity_verlet(s, st, o, ot, p, ints, h, scratch, ext)
-    if LEAPFROG and scheme == C.INTEGRATOR_LEAPFROG and p[C.P_BIG_R] == 0.0:
-        return step_leapfrog(s, st, o, ot, p, ints, h, scratch, ext)
-    if LEAPFROG_SPHERE and scheme == C.INTEGRATOR_LEAPFROG and p[C.P_BIG_R] > 0.0:
-        return step_leapfrog_sphere(s, st, o, ot, p, ints, h, scratch, ext)
-    if PAIR and (scheme == C.INTEGRATOR_LAMMPS_PAIR or scheme == C.INTEGRATOR_LIGGGHTS_PAIR):
-        return step_lammps_pair(s, st, o, ot, p, ints, h, scratch, ext)
-    if YADE_PAIR and scheme == C.INTEGRATOR_YADE_PAIR:
-        return step_yade_pair(s, st, o, ot, p, ints, h, scratch, ext)
-    return math.nan
-
-
 @njit(cache=True, nogil=True)
 def integrate_rows(first, last, params, ints, out, history, stride, ext, work):
-    """Integrate rows first..last-1 of `params`/`ints`, each with its scheme's step (advance) and, for the paper
-    scheme, its located events, release and first touch; fill `out` and, if stride > 0, `history`. `work`: a row of
+    """Integrate rows first..last-1 of `params`/`ints`, each with its scheme's step (among the steppers this copy of
+    the solver compiles: compiles.py) and, for the paper scheme, its located events, release and first touch; fill `out` and, if stride > 0, `history`. `work`: a row of
     WORK floats per row, the states and samples it steps through."""
     n_hist = history.shape[1]
     for i in range(first, last):
@@ -108,12 +90,26 @@ def integrate_rows(first, last, params, ints, out, history, stride, ext, work):
         max_steps = int(p[C.P_MAXSTEPS])
         t_now = 0.0
         grade_n = int(p[C.P_GRADE_N])
-        paper = row_ints[C.I_INTEGRATOR] == C.INTEGRATOR_PAPER
+        scheme = row_ints[C.I_INTEGRATOR]
+        paper = scheme == C.INTEGRATOR_PAPER
         f_sampled = not (paper and p[C.P_DAMP_C0] == 0.0)      # else F_max is F at the turn, located
         for k in range(max_steps):
             if grade_n > 0:
                 h = graded_step(k, grade_n, p[C.P_GRADE_T])
-            indicator = advance(row_ints[C.I_INTEGRATOR], s, st, o, ot, p, row_ints, h, scratch, ext)
+            if PAPER and paper:
+                indicator = step(s, st, o, ot, p, row_ints, h, scratch, ext)
+            elif VELOCITY_VERLET and (scheme == C.INTEGRATOR_VELOCITY_VERLET or scheme == C.INTEGRATOR_LAMMPS):
+                indicator = step_velocity_verlet(s, st, o, ot, p, row_ints, h, scratch, ext)
+            elif LEAPFROG and scheme == C.INTEGRATOR_LEAPFROG and p[C.P_BIG_R] == 0.0:
+                indicator = step_leapfrog(s, st, o, ot, p, row_ints, h, scratch, ext)
+            elif LEAPFROG_SPHERE and scheme == C.INTEGRATOR_LEAPFROG:
+                indicator = step_leapfrog_sphere(s, st, o, ot, p, row_ints, h, scratch, ext)
+            elif PAIR and (scheme == C.INTEGRATOR_LAMMPS_PAIR or scheme == C.INTEGRATOR_LIGGGHTS_PAIR):
+                indicator = step_lammps_pair(s, st, o, ot, p, row_ints, h, scratch, ext)
+            elif YADE_PAIR and scheme == C.INTEGRATOR_YADE_PAIR:
+                indicator = step_yade_pair(s, st, o, ot, p, row_ints, h, scratch, ext)
+            else:                                  # a scheme this copy does not compile (never planned)
+                indicator = math.nan
             h_last = h
             if PAPER and indicator > 0.0 and paper:
                 a_peak, f_peak, indicator, _ = split_at_event(s, st, o, ot, lo, lot, at_event, at_event_t, p,

@@ -32,31 +32,41 @@ def specialised(module, stepper, normal=None, tangential=None):
     and dispatch.py, written under numba's cache directory (named by the compiled sources). numba names a cache by
     its source file, so the copy is what keeps the specialised functions' caches apart from the general ones'. None
     where the cache directory cannot be written (the general kernels run then)."""
-    flags = "".join(f"{name} = {name == stepper}\n" for name in STEPPERS) + f"STEPPERS = {STEPPERS!r}\n"
     label = stepper.lower()
+    if normal is not None:
+        label += f"_n{normal}_t{tangential}" if tangential in alone_codes() else f"_n{normal}"
+    with _LOADING:
+        return load(label, lambda: generated(stepper, normal, tangential), module)
+
+
+def alone_codes():
+    return {code_of("tangential", name) for name in COMPILED_ALONE}
+
+
+def generated(stepper, normal, tangential):
+    """The modules a specialised copy writes in place of the solver's: compiles.py and dispatch.py."""
+    flags = "".join(f"{name} = {name == stepper}\n" for name in STEPPERS) + f"STEPPERS = {STEPPERS!r}\n"
     kept_normal = kept_tangential = None
     if normal is not None:
-        alone = {code_of("tangential", name) for name in COMPILED_ALONE}
+        alone = alone_codes()
         kept_normal = {normal}
         kept_tangential = {tangential} if tangential in alone else set(range(len(TANGENTIAL_VISCOUS))) - alone
-        label += f"_n{normal}_t{tangential}" if tangential in alone else f"_n{normal}"
-    with _LOADING:
-        return load(label, {"compiles.py": flags, "dispatch.py": source(kept_normal, kept_tangential)}, module)
+    return {"compiles.py": flags, "dispatch.py": source(kept_normal, kept_tangential)}
 
 
-def load(label, generated, module):
-    """Write (when changed) and import (once) the specialised package, the solver's modules but the `generated`
-    ones (file name -> text); its `module`."""
+def load(label, generate, module):
+    """Write (when changed) and import (once) the specialised package, the solver's modules but those `generate()`
+    returns (file name -> text); its `module`."""
     name = f"harness.solver_{label}"
     if name not in sys.modules:
         directory = os.path.join(config.CACHE_DIR, "specialised", label)
-        files = {source: Path(SOLVER, source).read_text() for source in os.listdir(SOLVER)
-                 if source.endswith(".py") and source != "__init__.py"}
-        files.update(generated)
+        files = {file_name: Path(SOLVER, file_name).read_text() for file_name in os.listdir(SOLVER)
+                 if file_name.endswith(".py") and file_name != "__init__.py"}
+        files.update(generate())
         try:
             os.makedirs(directory, exist_ok=True)
-            for source, text in files.items():
-                path = Path(directory, source)
+            for file_name, text in files.items():
+                path = Path(directory, file_name)
                 if not path.exists() or path.read_text() != text:
                     write_text(path, text)
         except OSError:
