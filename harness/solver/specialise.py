@@ -44,14 +44,18 @@ def alone_codes():
 
 
 def generated(stepper, normal, tangential):
-    """The modules a specialised copy writes in place of the solver's: compiles.py and dispatch.py."""
+    """The modules a specialised copy writes in place of the solver's: compiles.py, dispatch.py, and extension.py,
+    which re-exports the solver's own (its empty slot is compiled when imported: once is enough)."""
     flags = "".join(f"{name} = {name == stepper}\n" for name in STEPPERS) + f"STEPPERS = {STEPPERS!r}\n"
     kept_normal = kept_tangential = None
     if normal is not None:
         alone = alone_codes()
         kept_normal = {normal}
         kept_tangential = {tangential} if tangential in alone else set(range(len(TANGENTIAL_VISCOUS))) - alone
-    return {"compiles.py": flags, "dispatch.py": source(kept_normal, kept_tangential)}
+    extension = ('"""The solver\'s extension table and calls."""\n'
+                 "from ..solver.extension import BELOW, FORCE, KINK, RESIDUAL, SIGNATURE, SLOPE, call, missing, table  "
+                 "# noqa: F401\n")
+    return {"compiles.py": flags, "dispatch.py": source(kept_normal, kept_tangential), "extension.py": extension}
 
 
 def load(label, generate, module):
