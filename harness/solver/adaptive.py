@@ -15,7 +15,7 @@ import math
 import numpy as np
 from numba import njit
 
-from ..jit import compiled
+from ..jit import allocating, compiled
 from . import codes as C
 from .compiled import announce_compiling
 from .contact_ode import (A_DFN, A_FN, A_TRIAL, E_RELEASE, E_REVERSAL, E_SLIP, E_STICK, E_TURN, M_AMAX, M_DENT,
@@ -198,7 +198,7 @@ def reverse(p, ints, y, mode, f_n, spring):
     spring[0] = 1.0
 
 
-@njit(cache=True)
+@compiled
 def implicit_onset(p, ints, y, mode, dy, aux, scale, spring, ext):
     """An implicit spring (Walton-Braun's) at first touch: sticking in the direction of V_s from T* = 0. Where mu N starts from 0
     at a finite rate, x starts at its self-similar value, 1 - x = beta x^(1/3) with beta = k_t0 |V_s|/(mu N'):
@@ -216,13 +216,15 @@ def implicit_onset(p, ints, y, mode, dy, aux, scale, spring, ext):
 
 @njit(cache=True, inline="always")
 def evaluate_just_after_touch(p, ints, y, mode, w, dy, aux, scale, ext):
-    """The rates at a tiny overlap (ONSET_PROBE), where first touch's stick-or-slide is decided."""
-    probe = y.copy()
-    probe[Y_ALPHA] = ONSET_PROBE * scale[0]
-    evaluate(p, ints, probe, mode, w, dy, aux, ext)
+    """The rates at a tiny overlap (ONSET_PROBE), where first touch's stick-or-slide is decided (at y, its overlap
+    restored after: evaluate only reads it)."""
+    alpha = y[Y_ALPHA]
+    y[Y_ALPHA] = ONSET_PROBE * scale[0]
+    evaluate(p, ints, y, mode, w, dy, aux, ext)
+    y[Y_ALPHA] = alpha
 
 
-@njit(cache=True)
+@compiled
 def onset_mode(p, ints, y, mode, dy, aux, scale, spring, ext):
     """Stick or slide at first touch: stick while mu |F_n| > 0 there; where both start from 0 (undamped laws, whose
     spring and cone grow alike), slide if the trial spring outgrows the cone, judged at a tiny overlap."""
@@ -253,7 +255,7 @@ def spring_w(ints, mode, spring):
     return math.nan
 
 
-@njit(cache=True)
+@allocating
 def impact(p, ints, tol, t_ref, row_out, ext):
     """One impact from first touch to release at tolerance `tol`; fills row_out like kernel.integrate, with O_STEPS
     the number of force evaluations. Walton-Braun's spring takes the implicit stepper (stiff where it rides the
