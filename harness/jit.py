@@ -28,7 +28,6 @@ def cache_base():
 config.CACHE_DIR = os.path.join(cache_base(), source_digest(*COMPILED_SOURCES, "jit.py"))
 
 compiled = njit(cache=True, _nrt=False, no_cfunc_wrapper=True, no_cpython_wrapper=True)
-allocating = njit(cache=True, no_cfunc_wrapper=True, no_cpython_wrapper=True)   # the same, for one that allocates
 
 
 def python_twin(function):

@@ -15,7 +15,7 @@ import math
 import numpy as np
 from numba import njit
 
-from ..jit import allocating, compiled
+from ..jit import compiled
 from . import codes as C
 from .compiled import announce_compiling
 from .contact_ode import (A_DFN, A_FN, A_TRIAL, E_RELEASE, E_REVERSAL, E_SLIP, E_STICK, E_TURN, M_AMAX, M_DENT,
@@ -255,10 +255,10 @@ def spring_w(ints, mode, spring):
     return math.nan
 
 
-@allocating
-def impact(p, ints, tol, t_ref, row_out, ext):
+@compiled
+def impact(p, ints, tol, t_ref, row_out, ext, vec, k, work, jac, lu, pivot):
     """One impact from first touch to release at tolerance `tol`; fills row_out like kernel.integrate, with O_STEPS
-    the number of force evaluations. Walton-Braun's spring takes the implicit stepper (stiff where it rides the
+    the number of force evaluations. vec, k, work, jac, lu, pivot: the row's zeroed work arrays (work_arrays). Walton-Braun's spring takes the implicit stepper (stiff where it rides the
     cone), every other row Dormand-Prince."""
     m, radius = p[C.P_MASS], p[C.P_RADIUS]
     v_n = abs(p[C.P_VZ0])                            # the normalised outcomes divide by the incident normal and
@@ -266,18 +266,14 @@ def impact(p, ints, tol, t_ref, row_out, ext):
     if v_t == 0.0:
         v_t = v_n
     alpha_ref, f_ref = v_n * t_ref, m * v_n / t_ref
-    scale = np.array([alpha_ref, v_n, f_ref, t_ref, alpha_ref, v_n, v_t, v_t / radius, m * v_t / t_ref])
-    y = np.array([0.0, -p[C.P_VZ0], p[C.P_VX0], p[C.P_W0], 0.0])
-    mode = np.zeros(N_MODE)
+    scale, y, mode, y_new, stage, dy, aux, aux_new, g_start, g_end, g, spring = vectors(vec)
+    for i, value in enumerate((alpha_ref, v_n, f_ref, t_ref, alpha_ref, v_n, v_t, v_t / radius, m * v_t / t_ref)):
+        scale[i] = value
+    y[1], y[2], y[3] = -p[C.P_VZ0], p[C.P_VX0], p[C.P_W0]
     mode[M_LOADING] = 1.0
-    k = np.zeros((STAGES, N_Y))
-    y_new, stage, dy, aux, aux_new = np.zeros(N_Y), np.zeros(N_Y), np.zeros(N_Y), np.zeros(N_AUX), np.zeros(N_AUX)
-    g_start, g_end, g = np.zeros(N_EVENTS), np.zeros(N_EVENTS), np.zeros(N_EVENTS)
     implicit = TANGENTIAL_IMPLICIT[ints[C.I_TANGENTIAL]]
     exponent = -0.25 if implicit else -0.2            # 1/(order + 1) of the embedded estimate
-    work, jac = np.zeros((9, N_Y)), np.zeros((3, 3, N_Y, N_Y))      # the implicit stepper's: see sdirk_step
-    lu, pivot = np.zeros((N_Y, N_Y)), np.zeros(N_Y, dtype=np.int64)
-    spring = np.full(2, math.nan)                     # w = x^(1/3) of Walton-Braun's sticking spring: now, step's end
+    spring[0] = spring[1] = math.nan                  # w = x^(1/3) of Walton-Braun's sticking spring: now, step's end
     onset_mode(p, ints, y, mode, k[0], aux, scale, spring, ext)
     evaluate(p, ints, y, mode, spring_w(ints, mode, spring), k[0], aux, ext)
     events(p, ints, y, mode, aux, scale, g_start, ext)
@@ -379,10 +375,30 @@ def copy_into(target, source):
 
 
 @njit(cache=True, nogil=True)
-def adaptive_rows(first, last, params, ints, tol, t_ref, out, ext):
-    """Rows first..last-1 of params/ints at tolerance tol; t_ref per row: the contact-time estimate."""
+def adaptive_rows(first, last, params, ints, tol, t_ref, out, ext, vec, k, work, jac, lu, pivot):
+    """Rows first..last-1 of params/ints at tolerance tol; t_ref per row: the contact-time estimate; the rest: each
+    row's work arrays (work_arrays)."""
     for i in range(first, last):
-        impact(params[i], ints[i], tol, t_ref[i], out[i], ext)
+        impact(params[i], ints[i], tol, t_ref[i], out[i], ext, vec[i], k[i], work[i], jac[i], lu[i], pivot[i])
+
+
+VECTORS = (9, N_Y, N_MODE, N_Y, N_Y, N_Y, N_AUX, N_AUX, N_EVENTS, N_EVENTS, N_EVENTS, 2)   # vectors(): their lengths
+VECTOR_ENDS = tuple(int(x) for x in np.cumsum(VECTORS))
+
+
+def work_arrays(rows):
+    """Zeroed work arrays of `rows` impacts, allocated here so that nothing compiled allocates: the vectors (one row
+    of VECTORS each), the stage rates, the implicit stepper's work rows, Jacobians, LU factors and pivots."""
+    return (np.zeros((rows, VECTOR_ENDS[-1])), np.zeros((rows, STAGES, N_Y)), np.zeros((rows, 9, N_Y)),
+            np.zeros((rows, 3, 3, N_Y, N_Y)), np.zeros((rows, N_Y, N_Y)), np.zeros((rows, N_Y), dtype=np.int64))
+
+
+@njit(cache=True, inline="always")
+def vectors(vec):
+    """scale, y, mode, y_new, stage, dy, aux, aux_new, g_start, g_end, g, spring: views of one row of VECTORS."""
+    e = VECTOR_ENDS
+    return (vec[0:e[0]], vec[e[0]:e[1]], vec[e[1]:e[2]], vec[e[2]:e[3]], vec[e[3]:e[4]], vec[e[4]:e[5]],
+            vec[e[5]:e[6]], vec[e[6]:e[7]], vec[e[7]:e[8]], vec[e[8]:e[9]], vec[e[9]:e[10]], vec[e[10]:e[11]])
 
 
 def integrate_adaptive(params, ints, tol, t_ref, out, ext):
@@ -393,4 +409,4 @@ def integrate_adaptive(params, ints, tol, t_ref, out, ext):
     copy = specialised("adaptive", "PAPER", *law_kernels(ints))
     rows = adaptive_rows if copy is None else copy.adaptive_rows
     announce_compiling(rows, "the adaptive integrator")
-    in_threads(rows, len(params), params, ints, tol, t_ref, out, ext)
+    in_threads(rows, len(params), params, ints, tol, t_ref, out, ext, *work_arrays(len(params)))
