@@ -13,7 +13,7 @@ BENCHMARKS = Path(__file__).resolve().parents[1] / "benchmarks"
 
 # script -> (extra arguments, a line its output must hold, whether it runs an engine)
 SMOKES = {
-    "bench_cold_start.py": ([], r"run \(paper scheme\)\s+[\d.]+\s+[\d.]+\s+[\d.]+", False),
+    "bench_cold_start.py": ([], r"run \(paper scheme\)\s+[\d.]+ /\s+[\d.]+\s+[\d.]+ /\s+[\d.]+\s+[\d.]+", False),
     "bench_reference.py": ([], r"reference, 1 thread\(s\): \d+ impact-steps", False),
     "bench_converged.py": ([], r"hertz-kuwabara-kono\s+[\d.e+]+\s+[\d.]+", False),
     "bench_effects.py": ([], r"normal impacts.*\s[\d.]+\s+True", True),

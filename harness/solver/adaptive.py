@@ -17,6 +17,7 @@ from numba import njit
 
 from ..jit import compiled
 from . import codes as C
+from .adaptive_work import copy_into, vectors, work_arrays
 from .compiled import announce_compiling
 from .contact_ode import (A_DFN, A_FN, A_TRIAL, E_RELEASE, E_REVERSAL, E_SLIP, E_STICK, E_TURN, M_AMAX, M_DENT,
                           M_DIR, M_LOADING, M_SIGN, M_STAR, M_STICKS, M_TANGENTIAL, N_AUX, N_EVENTS, N_MODE, N_Y, SLIDE, STICK,
@@ -258,8 +259,9 @@ def spring_w(ints, mode, spring):
 @compiled
 def impact(p, ints, tol, t_ref, row_out, ext, vec, k, work, jac, lu, pivot):
     """One impact from first touch to release at tolerance `tol`; fills row_out like kernel.integrate, with O_STEPS
-    the number of force evaluations. vec, k, work, jac, lu, pivot: the row's zeroed work arrays (work_arrays). Walton-Braun's spring takes the implicit stepper (stiff where it rides the
-    cone), every other row Dormand-Prince."""
+    the number of force evaluations. Walton-Braun's spring takes the implicit stepper (stiff where it rides the
+    cone), every other row Dormand-Prince. vec, k, work, jac, lu, pivot: the row's zeroed work arrays
+    (adaptive_work.work_arrays)."""
     m, radius = p[C.P_MASS], p[C.P_RADIUS]
     v_n = abs(p[C.P_VZ0])                            # the normalised outcomes divide by the incident normal and
     v_t = abs(p[C.P_VX0]) + radius * abs(p[C.P_W0])  # tangential speeds: errors are measured against each
@@ -367,38 +369,12 @@ def impact(p, ints, tol, t_ref, row_out, ext, vec, k, work, jac, lu, pivot):
     row_out[C.O_STICKING] = mode[M_STICKS] + (1.0 if implicit else 0.0)   # an implicit spring is never on the cone
 
 
-@compiled
-def copy_into(target, source):
-    """target[:] = source, element by element."""
-    for i in range(len(target)):
-        target[i] = source[i]
-
-
 @njit(cache=True, nogil=True)
 def adaptive_rows(first, last, params, ints, tol, t_ref, out, ext, vec, k, work, jac, lu, pivot):
     """Rows first..last-1 of params/ints at tolerance tol; t_ref per row: the contact-time estimate; the rest: each
-    row's work arrays (work_arrays)."""
+    row's work arrays (adaptive_work.work_arrays)."""
     for i in range(first, last):
         impact(params[i], ints[i], tol, t_ref[i], out[i], ext, vec[i], k[i], work[i], jac[i], lu[i], pivot[i])
-
-
-VECTORS = (9, N_Y, N_MODE, N_Y, N_Y, N_Y, N_AUX, N_AUX, N_EVENTS, N_EVENTS, N_EVENTS, 2)   # vectors(): their lengths
-VECTOR_ENDS = tuple(int(x) for x in np.cumsum(VECTORS))
-
-
-def work_arrays(rows):
-    """Zeroed work arrays of `rows` impacts, allocated here so that nothing compiled allocates: the vectors (one row
-    of VECTORS each), the stage rates, the implicit stepper's work rows, Jacobians, LU factors and pivots."""
-    return (np.zeros((rows, VECTOR_ENDS[-1])), np.zeros((rows, STAGES, N_Y)), np.zeros((rows, 9, N_Y)),
-            np.zeros((rows, 3, 3, N_Y, N_Y)), np.zeros((rows, N_Y, N_Y)), np.zeros((rows, N_Y), dtype=np.int64))
-
-
-@njit(cache=True, inline="always")
-def vectors(vec):
-    """scale, y, mode, y_new, stage, dy, aux, aux_new, g_start, g_end, g, spring: views of one row of VECTORS."""
-    e = VECTOR_ENDS
-    return (vec[0:e[0]], vec[e[0]:e[1]], vec[e[1]:e[2]], vec[e[2]:e[3]], vec[e[3]:e[4]], vec[e[4]:e[5]],
-            vec[e[5]:e[6]], vec[e[6]:e[7]], vec[e[7]:e[8]], vec[e[8]:e[9]], vec[e[9]:e[10]], vec[e[10]:e[11]])
 
 
 def integrate_adaptive(params, ints, tol, t_ref, out, ext):
