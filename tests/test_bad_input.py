@@ -1,6 +1,7 @@
 """The catalogue of bad input, by category: every case ends in exit code 2, one line on stderr naming the problem,
 no traceback, and no file written. Physically meaningless results that do run get a status other than ok."""
 import os
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -133,7 +134,7 @@ def test_report_refuses_a_damaged_directory_in_one_line(tmp_path, capfd, damage,
 
 def test_a_header_only_or_non_numeric_baseline_is_refused(tmp_path, capfd):
     from harness.baseline import BASELINE_FILE, DEFAULT_BASELINE
-    text = open(os.path.join(DEFAULT_BASELINE, BASELINE_FILE)).read().splitlines()
+    text = Path(DEFAULT_BASELINE, BASELINE_FILE).read_text().splitlines()
     (tmp_path / BASELINE_FILE).write_text(text[0] + "\n")
     assert main(["check", "--baseline", str(tmp_path)]) == 2
     assert "holds no rows" in capfd.readouterr().err

@@ -4,6 +4,7 @@ mid-run; an interrupted campaign resumes; the SLURM job script carries the optio
 import os
 import signal
 import sys
+from pathlib import Path
 
 import pandas as pd
 import pytest
@@ -169,7 +170,7 @@ def test_the_example_campaign_runs_and_its_rerun_is_cached(tmp_path, capfd):
     assert main(["campaign", example, "-o", store, "--json"]) == 0
     first = json.loads(capfd.readouterr().out)
     assert (first["tasks"], first["ran"], first["cached"], first["failed"]) == (12, 12, 0, 0)
-    assert os.path.isfile(store + ".html") and "liggghts, thornton" in open(store + ".html").read()
+    assert os.path.isfile(store + ".html") and "liggghts, thornton" in Path(store + ".html").read_text()
     assert main(["campaign", example, "-o", store, "--json", "--executor", "dask", "--workers", "1"]) == 0
     again = json.loads(capfd.readouterr().out)
     assert (again["ran"], again["cached"]) == (0, 12)
