@@ -1,7 +1,10 @@
 """The quick start's comparison (hertz-mindlin, the paper's scene, every engine) two ways, side by side in one run:
-serial (one engine process per e_n batch, one after another, the measurements after the runs, the report's figures
-one after another) and as `harness compare` runs it (each engine's batches in one process, engines side by side,
-the measurements beside the runs, the figures drawn in parallel). Goal: at least 3x faster. Both warm (compiled).
+serial, as issue 15 found it (one engine process per e_n batch, one after another, the measurements after the runs,
+YADE's precision checked on three impacts of the first e_n at the comparison's own resolution, in double and at 150
+bits, the report's figures one after another) and as
+`harness compare` runs it (each engine's batches in one process, engines side by side, the measurements beside the
+runs, the precision checked on two impacts at a coarse step, the figures drawn in parallel). Goal: at least 3x
+faster. Both warm (compiled).
 
     .venv/bin/python benchmarks/bench_compare.py [--smoke]
 """
@@ -9,11 +12,18 @@ import os
 import sys
 import tempfile
 import time
+from dataclasses import replace
+
+import numpy as np
+import pandas as pd
 
 from harness.analyses.precision import precision_gap
 from harness.api import compare_request, measurements, statuses
 from harness.comparison import Comparison
 from harness.engines import ENGINES
+from harness.engines.yade.dialect import dialect as yade_dialect
+from harness.engines.yade.precision import HIGH, available
+from harness.plan import Run
 from harness.outputs import save_comparison
 from harness.plan import compare_plan
 from harness.request import Request
@@ -33,11 +43,9 @@ def serial(request, out_dir):
         failures += [failure] if failure else []
     attributions, sliding, histories = measurements(law, scene, engines, request.resolution)
     precision = None
-    for engine, options in engines.items():
-        if hasattr(engine, "precision_runs") and options.get("precision", "double") == "double":
-            checks = [engine.run([run])[0][0] for run in engine.precision_runs(law, scene)]
-            precision = precision_gap(*checks, engine.NAME, "mpfr150") if checks else None
-    import pandas as pd
+    yade = ENGINES["yade"]
+    if yade in engines and engines[yade].get("precision", "double") == "double" and available(HIGH):
+        precision = issue_precision_check(law, scene, request.resolution)
     comparison = Comparison(law, scene, pd.concat(frames, ignore_index=True), failures=failures,
                             attribution=attributions, sliding=sliding, histories=histories, precision=precision)
     threads, drawing.THREADS = drawing.THREADS, 1
@@ -46,6 +54,18 @@ def serial(request, out_dir):
     finally:
         drawing.THREADS = threads
     return comparison
+
+
+def issue_precision_check(law, scene, resolution, samples=3):
+    """YADE's precision check as the issue found it: `samples` impacts spread over the first e_n's angles, at the
+    comparison's resolution, in double and at 150 bits."""
+    angles = np.asarray(scene.impacts(scene.e_n[0])[3])
+    picked = tuple(float(a) for a in np.unique(angles[np.linspace(0, len(angles) - 1, samples).round().astype(int)]))
+    held = "normal" if scene.angles_deg is None else scene.speed_is
+    sample = replace(scene, e_n=scene.e_n[:1], angles_deg=picked, psi1_star=None, v_t=None, speed_is=held)
+    frames = [ENGINES["yade"].run([Run("yade", law, yade_dialect(law.name, {"precision": flavour}), sample, resolution,
+                                       (("precision", flavour),))])[0][0] for flavour in ("double", HIGH)]
+    return precision_gap(*frames, "yade", HIGH)
 
 
 def write_report(comparison, out_dir):
