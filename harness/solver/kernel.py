@@ -37,8 +37,9 @@ CONE_BAND = 1e-9          # relative: a tangential force this close to mu F_n co
 @njit(cache=True, nogil=True)
 def integrate_rows(first, last, params, ints, out, history, stride, ext, work):
     """Integrate rows first..last-1 of `params`/`ints`, each with its scheme's step (among the steppers this copy of
-    the solver compiles: compiles.py) and, for the paper scheme, its located events, release and first touch; fill `out` and, if stride > 0, `history`. `work`: a row of
-    WORK floats per row, the states and samples it steps through."""
+    the solver compiles: compiles.py) and, for the paper scheme, its located events, release and first touch; fill
+    `out` and, if stride > 0, `history`. `work`: a row of WORK floats per row, the states and samples it steps
+    through."""
     n_hist = history.shape[1]
     for i in range(first, last):
         w = work[i]
@@ -52,6 +53,8 @@ def integrate_rows(first, last, params, ints, out, history, stride, ext, work):
         peak_x, peak_coef = w[T_END + 2 * PEAK_POINTS:T_END + 3 * PEAK_POINTS], w[T_END + 3 * PEAK_POINTS:WORK]
         p = params[i]
         row_ints = ints[i]
+        scheme = row_ints[C.I_INTEGRATOR]
+        paper = scheme == C.INTEGRATOR_PAPER
         h = p[C.P_DT]
         s[S_VZ], s[S_VX], s[S_W] = p[C.P_VZ0], p[C.P_VX0], p[C.P_W0]
         s[S_U] = -p[C.P_MASS] * p[C.P_VZ0]
@@ -62,7 +65,7 @@ def integrate_rows(first, last, params, ints, out, history, stride, ext, work):
             s[S_C] = p[C.P_DAMP_C0]
         # the spring starts at 0, inside the Coulomb cone (strictly: a slide starting in the first step is an event)
         st[T_MARGIN] = st[T_HELD] = -p[C.P_MU] * abs(s[S_FN]) - 1e-300
-        engine_setup = row_ints[C.I_INTEGRATOR] in (C.INTEGRATOR_VELOCITY_VERLET, C.INTEGRATOR_LAMMPS)
+        engine_setup = scheme in (C.INTEGRATOR_VELOCITY_VERLET, C.INTEGRATOR_LAMMPS)
         if VELOCITY_VERLET and engine_setup and row_ints[C.I_TANGENTIAL] != TANGENTIAL_NONE:
             # the engines' setup force at first touch (gap 0 counts as contact): the tangential dashpot alone; LAMMPS
             # drops it when it exceeds mu |F_n|, its spring being empty
@@ -73,9 +76,9 @@ def integrate_rows(first, last, params, ints, out, history, stride, ext, work):
                                            p[C.P_MU] * abs(s[S_FN]))
             else:
                 s[S_FT] = -p[C.P_TDAMP] * math.sqrt(tangential_stiffness(code, p[C.P_T1], 0.0)) * slip0
-            if row_ints[C.I_INTEGRATOR] == C.INTEGRATOR_LAMMPS and abs(s[S_FT]) > p[C.P_MU] * abs(s[S_FN]):
+            if scheme == C.INTEGRATOR_LAMMPS and abs(s[S_FT]) > p[C.P_MU] * abs(s[S_FN]):
                 s[S_FT] = 0.0
-        elif (PAPER and row_ints[C.I_INTEGRATOR] == C.INTEGRATOR_PAPER and p[C.P_TDAMP] != 0.0
+        elif (PAPER and paper and p[C.P_TDAMP] != 0.0
               and row_ints[C.I_TANGENTIAL] != TANGENTIAL_NONE and not TANGENTIAL_VISCOUS[row_ints[C.I_TANGENTIAL]]):
             paper_first_touch(s, st, p, row_ints, ext)
         stick_steps = 0
@@ -90,8 +93,6 @@ def integrate_rows(first, last, params, ints, out, history, stride, ext, work):
         max_steps = int(p[C.P_MAXSTEPS])
         t_now = 0.0
         grade_n = int(p[C.P_GRADE_N])
-        scheme = row_ints[C.I_INTEGRATOR]
-        paper = scheme == C.INTEGRATOR_PAPER
         f_sampled = not (paper and p[C.P_DAMP_C0] == 0.0)      # else F_max is F at the turn, located
         for k in range(max_steps):
             if grade_n > 0:

@@ -12,9 +12,8 @@ from numba.core import config
 
 from ..files import write_text
 from ..submodels.generate import source
-from ..submodels.registry import code_of
+from ..submodels.registry import code_of, kernels
 from .compiles import STEPPERS
-from .dispatch import TANGENTIAL_VISCOUS
 
 SOLVER = os.path.dirname(os.path.abspath(__file__))
 _LOADING = threading.Lock()
@@ -32,26 +31,21 @@ def specialised(module, stepper, normal=None, tangential=None):
     and dispatch.py, written under numba's cache directory (named by the compiled sources). numba names a cache by
     its source file, so the copy is what keeps the specialised functions' caches apart from the general ones'. None
     where the cache directory cannot be written (the general kernels run then)."""
+    alone = {code_of("tangential", name) for name in COMPILED_ALONE}
     label = stepper.lower()
+    kept_normal = kept_tangential = None
     if normal is not None:
-        label += f"_n{normal}_t{tangential}" if tangential in alone_codes() else f"_n{normal}"
+        label += f"_n{normal}_t{tangential}" if tangential in alone else f"_n{normal}"
+        kept_normal = {normal}
+        kept_tangential = {tangential} if tangential in alone else set(range(len(kernels("tangential")))) - alone
     with _LOADING:
-        return load(label, lambda: generated(stepper, normal, tangential), module)
+        return load(label, lambda: generated(stepper, kept_normal, kept_tangential), module)
 
 
-def alone_codes():
-    return {code_of("tangential", name) for name in COMPILED_ALONE}
-
-
-def generated(stepper, normal, tangential):
+def generated(stepper, kept_normal, kept_tangential):
     """The modules a specialised copy writes in place of the solver's: compiles.py, dispatch.py, and extension.py,
     which re-exports the solver's own (its empty slot is compiled when imported: once is enough)."""
     flags = "".join(f"{name} = {name == stepper}\n" for name in STEPPERS) + f"STEPPERS = {STEPPERS!r}\n"
-    kept_normal = kept_tangential = None
-    if normal is not None:
-        alone = alone_codes()
-        kept_normal = {normal}
-        kept_tangential = {tangential} if tangential in alone else set(range(len(TANGENTIAL_VISCOUS))) - alone
     extension = ('"""The solver\'s extension table and calls."""\n'
                  "from ..solver.extension import BELOW, FORCE, KINK, RESIDUAL, SIGNATURE, SLOPE, call, missing, table  "
                  "# noqa: F401\n")
