@@ -43,8 +43,9 @@ def run_request(request, on_frame=None, progress=None):
 
 def compare(model, engines=None, engine_options=None, **keywords):
     """The paper law, each engine's dialect and each engine on one scene: a Comparison with .results, .agreement,
-    .deviation, .cross, .attribution, .findings, .sliding and .ok, e.g. compare("hertz-mindlin", engines=["liggghts"],
-    en=[0.5], angles=[10, 30])."""
+    .deviation, .cross, .attribution, .findings, .sliding, .physics (per engine: does it reproduce the paper law),
+    .reproduces and .ok, e.g. compare("hertz-mindlin", engines=["liggghts"], en=[0.5], angles=[10, 30],
+    tolerances={"velocity": 0.02})."""
     return compare_request(Request.from_keywords(model, engines=engines, engine_options=engine_options, **keywords))
 
 
@@ -109,7 +110,7 @@ def compare_request(request, on_frame=None, progress=None, partial=None):
     return Comparison(law, scene, results, overrides=dict(request.overrides), engine_options=request.engine_options,
                       requested=request.engines, skipped=[(s.name, s.reason) for s in found if not s.available],
                       failures=failures, attribution=attributions, sliding=sliding, precision=precision,
-                      histories=histories)
+                      histories=histories, tolerances=request.tolerances)
 
 
 def measurements(law, scene, engines, steps):

@@ -8,11 +8,13 @@ import pandas as pd
 
 from .analyses.agreement import agreement, cross_deviations, deviation
 from .analyses.findings import findings
+from .analyses.physics import Tolerances, engine_physics, overall
 
 
 @dataclass
 class Comparison:
-    """What `harness compare` and `harness.compare()` produce; `ok` is the verdict."""
+    """What `harness compare` and `harness.compare()` produce; `ok` is the agreement verdict (each engine computes
+    its own formulas), `reproduces` the physics verdict (each engine computes the paper law)."""
     law: object
     scene: object
     results: pd.DataFrame
@@ -28,6 +30,7 @@ class Comparison:
     command: str = ""                   # the command line that made it, when a command did
     date: str = ""                      # when it finished (local time, ISO 8601 to the minute)
     partial: bool = False               # interrupted before every run finished: the results so far
+    tolerances: Tolerances = field(default_factory=Tolerances)    # of the physics verdict
 
     @property
     def engines(self):
@@ -52,6 +55,18 @@ class Comparison:
     @cached_property
     def findings(self):
         return findings(self.results, self.scene.gravity)
+
+    @cached_property
+    def physics(self):
+        """{engine: its physics verdict}: does it reproduce the paper law on this scene (harness.analyses.physics)."""
+        return {e: engine_physics(self.results, e, self.tolerances, self.attribution.get(f"{e} dialect -> paper"),
+                                  self.scene.gravity) for e in self.engines}
+
+    @property
+    def reproduces(self):
+        """The physics verdict: 'reproduces' when every engine checked reproduces the paper law, 'deviates' when one
+        does not, 'not checked' when none was."""
+        return overall([p["state"] for p in self.physics.values()])
 
     @property
     def compared(self):

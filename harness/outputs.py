@@ -7,6 +7,7 @@ from dataclasses import asdict
 import numpy as np
 import pandas as pd
 
+from .analyses.physics import Tolerances
 from .engines.batches import FailedRun
 from .errors import UserError
 from .files import write_text
@@ -32,7 +33,7 @@ def _write_run(out_dir, comparison, partial):
         {"model": comparison.law.name, "overrides": comparison.overrides, "scene": scene_fields,
          "skipped": comparison.skipped, "engine_options": comparison.engine_options,
          "requested": comparison.requested, "command": comparison.command, "date": comparison.date,
-         "partial": partial}, indent=1))
+         "tolerances": comparison.tolerances.as_dict(), "partial": partial}, indent=1))
 
 
 def save_comparison(out_dir, comparison):
@@ -122,12 +123,17 @@ def load_comparison(out_dir):
     sliding = _read(out_dir, SLIDING)
     requested = run.get("requested")
     overrides = run.get("overrides") or {}
+    try:
+        tolerances = Tolerances.of(run.get("tolerances") or {})
+    except UserError as exc:
+        raise UserError(f"{out_dir}/{RUN} is damaged or foreign: {exc}") from None
     return Comparison(compose(run["model"], overrides), scene, frame, overrides=overrides,
                       engine_options=run.get("engine_options", {}), requested=tuple(requested) if requested else None,
                       skipped=[tuple(s) for s in run.get("skipped", [])], failures=failures, attribution=attributions,
                       sliding=sliding if not sliding.empty else None,
                       precision=precision.iloc[0].to_dict() if not precision.empty else None, histories=histories,
-                      command=run.get("command", ""), date=run.get("date", ""), partial=bool(run.get("partial")))
+                      command=run.get("command", ""), date=run.get("date", ""), partial=bool(run.get("partial")),
+                      tolerances=tolerances)
 
 
 def load_cost(out_dir):

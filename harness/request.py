@@ -145,6 +145,7 @@ class Request:
     overrides: tuple = ()
     engines: tuple | None = None
     engine_options: dict = field(default_factory=dict)
+    tolerances: object = None       # of the physics verdict (harness.analyses.physics.Tolerances)
 
     @property
     def law(self):
@@ -153,9 +154,11 @@ class Request:
 
     @classmethod
     def from_keywords(cls, model, engines=None, engine_options=None, steps_per_contact=None, dt=None,
-                      converged=False, **keywords):
+                      converged=False, tolerances=None, **keywords):
         """From the API's keywords (the CLI passes its options under the same names): `with_` or `overrides` for
-        --with, `engine_options` as {engine: {key: value}} or [(engine, key, value)]."""
+        --with, `engine_options` as {engine: {key: value}} or [(engine, key, value)], `tolerances` as
+        {name: value} or ["name=value"] (the physics verdict's, harness.analyses.physics.Tolerances)."""
+        from .analyses.physics import Tolerances
         overrides = keywords.pop("with_", None) or keywords.pop("overrides", None) or ()
         unknown = set(keywords) - set(SCENE_KEYWORDS)
         if unknown:
@@ -172,7 +175,7 @@ class Request:
             raise UserError(f"--engine-option for {ignored[0]}, which is not among the engines asked for "
                             f"({', '.join(engines)})")
         request = cls(model, scene_from(**keywords), resolution_from(steps_per_contact, dt, converged),
-                      tuple(pairs), None if engines is None else tuple(engines), options)
+                      tuple(pairs), None if engines is None else tuple(engines), options, Tolerances.of(tolerances))
         law = request.law                    # unknown law or sub-model: refused here, before anything runs
         if request.scene.spheres:
             from .two_spheres import refuse_engine_levers

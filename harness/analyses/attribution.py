@@ -7,8 +7,9 @@ import pandas as pd
 
 from ..errors import UserError
 from ..laws.law import SUBMODEL_KEYS, check_composition
+from .invariants import coulomb_ratio
 
-METRICS = ("e_n", "e_t", "omega_star", "psi2_star", "v_t1", "omega1")
+METRICS = ("e_n", "e_t", "omega_star", "psi2_star", "v_n1", "v_t1", "omega1", "coulomb_ratio", "ke_ratio")
 FIELDS = {key: key.replace("-", "_") for key in SUBMODEL_KEYS}
 NOTES = {   # what switching an ingredient carries with it, beyond its name
     "integrator": "the scheme's conventions go with it: tangential dashpot after the Coulomb test without a second "
@@ -25,9 +26,12 @@ def differing_ingredients(paper, dialect):
 
 
 def attribution(paper, dialect, scene, simulate):
-    """One row per differing ingredient: max |change| of each metric when only it is switched to the paper's
-    (or to another dialect's, when `paper` is that dialect's law)."""
-    base = simulate(dialect, scene)
+    """One row per differing ingredient: max |change| of each metric (the Coulomb ratio |J_t|/(mu J_n) among them)
+    when only it is switched to the paper's (or to another dialect's, when `paper` is that dialect's law)."""
+    def measured(law):
+        frame = simulate(law, scene)
+        return frame.assign(coulomb_ratio=coulomb_ratio(frame, scene.gravity))
+    base = measured(dialect)
     rows = []
     for key, theirs, ours in differing_ingredients(paper, dialect):
         field = FIELDS[key]
@@ -38,7 +42,7 @@ def attribution(paper, dialect, scene, simulate):
         except UserError as exc:
             rows.append({**row, "note": f"not separable alone: {exc}"})
             continue
-        switched = simulate(law, scene)
+        switched = measured(law)
         for metric in METRICS:
             diff = (switched[metric] - base[metric]).to_numpy()
             if np.all(np.isnan(diff)):

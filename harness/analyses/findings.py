@@ -58,8 +58,10 @@ def _break_detail(kind, group, rows):
     if kind == "e_n off target":
         miss = (group.value - group.limit).abs() / group.limit
         worst = group.loc[miss.idxmax()]
-        return (f"{len(group)} normal impacts end with e_n more than 1% from the target; worst {worst.value:.4g} for "
-                f"{worst.limit:g}")
+        normal = bool((rows.v_t0 == 0).all())
+        return (f"{len(group)} {'normal ' if normal else ''}impacts end with e_n more than 1% from "
+                f"{'the target' if normal else 'the paper law at the same impact'}; worst {worst.value:.4g} for "
+                f"{worst.limit:.4g} at e_n {worst.e_n_target:g}, {worst.theta_deg:g} deg")
     if kind == "long contact":
         worst = group.loc[(group.value / group.limit).idxmax()]
         return (f"{len(group)} impacts stay in contact longer than the bound; worst {worst.value:.3g} s against "

@@ -1,6 +1,7 @@
-"""The verdict of a comparison as data: per engine whether it agrees with its own formulas, its worst disagreement,
-its largest deviations from the paper law in physical units, and what was skipped, failed or found. The terminal,
-`--json` and the report's summary box all read this one record."""
+"""The verdicts of a comparison as data: per engine whether it reproduces the paper law on this scene (physics) and
+whether it agrees with its own formulas (agreement), its worst cases, its largest deviations from the paper law in
+physical units, and what was skipped, failed or found. The terminal, `--json` and the report's summary box all read
+this one record."""
 import numpy as np
 
 from .agreement import AGREEMENT_TOLERANCE, KEYS
@@ -44,16 +45,19 @@ def engine_record(comparison, engine):
             "worst": None if worst is None else {"metric": worst.metric, "relative": float(worst.max_rel_diff),
                                                   "e_n_target": float(worst.e_n_target),
                                                   "theta_deg": float(worst.theta_deg)},
-            "deviation": physical_deviations(frame, engine)}
+            "deviation": physical_deviations(frame, engine),
+            "physics": comparison.physics[engine]}
 
 
 def verdict(comparison):
-    """The record: model, verdict (agree, disagree, not compared), engines, skipped, failed, unavailable, findings."""
+    """The record: model, physics (reproduces, deviates, not checked) and its tolerances, verdict (the agreement:
+    agree, disagree, not compared), engines, skipped, failed, unavailable, findings."""
     engines = [engine_record(comparison, e) for e in comparison.engines]
     compared = [e for e in engines if e["compared"]]
     outcome = DISAGREE if any(not e["agrees"] for e in compared) else AGREE if compared else NOT_COMPARED
     frame = comparison.results
-    return {"model": comparison.law.name, "verdict": outcome,
+    return {"model": comparison.law.name, "physics": comparison.reproduces,
+            "tolerances": comparison.tolerances.as_dict(), "verdict": outcome,
             "impacts": int(((frame.engine == "reference") & (frame.dialect == "paper")).sum()),
             "e_n": [float(e) for e in comparison.scene.e_n], "engines": engines,
             "skipped": [{"engine": name, "reason": reason} for name, reason in comparison.skipped],

@@ -7,6 +7,7 @@ import sys
 
 import pandas as pd
 
+from ..analyses.physics import DEVIATES
 from ..analyses.verdict import DISAGREE, NOT_COMPARED, verdict
 from ..api import compare_request
 from ..campaign.store import RunCache, Store
@@ -23,7 +24,7 @@ from ..views.terminal import print_comparison, print_summary, verdict_line
 from .options import (EXIT_DISAGREE, EXIT_ENGINE, EXIT_OK, add_engine_options, add_output_options,
                       add_scene_options, check_output_directory, keywords)
 
-EXAMPLE = "harness compare --model hertz-mindlin --engines liggghts --en 0.5 -o out/"
+EXAMPLE = "harness compare --model hertz-mindlin --engines liggghts --en 0.5 --require paper -o out/"
 
 
 def add(sub, describe):
@@ -35,13 +36,21 @@ def add(sub, describe):
     p.add_argument("-o", "--output", default="harness-out", metavar="DIR", help="output directory (default %(default)s)")
     p.add_argument("--store", metavar="STORE", help="a campaign store: runs it holds are taken from it, the others "
                                                     "are added to it")
+    verdict_options = p.add_argument_group("physics verdict (does each engine reproduce the paper law?)")
+    verdict_options.add_argument("--tolerance", dest="tolerances", action="append", default=[], metavar="NAME=VALUE",
+                                 help="a tolerance of the physics verdict, repeatable: velocity= (fraction of the "
+                                      "incident speed, default 0.01), e_n= (absolute, 0.01), coulomb= (fraction of "
+                                      "mu J_n, 0.001), energy= (fraction of the kinetic energy, 1e-6)")
+    verdict_options.add_argument("--require", choices=("paper",), default=None,
+                                 help="--require paper: exit 1 also when an engine deviates from the paper law "
+                                      "(by default the exit code is the agreement verdict alone)")
     add_output_options(p, json=True, verbose=True)
     p.set_defaults(func=main)
 
 
 def main(args):
     """Write DIR/results.csv (after every batch), the other tables and report.html; the exit code is the verdict."""
-    request = Request.from_keywords(args.model, **keywords(args))
+    request = Request.from_keywords(args.model, tolerances=args.tolerances, **keywords(args))
     check_output_directory(args.output)
     results_path = os.path.join(args.output, "results.csv")
     frames = []
@@ -50,7 +59,8 @@ def main(args):
         if not frames:                     # the first result replaces an earlier compare in DIR, never refused input
             start_comparison(args.output, Comparison(request.law, request.scene, pd.DataFrame(),
                                                      overrides=dict(request.overrides), requested=request.engines,
-                                                     engine_options=request.engine_options, command=command_line()))
+                                                     engine_options=request.engine_options, command=command_line(),
+                                                     tolerances=request.tolerances))
         frames.append(frame)
         write_csv(pd.concat(frames, ignore_index=True), results_path)
 
@@ -73,7 +83,7 @@ def main(args):
         progress.advance("report")
     record = verdict(comparison)
     reference_only = request.engines is not None and set(request.engines) == {"reference"}
-    code = exit_code(record, reference_only)
+    code = exit_code(record, reference_only, args.require)
     if args.json:
         print(json.dumps({**record, "exit_code": code, "files": {"results": results_path, "report": report}},
                          indent=1, default=str))
@@ -91,10 +101,10 @@ def command_line():
     return "harness " + shlex.join(sys.argv[1:])
 
 
-def exit_code(record, reference_only):
-    """1 when an engine disagrees; 3 when an engine asked for did not run, a run failed, or nothing was compared
-    (unless the reference alone was asked for); else 0."""
-    if record["verdict"] == DISAGREE:
+def exit_code(record, reference_only, require=None):
+    """1 when an engine disagrees (or, with require="paper", deviates from the paper law); 3 when an engine asked
+    for did not run, a run failed, or nothing was compared (unless the reference alone was asked for); else 0."""
+    if record["verdict"] == DISAGREE or (require == "paper" and record["physics"] == DEVIATES):
         return EXIT_DISAGREE
     if record["unavailable"] or record["failed"] or (record["verdict"] == NOT_COMPARED and not reference_only):
         return EXIT_ENGINE

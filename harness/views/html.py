@@ -13,6 +13,7 @@ from ..analyses.verdict import verdict
 from . import style
 from .drawing import draw_all
 from .pieces import figure_svg, number, records, si
+from ..analyses.physics import CHECK_WORDS, Tolerances
 
 
 def engines_ran(frame):
@@ -190,12 +191,18 @@ def compare_context(comparison, files=()):
         t_contact_max=("t_contact", "max"), f_n_max=("f_n_max", "max"), ke_ratio_max=("ke_ratio", "max"),
         rows=("status", "size")).reset_index()
     precision = pd.DataFrame([comparison.precision]) if comparison.precision else None
+    record = verdict(comparison)
+    checks = pd.DataFrame([{"engine": e["engine"], "check": CHECK_WORDS[c["check"]], "passed": c["passed"],
+                            "tolerance": c["tolerance"], "worst": c.get("worst"), "impacts": c["impacts"],
+                            "beyond": c["failing"], "worst case": c.get("text", ""), "attribution": c.get("cause", "")}
+                           for e in record["engines"] for c in e["physics"]["checks"]])
     return dict(law=law, submodels=law.describe(), scene=scene_facts(scene), figures=figures,
-                verdict=verdict(comparison), command=comparison.command, date=comparison.date, files=files,
+                tolerance_words=Tolerances.of(record["tolerances"]).describe(), check_words=CHECK_WORDS,
+                verdict=record, command=comparison.command, date=comparison.date, files=files,
                 partial=comparison.partial,
                 summary=records(summary), skipped=comparison.skipped, rows=len(frame),
                 ran=engines_ran(frame), facts=records(run_facts(frame, arithmetic(comparison.engine_options))),
-                agreement=records(comparison.agreement), deviation=records(comparison.deviation), cross=cross,
+                agreement=records(comparison.agreement), physics=records(checks), deviation=records(comparison.deviation), cross=cross,
                 findings=records(comparison.findings), failures=comparison.failures, precision=records(precision),
                 ratios=ratios, sliding=records(sliding),
                 attributions=[(name, records(table)) for name, table in comparison.attribution.items()])

@@ -1,4 +1,5 @@
 """The terminal view: fixed-width tables and what compare, check and cost print."""
+from ..analyses.physics import CHECK_WORDS, Tolerances
 
 
 def summary_lines(frame):
@@ -26,31 +27,36 @@ def text_table(frame, columns, formats=None):
 
 
 def print_summary(record, comparison, written):
-    """What a person reads after compare (about 20 lines): per engine its agreement with its own formulas and its
-    largest deviations from the paper law in physical units, then findings, skipped engines and failed runs (with
-    their log tails), then where the files are."""
+    """What a person reads after compare (about 25 lines): per engine whether it reproduces the paper law on this
+    scene (the worst case of each failed check and the ingredient attribution names), whether it agrees with its own
+    formulas, its largest deviations from the paper law in physical units, then the findings not said yet, skipped
+    engines and failed runs (with their log tails), then where the files are."""
     engines = record["engines"]
     names = [f"{e['engine']} {e['version']}" for e in engines]
     ran = " and ".join(filter(None, [", ".join(names[:-1]), names[-1]])) if names else "no engine"
     print(f"{record['model']}: the paper law against {ran}; {len(record['e_n'])} e_n x "
           f"{record['impacts'] // max(len(record['e_n']), 1)} impacts")
     if engines:
+        width = max(18, *(len(name) for name in names))
+        tolerances = Tolerances.of(record["tolerances"]).describe()
+        print(wrapped(f"does each engine reproduce the paper law on this scene? ({tolerances})"))
+        for e, name in zip(engines, names):
+            print(wrapped(f"  {name:{width}s} {physics_phrase(e['physics'])}", indent=width + 16))
         print(f"agreement with its own formulas at equal time step (tolerance {engines[0]['tolerance']:.0e}):")
-        width = max(18, *(len(f"{e['engine']} {e['version']}") for e in engines))
-        for e in engines:
+        for e, name in zip(engines, names):
             worst = e["worst"]
             where = ("no impact compared" if not e["compared"] else
                      f"worst {worst['relative']:.1e} in {worst['metric']} at e_n {worst['e_n_target']:g}, "
                      f"{worst['theta_deg']:g} deg")
             state = "agrees" if e["agrees"] else "DISAGREES" if e["compared"] else "not compared"
-            print(f"  {e['engine'] + ' ' + e['version']:{width}s} {state:12s} {where}")
+            print(f"  {name:{width}s} {state:12s} {where}")
         print("largest deviation from the paper law (relative to the incident speed V; the spin as R omega1/V):")
         for e in engines:
             for d in e["deviation"]:
                 print(f"  {e['engine']:10s} {d['metric']:7s} {d['difference']:+11.4g} {d['unit']:6s} "
                       f"{d['relative']:+8.2%} of {d['relative_to']:4s} at e_n {d['e_n_target']:g}, {d['theta_deg']:g} deg")
-    for finding in record["findings"]:
-        print(one_line(f"finding: {finding['engine']} ({finding['dialect']}): {finding['kind']}: {finding['detail']}"))
+    for finding in told_once(record):
+        print(wrapped(f"finding: {finding['engine']} ({finding['dialect']}): {finding['kind']}: {finding['detail']}"))
     for skipped in record["skipped"]:
         print(f"skipped {skipped['engine']}: {skipped['reason']}")
     for failure in comparison.failures:
@@ -58,13 +64,45 @@ def print_summary(record, comparison, written):
     print(f"wrote {' and '.join(written)} (every table: --verbose, the CSVs and the report)")
 
 
-def one_line(text, width=120):
-    """A finding cut to one terminal line (the report has it whole)."""
-    return text if len(text) <= width else text[:width - 3] + "..."
+def physics_phrase(physics):
+    """'reproduces ...', 'DEVIATES <worst case of each failed check>; attributed to <ingredients>' or 'not checked
+    (why)'."""
+    if physics["state"] == "reproduces":
+        return f"{'reproduces':12s} every check holds on {physics['impacts']} impacts"
+    if physics["state"] != "deviates":
+        return f"{'not checked':12s} {physics['reason']}"
+    failed = [c for c in physics["checks"] if not c["passed"]]
+    causes = list(dict.fromkeys(c["ingredient"] for c in failed if c.get("ingredient")))
+    return (f"{'DEVIATES':12s} " + "; ".join(c["short"] for c in failed)
+            + (f"; attributed to {', '.join(causes)}" if causes else ""))
+
+
+FOLDED = {"Coulomb bound": "coulomb", "e_n off target": "e_n", "energy gain": "energy",
+          "tangential energy gain": "energy"}     # finding kind -> the physics check that says it
+
+
+def told_once(record):
+    """The findings the summary has not said yet: not those a failed physics check of the same engine states, nor
+    a dialect's (engine 'reference') that its engine shows too (--verbose and the report list every one)."""
+    failing = {e["engine"]: set(e["physics"]["failing"]) for e in record["engines"]}
+    shown = {(f["engine"], f["kind"]) for f in record["findings"] if f["engine"] == f["dialect"]}
+    return [f for f in record["findings"]
+            if FOLDED.get(f["kind"]) not in failing.get(f["dialect"], ())
+            and not (f["engine"] == "reference" and (f["dialect"], f["kind"]) in shown)]
+
+
+def wrapped(text, indent=2):
+    """A line wrapped at the terminal's width between words, never cut (the report has the same text whole)."""
+    import shutil
+    import textwrap
+    width = min(max(shutil.get_terminal_size((120, 24)).columns, 60), 160)
+    return textwrap.fill(text, width=width, subsequent_indent=" " * indent, break_long_words=False,
+                         break_on_hyphens=False)
 
 
 def verdict_line(record, reference_only=False):
-    """The verdict in one line: what agreed, what did not, what did not run."""
+    """The verdicts in one line, the physics first: which engines reproduce the paper law or deviate from it, then
+    what agreed with its own formulas, what did not, what did not run."""
     compared = [e for e in record["engines"] if e["compared"]]
     bad = [e for e in compared if not e["agrees"]]
     if bad:
@@ -76,12 +114,26 @@ def verdict_line(record, reference_only=False):
     else:
         line = "agreement: not checked: " + ("the reference alone was asked for" if reference_only else
                                              "no engine ran")
+    physics = physics_words(record)
+    if physics:
+        line = f"{physics}; {line}"
     if record["unavailable"]:
         line += f"; asked for by name and not run: {', '.join(record['unavailable'])}"
     failed = sorted({f["engine"] for f in record["failed"]})
     if failed:
         line += f"; failed runs: {', '.join(failed)}"
     return line
+
+
+def physics_words(record):
+    """'paper law: reproduced by A; deviates in B, C', or '' when no engine was checked."""
+    parts = []
+    for state, words in (("reproduces", "reproduced by"), ("deviates", "deviates in"), ("not checked", "not checked in")):
+        engines = [e["engine"] for e in record["engines"] if e["physics"]["state"] == state]
+        if engines:
+            parts.append(f"{words} {', '.join(engines)}")
+    return "paper law: " + "; ".join(parts) if any(e["physics"]["state"] != "not checked"
+                                                  for e in record["engines"]) else ""
 
 
 def print_comparison(comparison, written):
@@ -120,7 +172,7 @@ def print_comparison(comparison, written):
     if not comparison.findings.empty:
         print("\nfindings:")
         for _, row in comparison.findings.iterrows():
-            print(f"  {row.engine} ({row.dialect}): {row.kind}: {row.detail}")
+            print(wrapped(f"  {row.engine} ({row.dialect}): {row.kind}: {row.detail}", indent=4))
     for failure in comparison.failures:
         print(f"\n{failure.engine} failed at e_n = {failure.e_n:g}: {failure.message}\n{failure.log_tail}")
     print(f"\nwrote {' and '.join(written)}")
