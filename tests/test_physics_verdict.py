@@ -189,3 +189,13 @@ def test_lammps_misses_e_n_so_require_paper_exits_1(tmp_path, capsys):
     assert capsys.readouterr().out.startswith("paper law: deviates in lammps; agreement: ok for lammps")
     report = (tmp_path / "b" / "report.html").read_text()
     assert 'class="summary deviates"' in report and "lammps does not reproduce the paper law" in report
+
+
+@pytest.mark.parametrize("bad", [["--tolerance", "speed=0.1"], ["--tolerance", "velocity"],
+                                 ["--tolerance", "velocity=nan"], ["--tolerance", "e_n=1", "--tolerance", "e_n=2"],
+                                 ["--require", "engines"]])
+def test_compare_refuses_a_bad_tolerance_in_one_line_and_writes_nothing(tmp_path, capfd, bad):
+    code = main(["compare", "--model", "hertz-mindlin", "--engines", "reference", "--en", "0.5", "--angles", "10",
+                 *bad, "-o", str(tmp_path / "out")])
+    err = capfd.readouterr().err.strip().splitlines()
+    assert code == 2 and len(err) == 1 and err[0].startswith("harness: error: ") and not (tmp_path / "out").exists()
