@@ -212,12 +212,11 @@ def results(case, engine):
     return outcome(case, frame, failure)
 
 
-def run_suite(engines=("reference",), progress=None, todo=None):
-    """Every test (or the cases `todo`) on every engine: the table of COLUMNS, a row per quantity (one per case an
-    engine cannot run). The runs are executed together, so that an engine's share its processes."""
+def run_suite(engines=("reference",), progress=None):
+    """Every test on every engine: the table of COLUMNS, a row per quantity (one per case an engine cannot run). The
+    runs are executed together, so that an engine's share its processes."""
     from ..execute import run_all
-    todo = cases() if todo is None else todo
-    pairs = [(case, engine) for case in todo for engine in engines]
+    pairs = [(case, engine) for case in cases() for engine in engines]
     reasons = [applicable(case, engine) for case, engine in pairs]
     jobs = [i for i, reason in enumerate(reasons) if not reason]
     runs = [plan(*pairs[i]) for i in jobs]
