@@ -43,6 +43,18 @@ _PRESETS = (
              "as reproduced in YADE, LIGGGHTS-PFM"),
     Material("nylon", 2.5e9, 0.40, 1000.0, 0.10, 0.4, 0.5,
              "C&O 2011 Test 6 (also Test 8); as reproduced in LIGGGHTS-PFM (Tests 6, 8), PySPH (Test 8)"),
+    Material("magnesium-alloy", 4.0e10, 0.35, 1800.0, 0.10, 0.0, 1.0,
+             "C&O 2011 Test 2 (elastic, on a rigid plane at 0.2 m/s); as reproduced in PySPH "
+             "(dineshadepu/pysph, pysph/examples/dem/discontinuous_dem/chung_test_2.py)"),
+    Material("cast-iron", 1.0e11, 0.25, 7000.0, 2.5e-3, 0.0, None,
+             "C&O 2011 Test 3 (beside alumina, mu=0, e_n swept); as reproduced in PySPH "
+             "(dineshadepu/pysph, pysph/examples/dem/discontinuous_dem/chung_test_3.py)"),
+    Material("polyethylene", 1.0e9, 0.40, 1400.0, 1e-5, 0.3, 1.0,
+             "C&O 2011 Test 5 (beside steel, R=0.01 mm, elastic); as reproduced in PySPH "
+             "(dineshadepu/pysph, pysph/examples/dem/discontinuous_dem/chung_test_5.py)"),
+    Material("copper", 1.2e11, 0.35, 8900.0, 0.10, 0.4, 0.5,
+             "C&O 2011 Test 7 (beside aluminium alloy, two identical spheres); as reproduced in PySPH "
+             "(dineshadepu/pysph, pysph/examples/dem/discontinuous_dem/test_chung_paper/chung_test_7.py)"),
 )
 
 MATERIALS: dict[str, Material] = {m.name: m for m in _PRESETS}

@@ -442,6 +442,24 @@ def rigid_sliding(mu, e, V_n, V_t, R, omega0=0.0):
     return dict(v_t1=v_t1, omega1=omega1)
 
 
+def rigid_sliding_pair(mu, e, V_n, V_s, m1, R1, m2, R2):
+    """Two free solid spheres sliding throughout: J_n = m*(1+e)V_n, 1/m* = 1/m1 + 1/m2; J = -mu J_n sgn(V_s) on the
+    projectile (dv1 = J/m1, d omega1 = -R1 J/I1) and -J on the target (dv2 = -J/m2, d omega2 = -R2 J/I2), I = 2/5 m R^2."""
+    # Frame: the projectile above the target, the line of centres along z; V_s = (v1_t - v2_t) - (R1 w1 + R2 w2) is
+    # the slip of the projectile's contact point (at -R1 z) over the target's (at +R2 z); an impulse J x on the
+    # projectile there has the moment (-R1 z) x (J x) = -R1 J y, and -J x on the target at +R2 z has -R2 J y.
+    # Raises ValueError when the slip would reverse during the impact (sliding is then not "throughout").
+    if V_s == 0.0:
+        raise ValueError("no initial slip: the spheres do not slide")
+    I1, I2 = 0.4 * m1 * R1 ** 2, 0.4 * m2 * R2 ** 2
+    J_n = (1.0 + e) * V_n / (1.0 / m1 + 1.0 / m2)
+    J = -mu * J_n * math.copysign(1.0, V_s)
+    V_s1 = V_s + J * (1.0 / m1 + 1.0 / m2 + R1 ** 2 / I1 + R2 ** 2 / I2)
+    if V_s1 * V_s < 0.0:
+        raise ValueError("slip reverses: not sliding throughout")
+    return dict(dv1=J / m1, domega1=-R1 * J / I1, dv2=-J / m2, domega2=-R2 * J / I2)
+
+
 # ----------------------------------------------------------------------------------------------------------------
 # Self-checks
 # ----------------------------------------------------------------------------------------------------------------

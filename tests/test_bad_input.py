@@ -17,7 +17,7 @@ NUMBERS = {   # option -> values outside its physical range (the bound is named 
     "--radius": ["0", "-0.01", "1e-320", "1e-9", "1e300", "100"],
     "--E": ["0", "-1e9", "1e-300", "10", "1e300", "1e15"],
     "--nu": ["0.5", "0.6", "-1", "-2", "1e300"],
-    "--rho": ["0", "-2650", "1e-3", "1e300", "1e7"],
+    "--rho": ["0", "-2650", "1e-3", "1e300", "1e7", "3.1e6"],
     "--mu": ["-0.1", "-1e300", "1e300", "20"],
     "--gravity": ["-9.81", "1e30", "1e5"],
     "--omega0": ["1e300", "-1e300", "1e6", "-1e6"],
@@ -56,6 +56,7 @@ CHOICES = [   # (extra arguments, what is wrong)
     (["--model", "thornton", "--target", "sphere", "--wall", "rigid"], "a wall for a sphere target"),
     (["--model", "thornton", "--target", "sphere", "--target-fixed", "--target-omega", "3"], "a fixed target spins"),
     (["--model", "thornton", "--target", "sphere", "--target-material", "E=1e9,nu=0.3,rho=1e7"], "target rho"),
+    (["--model", "thornton", "--target", "sphere", "--target-material", "E=1e9,nu=0.3,rho=3.1e6"], "target rho"),
     (["--model"], "missing value"),
     ([], "no model"),
 ]
@@ -95,6 +96,19 @@ def test_bad_input_is_refused_in_one_line(tmp_path, capfd, command, arguments):
     assert len(lines) == 1 and lines[0].startswith("harness: error: "), err
     assert "Traceback" not in err + out
     assert os.listdir(tmp_path) == []
+
+
+def test_the_density_bound_admits_chung_and_ooi_test_8_and_says_why(tmp_path, capfd):
+    """Test 8's target is 1000x as dense as the aluminium alloy (2.7e6 kg/m^3): it runs; just above the bound
+    (3e6) is refused with the bound and its reason in one line."""
+    target = ["--target", "sphere", "--target-radius", "0.5", "--material", "aluminium-alloy", "--radius", "0.1",
+              "--speed", "0.2", "--mu", "0.4", "--en", "0.5", "--vt", "0"]
+    assert main(["run", "--model", "hertz-mindlin", *target, "--target-material", "E=7e13,nu=0.33,rho=2.7e6",
+                 "-o", str(tmp_path / "ok.csv")]) == 0
+    assert main(["run", "--model", "hertz-mindlin", *target, "--target-material", "E=7e13,nu=0.33,rho=3.1e6",
+                 "-o", str(tmp_path / "no.csv")]) == 2
+    err = capfd.readouterr().err.strip().splitlines()[-1]
+    assert "rho must lie in [1, 3e+06] kg/m^3" in err and "test 8" in err and not (tmp_path / "no.csv").exists()
 
 
 def test_render_refuses_another_engines_option(tmp_path, capfd):

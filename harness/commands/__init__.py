@@ -11,10 +11,11 @@ from ..version import __version__
 from .options import EXIT_CODES, EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_USAGE, Parser
 
 
-def describe(sub, name, summary, example):
-    """A sub-command whose --help carries its summary, an example and the exit codes."""
+def describe(sub, name, summary, example, exit_codes=EXIT_CODES):
+    """A sub-command whose --help carries its summary, an example and its exit codes (the common ones unless a
+    command gives its own)."""
     return sub.add_parser(name, help=summary, description=summary[0].upper() + summary[1:] + ".",
-                          epilog=f"example:\n  {example}\n\n{EXIT_CODES}",
+                          epilog=f"example:\n  {example}\n\n{exit_codes}",
                           formatter_class=argparse.RawDescriptionHelpFormatter)
 
 

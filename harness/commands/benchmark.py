@@ -7,7 +7,7 @@ from ..engines import ENGINES
 from ..errors import UserError
 from ..lock import exclusive
 from ..results import write_csv
-from ..verification.chung_ooi import run_suite, verdict
+from ..verification.chung_ooi import LAW, run_suite, verdict
 from ..views.chung_ooi_html import CSV, summary, write_chung_ooi_report
 from ..views.progress import Progress
 from ..views.terminal import text_table
@@ -15,11 +15,21 @@ from .options import EXIT_DISAGREE, EXIT_ENGINE, EXIT_OK, add_output_options, ch
 
 EXAMPLE = "harness benchmark chung-ooi --engines reference,liggghts -o chung-ooi/"
 SUITES = ("chung-ooi",)
+EXIT_CODES = """exit codes:
+  0  done; every check made passes at the suite's published values, and every engine asked for by name ran
+  1  a check fails: a quantity off its published value by more than its tolerance (the CSV and the page say
+     which, and what caused it)
+  2  bad input (one line on stderr says which); nothing was run
+  3  no check failed, but an engine could not run (missing, crashed, timed out: what and why is printed) while it
+     was asked for by name or had runs that failed, or no check was made
+  4  an internal error of harness (a bug: the traceback is printed)
+  130 interrupted (Ctrl-C), 143 terminated (SIGTERM), 129 hung up (SIGHUP): engines stopped, temporary files
+     removed"""
 
 
 def add(sub, describe):
     p = describe(sub, "benchmark", "a published verification suite (Chung & Ooi 2011's eight tests) on the reference "
-                                   "and the engines: every quantity against its closed form", EXAMPLE)
+                                   "and the engines: every quantity against its closed form", EXAMPLE, EXIT_CODES)
     p.add_argument("suite", choices=SUITES, help="the suite: chung-ooi")
     p.add_argument("--engines", default=None, metavar="LIST",
                    help=f"comma-separated engines of {', '.join(ENGINES)} (default: every one; those missing are "
@@ -30,9 +40,17 @@ def add(sub, describe):
     p.set_defaults(func=main)
 
 
+def exit_code(ok, checked, could_not_run):
+    """EXIT_CODES: 1 when a check fails; 3 when none fails but an engine could not run or nothing was checked; 0."""
+    if checked and not ok:
+        return EXIT_DISAGREE
+    if could_not_run or not checked:
+        return EXIT_ENGINE
+    return EXIT_OK
+
+
 def main(args):
-    """chung-ooi.csv and chung-ooi.html in DIR; exit 0 when every applicable check passes, 1 when one fails, 3 when
-    an engine named in --engines could not run a test it supports or is missing."""
+    """chung-ooi.csv and chung-ooi.html in DIR; the exit code of EXIT_CODES."""
     named = args.engines is not None
     engines = tuple(ENGINES) if not named else tuple(n.strip() for n in args.engines.split(",") if n.strip())
     unknown = [n for n in engines if n not in ENGINES]
@@ -45,16 +63,17 @@ def main(args):
         write_csv(table, os.path.join(args.output, CSV))
         path = write_chung_ooi_report(args.output, table, "harness " + " ".join(sys.argv[1:]))
     ok, passed, checked = verdict(table)
-    missing = [e for e in engines if ENGINES[e].status("hertz-mindlin").available is False] if named else []
+    missing = [e for e in engines if ENGINES[e].status(LAW).available is False] if named else []
     failed = sorted(set(table[table.quantity == "failed"].engine))
-    code = EXIT_DISAGREE if not ok else EXIT_ENGINE if missing or failed else EXIT_OK
+    code = exit_code(ok, checked, missing + failed)
     if args.json:
-        print(json.dumps({"ok": ok, "exit_code": code, "passed": passed, "checked": checked,
-                          "could_not_run": missing + failed, "engines": summary(table).to_dict("records"),
-                          "csv": os.path.join(args.output, CSV), "report": path}, indent=1, default=str))
+        print(json.dumps({"ok": ok, "exit_code": code, "passed": passed, "failed": checked - passed,
+                          "checked": checked, "could_not_run": missing + failed,
+                          "engines": summary(table).to_dict("records"), "csv": os.path.join(args.output, CSV),
+                          "report": path}, indent=1, default=str))
         return code
     if not args.quiet:
-        print(text_table(summary(table), ["engine", "passed", "checked", "not run", "why not"], {}))
-    print(f"chung-ooi: {passed} of {checked} checks pass -> {path}"
+        print(text_table(summary(table), ["engine", "passed", "failed", "checked", "not run", "why not"], {}))
+    print(f"chung-ooi: {passed} of {checked} checks pass, {checked - passed} fail -> {path}"
           + (f"; could not run: {', '.join(missing + failed)}" if missing or failed else ""))
     return code
