@@ -102,9 +102,12 @@ def test_paper_normal_impacts_match_independent_integrations(paper_dir):
 
 
 def test_paper_sliding_table_agrees_with_its_conditions(paper_dir):
+    """Each threshold within its bracket (+1e-5) of its condition; the kernel's search (the linear law, whose
+    tangential dashpot keeps it off the adaptive integrator) may find it lower by a stick hidden in its last step."""
     sliding = pd.read_csv(paper_dir / "paper-sliding.csv")
     assert len(sliding) == 12
-    assert (sliding.difference.abs() <= sliding.resolution + 1e-5).all()
+    low = np.where(sliding.method.str.startswith("kernel"), 5e-5, sliding.resolution + 1e-5)
+    assert ((sliding.difference >= -low) & (sliding.difference <= sliding.resolution + 1e-5)).all()
 
 
 def test_paper_refuses_an_unknown_law(tmp_path):
