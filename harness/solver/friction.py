@@ -65,7 +65,9 @@ def damped_friction(ot, p, code, h, a, f_s, slip, limit, lever):
     (P_TCONE 0): a spring beyond mu F_n slides, held on the cone, and is the whole force; a sticking spring gets the
     dashpot and the sum is clipped to mu F_n. Total (P_TCONE 1): the spring is held within the cone and the sum
     clipped, so the dashpot's share shrinks continuously to nothing in gross sliding. Returns (F_t, F_s); T_HELD =
-    |F_s| - mu F_n for a sliding spring (spring first), else |total| - mu F_n."""
+    |F_s| - mu F_n for a sliding spring (spring first), else |total| - mu F_n, counted along the spring (spring
+    first): a dashpot that carries the force across the cone, against the spring, leaves the spring's side, which
+    the events locate."""
     if abs(f_s) > limit:
         f_s = cap(f_s, limit)
         tangential_after_cap(code, f_s, p[C.P_T1], a, ot)
@@ -73,7 +75,10 @@ def damped_friction(ot, p, code, h, a, f_s, slip, limit, lever):
             return f_s, f_s
     c_t = p[C.P_TDAMP] * math.sqrt(tangential_stiffness(code, p[C.P_T1], a))
     trial = (f_s - c_t * slip) / (1.0 + 0.5 * h * c_t * (1.0 / p[C.P_MASS] + lever * lever / p[C.P_INERTIA]))
-    ot[T_HELD] = abs(trial) - limit
+    if p[C.P_TCONE] == 0.0 and f_s != 0.0:
+        ot[T_HELD] = trial * math.copysign(1.0, f_s) - limit    # held on the spring's side of the cone
+    else:
+        ot[T_HELD] = abs(trial) - limit
     return cap(trial, limit), f_s
 
 
