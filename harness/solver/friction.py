@@ -60,14 +60,12 @@ def capped_total(ot, p, code, a, f_s, slip, limit):
 
 @njit(cache=True, inline="always")
 def damped_friction(ot, p, code, h, a, f_s, slip, limit, lever):
-    """The paper scheme's spring and tangential dashpot, the dashpot F_s - c_t V_s with V_s at the step's end
-    (implicit: V_s(end) = V_s(half) + h/2 F_t (1/m + lever^2/I)) (docs/laws.md#tangential-dashpot). Spring first
-    (P_TCONE 0): a spring beyond mu F_n slides, held on the cone, and is the whole force; a sticking spring gets the
-    dashpot and the sum is clipped to mu F_n. Total (P_TCONE 1): the spring is held within the cone and the sum
-    clipped, so the dashpot's share shrinks continuously to nothing in gross sliding. Returns (F_t, F_s); T_HELD =
-    |F_s| - mu F_n for a sliding spring (spring first), else |total| - mu F_n, counted along the spring (spring
-    first): a dashpot that carries the force across the cone, against the spring, leaves the spring's side, which
-    the events locate."""
+    """The paper scheme's spring and tangential dashpot, F_s - c_t V_s with V_s at the step's end (implicit:
+    V_s(end) = V_s(half) + h/2 F_t (1/m + lever^2/I); docs/laws.md#tangential-dashpot). Spring first (P_TCONE 0): a
+    spring beyond mu F_n slides on the cone and is the whole force, a sticking one gets the dashpot, the sum clipped
+    to mu F_n. Total (P_TCONE 1): the spring held within the cone, then the sum clipped. Returns (F_t, F_s); T_HELD
+    = |F_s| - mu F_n for a sliding spring, else the sum's excess over mu F_n, along the spring for spring first (a
+    dashpot carrying the force across the cone ends the slide, an event)."""
     if abs(f_s) > limit:
         f_s = cap(f_s, limit)
         tangential_after_cap(code, f_s, p[C.P_T1], a, ot)
