@@ -1,6 +1,7 @@
 """The paper's figure set as data: for each law, Psi2*, Omega* and e_t against Psi1* at the paper's e_n on its scene
 (normal speed held at 5 m/s, as Kratos draws them), elastic Hertz-Mindlin beside them, contact duration and peak
-force of the normal impact against e_n relative to elastic Hertz, and where each law slides throughout."""
+force of the normal impact against e_n relative to elastic Hertz, where each law slides throughout, and how far the
+laws the paper's published curves cover lie from them."""
 from dataclasses import replace
 
 import numpy as np
@@ -10,10 +11,12 @@ from .laws import LAWS, compose
 from .submodels.calibration import hertz_contact_time
 from .submodels.normal.hertz import hertz_peak_overlap
 from .scene import DEFAULT_EN, Scene
+from .analyses.published import published_distances
 from .analyses.sliding import sliding_thresholds, threshold_table
 from .solver.reference import simulate
 
-PSI1_GRID = tuple(float(x) for x in np.round(np.arange(0.25, 14.0001, 0.25), 6))   # the paper's Psi1* axis
+PSI1_GRID = tuple(float(x) for x in np.round(np.r_[np.arange(0.05, 0.21, 0.05), np.arange(0.25, 14.0001, 0.25)], 6))
+# the paper's Psi1* axis, from below its first published point (0.15)
 NORMAL_EN = tuple(sorted(set(np.round(np.arange(0.1, 0.951, 0.05), 6)) | set(DEFAULT_EN)))
 ELASTIC = "hertz-mindlin (elastic)"        # e = 1, no dashpots: the elastic companion paper's reference curve
 
@@ -53,7 +56,8 @@ def normal_impacts(laws, scene, steps_per_contact):
 
 
 def figure_set(laws=tuple(LAWS), steps_per_contact=2000, progress=None):
-    """(oblique rows, normal-impact table, sliding thresholds) of the paper's figures for `laws`."""
+    """(oblique rows, normal-impact table, sliding thresholds, distances from the published points) of the paper's
+    figures for `laws`."""
     scene = paper_scene()
     if progress:
         progress.expect(2 + len(laws))
@@ -68,4 +72,4 @@ def figure_set(laws=tuple(LAWS), steps_per_contact=2000, progress=None):
         sliding.append(threshold_table(name, sliding_thresholds(compose(name), scene)))
         if progress:
             progress.advance(f"sliding threshold of {name}")
-    return oblique, normal, pd.concat(sliding, ignore_index=True)
+    return oblique, normal, pd.concat(sliding, ignore_index=True), published_distances(oblique)

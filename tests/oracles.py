@@ -51,6 +51,7 @@ __all__ = [
     "tsuji_hertz_A",
     "thornton_appendix_b_g",
     "rigid_sliding",
+    "tsuji_mindlin_sliding_threshold",
 ]
 
 RTOL = 1e-12
@@ -458,6 +459,42 @@ def rigid_sliding_pair(mu, e, V_n, V_s, m1, R1, m2, R2):
     if V_s1 * V_s < 0.0:
         raise ValueError("slip reverses: not sliding throughout")
     return dict(dv1=J / m1, domega1=-R1 * J / I1, dv2=-J / m2, domega2=-R2 * J / I2)
+
+
+def tsuji_mindlin_sliding_threshold(A, kappa):
+    """Psi1* from which Hertz + Tsuji dashpot (no tension) under Mindlin's 8G*a with the eq. 18b rescale slides
+    throughout when only the spring's Coulomb test counts: max over unloading of [7 J + 2 (F' - F a'/a)/k_t]/(1 + e)."""
+    # Rigid sliding throughout leaves the normal motion alone: x'' = -F, F = x^1.5 + A x^0.25 x' (tsuji_hertz_e's
+    # scaling, x(0) = 0, x'(0) = 1, impulse J = int F), and the slip V_s = V_si - 7/2 mu J. A spring on the cone
+    # (|F_s| = mu F) stays there while it shrinks no faster than the cone: k_t V_s + mu F a'/a >= mu F' (the rescale
+    # F_s a'/a while a shrinks), k_t = 8 G* a = 3/2 kappa x^0.5 in these units. Returns (threshold, achieved e).
+    def force(x, v):
+        return _ppow(x, 1.5) + A * _ppow(x, 0.25) * v
+
+    def rhs(_, y):
+        f = force(y[0], y[1])
+        return [y[1], -f, f]
+
+    def release(_, y):
+        return force(y[0], y[1]) if y[1] < 0.0 else 1.0
+    release.terminal, release.direction = True, -1
+    sol = solve_ivp(rhs, (0.0, 50.0), [0.0, 1.0, 0.0], method="DOP853", rtol=RTOL, atol=1e-15, events=release,
+                    dense_output=True, first_step=1e-9)
+    t_end, e = sol.t_events[0][0], -sol.y_events[0][0][1]
+
+    def needed(t):
+        x, v, impulse = sol.sol(t)
+        f = force(x, v)
+        rate = 1.5 * x ** 0.5 * v + A * (0.25 * x ** -0.75 * v * v - x ** 0.25 * f)
+        return (7.0 * impulse + 2.0 * (rate - f * v / (2.0 * x)) / (1.5 * kappa * math.sqrt(x))) / (1.0 + e)
+
+    ts = np.linspace(0.0, t_end, 20001)
+    grid = ts[sol.sol(ts)[1] < 0.0]
+    values = np.array([needed(t) for t in grid])
+    i = int(np.argmax(values))
+    lo, hi = grid[max(i - 1, 0)], grid[min(i + 1, len(grid) - 1)]
+    best = minimize_scalar(lambda t: -needed(t), bounds=(lo, hi), method="bounded", options={"xatol": 1e-14})
+    return float(max(values[i], -best.fun)), float(e)
 
 
 # ----------------------------------------------------------------------------------------------------------------

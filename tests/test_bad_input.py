@@ -36,6 +36,7 @@ CHOICES = [   # (extra arguments, what is wrong)
     (["--model", "thornton", "--with", "nonsense=hertz"], "unknown key"),
     (["--model", "thornton", "--with", "end=tension", "--with", "end=no-tension"], "repeated --with"),
     (["--model", "thornton", "--with", "end"], "no value"),
+    (["--model", "hertz-mindlin", "--with", "tangential-damping=normal-ratio:heavy"], "unknown dashpot option"),
     (["--model", "thornton", "--material", "unobtainium"], "unknown material"),
     (["--model", "thornton", "--wall", "jelly"], "unknown wall"),
     (["--model", "thornton", "--speed", "5", "--normal-speed", "5"], "two speeds"),

@@ -34,9 +34,9 @@ def test_sliding_throughout_matches_rigid_body(name, e):
 
 @pytest.mark.parametrize("name", ["linear-spring-dashpot", "hertz-mindlin"])
 def test_tangential_dashpot_makes_viscous_laws_slide_throughout(name):
-    """With the paper's tangential dashpot (c_t = 2 g sqrt(m k_t) while sticking) a viscous law's friction is at the
-    Coulomb cone from first touch at large Psi1*: exactly the rigid-body line, Omega* = -5 (the kernel's sliding
-    steps carry mu times the normal impulse, dashpot-held ones included)."""
+    """With the paper's tangential dashpot (c_t = 2 g sqrt(m k_t) on a sticking spring) a viscous law's friction is
+    at the Coulomb cone from first touch at large Psi1*: exactly the rigid-body line, Omega* = -5 (the kernel's
+    sliding steps carry mu times the normal impulse, dashpot-held ones included)."""
     for e in (0.9, 0.5, 0.1):
         _, frame = sliding_frame(name, e)
         assert frame.omega_star.iloc[-1] == pytest.approx(-5.0, abs=1e-9)

@@ -52,6 +52,26 @@ def test_kt_over_kn_is_kappa_with_the_normal_dashpots_ratio():
     assert params[C.P_TDAMP] * math.sqrt(params[C.P_T1]) == pytest.approx(2 * g * math.sqrt(scene.contact.mass * params[C.P_T1]))
 
 
+def test_tangential_dashpot_options():
+    """'sphere-mass': c_t = 2 g sqrt(m_t k_t) with m_t = m/(1 + m R^2/I) = 2/7 m for a solid sphere on a wall;
+    'classical': g_t = -ln e/sqrt(ln^2 e + pi^2); 'total' and the default 'spring-first' set the kernel's Coulomb
+    test; an unknown option is one line of bad input."""
+    from harness.errors import UserError
+    from harness.solver import codes as C
+    from harness.solver.plan import plan_batch
+    scene = Scene(e_n=(0.5,), angles_deg=(30.0,))
+    plain = plan_batch(compose("linear-spring-dashpot"), scene, 0.5, 1000).params[0]
+    law = compose("linear-spring-dashpot", {"tangential-damping": "classical:total:sphere-mass"})
+    params = plan_batch(law, scene, 0.5, 1000).params[0]
+    beta = -math.log(0.5) / math.sqrt(math.log(0.5) ** 2 + math.pi ** 2)
+    assert params[C.P_TDAMP] == pytest.approx(2 * beta * math.sqrt(2.0 / 7.0 * scene.contact.mass), rel=1e-12)
+    assert (plain[C.P_TCONE], params[C.P_TCONE]) == (0.0, 1.0)
+    assert law.describe()["tangential-damping"] == "classical:total:sphere-mass"
+    assert compose("hertz-mindlin").describe()["tangential-damping"] == "normal-ratio"
+    with pytest.raises(UserError, match="options are"):
+        compose("hertz-mindlin", {"tangential-damping": "normal-ratio:heavy"})
+
+
 def test_normal_speed_holds_v_n_as_kratos_does():
     scene = Scene(e_n=(0.5,), angles_deg=(0.0, 30.0, 60.0), speed_is="normal")
     v_n, v_t, _, theta = scene.impacts(0.5)
@@ -70,8 +90,9 @@ def harness(*args, cwd=None):
 def paper_dir(tmp_path_factory):
     out = tmp_path_factory.mktemp("paper")
     proc = harness("paper", "--laws", "thornton,linear-spring-dashpot,partially-latching-spring",
-                   "--steps-per-contact", "1000", "-o", str(out), "--quiet")
+                   "--steps-per-contact", "1000", "-o", str(out))
     assert proc.returncode == 0, proc.stderr
+    (out.parent / "paper-stdout.txt").write_text(proc.stdout)
     return out
 
 
@@ -84,6 +105,20 @@ def test_paper_writes_its_tables_and_page(paper_dir):
     html = (paper_dir / "paper.html").read_text()
     assert html.count("<svg") == 4 and "provisional" in html
     assert "partially-latching-spring</b>" in html                 # named among the reconstructed laws
+
+
+def test_paper_prints_and_writes_the_distance_from_the_published_points(paper_dir):
+    """The linear law's distances per e_n and quantity (the page's table too), the points overlaid on its figure;
+    none for the laws the paper's published curves do not cover."""
+    published = pd.read_csv(paper_dir / "paper-published.csv")
+    assert set(published.model) == {"linear-spring-dashpot"} and len(published) == 12
+    assert set(published.quantity) == {"psi2_star", "omega_star", "e_t"} and (published.points >= 8).all()
+    stdout = (paper_dir.parent / "paper-stdout.txt").read_text()
+    assert "distance from the paper's published points (e_t's x10)" in stdout
+    assert "every law, e_n and quantity within the goal" in stdout
+    html = (paper_dir / "paper.html").read_text()
+    assert 'id="published"' in html and "paper-published.csv" in html and "Kratos Multiphysics" in html
+    assert html.count('id="published-points') == 3 * 4
 
 
 def test_paper_normal_impacts_match_independent_integrations(paper_dir):
@@ -102,9 +137,12 @@ def test_paper_normal_impacts_match_independent_integrations(paper_dir):
 
 
 def test_paper_sliding_table_agrees_with_its_conditions(paper_dir):
+    """Each threshold within its bracket (+1e-5) of its condition; the kernel's search (the linear law, whose
+    tangential dashpot keeps it off the adaptive integrator) may find it lower by a stick hidden in its last step."""
     sliding = pd.read_csv(paper_dir / "paper-sliding.csv")
     assert len(sliding) == 12
-    assert (sliding.difference.abs() <= sliding.resolution + 1e-5).all()
+    low = np.where(sliding.method.str.startswith("kernel"), 5e-5, sliding.resolution + 1e-5)
+    assert ((sliding.difference >= -low) & (sliding.difference <= sliding.resolution + 1e-5)).all()
 
 
 def test_paper_refuses_an_unknown_law(tmp_path):

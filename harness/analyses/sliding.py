@@ -102,18 +102,24 @@ def simulated_threshold(law, scene, e_n):
     return hi * to_paper, (hi - lo) * to_paper
 
 
-def derived_threshold(law, contact, e_n):
+def derived_threshold(law, contact, e_n, speed=5.0):
     """(Psi1*_c, formula) derived for rigid-sphere kinematics with lever R, or (NaN, '') where no condition is
-    derived: a viscous law with the paper's tangential dashpot and no tension slides throughout exactly when the
-    rigid body does, Psi1* >= 7 (sliding, V_s falls to 0 at the release there; once it reaches 0 the clipped
-    spring-plus-dashpot force leaves the cone); Mindlin's 8G*a on Hertzian unloading (elastic Hertz, Thornton, Stronge) slides
-    throughout for Psi1* >= 7 - 2 lam e/(kappa (1 + e)), lam = 1 incremental, 2/3 with the eq. 18b rescale; a
-    linear spring k_t = q K1 on the latching spring K2 = K1/e^2 (and on the elastic linear spring, e = 1) for
-    Psi1* >= max(2 max(3.5, 1/q)/(1 + e), 7 - 2/(q e (1 + e)))."""
+    derived. A viscous law with a tangential dashpot and no tension: Coulomb's test on spring plus dashpot ('total')
+    slides throughout exactly when the rigid body does, Psi1* >= 7 (V_s falls to 0 at the release there; once it
+    reaches 0 the clipped spring-plus-dashpot force leaves the cone); the spring's test first ('spring-first') keeps
+    a spring on a shrinking cone sliding while k_t |V_s| <= mu |F_n'|, which for the linear spring-dashpot binds at
+    the release (F_n' = -k_n e V_n there): Psi1* >= 7 - 2e/(q (1 + e)), q = k_t/k_n >= 2/7, where the dashpot holds
+    the force on the cone from first touch (Psi1* >= 2 c_n/(c_t (1 + e)) below that). Mindlin's 8G*a on Hertzian
+    unloading (elastic Hertz, Thornton, Stronge) slides throughout for Psi1* >= 7 - 2 lam e/(kappa (1 + e)),
+    lam = 1 incremental, 2/3 with the eq. 18b rescale; a linear spring k_t = q K1 on the latching spring
+    K2 = K1/e^2 (and on the elastic linear spring, e = 1) for Psi1* >= max(2 max(3.5, 1/q)/(1 + e),
+    7 - 2/(q e (1 + e)))."""
     if law.lever != 0.0 or law.integrator != "paper":
         return math.nan, ""
     if law.tangential_damping.rule != "none" and law.damping.name != "none" and law.end == "no-tension":
-        return 7.0, "7 (rigid body: a dashpot-held contact sticks only once V_s reaches 0)"
+        if law.tangential_damping.cone == "total":
+            return 7.0, "7 (rigid body: a dashpot-held contact sticks only once V_s reaches 0)"
+        return spring_first_threshold(law, contact, e_n, speed)
     if law.tangential_damping.rule != "none" or law.damping.name != "none":
         return math.nan, ""
     kappa, normal, tangential = contact.kappa, law.normal.name, law.tangential
@@ -130,12 +136,30 @@ def derived_threshold(law, contact, e_n):
     return math.nan, ""
 
 
+def spring_first_threshold(law, contact, e_n, speed):
+    """The linear spring-dashpot's 7 - 2e/(q (1 + e)) under the spring-first dashpot, where it holds (q >= 2/7, and
+    the dashpot holds the force on the cone at first touch below it: 2 c_n/(c_t (1 + e))); else (NaN, '')."""
+    if law.normal.name != "linear" or law.tangential.name != "linear":
+        return math.nan, ""
+    normal = law.normal.parameters(contact, e_n, speed)
+    q = law.tangential.parameter(contact, normal.linear_stiffness) / normal.linear_stiffness
+    if q < 2.0 / 7.0:
+        return math.nan, ""
+    dashpot = law.damping.dashpot(law.normal, contact, e_n, speed, law.end)
+    k_t = q * normal.linear_stiffness
+    c_t = law.tangential_damping.prefactor(contact, dashpot, normal.linear_stiffness, k_t, e_n) * math.sqrt(k_t)
+    release = 7.0 - 2.0 * e_n / (q * (1.0 + e_n))
+    if not c_t > 0.0 or 2.0 * dashpot.c0 / (c_t * (1.0 + e_n)) >= release:
+        return math.nan, ""
+    return release, "7 - 2e/(q (1 + e)) (the spring leaves the shrinking cone at the release)"
+
+
 def sliding_thresholds(law, scene):
     """One Threshold per e_n of the scene, at the scene's speed held as the normal speed (the paper's figures)."""
     out = []
     for e_n in scene.e_n:
         found, width = simulated_threshold(law, scene, e_n)
-        derived, formula = derived_threshold(law, scene.contact, e_n)
+        derived, formula = derived_threshold(law, scene.contact, e_n, scene.speed)
         out.append(Threshold(e_n, found, width, method(law, scene, e_n), derived, formula))
     return out
 

@@ -1,4 +1,4 @@
-"""`harness paper`: the paper's figure set on its scene: an HTML page and three CSVs."""
+"""`harness paper`: the paper's figure set on its scene: an HTML page and four CSVs."""
 import os
 import sys
 
@@ -7,9 +7,9 @@ from ..laws import LAWS
 from ..lock import exclusive
 from ..paper import figure_set
 from ..results import write_csv
-from ..views.paper_html import NORMAL, OBLIQUE, SLIDING, write_paper_report
+from ..views.paper_html import NORMAL, OBLIQUE, PUBLISHED, SLIDING, write_paper_report
 from ..views.progress import Progress
-from ..views.terminal import text_table
+from ..views.terminal import published_summary, text_table
 from .options import EXIT_OK, add_output_options, check_output_directory
 
 EXAMPLE = "harness paper -o paper/"
@@ -26,7 +26,8 @@ def add(sub, describe):
 
 
 def main(args):
-    """The paper's figure set: paper.csv, paper-normal.csv, paper-sliding.csv and paper.html in DIR."""
+    """The paper's figure set: paper.csv, paper-normal.csv, paper-sliding.csv, paper-published.csv and paper.html
+    in DIR."""
     laws = tuple(LAWS) if args.laws is None else tuple(n.strip() for n in args.laws.split(",") if n.strip())
     unknown = [n for n in laws if n not in LAWS]
     if unknown or not laws:
@@ -35,16 +36,18 @@ def main(args):
         raise UserError(f"--steps-per-contact must be >= 100 for the paper's figures, got {args.steps_per_contact}")
     check_output_directory(args.output)
     with Progress("paper", quiet=args.quiet) as progress:
-        oblique, normal, sliding = figure_set(laws, args.steps_per_contact, progress=progress)
+        oblique, normal, sliding, published = figure_set(laws, args.steps_per_contact, progress=progress)
     with exclusive(args.output):
         write_csv(oblique, os.path.join(args.output, OBLIQUE))
-        for table, name in ((normal, NORMAL), (sliding, SLIDING)):
+        for table, name in ((normal, NORMAL), (sliding, SLIDING), (published, PUBLISHED)):
             write_csv(table, os.path.join(args.output, name))
-        path = write_paper_report(args.output, oblique, normal, sliding, "harness " + " ".join(sys.argv[1:]))
+        path = write_paper_report(args.output, oblique, normal, sliding, "harness " + " ".join(sys.argv[1:]),
+                                  published)
     if not args.quiet:
         print(text_table(sliding, ["model", "e_n_target", "simulated", "derived", "difference"],
                          {"simulated": "{:.4f}", "derived": "{:.4f}", "difference": "{:+.1e}"}))
+        if not published.empty:
+            print(published_summary(published))
     print(f"wrote {path}")
     return EXIT_OK
-
 

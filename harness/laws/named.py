@@ -16,7 +16,8 @@ from ..submodels.tangential_damping import TangentialDashpot
 from ..errors import UserError
 from .law import Law, replace_submodels
 
-PAPER_TANGENTIAL_DASHPOT = TangentialDashpot("normal-ratio")   # c_t = 2 g sqrt(m k_t), g of the normal dashpot
+PAPER_TANGENTIAL_DASHPOT = TangentialDashpot("normal-ratio")   # c_t = 2 g sqrt(m k_t), g of the normal dashpot,
+                                                               # on a sticking spring (docs/laws.md)
 
 LAWS = {
     "linear-spring-dashpot": Law(
@@ -24,13 +25,13 @@ LAWS = {
         PAPER_TANGENTIAL_DASHPOT,
         summary="Walton's linear spring-dashpot as the paper uses it: k_n gives the elastic Hertz contact duration "
                 "at V, no tension, g exact (Schwager & Poeschel 2007), k_t/k_n = kappa, tangential dashpot "
-                "c_t = 2 g sqrt(m k_t) while sticking"),
+                "c_t = 2 g sqrt(m k_t) while the spring sticks"),
     "hertz-mindlin": Law(
         "hertz-mindlin", Hertz(), TsujiDashpot("appendix-b"), "no-tension", Mindlin("rescale"),
         PAPER_TANGENTIAL_DASHPOT,
         summary="Hertz + Tsuji-type dashpot calibrated by Thornton et al. (2013) App. B on the tangent stiffness "
                 "2E*a, no tension; Mindlin 8G*a with the eq. 18b unloading rescale; tangential dashpot "
-                "c_t = 2 g sqrt(m 8G*a) while sticking"),
+                "c_t = 2 g sqrt(m 8G*a) while the spring sticks"),
     "hertz-kuwabara-kono": Law(
         "hertz-kuwabara-kono", Hertz(), KuwabaraKonoDashpot(), "no-tension", Mindlin("rescale"),
         summary="Hertz + Kuwabara-Kono dashpot (Zhou et al. 1999 form), A calibrated at the scene speed; "

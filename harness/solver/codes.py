@@ -33,7 +33,9 @@ P_GRADE_T, P_GRADE_N = 22, 23                # > 0: graded steps, N of them over
 P_TORQUE_LEVER = 24                          # torque lever R - P_TORQUE_LEVER alpha in the Verlet schemes (= P_LEVER
                                              # but for LAMMPS' pairs: slip from full radii, torque from R_i - d/2)
 P_R1, P_R2, P_INV_I1, P_INV_I2, P_W2 = 25, 26, 27, 28, 29   # two spheres: radii, 1/inertias (0: fixed), target's spin
-N_PARAMS = 30
+P_TCONE = 30                                 # the paper scheme's Coulomb test with a tangential dashpot: 0 the
+                                             # spring's first, 1 spring plus dashpot (tangential_damping.CONES)
+N_PARAMS = 31
 
 # per-impact integer slots
 I_NORMAL, I_END, I_TANGENTIAL, I_INTEGRATOR = 0, 1, 2, 3
@@ -42,7 +44,8 @@ N_INTS = 4
 # outputs
 O_VZ, O_VX, O_W, O_TC, O_FMAX, O_AMAX, O_STEPS, O_STATUS = 0, 1, 2, 3, 4, 5, 6, 7
 O_ACCEPTED = 8              # adaptive integrator: accepted steps (O_STEPS counts its force evaluations)
-O_STICKING = 9              # kernel: steps ending with |F_t| strictly inside the Coulomb cone (F_n > 0); adaptive:
+O_STICKING = 9              # kernel: steps ending with |F_t| strictly inside the Coulomb cone (F_n > 0) or on its
+                            # other side from the step before (a dashpot can carry it across); adaptive:
                             # stick phases begun, first touch included (an implicit spring: one more, never on it)
 N_OUT = 10
 

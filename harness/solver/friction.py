@@ -60,17 +60,23 @@ def capped_total(ot, p, code, a, f_s, slip, limit):
 
 @njit(cache=True, inline="always")
 def damped_friction(ot, p, code, h, a, f_s, slip, limit, lever):
-    """The paper scheme's spring and tangential dashpot: the spring is held within the Coulomb cone, and the total
-    F_s - c_t V_s, with V_s at the step's end (implicit: V_s(end) = V_s(half) + h/2 F_t (1/m + lever^2/I)), is the
-    tangential force clipped to mu F_n: the dashpot acts while the contact sticks, and its share shrinks
-    continuously to nothing in gross sliding (docs/laws.md#tangential-dashpot). Returns (F_t, F_s); T_HELD =
-    |total| - mu F_n."""
+    """The paper scheme's spring and tangential dashpot, F_s - c_t V_s with V_s at the step's end (implicit:
+    V_s(end) = V_s(half) + h/2 F_t (1/m + lever^2/I); docs/laws.md#tangential-dashpot). Spring first (P_TCONE 0): a
+    spring beyond mu F_n slides on the cone and is the whole force, a sticking one gets the dashpot, the sum clipped
+    to mu F_n. Total (P_TCONE 1): the spring held within the cone, then the sum clipped. Returns (F_t, F_s); T_HELD
+    = |F_s| - mu F_n for a sliding spring, else the sum's excess over mu F_n, along the spring for spring first (a
+    dashpot carrying the force across the cone ends the slide, an event)."""
     if abs(f_s) > limit:
         f_s = cap(f_s, limit)
         tangential_after_cap(code, f_s, p[C.P_T1], a, ot)
+        if p[C.P_TCONE] == 0.0:
+            return f_s, f_s
     c_t = p[C.P_TDAMP] * math.sqrt(tangential_stiffness(code, p[C.P_T1], a))
     trial = (f_s - c_t * slip) / (1.0 + 0.5 * h * c_t * (1.0 / p[C.P_MASS] + lever * lever / p[C.P_INERTIA]))
-    ot[T_HELD] = abs(trial) - limit
+    if p[C.P_TCONE] == 0.0 and f_s != 0.0:
+        ot[T_HELD] = trial * math.copysign(1.0, f_s) - limit    # held on the spring's side of the cone
+    else:
+        ot[T_HELD] = abs(trial) - limit
     return cap(trial, limit), f_s
 
 

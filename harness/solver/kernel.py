@@ -128,8 +128,8 @@ def integrate_rows(first, last, params, ints, out, history, stride, ext, work):
                     status = C.STATUS_OK
             f_now, a_now = o[S_FN], o[S_ALPHA]
             if row_ints[C.I_TANGENTIAL] != TANGENTIAL_NONE and f_now > 0.0 and \
-                    abs(o[S_FT]) < (1.0 - CONE_BAND) * p[C.P_MU] * f_now:
-                stick_steps += 1
+                    (abs(o[S_FT]) < (1.0 - CONE_BAND) * p[C.P_MU] * f_now or o[S_FT] * s[S_FT] < 0.0):
+                stick_steps += 1                       # inside the cone, or across it to its other side
             if paper:                                  # the last samples of F_n, for its interpolated peak
                 for j in range(PEAK_POINTS - 1):
                     sample_t[j], sample_f[j] = sample_t[j + 1], sample_f[j + 1]

@@ -6,6 +6,7 @@ import numpy as np
 from ..errors import UserError
 
 from ..submodels.registry import kernel_code
+from ..submodels.tangential_damping import CONE_CODES
 from . import codes as C
 from .dispatch import TANGENTIAL_NONE
 from .stability import check_time_step
@@ -105,8 +106,9 @@ def plan_batch(law, scene, e_n, steps_per_contact, check_stability=True, every_e
     if tangential.any():
         params[:, C.P_T1] = k_t = law.tangential.parameter(contact, normal.linear_stiffness)
         constant_k_t = k_t if law.tangential.constant_stiffness else None
-        g_t = law.tangential_damping.ratio(dashpot, normal.linear_stiffness, constant_k_t, e_n)
-        params[:, C.P_TDAMP] = 2.0 * g_t * np.sqrt(contact.mass)
+        params[:, C.P_TDAMP] = law.tangential_damping.prefactor(contact, dashpot, normal.linear_stiffness,
+                                                                constant_k_t, e_n)
+        params[:, C.P_TCONE] = CONE_CODES[law.tangential_damping.cone]
     params[:, C.P_LEVER] = law.lever
     params[:, C.P_TORQUE_LEVER] = law.lever if law.torque == "lever" else contact_point_lever(scene)
     if law.integrator.endswith("-pair"):                  # each body's own levers R_i - c alpha and spins

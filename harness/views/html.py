@@ -10,6 +10,7 @@ from ..kinematics import CONVENTIONS
 from ..render import environment
 from ..version import __version__
 from ..analyses.verdict import verdict
+from ..digitised import published_curves_apply
 from . import style
 from .drawing import draw_all
 from .pieces import figure_svg, number, records, si
@@ -37,16 +38,21 @@ def run_facts(frame, arithmetic):
     return pd.DataFrame(rows)
 
 
-def series_figure(frame, title, x, ys, thresholds=None):
+def series_figure(frame, title, x, ys, thresholds=None, published=None):
     """One panel per e_n; one curve per (engine, dialect) and y column, in the colours and line styles of
-    views.style. Against Psi1* the paper's axes and ranges, the rigid body's curve and, where known, the
-    sliding-throughout threshold of the paper law (dotted)."""
+    views.style. Against Psi1* the paper's axes and ranges, the rigid body's curve, where known the
+    sliding-throughout threshold of the paper law (dotted) and, with `published` (the law's name, where the paper's
+    published curves apply to the scene: digitised.published_curves_apply), the paper's points."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    from .paper_axes import ANGLE_LABELS, PANELS, draw_rigid_body, in_window, set_paper_axes
+    from ..digitised import points_of
+    from .paper_axes import (ANGLE_LABELS, PANELS, PSI1_RANGE, draw_published, draw_rigid_body, in_window,
+                             set_paper_axes)
     paper = x == "psi1_star"
+    beyond = {}
     if paper:
+        beyond = frame[frame.psi1_star > PSI1_RANGE[1]].groupby("e_n_target").theta_deg.nunique().to_dict()
         frame = in_window(frame)
     groups = list(frame.groupby("e_n_target", sort=False))
     fig, axes = plt.subplots(1, len(groups), figsize=(3.4 * len(groups), 3.6), squeeze=False, layout="constrained")
@@ -59,7 +65,11 @@ def series_figure(frame, title, x, ys, thresholds=None):
                         **style.curve(engine, dialect))
         if paper:
             draw_rigid_body(ax, ys[0])
-            set_paper_axes(ax, ys[0], dict((c, label) for c, label, _ in PANELS)[ys[0]])
+            if published:
+                points = points_of(published, ys[0], e_n)
+                if not points.empty:
+                    draw_published(ax, points, "tab:red", "published (TCC13, digitised)")
+            set_paper_axes(ax, ys[0], dict((c, label) for c, label, _ in PANELS)[ys[0]], int(beyond.get(e_n, 0)))
             threshold = (thresholds or {}).get(e_n)
             if threshold is not None and np.isfinite(threshold):
                 ax.axvline(threshold, color="0.4", ls=":", lw=1, label=f"slides throughout (Psi1* >= {threshold:.3f})")
@@ -176,10 +186,11 @@ def compare_context(comparison, files=()):
     paper = frame[(frame.engine == "reference") & (frame.dialect == "paper")]
     oblique = frame[frame.psi1_star > 0]
     calls = []
+    published = law.name if published_curves_apply(scene, law.name) else None
     if not oblique.empty:
         for title, x, ys in PANELS:
             figures.append(f"{law.name}: {title}")
-            calls.append((series_figure, (oblique, title, x, ys, sliding_lines(sliding))))
+            calls.append((series_figure, (oblique, title, x, ys, sliding_lines(sliding), published)))
     normal_rows = paper[paper.theta_deg == 0.0]
     ratios = records(hertz_ratios(normal_rows, scene.contact, scene.speed)) if not normal_rows.empty else None
     if histories:

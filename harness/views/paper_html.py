@@ -7,20 +7,24 @@ import numpy as np
 from ..files import write_text
 from ..kinematics import CONVENTIONS
 from ..laws import LAWS
+from ..analyses.published import GOAL
+from ..digitised import points_of, provenance
 from ..paper import ELASTIC, PSI1_GRID
 from ..render import environment
 from ..version import __version__
 from .drawing import draw_all
-from .paper_axes import PANELS, draw_rigid_body, set_paper_axes
+from .paper_axes import PANELS, draw_published, draw_rigid_body, set_paper_axes
 from .pieces import figure_svg, records
 
-OBLIQUE, NORMAL, SLIDING = "paper.csv", "paper-normal.csv", "paper-sliding.csv"
+OBLIQUE, NORMAL, SLIDING, PUBLISHED = "paper.csv", "paper-normal.csv", "paper-sliding.csv", "paper-published.csv"
+PUBLISHED_LABEL = "published (TCC13, digitised)"
 COLOURS = ("#1b9e77", "#d95f02", "#7570b3", "#e7298a", "#66a61e", "#e6ab02")    # one per e_n, in every figure
 
 
 def law_figure(oblique, sliding, name):
     """Psi2*, Omega* and e_t against Psi1* for one law: one curve per e_n, elastic Hertz-Mindlin and the rigid body
-    dashed, the simulated sliding-throughout thresholds dotted in each e_n's colour."""
+    dashed, the simulated sliding-throughout thresholds dotted and the paper's published points (open circles) in
+    each e_n's colour."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -29,11 +33,16 @@ def law_figure(oblique, sliding, name):
     thresholds = dict(zip(sliding[sliding.model == name].e_n_target, sliding[sliding.model == name].simulated))
     fig, axes = plt.subplots(1, len(PANELS), figsize=(4.2 * len(PANELS), 3.8), constrained_layout=True)
     for ax, (column, label, _) in zip(axes, PANELS):
+        published = False
         for colour, (e_n, group) in zip(COLOURS, rows.groupby("e_n_target", sort=True)):
             group = group.sort_values("psi1_star")
             ax.plot(group.psi1_star, group[column], color=colour, lw=1.4, label=f"e_n = {e_n:g}")
             if np.isfinite(thresholds.get(e_n, np.nan)):
                 ax.axvline(thresholds[e_n], color=colour, ls=":", lw=1)
+            points = points_of(name, column, e_n)
+            if not points.empty:
+                draw_published(ax, points, colour, None if published else PUBLISHED_LABEL)
+                published = True
         ax.plot(elastic.psi1_star, elastic[column], color="0.3", ls=":", lw=1.4, label="elastic Hertz-Mindlin")
         draw_rigid_body(ax, column)
         set_paper_axes(ax, column, label)
@@ -65,8 +74,8 @@ def normal_figure(normal):
     return svg
 
 
-def write_paper_report(out_dir, oblique, normal, sliding, command):
-    """DIR/paper.html from the three tables; returns its path."""
+def write_paper_report(out_dir, oblique, normal, sliding, command, published=None):
+    """DIR/paper.html from the tables (the distances from the published points, when given); returns its path."""
     names = [n for n in oblique.model.unique() if n != ELASTIC]
     calls = [(law_figure, (oblique, sliding, name)) for name in names] + [(normal_figure, (normal,))]
     figures = list(zip(names + ["contact duration and peak force against e_n"], draw_all(calls)))
@@ -74,6 +83,8 @@ def write_paper_report(out_dir, oblique, normal, sliding, command):
     html = environment(autoescape=True).get_template("paper.html.j2").render(
         figures=figures, laws=[LAWS[n] for n in names], sliding=records(sliding.drop(columns=["method"])),
         methods=sorted(set(sliding.method)), normal=records(at_paper_en.round(4)), conventions=CONVENTIONS,
-        psi_points=len(PSI1_GRID), command=command, version=__version__,
-        date=datetime.datetime.now().strftime("%Y-%m-%d %H:%M"), files=(OBLIQUE, NORMAL, SLIDING))
+        psi_points=len(PSI1_GRID), psi_from=PSI1_GRID[0], command=command, version=__version__,
+        published=records(published.round(4)) if published is not None and not published.empty else None,
+        goal=GOAL, provenance=provenance(), date=datetime.datetime.now().strftime("%Y-%m-%d %H:%M"),
+        files=(OBLIQUE, NORMAL, SLIDING) + ((PUBLISHED,) if published is not None else ()))
     return write_text(os.path.join(out_dir, "paper.html"), html)

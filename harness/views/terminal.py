@@ -1,4 +1,4 @@
-"""The terminal view: fixed-width tables and what compare, check and cost print."""
+"""The terminal view: fixed-width tables and what compare, check, cost and paper print."""
 from ..analyses.physics import CHECK_WORDS, Tolerances
 
 
@@ -216,3 +216,18 @@ def print_cost(table, uncertainty, law, scene, ladder, skipped, failures):
     print(text_table(orders, ["engine", "dialect", *METRICS], {m: "{:.2f}" for m in METRICS}))
     for failure in failures:
         print(f"\n{failure.engine} failed at e_n = {failure.e_n:g}: {failure.message}\n{failure.log_tail}")
+
+
+def published_summary(published):
+    """The distances from the paper's published points (analyses/published.py) as a table, and the goal's verdict."""
+    from ..analyses.published import GOAL, meets_goal
+    table = text_table(published, ["model", "e_n_target", "quantity", "points", "rms", "worst", "psi1_star_at_worst",
+                                   "published_at_worst", "reference_at_worst"],
+                       {"rms": "{:.3f}", "worst": "{:.3f}", "psi1_star_at_worst": "{:.2f}",
+                        "published_at_worst": "{:.3f}", "reference_at_worst": "{:.3f}"})
+    outside = published[~meets_goal(published)]
+    verdict = (f"every law, e_n and quantity within the goal (worst <= {GOAL['worst']}, RMS <= {GOAL['rms']})"
+               if outside.empty else f"{len(outside)} of {len(published)} outside the goal (worst <= "
+                                     f"{GOAL['worst']}, RMS <= {GOAL['rms']})")
+    return (f"distance from the paper's published points (e_t's x10):\n{table}\n"
+            f"largest: RMS {published.rms.max():.3f}, worst {published.worst.max():.3f}; {verdict}")

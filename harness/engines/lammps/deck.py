@@ -30,14 +30,13 @@ def settings(law, scene, e_n, options=None):
     stiffness = own.normal.parameters(c, e_n, scene.speed)
     dashpot = own.damping.dashpot(own.normal, c, e_n, scene.speed, own.end)
     k_t = own.tangential.parameter(c, stiffness.linear_stiffness)
-    g_t = own.tangential_damping.ratio(dashpot, stiffness.linear_stiffness,
-                                       k_t if own.tangential.constant_stiffness else None, e_n)
-    c_t = 2.0 * g_t * math.sqrt(c.mass)                 # c_t = this sqrt(k_t)
+    c_t = own.tangential_damping.prefactor(c, dashpot, stiffness.linear_stiffness,     # c_t = this sqrt(k_t)
+                                           k_t if own.tangential.constant_stiffness else None, e_n)
     values = dict(style=style, normal=normal, damping=damping, tangential=tangential, normal_args=[],
                   history_args=[], dampflag=0, k_t=None, x_gamma_t=0.0)
     if style == "hooke/history":
         values.update(history_args=[stiffness.values[0], k_t, dashpot.c0 / c.mass, c_t * math.sqrt(k_t) / c.mass,
-                                    scene.mu], dampflag=1 if g_t else 0)
+                                    scene.mu], dampflag=1 if c_t else 0)
     elif style == "hertz/history":
         values.update(history_args=[4.0 / 3.0 * stiffness.values[0], 8.0 * k_t,
                                     dashpot.c0 / (c.mass * math.sqrt(c.radius)), 0.0, scene.mu])
@@ -47,7 +46,7 @@ def settings(law, scene, e_n, options=None):
     else:
         coefficient = {"tsuji": e_n, "viscoelastic": dashpot.c0 / (c.mass * math.sqrt(c.radius))}[damping]
         values.update(normal_args=[scene.E, coefficient, scene.nu],
-                      x_gamma_t=c_t * math.sqrt(8.0 * k_t * math.sqrt(c.radius)) / dashpot.c0 if g_t else 0.0)
+                      x_gamma_t=c_t * math.sqrt(8.0 * k_t * math.sqrt(c.radius)) / dashpot.c0 if c_t else 0.0)
     return values
 
 
