@@ -41,7 +41,7 @@ def print_summary(record, comparison, written):
         tolerances = Tolerances.of(record["tolerances"]).describe()
         print(wrapped(f"does each engine reproduce the paper law on this scene? ({tolerances})"))
         for e, name in zip(engines, names):
-            print(wrapped(f"  {name:{width}s} {physics_phrase(e['physics'])}", indent=width + 16))
+            print(wrapped(f"  {name:{width}s} {physics_phrase(e['physics'])}", indent=6))
         print(f"agreement with its own formulas at equal time step (tolerance {engines[0]['tolerance']:.0e}):")
         for e, name in zip(engines, names):
             worst = e["worst"]
