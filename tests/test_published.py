@@ -167,11 +167,16 @@ def test_compare_figure_grows_its_axis_to_the_data():
 
 def test_compare_report_overlays_only_where_the_paper_applies():
     """compare's Psi1* figures get the published points on the paper's scene for a covered law (one per panel), and
-    none where mu differs from the paper's."""
+    its report the distance table, and neither where mu differs from the paper's."""
     import harness
     from harness.views.html import compare_context
     for mu, expected in ((0.1, 3), (0.3, 0)):
         comparison = harness.compare("hertz-mindlin", engines=[], en=[0.5], angles=[20, 40, 60], mu=mu,
                                      steps_per_contact=200)
-        figures = compare_context(comparison)["figures"]
-        assert sum(svg_ids(svg, "published-points") for _, svg in figures) == expected, mu
+        context = compare_context(comparison)
+        assert sum(svg_ids(svg, "published-points") for _, svg in context["figures"]) == expected, mu
+        distances = context["published"]
+        assert (distances is not None) == bool(expected)
+        if distances:
+            columns, rows = distances
+            assert [row[columns.index("quantity")] for row in rows] == ["psi2_star", "omega_star", "e_t"]

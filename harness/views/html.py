@@ -10,6 +10,7 @@ from ..kinematics import CONVENTIONS
 from ..render import environment
 from ..version import __version__
 from ..analyses.verdict import verdict
+from ..analyses.published import published_distances
 from ..digitised import published_curves_apply
 from . import style
 from .drawing import draw_all
@@ -202,6 +203,7 @@ def compare_context(comparison, files=()):
         t_contact_max=("t_contact", "max"), f_n_max=("f_n_max", "max"), ke_ratio_max=("ke_ratio", "max"),
         rows=("status", "size")).reset_index()
     precision = pd.DataFrame([comparison.precision]) if comparison.precision else None
+    distances = published_distances(paper) if published else None
     record = verdict(comparison)
     checks = pd.DataFrame([{"engine": e["engine"], "check": CHECK_WORDS[c["check"]], "passed": c["passed"],
                             "tolerance": c["tolerance"], "worst": c.get("worst"), "impacts": c["impacts"],
@@ -215,5 +217,5 @@ def compare_context(comparison, files=()):
                 ran=engines_ran(frame), facts=records(run_facts(frame, arithmetic(comparison.engine_options))),
                 agreement=records(comparison.agreement), physics=records(checks), deviation=records(comparison.deviation), cross=cross,
                 findings=records(comparison.findings), failures=comparison.failures, precision=records(precision),
-                ratios=ratios, sliding=records(sliding),
+                ratios=ratios, sliding=records(sliding), published=records(distances),
                 attributions=[(name, records(table)) for name, table in comparison.attribution.items()])
