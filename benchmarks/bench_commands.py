@@ -4,8 +4,9 @@ times each since these machines are noisy; min and median. The README's and docs
 
     .venv/bin/python benchmarks/bench_commands.py [--smoke] [--repeat N]
 
-Commands: the quick start's `harness compare --model hertz-mindlin` (every engine installed), `harness paper`, and
-`harness cost --model hertz-mindlin` (warm, once: it takes minutes). --smoke runs each on its smallest scene, once.
+Commands: the quick start's `harness compare --model hertz-mindlin` (every engine installed), `harness paper`, then
+warm and once each `harness cost --model hertz-mindlin` (it takes minutes) and `harness benchmark chung-ooi` on the
+reference and on every engine. --smoke runs compare, paper and cost on their smallest scenes, once.
 """
 import argparse
 import os
@@ -25,6 +26,8 @@ SMOKE = {
     "compare --model hertz-mindlin": ["compare", "--model", "hertz-mindlin", "--en", "0.5", "--angles", "10,40"],
     "paper": ["paper", "--laws", "linear-spring-dashpot", "--steps-per-contact", "200"],
 }
+CHUNG_OOI = {"benchmark chung-ooi --engines reference": ["benchmark", "chung-ooi", "--engines", "reference"],
+             "benchmark chung-ooi (every engine)": ["benchmark", "chung-ooi"]}
 COST = {"full": ["cost", "--model", "hertz-mindlin"],
         "smoke": ["cost", "--model", "hertz-mindlin", "--en", "0.5", "--angles", "10,40", "--ladder", "20,40",
                   "--engines", "reference"]}
@@ -72,9 +75,10 @@ def main():
             print(f"{label:34s} {spread(cold):>22s} {spread(warm):>22s} {repeat:5d}")
         cache = tempfile.mkdtemp(dir=scratch)
         timed(commands["compare --model hertz-mindlin"], cache, scratch)          # compiles the cost's kernels
-        cost = COST["smoke" if args.smoke else "full"]
-        wall = timed(cost, cache, scratch)
-        print(f"{'cost --model hertz-mindlin':34s} {'':>22s} {wall:15.1f} (once) {1:5d}")
+        for label, arguments in (("cost --model hertz-mindlin", COST["smoke" if args.smoke else "full"]),
+                                 *CHUNG_OOI.items()):
+            wall = timed(arguments, cache, scratch)
+            print(f"{label:34s} {'':>22s} {wall:15.1f} (once) {1:5d}")
     finally:
         shutil.rmtree(scratch, ignore_errors=True)
 
