@@ -51,3 +51,23 @@ def test_undeclared_options_are_one_line_user_errors(name):
 def test_an_unknown_engine_names_the_known_ones():
     with pytest.raises(UserError, match="unknown engine 'abaqus'; known: reference, liggghts, yade"):
         get_engine("abaqus")
+
+
+@pytest.mark.parametrize("name", [pytest.param(n, marks=[pytest.mark.engine, pytest.mark.skipif(
+    not ENGINES[n].available(), reason=f"{n} is not installed")]) for n in ("liggghts", "lammps")])
+def test_decks_sharing_one_process_each_get_their_own_step_budget(name):
+    """`clear` keeps LIGGGHTS' and LAMMPS' loop variables: a deck's `variable chunk loop` would carry on an earlier
+    deck's count and stop before its spheres separate. 120 decks of one two-sphere impact in one process (each uses
+    ~10 of its ~400 chunks, so without the deletion the later ones run out) all return the same, separated rebound."""
+    from harness.bodies import Sphere
+    from harness.laws import compose
+    from harness.plan import engine_runs
+    from harness.scene import Scene
+    from harness.two_spheres import reduce
+    engine = ENGINES[name]
+    scene = Scene(e_n=(0.5,), angles_deg=None, v_t=(0.0,), speed=0.4, radius=0.1, E=7e10, nu=0.33, rho=2700.0)
+    (run,) = engine_runs(engine, compose("hertz-mindlin"), reduce(scene, Sphere(0.1, 7e10, 0.33, 2700.0)), 100)
+    done = engine.run([run] * 120)
+    frames = [frame for frame, failure in done if failure is None]
+    assert len(frames) == 120 and all((frame.status == "ok").all() for frame in frames)
+    assert len({round(float(frame.e_n.iat[0]), 12) for frame in frames}) == 1

@@ -348,18 +348,3 @@ def test_liggghts_takes_a_sphere_target_for_all_but_thornton_ning():
     assert liggghts.target_reason("walton-braun", scene_from(target="sphere")) == ""
     assert liggghts.target_reason("linear-spring-dashpot", scene_from(target="sphere")) == ""
     assert liggghts.target_reason(law, scene_from()) == ""
-
-
-@needs("liggghts")
-def test_decks_sharing_one_process_each_get_their_own_step_budget():
-    """`clear` keeps LIGGGHTS' loop variables: a deck's `variable chunk loop` would carry on an earlier deck's count
-    and stop before its spheres separate. 120 decks of one two-sphere impact in one process (each uses ~10 of its
-    ~400 chunks, so without the deletion the later ones run out) all return the same, separated rebound."""
-    from harness.bodies import Sphere
-    from harness.two_spheres import reduce
-    scene = Scene(e_n=(0.5,), angles_deg=None, v_t=(0.0,), speed=0.4, radius=0.1, E=7e10, nu=0.33, rho=2700.0)
-    (run,) = engine_runs(liggghts, compose("hertz-mindlin"), reduce(scene, Sphere(0.1, 7e10, 0.33, 2700.0)), 100)
-    done = liggghts.run([run] * 120)
-    frames = [frame for frame, failure in done if failure is None]
-    assert len(frames) == 120 and all((frame.status == "ok").all() for frame in frames)
-    assert len({round(float(frame.e_n.iat[0]), 12) for frame in frames}) == 1
