@@ -46,18 +46,48 @@ SMALL_STRAIN = 0.1     # overlap / R: contact radius a = sqrt(R alpha) <= 0.3 R,
                        # law built on it assume (a << R)
 
 
+MOTION = ("v_n1", "v_t1", "omega1", "e_n", "theta_r_com_deg", "theta_r_cp_deg", "ke_ratio")   # finite in any ok row
+MEASURED = ("t_contact", "f_n_max", "overlap_max")      # finite in the reference's ok rows (no engine run measures
+                                                        # them: NaN there means not measured)
+RATIOS = {   # NaN only where its denominator is 0 (undefined; +-inf where it is tiny is the limit): column -> which
+    "e_t": ("v_t0",), "beta": ("slip0",), "psi1_maw": ("mu",), "psi2_maw": ("mu",), "psi1_star": ("mu",),
+    "psi2_star": ("mu",), "omega_star": ("mu",)}
+
+
+def undefined(frame):
+    """{ratio column: rows where its denominator is 0} (V_t for e_t, the incident slip for beta, mu for the paper's
+    and Maw's normalisations)."""
+    zero = {"v_t0": frame.v_t0.to_numpy(float) == 0.0, "mu": frame.mu.to_numpy(float) == 0.0,
+            "slip0": (frame.v_t0.to_numpy(float) - frame.radius.to_numpy(float) * frame.omega0.to_numpy(float)) == 0.0}
+    return {column: np.logical_or.reduce([zero[d] for d in denominators]) for column, denominators in RATIOS.items()}
+
+
+def non_finite(frame):
+    """Per row, the outcome columns that are not finite where they must be ("" when none): the rebound, e_n, the
+    angles and the energy ratio always; contact time, peak force and overlap in the reference's rows; a ratio NaN
+    where its denominator is not 0."""
+    reference = frame.engine.to_numpy() == "reference"
+    allowed = undefined(frame)
+    bad = {c: ~np.isfinite(frame[c].to_numpy(float)) for c in MOTION}
+    bad.update({c: reference & ~np.isfinite(frame[c].to_numpy(float)) for c in MEASURED})
+    bad.update({c: ~allowed[c] & np.isnan(frame[c].to_numpy(float)) for c in RATIOS})
+    return [", ".join(c for c in bad if bad[c][i]) for i in range(len(frame))]
+
+
 def mark_invalid(frame, pair=False):
     """Rows that ran but whose result is physically meaningless get status "invalid" and the reason: an overlap
     beyond the small-strain range, a negative e_n (for two spheres: along the line of centres at first touch, which
-    an engine's turns as they pass each other), a kinetic energy ratio that is not finite."""
+    an engine's turns as they pass each other), a value that is not finite where it is defined (docs/results.md)."""
     ok = frame.status.to_numpy() == "ok"
     overlap = frame.overlap_max.to_numpy(float) / frame.radius.to_numpy(float)
+    missing = non_finite(frame)
     reasons = [(overlap > SMALL_STRAIN, lambda i: f"overlap {overlap[i]:.3g} R exceeds the small-strain range "
                                                   f"({SMALL_STRAIN:g} R) of the law"),
                (frame.e_n.to_numpy(float) < 0.0, lambda i: f"e_n {frame.e_n.iat[i]:.3g} < 0: " + (
                    "along the first line of centres, which turned as the spheres passed" if pair else
                    "the sphere did not rebound")),
-               (~np.isfinite(frame.ke_ratio.to_numpy(float)), lambda i: "kinetic energy ratio not finite")]
+               (~np.isfinite(frame.ke_ratio.to_numpy(float)), lambda i: "kinetic energy ratio not finite"),
+               (np.array([bool(m) for m in missing], dtype=bool), lambda i: f"not finite: {missing[i]}")]
     for bad, why in reasons:
         for i in np.flatnonzero(ok & bad):
             frame.iat[i, frame.columns.get_loc("status")] = "invalid"
