@@ -7,6 +7,7 @@ import pandas as pd
 from .errors import UserError
 from .files import write_text
 from .kinematics import rebound_quantities
+from .reading import read_table
 
 IDENTITY = ("model", "dialect", "engine", "engine_version", "e_n_target", "mu", "theta_deg", "v_n0", "v_t0", "omega0",
             "radius", "E", "nu", "rho", "dt", "steps_per_contact")
@@ -104,15 +105,18 @@ def write_csv(frame, path):
     write_text(path, frame.to_csv(index=False, float_format="%.17g"))
 
 
+TEXT = ("model", "dialect", "engine", "engine_version", "status", "message")     # every other column is a number
+
+
 def read_csv(path):
-    """Read a results table; a missing or foreign file is a user error."""
+    """Read a results table (a regular file holding every column, numbers where numbers belong); a missing, foreign
+    or damaged file is a user error."""
     try:
-        frame = pd.read_csv(path, keep_default_na=True)
-    except (OSError, pd.errors.ParserError, UnicodeDecodeError, pd.errors.EmptyDataError) as exc:
-        raise UserError(f"cannot read results table {path}: {exc}") from None
-    missing = [c for c in COLUMNS if c not in frame.columns]
-    if missing:
-        raise UserError(f"{path} is not a harness results table (missing {', '.join(missing[:3])}...)")
+        frame = read_table(path, COLUMNS, [c for c in COLUMNS if c not in TEXT], "results table", TEXT)
+    except FileNotFoundError:
+        raise UserError(f"cannot read results table {path}: no such file") from None
+    if frame.empty and not len(frame.columns):
+        raise UserError(f"cannot read results table {path}: the file is empty")
     cut = frame[["model", "engine", "dialect", "status"]].isna().any(axis=1).to_numpy()
     if cut.any():
         raise UserError(f"{path} is cut or damaged at data row {int(cut.argmax()) + 1} (a row without its "
