@@ -217,16 +217,46 @@ def check_output_file(path):
     writable(directory, path)
 
 
-def check_output_directory(path):
+def check_output_directory(path, what="output directory"):
     """An output directory the user names: an existing, writable directory, or a new one below a writable one."""
     if not path:
-        raise UserError("the output directory is empty")
+        raise UserError(f"the {what} is empty")
     if os.path.lexists(path) and not os.path.isdir(path):
-        raise UserError(f"output {path} exists and is not a directory")
+        raise UserError(f"{what.split()[0]} {path} exists and is not a directory")
     existing = os.path.abspath(path)
     while not os.path.isdir(existing):
         existing = os.path.dirname(existing)
     writable(existing, path)
+
+
+def check_store(path):
+    """--store STORE: a directory (a campaign store) or a new one below a writable directory."""
+    if path is not None:
+        check_output_directory(path, "store directory")
+
+
+def check_entries(directory, files=(), directories=()):
+    """Before anything is written into DIR: each of its entries a command would write or read back is absent or a
+    regular file (each of `directories` absent or a directory), so that no refusal comes after other files were
+    written and no FIFO is ever opened."""
+    if not os.path.isdir(directory):
+        return
+    for name in files:
+        refuse_unless_regular(os.path.join(directory, name))
+    for name in directories:
+        path = os.path.join(directory, name)
+        if os.path.lexists(path) and (os.path.islink(path) or not os.path.isdir(path)):
+            raise UserError(f"will not write into {path}: it is not a directory")
+
+
+def check_results_directory(directory):
+    """A compare's or cost study's -o DIR: a directory whose entries (the tables, run records and report that
+    `compare`, `cost` and `report` write or read, the lock, the partial runs) may all be written."""
+    from ..lock import LOCK
+    from ..outputs import DIRECTORY_FILES
+    from ..partial import PARTIAL
+    check_output_directory(directory)
+    check_entries(directory, DIRECTORY_FILES + (LOCK,), (PARTIAL,))
 
 
 def writable(directory, path):
