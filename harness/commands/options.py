@@ -225,6 +225,8 @@ def check_output_directory(path, what="output directory"):
         raise UserError(f"{what.split()[0]} {path} exists and is not a directory")
     existing = os.path.abspath(path)
     while not os.path.isdir(existing):
+        if os.path.lexists(existing):
+            raise UserError(f"cannot create {path}: {existing} exists and is not a directory")
         existing = os.path.dirname(existing)
     writable(existing, path)
 
