@@ -74,8 +74,8 @@ class Comparison:
 
     @property
     def reference_only(self):
-        """The reference alone was asked for: no engine's agreement is in question."""
-        return self.requested is not None and set(self.requested) == {"reference"}
+        """The reference alone (or no engine) was asked for: no engine's agreement is in question."""
+        return self.requested is not None and set(self.requested) <= {"reference"}
 
     @property
     def ok(self):

@@ -147,12 +147,11 @@ def resolution_from(steps_per_contact=None, dt=None, converged=False):
 
 
 def engines_asked(names):
-    """The engines asked for (None: every engine that supports the law): known names, each once."""
+    """The engines asked for (None: every engine that supports the law; none: the reference alone): known names,
+    each once."""
     from .engines import get_engine
     if names is None:
         return None
-    if not names:
-        raise UserError("--engines needs at least one engine name")
     for name in names:
         get_engine(name)
     repeated = sorted({n for n in names if names.count(n) > 1})
