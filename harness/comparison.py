@@ -13,8 +13,8 @@ from .analyses.physics import Tolerances, engine_physics, overall
 
 @dataclass
 class Comparison:
-    """What `harness compare` and `harness.compare()` produce; `ok` is the agreement verdict (each engine computes
-    its own formulas), `reproduces` the physics verdict (each engine computes the paper law)."""
+    """What `harness compare` and `harness.compare()` produce; `ok` is the agreement verdict for what was asked (each
+    engine computes its own formulas), `reproduces` the physics verdict (each engine computes the paper law)."""
     law: object
     scene: object
     results: pd.DataFrame
@@ -73,9 +73,19 @@ class Comparison:
         return bool(self.engines)
 
     @property
+    def reference_only(self):
+        """The reference alone (or no engine) was asked for: no engine's agreement is in question."""
+        return self.requested is not None and set(self.requested) <= {"reference"}
+
+    @property
     def ok(self):
-        """Every engine that ran agrees with its dialect within tolerance."""
-        return self.agreement.empty or bool(self.agreement["pass"].all())
+        """Agreement holds for what was asked, as `harness compare` exits 0: no engine disagrees with its dialect,
+        every engine asked for by name ran, no run failed, and an engine was compared unless the reference alone was
+        asked for (an engine skipped or not compared is not agreement)."""
+        from .analyses.verdict import AGREE, NOT_COMPARED, verdict
+        record = verdict(self)
+        agreed = record["verdict"] == AGREE or (record["verdict"] == NOT_COMPARED and self.reference_only)
+        return agreed and not record["unavailable"] and not record["failed"]
 
     @property
     def unavailable(self):

@@ -1,5 +1,10 @@
-"""Errors a user can cause: reported as one line, exit code 2."""
+"""Errors a user can cause: reported as one line, exit code 2; from Python, a ValueError (a bad value) or also a
+TypeError (a keyword of the wrong type), so that ordinary `except ValueError` / `except TypeError` catch them."""
 
 
-class UserError(Exception):
+class UserError(ValueError):
     """Bad input from a user (value, name, file): the CLI prints one line and exits with code 2."""
+
+
+class UserTypeError(UserError, TypeError):
+    """A Python API keyword of the wrong type (e.g. a string where a list of numbers belongs), naming the keyword."""

@@ -7,22 +7,29 @@ from dataclasses import asdict
 import numpy as np
 import pandas as pd
 
+from .analyses.attribution import METRICS as ATTRIBUTED
+from .analyses.cost import COLUMNS as COST_COLUMNS, METRICS as COST_METRICS
 from .analyses.physics import Tolerances
 from .engines.batches import FailedRun
 from .errors import UserError
 from .files import write_text
+from .reading import read_table
+from .records import COST_FIELDS, RUN_FIELDS, load_record
 from .results import read_csv, write_csv
 
 RUN, ATTRIBUTION, HISTORIES, FAILURES, PRECISION = ("run.json", "attribution.csv", "histories.csv", "failures.csv",
                                                     "precision.csv")
 SLIDING = "sliding.csv"
 COST, COST_RUN, COST_TRUTH = "cost.csv", "cost.json", "cost-truth.csv"
+COST_TEXT = ("model", "engine", "dialect", "rung", "timing", "status", "message")
+REPORT, RESULTS = "report.html", "results.csv"
+DIRECTORY_FILES = (RESULTS, RUN, ATTRIBUTION, HISTORIES, FAILURES, PRECISION, SLIDING, COST, COST_RUN, COST_TRUTH, REPORT)
 
 
 def start_comparison(out_dir, comparison):
     """Before the runs: DIR/run.json describes the compare now running, marked partial, and the tables of an earlier
     compare are removed, so DIR never mixes two runs; an interrupted compare leaves a partial run `report` can show."""
-    for name in (ATTRIBUTION, HISTORIES, FAILURES, PRECISION, SLIDING, "results.csv"):
+    for name in (ATTRIBUTION, HISTORIES, FAILURES, PRECISION, SLIDING, RESULTS):
         _remove(out_dir, name)
     _write_run(out_dir, comparison, partial=True)
 
@@ -64,51 +71,66 @@ def _remove(out_dir, name):
         os.remove(path)
 
 
+TABLES = {   # a saved table -> (columns it must hold, its number columns, its text columns)
+    ATTRIBUTION: (("ingredient", "dialect", "target", "comparison"), tuple(f"d_{m}" for m in ATTRIBUTED),
+                  ("ingredient", "dialect", "target", "note", "comparison")),
+    HISTORIES: (("t", "overlap", "f_n", "f_t", "e_n_target"), ("t", "overlap", "f_n", "f_t", "e_n_target"), ()),
+    FAILURES: (("engine", "e_n", "message", "log_tail"), ("e_n",), ("engine", "message", "log_tail")),
+    PRECISION: (("engine", "against"), ("e_n_target", "dt", "v_n1", "v_t1", "omega1"),
+                ("engine", "against", "theta_deg", "failed")),
+    SLIDING: (("e_n_target", "simulated"), ("e_n_target", "simulated", "resolution", "derived", "difference"),
+              ("model", "formula", "method")),
+    COST: (COST_COLUMNS, [c for c in COST_COLUMNS if c not in COST_TEXT], COST_TEXT),
+    COST_TRUTH: (("curve", "e_n_target", "err_max"), ("e_n_target", *(f"err_{m}" for m in COST_METRICS), "err_max"),
+                 ("curve", "truth")),
+}
+
+
 def _read(out_dir, name):
-    path = os.path.join(out_dir, name)
-    if not os.path.exists(path) or os.path.getsize(path) <= 1:
-        return pd.DataFrame()
+    """DIR/name, a table of TABLES, checked; absent: an empty table."""
     try:
-        return pd.read_csv(path)
-    except pd.errors.EmptyDataError:
+        return read_table(os.path.join(out_dir, name), *TABLES[name][:2], "table", TABLES[name][2])
+    except FileNotFoundError:
         return pd.DataFrame()
 
 
 def kinds(out_dir):
     """(has a comparison, has a cost study) in DIR; a user error when it holds neither."""
-    has_compare = os.path.exists(os.path.join(out_dir, RUN))
-    has_cost = os.path.exists(os.path.join(out_dir, COST_RUN))
+    has_compare = os.path.lexists(os.path.join(out_dir, RUN))
+    has_cost = os.path.lexists(os.path.join(out_dir, COST_RUN))
     if not os.path.isdir(out_dir) or not (has_compare or has_cost):
         raise UserError(f"{out_dir} is not a results directory of `harness compare` or `harness cost` "
                         f"(no {RUN} or {COST_RUN})")
     return has_compare, has_cost
 
 
-def _load_json(out_dir, name, keys):
-    """DIR/name as a dict holding `keys`; a damaged or foreign file is the user's to fix (UserError)."""
+def _scene(out_dir, name, record):
+    """The Scene of a run record, or one line saying the record is damaged."""
+    from .scene import scene_of_record
     try:
-        with open(os.path.join(out_dir, name), encoding="utf-8") as handle:
-            run = json.load(handle)
-    except (OSError, ValueError) as exc:
-        raise UserError(f"cannot read {out_dir}/{name}: {exc}") from None
-    if not isinstance(run, dict) or any(k not in run for k in keys) or not isinstance(run["scene"], dict):
-        raise UserError(f"{out_dir}/{name} is damaged or foreign (not a harness run description)")
-    return run
+        return scene_of_record(record["scene"])
+    except (TypeError, ValueError) as exc:
+        raise UserError(f"{out_dir}/{name} is damaged or foreign: in its scene, {exc}") from None
+
+
+def _law(out_dir, record):
+    """The law of a run record (its model and replacements), or one line saying the record is damaged."""
+    from .laws import compose
+    try:
+        return compose(record["model"], record.get("overrides") or {})
+    except UserError as exc:
+        raise UserError(f"{out_dir}/{RUN} is damaged or foreign: {exc}") from None
 
 
 def load_comparison(out_dir):
     """The Comparison saved in DIR (its analyses follow from the table again)."""
     from .comparison import Comparison
-    from .laws import compose
-    from .scene import scene_of_record
-    frame = read_csv(os.path.join(out_dir, "results.csv"))
+    frame = read_csv(os.path.join(out_dir, RESULTS))
     if frame.empty:
         raise UserError(f"{out_dir}/results.csv holds no results")
-    run = _load_json(out_dir, RUN, ("model", "scene"))
-    try:
-        scene = scene_of_record(run["scene"])
-    except (TypeError, ValueError, UserError) as exc:
-        raise UserError(f"{out_dir}/{RUN} is damaged or foreign: in its scene, {exc}") from None
+    run = load_record(os.path.join(out_dir, RUN), RUN_FIELDS)
+    scene = _scene(out_dir, RUN, run)
+    law = _law(out_dir, run)
     attribution_table = _read(out_dir, ATTRIBUTION)
     attributions = {name: table.drop(columns="comparison").dropna(axis=1, how="all")
                     for name, table in attribution_table.groupby("comparison", sort=False)} \
@@ -122,12 +144,11 @@ def load_comparison(out_dir):
     precision = _read(out_dir, PRECISION)
     sliding = _read(out_dir, SLIDING)
     requested = run.get("requested")
-    overrides = run.get("overrides") or {}
     try:
         tolerances = Tolerances.of(run.get("tolerances") or {})
     except UserError as exc:
         raise UserError(f"{out_dir}/{RUN} is damaged or foreign: {exc}") from None
-    return Comparison(compose(run["model"], overrides), scene, frame, overrides=overrides,
+    return Comparison(law, scene, frame, overrides=run.get("overrides") or {},
                       engine_options=run.get("engine_options", {}), requested=tuple(requested) if requested else None,
                       skipped=[tuple(s) for s in run.get("skipped", [])], failures=failures, attribution=attributions,
                       sliding=sliding if not sliding.empty else None,
@@ -138,11 +159,14 @@ def load_comparison(out_dir):
 
 def load_cost(out_dir):
     """(cost table, the truth's uncertainty table, cost.json) saved in DIR."""
-    run = _load_json(out_dir, COST_RUN, ("model", "scene"))
+    run = load_record(os.path.join(out_dir, COST_RUN), COST_FIELDS)
+    _scene(out_dir, COST_RUN, run)
     try:
-        cost = pd.read_csv(os.path.join(out_dir, COST), dtype={"rung": str, "message": str})
-    except (OSError, ValueError, pd.errors.ParserError, pd.errors.EmptyDataError) as exc:
-        raise UserError(f"cannot read {out_dir}/{COST}: {exc}") from None
+        cost = read_table(os.path.join(out_dir, COST), *TABLES[COST][:2], "cost table", TABLES[COST][2])
+    except FileNotFoundError:
+        raise UserError(f"cannot read {out_dir}/{COST}: no such file") from None
+    if cost.empty and not len(cost.columns):
+        raise UserError(f"{out_dir}/{COST} is empty, not a harness cost table")
     return cost, _read(out_dir, COST_TRUTH), run
 
 

@@ -2,9 +2,12 @@
 sub-model replacements, a scene, a resolution, engines and their options; validated once, one clear line for bad
 input."""
 import math
+import sys
 from dataclasses import dataclass, field
 
-from .errors import UserError
+from .errors import UserError, UserTypeError
+from .keywords import (as_engine_options, as_flag, as_names, as_pairs, as_real, as_text, as_tolerances, as_whole,
+                       scene_keywords)
 from .solver.plan import MAX_STEPS_PER_CONTACT
 from .plan import CONVERGED
 from .scene import DEFAULT_ANGLES, DEFAULT_EN, DEFAULT_SPEED, from_material
@@ -19,8 +22,19 @@ TARGETS = ("wall", "sphere")
 def scene_from(en=DEFAULT_EN, angles=None, psi=None, vt=None, mu=None, material="tcc13", radius=None, E=None,
                nu=None, rho=None, speed=None, normal_speed=None, omega0=0.0, gravity=0.0, wall="same", target="wall",
                target_radius=None, target_material="same", target_omega=0.0, target_fixed=False):
-    """The validated Scene of the scene keywords; with target="sphere", the equivalent wall impact of the sphere
-    hitting a target sphere at rest (harness.two_spheres.reduce)."""
+    """The validated Scene of the scene keywords (each checked for type first: harness.keywords); with
+    target="sphere", the equivalent wall impact of the sphere hitting a target sphere at rest
+    (harness.two_spheres.reduce)."""
+    given = scene_keywords(dict(en=en, angles=angles, psi=psi, vt=vt, mu=mu, material=material, radius=radius, E=E,
+                                nu=nu, rho=rho, speed=speed, normal_speed=normal_speed, omega0=omega0,
+                                gravity=gravity, wall=wall, target=target, target_radius=target_radius,
+                                target_material=target_material, target_omega=target_omega,
+                                target_fixed=target_fixed))
+    return _scene(**given)
+
+
+def _scene(en, angles, psi, vt, mu, material, radius, E, nu, rho, speed, normal_speed, omega0, gravity, wall, target,
+           target_radius, target_material, target_omega, target_fixed):
     if speed is not None and normal_speed is not None:
         raise UserError("give --speed or --normal-speed, not both")
     if sum(x is not None for x in (angles, psi, vt)) > 1:
@@ -54,16 +68,16 @@ def target_sphere(target, radius, material, omega, fixed):
         if given:
             raise UserError(f"--target-{given[0]} describes a sphere target: give --target sphere")
         return None
-    if radius is not None and not (isinstance(radius, (int, float)) and math.isfinite(radius) and radius > 0):
+    if radius is not None and not (math.isfinite(radius) and radius > 0):
         raise UserError(f"--target-radius must be a positive number of metres, got {radius!r}")
-    if not (isinstance(omega, (int, float)) and math.isfinite(omega)):
+    if not math.isfinite(omega):
         raise UserError(f"--target-omega must be a finite number, got {omega!r}")
     fields = target_material_fields(material)
 
     def sphere(scene):
         own = {"E": scene.E, "nu": scene.nu, "rho": scene.rho, **fields}
-        return Sphere(scene.radius if radius is None else float(radius), own["E"], own["nu"], own["rho"],
-                      omega=float(omega), fixed=bool(fixed))
+        return Sphere(scene.radius if radius is None else radius, own["E"], own["nu"], own["rho"], omega=omega,
+                      fixed=fixed)
     return sphere
 
 
@@ -75,10 +89,7 @@ def target_material_fields(text):
         fields = dict(part.partition("=")[::2] for part in text.split(","))
         if set(fields) != {"E", "nu", "rho"}:
             raise UserError(f"--target-material E=PASCAL,nu=RATIO,rho=KG_M3 takes E, nu and rho, got {text!r}")
-        try:
-            values = {k: float(v) for k, v in fields.items()}
-        except ValueError:
-            raise UserError(f"--target-material E, nu and rho must be numbers, got {text!r}") from None
+        values = {k: field_number("--target-material", k, v) for k, v in fields.items()}
         if not (values["E"] > 0 and -1.0 < values["nu"] < 0.5 and values["rho"] > 0):
             raise UserError(f"--target-material needs E > 0, -1 < nu < 0.5 and rho > 0, got {text!r}")
         return values
@@ -95,17 +106,30 @@ def wall_fields(text):
         fields = dict(part.partition("=")[::2] for part in text.split(","))
         if set(fields) != {"E", "nu"}:
             raise UserError(f"--wall E=PASCAL,nu=RATIO takes E and nu, got {text!r}")
-        try:
-            return {"wall": "other", "wall_E": float(fields["E"]), "wall_nu": float(fields["nu"])}
-        except ValueError:
-            raise UserError(f"--wall E and nu must be numbers, got {text!r}") from None
+        return {"wall": "other", "wall_E": field_number("--wall", "E", fields["E"]),
+                "wall_nu": field_number("--wall", "nu", fields["nu"])}
     from .materials import get_material
     mat = get_material(text)
     return {"wall": "other", "wall_E": mat.E, "wall_nu": mat.nu}
 
 
+def field_number(option, name, text):
+    """One NAME=VALUE field of --wall or --target-material as a finite float of normal size."""
+    try:
+        value = float(text)
+    except ValueError:
+        raise UserError(f"{option} {name} must be a number, got {text!r}") from None
+    if not math.isfinite(value) or 0.0 < abs(value) < sys.float_info.min:
+        raise UserError(f"{option} {name} must be a finite number of normal size (0 or at least "
+                        f"{sys.float_info.min:.3g} in magnitude), got {text!r}")
+    return value
+
+
 def resolution_from(steps_per_contact=None, dt=None, converged=False):
     """--steps-per-contact N (a whole number >= 1, default 1000), --dt SECONDS (> 0) or --converged."""
+    steps_per_contact = as_whole("steps_per_contact", steps_per_contact, optional=True)
+    dt = as_real("dt", dt, optional=True)
+    converged = as_flag("converged", converged)
     if sum((steps_per_contact is not None, dt is not None, bool(converged))) > 1:
         raise UserError("give one of --steps-per-contact, --dt, --converged")
     if converged:
@@ -115,23 +139,45 @@ def resolution_from(steps_per_contact=None, dt=None, converged=False):
             raise UserError(f"--dt must be a positive number of seconds, got {dt:g}")
         return FixedTimeStep(dt)
     steps = 1000 if steps_per_contact is None else steps_per_contact
-    if isinstance(steps, bool) or not isinstance(steps, int) or steps < 1:
+    if steps < 1:
         raise UserError(f"--steps-per-contact must be a whole number >= 1, got {steps!r}")
     if steps > MAX_STEPS_PER_CONTACT:
         raise UserError(f"--steps-per-contact must be at most {MAX_STEPS_PER_CONTACT:.0e}, got {steps}")
     return steps
 
 
-def engine_options_from(pairs):
-    """[(engine, key, value)] from --engine-option ENGINE:KEY=VALUE -> {engine: {key: value}}; a key given twice is
-    refused (the last would silently win)."""
+def engines_asked(names):
+    """The engines asked for (None: every engine that supports the law; none: the reference alone): known names,
+    each once."""
     from .engines import get_engine
+    if names is None:
+        return None
+    for name in names:
+        get_engine(name)
+    repeated = sorted({n for n in names if names.count(n) > 1})
+    if repeated:
+        raise UserError(f"--engines names {repeated[0]} twice")
+    return tuple(names)
+
+
+def engine_options_from(triples, engines=None):
+    """[(engine, key, value)] from --engine-option ENGINE:KEY=VALUE -> {engine: {key: value}}, each key and value one
+    the engine declares; a key given twice is refused (the last would silently win), as is an option for an engine
+    not among those asked for."""
+    from .engines import get_engine
+    from .engines.protocol import check_options
     out = {}
-    for engine, key, value in pairs or ():
+    for engine, key, value in triples:
         get_engine(engine)
         if key in out.setdefault(engine, {}):
             raise UserError(f"engine option {engine}:{key} given twice")
         out[engine][key] = value
+    ignored = sorted(set(out) - set(engines)) if engines is not None else []
+    if ignored:
+        raise UserError(f"--engine-option for {ignored[0]}, which is not among the engines asked for "
+                        f"({', '.join(engines)})")
+    for engine, options in out.items():
+        check_options(engine, get_engine(engine).OPTIONS, options)
     return out
 
 
@@ -159,23 +205,23 @@ class Request:
         --with, `engine_options` as {engine: {key: value}} or [(engine, key, value)], `tolerances` as
         {name: value} or ["name=value"] (the physics verdict's, harness.analyses.physics.Tolerances)."""
         from .analyses.physics import Tolerances
-        overrides = keywords.pop("with_", None) or keywords.pop("overrides", None) or ()
+        if "with_" in keywords and "overrides" in keywords:
+            raise UserError("give with_ or overrides, not both")
+        name = "with_" if "with_" in keywords else "overrides"
+        overrides = as_pairs(name, keywords.pop(name, None))
         unknown = set(keywords) - set(SCENE_KEYWORDS)
         if unknown:
-            raise UserError(f"unknown keyword(s) {', '.join(sorted(unknown))}")
-        pairs = dict(overrides).items() if isinstance(overrides, dict) else overrides
-        keys = [k for k, _ in pairs]
+            raise UserTypeError(f"unknown keyword(s) {', '.join(sorted(unknown))}")
+        as_text("model", model)
+        keys = [k for k, _ in overrides]
         repeated = sorted({k for k in keys if keys.count(k) > 1})
         if repeated:
             raise UserError(f"--with {repeated[0]}=... given twice")
-        options = engine_options_from(engine_options) if not isinstance(engine_options, dict) else \
-            {e: dict(o) for e, o in (engine_options or {}).items()}
-        ignored = sorted(set(options) - set(engines)) if engines is not None else []
-        if ignored:
-            raise UserError(f"--engine-option for {ignored[0]}, which is not among the engines asked for "
-                            f"({', '.join(engines)})")
+        engines = engines_asked(as_names("engines", engines))
+        options = engine_options_from(as_engine_options(engine_options), engines)
+        tolerances = Tolerances.of(as_tolerances(tolerances))
         request = cls(model, scene_from(**keywords), resolution_from(steps_per_contact, dt, converged),
-                      tuple(pairs), None if engines is None else tuple(engines), options, Tolerances.of(tolerances))
+                      tuple(overrides), engines, options, tolerances)
         law = request.law                    # unknown law or sub-model: refused here, before anything runs
         if request.scene.spheres:
             from .two_spheres import refuse_engine_levers

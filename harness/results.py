@@ -7,6 +7,7 @@ import pandas as pd
 from .errors import UserError
 from .files import write_text
 from .kinematics import rebound_quantities
+from .reading import read_table
 
 IDENTITY = ("model", "dialect", "engine", "engine_version", "e_n_target", "mu", "theta_deg", "v_n0", "v_t0", "omega0",
             "radius", "E", "nu", "rho", "dt", "steps_per_contact")
@@ -46,18 +47,48 @@ SMALL_STRAIN = 0.1     # overlap / R: contact radius a = sqrt(R alpha) <= 0.3 R,
                        # law built on it assume (a << R)
 
 
+MOTION = ("v_n1", "v_t1", "omega1", "e_n", "theta_r_com_deg", "theta_r_cp_deg", "ke_ratio")   # finite in any ok row
+MEASURED = ("t_contact", "f_n_max", "overlap_max")      # finite in the reference's ok rows (no engine run measures
+                                                        # them: NaN there means not measured)
+RATIOS = {   # NaN only where its denominator is 0 (undefined; +-inf where it is tiny is the limit): column -> which
+    "e_t": ("v_t0",), "beta": ("slip0",), "psi1_maw": ("mu",), "psi2_maw": ("mu",), "psi1_star": ("mu",),
+    "psi2_star": ("mu",), "omega_star": ("mu",)}
+
+
+def undefined(frame):
+    """{ratio column: rows where its denominator is 0} (V_t for e_t, the incident slip for beta, mu for the paper's
+    and Maw's normalisations)."""
+    zero = {"v_t0": frame.v_t0.to_numpy(float) == 0.0, "mu": frame.mu.to_numpy(float) == 0.0,
+            "slip0": (frame.v_t0.to_numpy(float) - frame.radius.to_numpy(float) * frame.omega0.to_numpy(float)) == 0.0}
+    return {column: np.logical_or.reduce([zero[d] for d in denominators]) for column, denominators in RATIOS.items()}
+
+
+def non_finite(frame):
+    """Per row, the outcome columns that are not finite where they must be ("" when none): the rebound, e_n, the
+    angles and the energy ratio always; contact time, peak force and overlap in the reference's rows; a ratio NaN
+    where its denominator is not 0."""
+    reference = frame.engine.to_numpy() == "reference"
+    allowed = undefined(frame)
+    bad = {c: ~np.isfinite(frame[c].to_numpy(float)) for c in MOTION}
+    bad.update({c: reference & ~np.isfinite(frame[c].to_numpy(float)) for c in MEASURED})
+    bad.update({c: ~allowed[c] & np.isnan(frame[c].to_numpy(float)) for c in RATIOS})
+    return [", ".join(c for c in bad if bad[c][i]) for i in range(len(frame))]
+
+
 def mark_invalid(frame, pair=False):
     """Rows that ran but whose result is physically meaningless get status "invalid" and the reason: an overlap
     beyond the small-strain range, a negative e_n (for two spheres: along the line of centres at first touch, which
-    an engine's turns as they pass each other), a kinetic energy ratio that is not finite."""
+    an engine's turns as they pass each other), a value that is not finite where it is defined (docs/results.md)."""
     ok = frame.status.to_numpy() == "ok"
     overlap = frame.overlap_max.to_numpy(float) / frame.radius.to_numpy(float)
+    missing = non_finite(frame)
     reasons = [(overlap > SMALL_STRAIN, lambda i: f"overlap {overlap[i]:.3g} R exceeds the small-strain range "
                                                   f"({SMALL_STRAIN:g} R) of the law"),
                (frame.e_n.to_numpy(float) < 0.0, lambda i: f"e_n {frame.e_n.iat[i]:.3g} < 0: " + (
                    "along the first line of centres, which turned as the spheres passed" if pair else
                    "the sphere did not rebound")),
-               (~np.isfinite(frame.ke_ratio.to_numpy(float)), lambda i: "kinetic energy ratio not finite")]
+               (~np.isfinite(frame.ke_ratio.to_numpy(float)), lambda i: "kinetic energy ratio not finite"),
+               (np.array([bool(m) for m in missing], dtype=bool), lambda i: f"not finite: {missing[i]}")]
     for bad, why in reasons:
         for i in np.flatnonzero(ok & bad):
             frame.iat[i, frame.columns.get_loc("status")] = "invalid"
@@ -74,15 +105,18 @@ def write_csv(frame, path):
     write_text(path, frame.to_csv(index=False, float_format="%.17g"))
 
 
+TEXT = ("model", "dialect", "engine", "engine_version", "status", "message")     # every other column is a number
+
+
 def read_csv(path):
-    """Read a results table; a missing or foreign file is a user error."""
+    """Read a results table (a regular file holding every column, numbers where numbers belong); a missing, foreign
+    or damaged file is a user error."""
     try:
-        frame = pd.read_csv(path, keep_default_na=True)
-    except (OSError, pd.errors.ParserError, UnicodeDecodeError, pd.errors.EmptyDataError) as exc:
-        raise UserError(f"cannot read results table {path}: {exc}") from None
-    missing = [c for c in COLUMNS if c not in frame.columns]
-    if missing:
-        raise UserError(f"{path} is not a harness results table (missing {', '.join(missing[:3])}...)")
+        frame = read_table(path, COLUMNS, [c for c in COLUMNS if c not in TEXT], "results table", TEXT)
+    except FileNotFoundError:
+        raise UserError(f"cannot read results table {path}: no such file") from None
+    if frame.empty and not len(frame.columns):
+        raise UserError(f"cannot read results table {path}: the file is empty")
     cut = frame[["model", "engine", "dialect", "status"]].isna().any(axis=1).to_numpy()
     if cut.any():
         raise UserError(f"{path} is cut or damaged at data row {int(cut.argmax()) + 1} (a row without its "

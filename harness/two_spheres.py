@@ -18,7 +18,7 @@ import numpy as np
 
 from .bodies import Sphere
 from .errors import UserError
-from .scene import Scene
+from .scene import Scene, check_body
 
 BODY_COLUMNS = ("J_n", "J_t", "v1_n", "v1_t", "omega1_after", "v2_n", "v2_t", "omega2_after")
 
@@ -33,6 +33,7 @@ def reduce(scene, target):
     """The wall impact equivalent to `scene`'s sphere (the projectile: its material and spin omega0, its sweep the
     velocities relative to the target) hitting `target` (a Sphere): radius R*, mass m*, spin (R1 omega1 + R2 omega2)/R*,
     a wall of the target's material; the scene's `spheres` keep both bodies."""
+    check_body(target)
     if target.fixed and (target.v_n or target.v_t or target.omega):
         raise UserError("a fixed target has no velocity or spin")
     if scene.wall != "same":

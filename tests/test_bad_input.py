@@ -11,24 +11,26 @@ from harness.commands import main
 SCENE = ["--en", "0.5", "--angles", "10"]
 
 NOT_NUMBERS = ["nan", "inf", "-inf", "abc", "", "1e", "0x10", "1,2,"]
-NUMBERS = {   # option -> values outside its physical range (the bound is named in the message)
-    "--speed": ["0", "-1", "1e-300", "1e-7", "1e300", "3000"],
-    "--normal-speed": ["0", "-5", "1e-300", "1e6"],
+NUMBERS = {   # option -> values outside its physical range (the bound is named in the message) or subnormal
+    "--speed": ["0", "-1", "1e-300", "1e-7", "1e300", "3000", "5e-324"],
+    "--normal-speed": ["0", "-5", "1e-300", "1e6", "5e-324"],
     "--radius": ["0", "-0.01", "1e-320", "1e-9", "1e300", "100"],
-    "--E": ["0", "-1e9", "1e-300", "10", "1e300", "1e15"],
-    "--nu": ["0.5", "0.6", "-1", "-2", "1e300"],
-    "--rho": ["0", "-2650", "1e-3", "1e300", "1e7", "3.1e6"],
-    "--mu": ["-0.1", "-1e300", "1e300", "20"],
-    "--gravity": ["-9.81", "1e30", "1e5"],
-    "--omega0": ["1e300", "-1e300", "1e6", "-1e6"],
-    "--dt": ["0", "-1e-6", "1e-30", "1e-300"],
+    "--E": ["0", "-1e9", "1e-300", "10", "1e300", "1e15", "5e-324"],
+    "--nu": ["0.5", "0.6", "-1", "-2", "1e300", "5e-324", "-1e-310"],
+    "--rho": ["0", "-2650", "1e-3", "1e300", "1e7", "3.1e6", "1e-320"],
+    "--mu": ["-0.1", "-1e300", "1e300", "20", "5e-324"],
+    "--gravity": ["-9.81", "1e30", "1e5", "5e-324"],
+    "--omega0": ["1e300", "-1e300", "1e6", "-1e6", "1e-310"],
+    "--dt": ["0", "-1e-6", "1e-30", "1e-300", "5e-324"],
     "--steps-per-contact": ["0", "-5", "1.5", "1e9", "1000000000"],
 }
 LISTS = {
-    "--en": ["0", "-0.5", "1.5", "2", "1e-320", "0.5,,0.9", "0.5,abc", "0.5,nan", ","],
-    "--angles": ["90", "-10", "100", "0:90:0", "10:0:5", "0:80", "a:b:c", "nan", "1e300", "0:80:-10"],
-    "--vt": ["-1", "1e300", "nan", "abc", "5000"],
-    "--psi": ["-1", "1e300", "nan", "abc"],
+    "--en": ["0", "-0.5", "1.5", "2", "1e-320", "0.5,,0.9", "0.5,abc", "0.5,nan", ",", "5e-324", "0.5,5e-324",
+             "1e-4", "0.0009"],
+    "--angles": ["90", "-10", "100", "0:90:0", "10:0:5", "0:80", "a:b:c", "nan", "1e300", "0:80:-10", "0:80:5e-324",
+                 "0:80:1e-300", "0:80:inf", "0:80:100", "1e-320", "10,1e-320"],
+    "--vt": ["-1", "1e300", "nan", "abc", "5000", "5e-324"],
+    "--psi": ["-1", "1e300", "nan", "abc", "5e-324"],
 }
 CHOICES = [   # (extra arguments, what is wrong)
     (["--model", "no-such-law"], "unknown law"),
@@ -44,7 +46,7 @@ CHOICES = [   # (extra arguments, what is wrong)
     (["--model", "thornton", "--mu", "0", "--psi", "1"], "Psi1* at mu 0"),
     (["--model", "thornton", "--dt", "1e-7", "--steps-per-contact", "100"], "two resolutions"),
     (["--model", "thornton", "--dt", "1e-7", "--converged"], "two resolutions"),
-    (["--model", "hertz-kuwabara-kono", "--en", "1e-4"], "below the calibration"),
+    (["--model", "hertz-kuwabara-kono", "--en", "0.003"], "below the calibration"),
     (["--model", "thornton", "--dt", "1e-3"], "unstable time step"),
     (["--model", "thornton", "--en", "0.5", "--angles", "10", "--bogus"], "unknown option"),
     (["--model", "thornton", "--target", "cube"], "unknown target"),
@@ -58,6 +60,26 @@ CHOICES = [   # (extra arguments, what is wrong)
     (["--model", "thornton", "--target", "sphere", "--target-fixed", "--target-omega", "3"], "a fixed target spins"),
     (["--model", "thornton", "--target", "sphere", "--target-material", "E=1e9,nu=0.3,rho=1e7"], "target rho"),
     (["--model", "thornton", "--target", "sphere", "--target-material", "E=1e9,nu=0.3,rho=3.1e6"], "target rho"),
+    (["--model", "thornton", "--target", "sphere", "--target-radius", "1e-320"], "target radius subnormal"),
+    (["--model", "thornton", "--target", "sphere", "--target-radius", "1e308"], "target radius overflows"),
+    (["--model", "thornton", "--target", "sphere", "--target-radius", "2e4"], "target radius beyond 1e4 m"),
+    (["--model", "thornton", "--target", "sphere", "--target-radius", "1e-8"], "target radius below 1e-7 m"),
+    (["--model", "thornton", "--target", "sphere", "--target-material", "E=5e-324,nu=0.3,rho=1000"], "target E"),
+    (["--model", "thornton", "--target", "sphere", "--target-material", "E=1e308,nu=0.3,rho=1000"], "target E"),
+    (["--model", "thornton", "--target", "sphere", "--target-material", "E=2e14,nu=0.3,rho=1000"], "target E"),
+    (["--model", "thornton", "--target", "sphere", "--target-material", "E=10,nu=0.3,rho=1000"], "target E"),
+    (["--model", "thornton", "--target", "sphere", "--target-material", "E=inf,nu=0.3,rho=1000"], "target E"),
+    (["--model", "thornton", "--target", "sphere", "--target-material", "E=1e9,nu=0.3,rho=5e-324"], "target rho"),
+    (["--model", "thornton", "--target", "sphere", "--target-material", "E=1e9,nu=1e-310,rho=1000"], "target nu"),
+    (["--model", "thornton", "--target", "sphere", "--target-omega", "5e-324"], "target spin subnormal"),
+    (["--model", "thornton", "--target", "sphere", "--target-omega", "1e300"], "target spin beyond 1e3 m/s"),
+    (["--model", "hertz-mindlin", "--wall", "E=5e-324,nu=0.3"], "wall E subnormal"),
+    (["--model", "hertz-mindlin", "--wall", "E=1e308,nu=0.3"], "wall E overflows"),
+    (["--model", "hertz-mindlin", "--wall", "E=2e14,nu=0.3"], "wall E beyond 1e14 Pa"),
+    (["--model", "hertz-mindlin", "--wall", "E=1e-5,nu=0.3"], "wall E below 1e3 Pa"),
+    (["--model", "hertz-mindlin", "--wall", "E=2e11,nu=-5e-324"], "wall nu subnormal"),
+    (["--model", "thornton", "--normal-speed", "5", "--angles", "89.9"], "V_n tan(angle) beyond 1e3 m/s"),
+    (["--model", "thornton", "--normal-speed", "600", "--angles", "0,30,60"], "V_n tan(angle) beyond 1e3 m/s"),
     (["--model"], "missing value"),
     ([], "no model"),
 ]
@@ -80,16 +102,39 @@ CATALOGUE = list(cases())
 SAMPLE = [case for case in CATALOGUE if case.id.endswith("=nan") or case.id.endswith("=0") or " " in case.id]
 
 
+# engines and their options, which only compare takes: each refused rather than read one way in silence
+ENGINES = [
+    (["--engines", "liggghts,liggghts"], "an engine named twice"),
+    (["--engines", "reference,reference"], "the reference named twice"),
+    (["--engines", "liggghts,"], "a trailing comma"),
+    (["--engines", ",liggghts"], "a leading comma"),
+    (["--engines", "liggghts,,yade"], "an empty item"),
+    (["--engines", ","], "no engine"),
+    (["--engines", "reference", "--engine-option", "reference:foo=bar"], "an option for the reference"),
+    (["--engines", "reference,liggghts", "--engine-option", "reference:precision=double"], "the reference's option"),
+    (["--engines", "yade", "--engine-option", "liggghts:limitForce=on"], "an option for an engine not asked for"),
+    (["--engines", "liggghts", "--engine-option", "liggghts:limitForce=maybe"], "an undeclared value"),
+    (["--engines", "liggghts", "--engine-option", "liggghts:nope=on"], "an undeclared key"),
+    (["--engines", "liggghts", "--engine-option", "liggghts:limitForce=on",
+      "--engine-option", "liggghts:limitForce=off"], "a key given twice"),
+    (["--engines", "LIGGGHTS"], "an unknown engine"),
+    (["--engines", "reference", "--store", ""], "an empty store path"),
+]
+
+
 def test_the_catalogue_is_large():
-    assert len(CATALOGUE) >= 188 and len(SAMPLE) >= 30
+    assert len(CATALOGUE) >= 250 and len(SAMPLE) >= 70
 
 
 @pytest.mark.parametrize("command, arguments", [pytest.param(command, case.values[0], id=f"{command} {case.id}")
                                                 for command, cases_ in (("run", CATALOGUE), ("compare", SAMPLE))
-                                                for case in cases_])
+                                                for case in cases_] +
+                         [pytest.param("compare", ["--model", "hertz-mindlin", *SCENE, *arguments], id=f"compare {why}")
+                          for arguments, why in ENGINES])
 def test_bad_input_is_refused_in_one_line(tmp_path, capfd, command, arguments):
     out_path = tmp_path / ("out.csv" if command == "run" else "out")
-    extra = ["--engines", "reference"] if command == "compare" and "--model" in arguments[:1] else []
+    extra = ["--engines", "reference"] if command == "compare" and "--model" in arguments[:1] and \
+        "--engines" not in arguments else []
     code = main([command, *arguments, *extra, "-o", str(out_path)])
     out, err = capfd.readouterr()
     lines = err.strip().splitlines()
@@ -198,3 +243,41 @@ def test_a_numeric_wall_that_is_not_one_is_a_one_line_error(wall, tmp_path, caps
     assert main(["run", "--model", "hertz-mindlin", "--wall", wall, "-o", str(tmp_path / "r.csv")]) == 2
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and "wall" in err and not (tmp_path / "r.csv").exists()
+
+
+def _rows(engine="reference", angles=(10.0, 20.0, 30.0), mu=0.1, **measured):
+    """Result rows as a batch of `engine` could return them: every impact rebounding at half its normal speed."""
+    from harness.laws import compose
+    from harness.results import impact_frame
+    from harness.scene import Scene
+    from harness.solver.plan import plan_batch
+    scene = Scene(e_n=(0.5,), angles_deg=angles, mu=mu)
+    batch = plan_batch(compose("thornton"), scene, 0.5, 100)
+    n = len(angles)
+    measured = {k: np.full(n, 1e-5) for k in ("t_contact", "f_n_max", "overlap_max")} | measured
+    return impact_frame(scene, batch, model="thornton", dialect=engine, engine=engine, engine_version="x",
+                        dt=batch.dt, steps_per_contact=100, v_n1=0.5 * batch.v_n0, v_t1=0.8 * batch.v_t0,
+                        omega1=np.zeros(n), wall_s=0.0, status="ok", message="", **measured)
+
+
+def test_an_ok_row_holds_no_nan_where_its_value_is_defined():
+    """A reference row's contact time, peak force and overlap are measured, so a non-finite one is not a result; a
+    ratio is NaN only where its denominator is 0 (e_t = v_t1/v_t0 at v_t0 != 0 is not)."""
+    from harness.results import mark_invalid
+    frame = _rows(t_contact=np.array([np.nan, 1e-5, 1e-5]), f_n_max=np.array([1.0, np.inf, 1.0]))
+    assert frame.status.tolist() == ["invalid", "invalid", "ok"]
+    assert "t_contact" in frame.message[0] and "f_n_max" in frame.message[1]
+    frame.loc[2, "e_t"] = np.nan                                  # as a damaged kernel or adapter could leave it
+    assert (frame.v_t0 > 0).all() and mark_invalid(frame).status[2] == "invalid" and "e_t" in frame.message[2]
+
+
+def test_undefined_ratios_and_what_an_engine_does_not_measure_stay_ok():
+    """e_t and beta are undefined at V_t = 0 (normal impact), the normalised slips at mu = 0: NaN there is the
+    definition, not a failure; an engine run measures no contact time, peak force or overlap (NaN, not measured)."""
+    import harness
+    normal = harness.run("hertz-mindlin", en=[0.5], angles=[0.0, 30.0], mu=0.0)
+    assert normal.status.tolist() == ["ok", "ok"]
+    assert np.isnan(normal.e_t[0]) and np.isnan(normal.beta[0]) and np.isfinite(normal.e_t[1])
+    assert normal[["psi1_star", "psi2_star", "omega_star", "psi1_maw", "psi2_maw"]].isna().all().all()
+    nan = np.full(3, np.nan)
+    assert set(_rows(engine="yade", t_contact=nan, f_n_max=nan, overlap_max=nan).status) == {"ok"}

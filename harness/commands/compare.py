@@ -22,7 +22,7 @@ from ..views.html import rebuild
 from ..views.progress import Progress
 from ..views.terminal import print_comparison, print_summary, verdict_line
 from .options import (EXIT_DISAGREE, EXIT_ENGINE, EXIT_OK, add_engine_options, add_output_options,
-                      add_scene_options, check_output_directory, keywords)
+                      add_scene_options, check_results_directory, check_store, keywords)
 
 EXAMPLE = "harness compare --model hertz-mindlin --engines liggghts --en 0.5 --require paper -o out/"
 
@@ -51,7 +51,8 @@ def add(sub, describe):
 def main(args):
     """Write DIR/results.csv (after every batch), the other tables and report.html; the exit code is the verdict."""
     request = Request.from_keywords(args.model, tolerances=args.tolerances, **keywords(args))
-    check_output_directory(args.output)
+    check_results_directory(args.output)
+    check_store(args.store)
     results_path = os.path.join(args.output, "results.csv")
     frames = []
 

@@ -17,7 +17,7 @@ from ..views.html import rebuild
 from ..views.progress import Progress
 from ..views.terminal import print_cost
 from .options import (EXIT_ENGINE, EXIT_OK, add_engine_options, add_output_options, add_scene_options,
-                      check_output_directory, keywords)
+                      check_results_directory, check_store, keywords)
 
 EXAMPLE = "harness cost --model hertz-mindlin --en 0.9,0.3 --angles 0:80:20 -o cost/"
 
@@ -54,7 +54,8 @@ def main(args):
     """Run the ladder; 0 when every run succeeded or was refused with its reason, 3 when an engine run failed."""
     request = Request.from_keywords(args.model, **keywords(args, resolution=False))
     law, scene, ladder = request.law, request.scene, ladder_from_text(args.ladder)
-    check_output_directory(args.output)
+    check_results_directory(args.output)
+    check_store(args.store)
     found = statuses(request)
     adapters = {s.name: (ENGINES[s.name], request.engine_options.get(s.name, {})) for s in found if s.available}
     for name, (adapter, options) in adapters.items():

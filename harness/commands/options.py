@@ -4,6 +4,7 @@ import argparse
 import math
 import os
 import re
+import sys
 
 from ..errors import UserError
 from ..files import refuse_unless_regular
@@ -34,13 +35,17 @@ class Parser(argparse.ArgumentParser):
 
 
 def number(text):
-    """A finite float (the scene validates ranges)."""
+    """A finite float of normal size (the scene validates ranges): a subnormal one (0 < |x| < 2.2e-308) has lost
+    digits already and overflows whatever divides by it."""
     try:
         value = float(text)
     except ValueError:
         raise argparse.ArgumentTypeError(f"not a number: {text!r}") from None
     if not math.isfinite(value):
         raise argparse.ArgumentTypeError(f"not a finite number: {text!r}")
+    if 0.0 < abs(value) < sys.float_info.min:
+        raise argparse.ArgumentTypeError(f"not a number of normal size (0 or at least {sys.float_info.min:.3g} in "
+                                         f"magnitude): {text!r}")
     return value
 
 
@@ -56,6 +61,9 @@ def _empty(text):
     raise argparse.ArgumentTypeError(f"empty list or list item: {text!r}")
 
 
+MAX_ANGLES = 100000
+
+
 def angle_list(text):
     """'A,B,C' or 'A:B:STEP' (inclusive of B when it falls on the grid), degrees."""
     if ":" not in text:
@@ -66,10 +74,13 @@ def angle_list(text):
     start, stop, step = (number(p) for p in parts)
     if step <= 0 or stop < start:
         raise argparse.ArgumentTypeError(f"angle range needs STEP > 0 and B >= A, got {text!r}")
-    count = int(math.floor((stop - start) / step + 1e-9)) + 1
-    if count > 100000:
-        raise argparse.ArgumentTypeError(f"angle range has too many angles ({count})")
-    return tuple(round(start + i * step, 12) for i in range(count))
+    if stop > start and step > stop - start:
+        raise argparse.ArgumentTypeError(f"angle range {text!r} holds {start:g} alone (STEP beyond B - A); give "
+                                         f"--angles {start:g} or a smaller STEP")
+    count = (stop - start) / step + 1e-9 + 1       # inf when B - A overflows: refused as too many
+    if count > MAX_ANGLES:
+        raise argparse.ArgumentTypeError(f"angle range has too many angles ({count:.3g}; at most {MAX_ANGLES})")
+    return tuple(round(start + i * step, 12) for i in range(int(count)))
 
 
 def submodel(text):
@@ -168,15 +179,15 @@ def add_engine_options(parser):
 
 
 def engines_from(text):
-    """--engines LIST -> tuple of names (None: the default)."""
-    from ..engines import get_engine
+    """--engines LIST -> tuple of names (None: the default); an empty item ('liggghts,') is refused as a typo, names
+    are checked by the request (known, each once)."""
     if text is None:
         return None
-    names = tuple(n.strip() for n in text.split(",") if n.strip())
-    if not names:
+    names = tuple(n.strip() for n in text.split(","))
+    if not any(names):
         raise UserError(f"--engines needs at least one engine name, got {text!r}")
-    for name in names:
-        get_engine(name)
+    if not all(names):
+        raise UserError(f"--engines has an empty item (a stray comma?): {text!r}")
     return names
 
 
@@ -206,16 +217,48 @@ def check_output_file(path):
     writable(directory, path)
 
 
-def check_output_directory(path):
+def check_output_directory(path, what="output directory"):
     """An output directory the user names: an existing, writable directory, or a new one below a writable one."""
     if not path:
-        raise UserError("the output directory is empty")
+        raise UserError(f"the {what} is empty")
     if os.path.lexists(path) and not os.path.isdir(path):
-        raise UserError(f"output {path} exists and is not a directory")
+        raise UserError(f"{what.split()[0]} {path} exists and is not a directory")
     existing = os.path.abspath(path)
     while not os.path.isdir(existing):
+        if os.path.lexists(existing):
+            raise UserError(f"cannot create {path}: {existing} exists and is not a directory")
         existing = os.path.dirname(existing)
     writable(existing, path)
+
+
+def check_store(path):
+    """--store STORE: a directory (a campaign store) or a new one below a writable directory."""
+    if path is not None:
+        check_output_directory(path, "store directory")
+
+
+def check_entries(directory, files=(), directories=()):
+    """Before anything is written into DIR: each of its entries a command would write or read back is absent or a
+    regular file (each of `directories` absent or a directory), so that no refusal comes after other files were
+    written and no FIFO is ever opened."""
+    if not os.path.isdir(directory):
+        return
+    for name in files:
+        refuse_unless_regular(os.path.join(directory, name))
+    for name in directories:
+        path = os.path.join(directory, name)
+        if os.path.lexists(path) and (os.path.islink(path) or not os.path.isdir(path)):
+            raise UserError(f"will not write into {path}: it is not a directory")
+
+
+def check_results_directory(directory):
+    """A compare's or cost study's -o DIR: a directory whose entries (the tables, run records and report that
+    `compare`, `cost` and `report` write or read, the lock, the partial runs) may all be written."""
+    from ..lock import LOCK
+    from ..outputs import DIRECTORY_FILES
+    from ..partial import PARTIAL
+    check_output_directory(directory)
+    check_entries(directory, DIRECTORY_FILES + (LOCK,), (PARTIAL,))
 
 
 def writable(directory, path):

@@ -6,7 +6,8 @@ from ..errors import UserError
 from ..files import write_text
 from ..plan import engine_runs
 from ..request import Request
-from .options import EXIT_OK, add_output_options, add_scene_options, check_output_directory, engine_option, keywords
+from .options import (EXIT_OK, add_output_options, add_scene_options, check_entries, check_output_directory,
+                      engine_option, keywords)
 
 EXAMPLE = "harness render --model hertz-mindlin --engine liggghts --en 0.5 -o decks/"
 
@@ -32,6 +33,7 @@ def main(args):
     check_output_directory(args.output)
     texts = [engine.render(run) for run in engine_runs(engine, request.law, request.scene, request.resolution,
                                                        request.engine_options.get(args.engine))]
+    check_entries(args.output, [name for name, _ in texts])      # every input checked before any is written
     os.makedirs(args.output, exist_ok=True)
     for name, text in texts:
         write_text(os.path.join(args.output, name), text)
