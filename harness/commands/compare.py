@@ -17,7 +17,6 @@ from ..outputs import save_comparison, start_comparison
 from ..partial import PartialRuns
 from ..request import Request
 from ..results import write_csv
-from ..views.drawing import preload
 from ..views.html import rebuild
 from ..views.progress import Progress
 from ..views.terminal import print_comparison, print_summary, verdict_line
@@ -64,7 +63,6 @@ def main(args):
         frames.append(frame)
         write_csv(pd.concat(frames, ignore_index=True), results_path)
 
-    preload()                              # the report's plotting library loads beside the runs
     with exclusive(args.output), Progress(f"compare {request.model}", quiet=args.quiet or args.json) as progress:
         partial = RunCache(Store(args.store)) if args.store else PartialRuns(args.output)
         try:

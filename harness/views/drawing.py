@@ -6,17 +6,6 @@ from concurrent.futures import ProcessPoolExecutor
 from ..solver.threads import THREADS
 
 
-def preload():
-    """Import matplotlib in a background thread (0.4 s), so that it is ready when the figures are drawn."""
-    import threading
-
-    def load():
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot  # noqa: F401
-    threading.Thread(target=load, name="harness-preload", daemon=True).start()
-
-
 def draw_all(calls):
     """[function(*args) for function, args in calls], drawn in parallel where the machine has cores to spare."""
     if len(calls) < 2 or THREADS < 2 or "fork" not in multiprocessing.get_all_start_methods():
