@@ -10,6 +10,8 @@ from ..errors import UserError
 from ..version import __version__
 from .options import EXIT_CODES, EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_USAGE, Parser
 
+EXIT_CLOSED_OUTPUT = 128 + signal.SIGPIPE
+
 
 def describe(sub, name, summary, example, exit_codes=EXIT_CODES):
     """A sub-command whose --help carries its summary, an example and its exit codes (the common ones unless a
@@ -74,8 +76,29 @@ def what_was_kept(args, since):
     return f"finished results were kept in {output}" if written else "nothing had been written yet"
 
 
+def output_closed():
+    """Whether the reader of stdout or stderr has gone (`harness ... | head`): its pipe reports an error. If so,
+    both are pointed at /dev/null, so that nothing more is said, not even by the interpreter's flush at exit."""
+    import select
+    poller, descriptors = select.poll(), []
+    for stream in (sys.stdout, sys.stderr):
+        try:
+            descriptors.append(stream.fileno())
+        except (AttributeError, OSError, ValueError):      # not a file (a test's capture): not a closed pipe
+            continue
+        poller.register(descriptors[-1], select.POLLOUT)
+    if not any(events & (select.POLLERR | select.POLLHUP) for _, events in poller.poll(0)):
+        return False
+    devnull = os.open(os.devnull, os.O_WRONLY)
+    for descriptor in descriptors:
+        os.dup2(devnull, descriptor)
+    os.close(devnull)
+    return True
+
+
 def main(argv=None):
-    """Parse, run one command, return its exit code; a user's mistake is one line and 2, Ctrl-C is 130."""
+    """Parse, run one command, return its exit code; a user's mistake is one line and 2, Ctrl-C is 130, a closed
+    output ends it quietly with 141 (128 + SIGPIPE, as a shell reports a Unix tool stopped by its closed pipe)."""
     from ..engines.runner import sweep_stale
     args, since = None, time.time() - 1.0
     replaced = stop_on_signals()
@@ -93,6 +116,8 @@ def main(argv=None):
         print(f"harness: {how}; engines stopped, {what_was_kept(args, since)}", file=sys.stderr)
         return EXIT_INTERRUPTED if signum == signal.SIGINT else 128 + signum
     except Exception as exc:                            # a bug of harness: never exit 1, which means disagreement
+        if isinstance(exc, BrokenPipeError) and output_closed():
+            return EXIT_CLOSED_OUTPUT
         if isinstance(exc, OSError) and exc.filename:   # the file system refused a path the user gave
             print(f"harness: error: cannot use {exc.filename}: {exc.strerror}", file=sys.stderr)
             return EXIT_USAGE
