@@ -1,8 +1,10 @@
 """Files written whole or not at all: a temporary file beside the target, renamed over it, so that an interrupted or
 killed process never leaves half a file."""
+import errno
 import os
 import stat
 import tempfile
+from contextlib import suppress
 
 from .errors import UserError
 
@@ -33,7 +35,10 @@ def write_text(path, text):
         os.umask(umask)
         os.chmod(tmp, 0o666 & ~umask)
         os.replace(tmp, path)
-    except BaseException:
-        os.unlink(tmp)
+    except BaseException as exc:
+        with suppress(FileNotFoundError):      # an interrupt just after the rename: the file is whole, tmp gone
+            os.unlink(tmp)
+        if isinstance(exc, OSError) and exc.errno in (errno.ENOSPC, errno.EDQUOT) and exc.filename is None:
+            raise OSError(exc.errno, exc.strerror, path) from None      # a full disk: say which file it refused
         raise
     return path

@@ -432,3 +432,31 @@ def test_ctrl_c_while_the_measurements_beside_the_engines_run_exits_at_once(tmp_
     proc.send_signal(signal.SIGINT)
     _, err = proc.communicate(timeout=30)
     assert time.perf_counter() - stopped < 5.0 and proc.returncode == 130, err
+
+
+# --- an interrupt at a rename ----------------------------------------------------------------------------------------
+
+class ReplaceThenInterrupt:
+    """The os module as harness.files sees it, but Ctrl-C arrives just after results.csv is renamed into place."""
+
+    def __getattr__(self, name):
+        return getattr(os, name)
+
+    @staticmethod
+    def replace(source, target):
+        os.replace(source, target)
+        if os.path.basename(target) == "results.csv":
+            raise KeyboardInterrupt
+
+
+def test_ctrl_c_just_after_a_rename_is_an_interruption_and_the_file_is_whole(tmp_path, monkeypatch, capfd):
+    import pandas as pd
+    import harness.files
+    monkeypatch.setattr(harness.files, "os", ReplaceThenInterrupt())
+    out = tmp_path / "out"
+    code, _, err = harness_main(capfd, "compare", "--model", "hertz-mindlin", "--en", "0.5", "--angles", "10",
+                                "--engines", "reference", "-o", str(out), "--quiet")
+    assert code == 130 and err.strip().splitlines() == [
+        f"harness: interrupted; engines stopped, finished results were kept in {out}"], err
+    assert len(pd.read_csv(out / "results.csv")) == 1
+    assert not [name for name in os.listdir(out) if name.endswith(".tmp")]

@@ -1,5 +1,6 @@
 """The command line: one thin module per command; bad input ends in one line on stderr and exit code 2."""
 import argparse
+import errno
 import os
 import signal
 import sys
@@ -8,7 +9,7 @@ import time
 
 from ..errors import UserError
 from ..version import __version__
-from .options import EXIT_CODES, EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_USAGE, Parser
+from .options import EXIT_CODES, EXIT_ENGINE, EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_USAGE, Parser
 
 EXIT_CLOSED_OUTPUT = 128 + signal.SIGPIPE
 
@@ -76,6 +77,12 @@ def what_was_kept(args, since):
     return f"finished results were kept in {output}" if written else "nothing had been written yet"
 
 
+def disk_full(exc):
+    """What ran out, in words: the device's space, or the user's quota."""
+    what = "no space left on the device" if exc.errno == errno.ENOSPC else "disk quota exceeded"
+    return f"{what} (writing {exc.filename})" if exc.filename else what
+
+
 def output_closed():
     """Whether the reader of stdout or stderr has gone (`harness ... | head`): its pipe reports an error. If so,
     both are pointed at /dev/null, so that nothing more is said, not even by the interpreter's flush at exit."""
@@ -118,6 +125,10 @@ def main(argv=None):
     except Exception as exc:                            # a bug of harness: never exit 1, which means disagreement
         if isinstance(exc, BrokenPipeError) and output_closed():
             return EXIT_CLOSED_OUTPUT
+        if isinstance(exc, OSError) and exc.errno in (errno.ENOSPC, errno.EDQUOT):
+            print(f"harness: error: {disk_full(exc)}; every file is whole (written in full or not at all), "
+                  f"{what_was_kept(args, since)}", file=sys.stderr)
+            return EXIT_ENGINE
         if isinstance(exc, OSError) and exc.filename:   # the file system refused a path the user gave
             print(f"harness: error: cannot use {exc.filename}: {exc.strerror}", file=sys.stderr)
             return EXIT_USAGE
