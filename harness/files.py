@@ -21,6 +21,22 @@ def refuse_unless_regular(path):
         raise UserError(f"will not write {path}: it is {kind}, not a regular file")
 
 
+def refuse_to_read_unless_regular(path, what):
+    """Only a regular file (or a link to one) is read: a FIFO would block the reader for good and a device may never
+    end. Checked on the file opened without blocking, so that opening a FIFO does not wait for a writer."""
+    try:
+        fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK)
+    except OSError as exc:
+        raise UserError(f"cannot read {what} {path}: {exc.strerror}") from None
+    try:
+        mode = os.fstat(fd).st_mode
+    finally:
+        os.close(fd)
+    if not stat.S_ISREG(mode):
+        kind = "a directory" if stat.S_ISDIR(mode) else "a device, FIFO or socket"
+        raise UserError(f"will not read {what} {path}: it is {kind}, not a regular file")
+
+
 def write_text(path, text):
     """Write `text` to `path` atomically, with the permissions a plain open() would give; only a new path or a
     regular file is written."""

@@ -460,3 +460,26 @@ def test_ctrl_c_just_after_a_rename_is_an_interruption_and_the_file_is_whole(tmp
         f"harness: interrupted; engines stopped, finished results were kept in {out}"], err
     assert len(pd.read_csv(out / "results.csv")) == 1
     assert not [name for name in os.listdir(out) if name.endswith(".tmp")]
+
+
+# --- a baseline that is not a regular file ---------------------------------------------------------------------------
+
+@pytest.mark.parametrize("kind", ["fifo", "link to a fifo", "link to /dev/zero", "directory"])
+def test_check_refuses_a_baseline_that_is_not_a_regular_file_without_opening_it_for_good(tmp_path, kind):
+    """A FIFO would block the reader until a writer came, /dev/zero never ends: refused at once, in one line, and
+    left as it was."""
+    path, fifo = tmp_path / "baseline.csv", tmp_path / "elsewhere"
+    if kind == "fifo":
+        os.mkfifo(path)
+    elif kind == "link to a fifo":
+        os.mkfifo(fifo)
+        os.symlink(fifo, path)
+    elif kind == "link to /dev/zero":
+        os.symlink("/dev/zero", path)
+    else:
+        path.mkdir()
+    done = subprocess.run([sys.executable, "-m", "harness", "check", "--baseline", str(tmp_path)],
+                          capture_output=True, text=True, timeout=60)
+    lines = done.stderr.strip().splitlines()
+    assert done.returncode == 2 and len(lines) == 1 and "not a regular file" in lines[0], done.stderr
+    assert os.path.lexists(path) and (kind != "fifo" or stat_kind(path) == "fifo")
