@@ -37,6 +37,14 @@ def refuse_to_read_unless_regular(path, what):
         raise UserError(f"will not read {what} {path}: it is {kind}, not a regular file")
 
 
+def discard(path):
+    """Remove a regular file if there is one (a file an unfinished command must not leave standing, such as the
+    report of an earlier run beside new results); anything else at the path is left alone."""
+    with suppress(FileNotFoundError):
+        if stat.S_ISREG(os.lstat(path).st_mode):
+            os.unlink(path)
+
+
 def write_text(path, text):
     """Write `text` to `path` atomically, with the permissions a plain open() would give; only a new path or a
     regular file is written."""

@@ -483,3 +483,41 @@ def test_check_refuses_a_baseline_that_is_not_a_regular_file_without_opening_it_
     lines = done.stderr.strip().splitlines()
     assert done.returncode == 2 and len(lines) == 1 and "not a regular file" in lines[0], done.stderr
     assert os.path.lexists(path) and (kind != "fifo" or stat_kind(path) == "fifo")
+
+
+# --- no earlier report beside new results ----------------------------------------------------------------------------
+
+def test_a_killed_compare_leaves_no_earlier_report_beside_its_results(tmp_path, capfd):
+    """DIR holds an earlier compare (another e_n) and its report; a compare killed once its first results are in
+    DIR must not leave that report standing beside them unmarked."""
+    out = tmp_path / "out"
+    assert main_in_process("compare", "--model", "hertz-mindlin", "--en", "0.9", "--angles", "10", "--engines",
+                           "reference", "-o", str(out), "--quiet") == 0
+    assert (out / "report.html").exists()
+    proc, engine, _ = start_hung_compare(tmp_path)
+    deadline = time.time() + 60                       # the reference's runs finish while LIGGGHTS hangs
+    while not (out / ".partial").is_dir() or len(os.listdir(out / ".partial")) < 2:
+        assert time.time() < deadline
+        time.sleep(0.1)
+    proc.kill()
+    proc.communicate(timeout=30)
+    assert wait_gone(engine)
+    assert set(__import__("pandas").read_csv(out / "results.csv").e_n_target) == {0.5}
+    report = out / "report.html"
+    assert not report.exists() or "PARTIAL" in report.read_text()
+
+
+def test_a_killed_cost_study_leaves_no_earlier_report_standing(tmp_path):
+    out = tmp_path / "out"
+    assert main_in_process("compare", "--model", "hertz-mindlin", "--en", "0.9", "--angles", "10", "--engines",
+                           "reference", "-o", str(out), "--quiet") == 0
+    proc = subprocess.Popen([sys.executable, "-m", "harness", "cost", "--model", "hertz-mindlin", "--en", "0.5",
+                             "--angles", "10", "--engines", "reference", "-o", str(out)],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    deadline = time.time() + 60
+    while not (out / "cost.json").exists():
+        assert time.time() < deadline and proc.poll() is None, proc.communicate()
+        time.sleep(0.05)
+    proc.kill()
+    proc.communicate(timeout=30)
+    assert not (out / "report.html").exists()

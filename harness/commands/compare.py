@@ -12,6 +12,7 @@ from ..analyses.verdict import DISAGREE, NOT_COMPARED, verdict
 from ..api import compare_request
 from ..campaign.store import RunCache, Store
 from ..comparison import Comparison
+from ..files import discard
 from ..lock import exclusive
 from ..outputs import save_comparison, start_comparison
 from ..partial import PartialRuns
@@ -51,11 +52,12 @@ def main(args):
     """Write DIR/results.csv (after every batch), the other tables and report.html; the exit code is the verdict."""
     request = Request.from_keywords(args.model, tolerances=args.tolerances, **keywords(args))
     check_output_directory(args.output)
-    results_path = os.path.join(args.output, "results.csv")
+    results_path, report_path = os.path.join(args.output, "results.csv"), os.path.join(args.output, "report.html")
     frames = []
 
     def keep(frame):                       # results.csv holds every finished run, whatever stops the compare
-        if not frames:                     # the first result replaces an earlier compare in DIR, never refused input
+        if not frames:                     # the first result replaces an earlier compare in DIR, never refused input;
+            discard(report_path)           # its report goes first, so that none stands beside the new results
             start_comparison(args.output, Comparison(request.law, request.scene, pd.DataFrame(),
                                                      overrides=dict(request.overrides), requested=request.engines,
                                                      engine_options=request.engine_options, command=command_line(),

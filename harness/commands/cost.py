@@ -9,6 +9,7 @@ from ..api import statuses
 from ..campaign.store import RunCache, Store
 from ..engines import ENGINES
 from ..errors import UserError
+from ..files import discard
 from ..lock import exclusive
 from ..outputs import COST, save_cost
 from ..request import Request
@@ -77,6 +78,7 @@ def main(args):
     skipped = [(s.name, s.reason) for s in found if not s.available]
     overrides = dict(request.overrides)
     with exclusive(args.output):
+        discard(os.path.join(args.output, "report.html"))     # an earlier report never stands beside this study
         save_cost(args.output, pd.DataFrame(columns=COLUMNS), {}, law, scene, overrides, skipped, [])
         with Progress(f"cost {law.name}", quiet=args.quiet or args.json) as progress:
             table, failures, uncertainty = cost_table(
