@@ -521,3 +521,39 @@ def test_a_killed_cost_study_leaves_no_earlier_report_standing(tmp_path):
     proc.kill()
     proc.communicate(timeout=30)
     assert not (out / "report.html").exists()
+
+
+# --- the report's figure workers --------------------------------------------------------------------------------------
+
+def report_while_drawing(tmp_path):
+    """`harness report DIR` on a compare of the reference (45 angles, 3 e_n), returned once its forked figure workers
+    run: (process, the workers' pids)."""
+    out = tmp_path / "out"
+    assert main_in_process("compare", "--model", "hertz-mindlin", "--engines", "reference", "-o", str(out),
+                           "--quiet") == 0
+    proc = subprocess.Popen([sys.executable, "-m", "harness", "report", str(out)], stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True, preexec_fn=interruptible)
+    deadline, workers = time.time() + 60, []
+    while len(workers) < 2:
+        assert time.time() < deadline and proc.poll() is None, proc.communicate()
+        workers = descendants(proc.pid)
+        time.sleep(0.01)
+    return proc, workers
+
+
+def test_a_killed_report_takes_its_figure_workers_along(tmp_path):
+    proc, workers = report_while_drawing(tmp_path)
+    proc.kill()
+    proc.communicate(timeout=30)
+    assert all(wait_gone(pid, 5) for pid in workers)
+
+
+@pytest.mark.parametrize("signum, code", [(signal.SIGINT, 130), (signal.SIGTERM, 143)])
+def test_a_report_stopped_while_drawing_ends_at_once_with_its_workers(tmp_path, signum, code):
+    proc, workers = report_while_drawing(tmp_path)
+    stopped = time.perf_counter()
+    proc.send_signal(signum)
+    _, err = proc.communicate(timeout=30)
+    assert proc.returncode == code and "Traceback" not in err, err
+    assert time.perf_counter() - stopped < 2.0
+    assert all(wait_gone(pid, 1) for pid in workers)
