@@ -1,6 +1,7 @@
 """Nothing leaked and nothing lost: engine processes and temporary directories end with harness, whatever stops it
 (Ctrl-C, SIGTERM, SIGHUP, SIGKILL); a hung engine costs one timeout; logs are read from their tail; a LIGGGHTS run
 listens on no network interface."""
+import json
 import os
 import signal
 import subprocess
@@ -557,3 +558,46 @@ def test_a_report_stopped_while_drawing_ends_at_once_with_its_workers(tmp_path, 
     assert proc.returncode == code and "Traceback" not in err, err
     assert time.perf_counter() - stopped < 2.0
     assert all(wait_gone(pid, 1) for pid in workers)
+
+
+# --- YADE's own temporary directory ----------------------------------------------------------------------------------
+
+YADE_START = r"""
+import glob, json, os, signal, subprocess, sys, time
+codes = []
+for k in range(int(sys.argv[1])):
+    proc = subprocess.Popen([sys.executable, "-m", "harness", "compare", "--model", "hertz-mindlin", "--en", "0.5",
+                             "--angles", "10", "--engines", "yade", "-o", f"/tmp/out{k}", "--quiet"],
+                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    made = lambda: set(glob.glob("/tmp/**/yade-*", recursive=True))
+    before, deadline = made(), time.time() + 120
+    while not made() - before and time.time() < deadline and proc.poll() is None:
+        time.sleep(0.002)
+    proc.send_signal(signal.SIGTERM)                   # YADE has made its directory and is still starting
+    proc.communicate(timeout=60)
+    codes.append(proc.returncode)
+left = sorted(os.path.relpath(os.path.join(root, name), "/tmp") for root, dirs, files in os.walk("/tmp")
+              for name in dirs + files if not os.path.relpath(os.path.join(root, name), "/tmp").startswith("out"))
+print(json.dumps({"codes": codes, "left": left}))
+"""
+
+
+def namespaces_allowed():
+    return subprocess.run(["unshare", "--user", "--map-root-user", "--mount", "true"],
+                          capture_output=True).returncode == 0
+
+
+@needs("yade")
+@pytest.mark.skipif(not namespaces_allowed(), reason="no user and mount namespaces here")
+def test_harness_stopped_while_yade_starts_leaves_no_yade_directory(tmp_path):
+    """YADE makes /tmp/yade-XXXXXX as it starts, whatever TMPDIR says, and removes it only when it exits normally.
+    Each compare runs with a /tmp of the test's own (a private mount namespace) and is stopped the moment YADE's
+    directory appears: nothing may be left in that /tmp."""
+    private = tmp_path / "tmp"
+    private.mkdir()
+    done = subprocess.run(["unshare", "--user", "--map-root-user", "--mount", "--", "sh", "-c",
+                           'mount --bind "$1" /tmp && shift && exec "$@"', "sh", str(private), sys.executable, "-c",
+                           YADE_START, "4"], capture_output=True, text=True, timeout=900, cwd=os.getcwd())
+    assert done.returncode == 0, done.stderr
+    found = json.loads(done.stdout)
+    assert found["codes"] == [143] * 4 and found["left"] == [], found
