@@ -4,12 +4,12 @@ import errno
 import os
 import signal
 import sys
-import threading
 import time
 
 from ..errors import UserError
 from ..version import __version__
 from .options import EXIT_CODES, EXIT_ENGINE, EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_USAGE, Parser
+from .stopping import Stopped, stop_on_signals
 
 EXIT_CLOSED_OUTPUT = 128 + signal.SIGPIPE
 
@@ -45,25 +45,6 @@ def show_log(quiet):
         log.addHandler(handler)
         log.propagate = False
     log.setLevel(logging.WARNING if quiet else logging.INFO)
-
-
-class Stopped(KeyboardInterrupt):
-    """SIGTERM or SIGHUP, raised where harness is so that it unwinds as for Ctrl-C: engines killed, files removed."""
-
-    def __init__(self, signum):
-        super().__init__(signum)
-        self.signum = signum
-
-
-def stop_on_signals():
-    """SIGTERM and SIGHUP stop harness the way Ctrl-C does (only the main thread can receive them); returns the
-    handlers they replace."""
-    if threading.current_thread() is not threading.main_thread():
-        return {}
-
-    def stop(signum, frame):
-        raise Stopped(signum)
-    return {signum: signal.signal(signum, stop) for signum in (signal.SIGTERM, signal.SIGHUP)}
 
 
 def what_was_kept(args, since):
@@ -108,7 +89,7 @@ def main(argv=None):
     output ends it quietly with 141 (128 + SIGPIPE, as a shell reports a Unix tool stopped by its closed pipe)."""
     from ..engines.runner import sweep_stale
     args, since = None, time.time() - 1.0
-    replaced = stop_on_signals()
+    restore_signals = stop_on_signals()
     try:
         sweep_stale()
         args = build_parser().parse_args(argv)
@@ -138,5 +119,4 @@ def main(argv=None):
               file=sys.stderr)
         return EXIT_INTERNAL
     finally:
-        for signum, handler in replaced.items():
-            signal.signal(signum, handler)
+        restore_signals()
