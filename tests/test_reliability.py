@@ -627,3 +627,26 @@ def test_a_stop_raised_where_python_ignores_exceptions_still_stops_harness(tmp_p
                           timeout=300)
     assert done.returncode == 143 and "Traceback" not in done.stderr, done.stderr
     assert "terminated" in done.stderr
+
+
+STOP_IN_AN_EXTENSION = r"""
+import os, signal, sys
+from harness.commands import main, models
+
+def load_extension(args):                       # as scipy's compiled optimiser did when SIGTERM came as it loaded
+    try:
+        os.kill(os.getpid(), signal.SIGTERM)
+        sum(range(1000))
+    except KeyboardInterrupt as exc:
+        raise ImportError("initialization failed") from exc
+
+models.main = load_extension
+sys.exit(main(["models"]))
+"""
+
+
+def test_a_stop_turned_into_another_error_is_still_a_stop():
+    """A compiled extension interrupted while it loads raises ImportError from the stop: still exit 143, one line."""
+    done = subprocess.run([sys.executable, "-c", STOP_IN_AN_EXTENSION], capture_output=True, text=True, timeout=120)
+    assert done.returncode == 143 and done.stderr.strip().splitlines() == [
+        "harness: terminated; engines stopped, nothing had been written yet"], done.stderr

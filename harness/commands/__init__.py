@@ -9,7 +9,7 @@ import time
 from ..errors import UserError
 from ..version import __version__
 from .options import EXIT_CODES, EXIT_ENGINE, EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_USAGE, Parser
-from .stopping import Stopped, stop_on_signals
+from .stopping import Stopped, stop_behind, stop_on_signals
 
 EXIT_CLOSED_OUTPUT = 128 + signal.SIGPIPE
 
@@ -84,6 +84,14 @@ def output_closed():
     return True
 
 
+def interrupted(stop, args, since):
+    """The one line and exit code of a command stopped by Ctrl-C (130), SIGTERM (143) or SIGHUP (129)."""
+    signum = stop.signum if isinstance(stop, Stopped) else signal.SIGINT
+    how = {signal.SIGTERM: "terminated", signal.SIGHUP: "hung up"}.get(signum, "interrupted")
+    print(f"harness: {how}; engines stopped, {what_was_kept(args, since)}", file=sys.stderr)
+    return EXIT_INTERRUPTED if signum == signal.SIGINT else 128 + signum
+
+
 def main(argv=None):
     """Parse, run one command, return its exit code; a user's mistake is one line and 2, Ctrl-C is 130, a closed
     output ends it quietly with 141 (128 + SIGPIPE, as a shell reports a Unix tool stopped by its closed pipe)."""
@@ -95,15 +103,16 @@ def main(argv=None):
         args = build_parser().parse_args(argv)
         show_log(quiet=getattr(args, "quiet", False))
         return args.func(args)
+    except KeyboardInterrupt as exc:
+        return interrupted(exc, args, since)
     except UserError as exc:
+        if stop_behind(exc):
+            return interrupted(stop_behind(exc), args, since)
         print(f"harness: error: {exc}", file=sys.stderr)
         return EXIT_USAGE
-    except KeyboardInterrupt as exc:
-        signum = exc.signum if isinstance(exc, Stopped) else signal.SIGINT
-        how = {signal.SIGTERM: "terminated", signal.SIGHUP: "hung up"}.get(signum, "interrupted")
-        print(f"harness: {how}; engines stopped, {what_was_kept(args, since)}", file=sys.stderr)
-        return EXIT_INTERRUPTED if signum == signal.SIGINT else 128 + signum
     except Exception as exc:                            # a bug of harness: never exit 1, which means disagreement
+        if stop_behind(exc):
+            return interrupted(stop_behind(exc), args, since)
         if isinstance(exc, BrokenPipeError) and output_closed():
             return EXIT_CLOSED_OUTPUT
         if isinstance(exc, OSError) and exc.errno in (errno.ENOSPC, errno.EDQUOT):

@@ -33,6 +33,19 @@ def stop_on_signals():
     return restore
 
 
+def stop_behind(exc):
+    """The stop (KeyboardInterrupt, Stopped included) that `exc` was raised from or while handling, if any: a C
+    extension interrupted while it loads turns the stop into an ImportError caused by it, and an error raised
+    while a stop unwinds has it as its context."""
+    seen = set()
+    while exc is not None and id(exc) not in seen:
+        if isinstance(exc, KeyboardInterrupt):
+            return exc
+        seen.add(id(exc))
+        exc = exc.__cause__ or exc.__context__
+    return None
+
+
 def redeliver_lost_stops():
     """A stop raised where Python ignores exceptions (a handler run at a fork, a finaliser: "Exception ignored in
     ...") would be lost, and harness would carry on as if never asked to stop. Such a stop is raised again, by a
