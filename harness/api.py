@@ -13,7 +13,6 @@ from .execute import execute, run_all
 from .plan import CONVERGED, compare_plan, reference_runs, target_of
 from .request import Request
 from .solver.reference import simulate
-from .solver.threads import in_background
 from .two_spheres import with_bodies
 
 HISTORY_POINTS = 400
@@ -72,8 +71,9 @@ def statuses(request):
 def compare_request(request, on_frame=None, progress=None, partial=None):
     """Run the comparison of a validated request (on_frame(frame) as each run of the comparison is done; progress
     told of every run and of the measurements) and return it. What needs no engine result (attribution, the sliding
-    threshold, force histories, the precision check) runs beside the engines. With `partial` (harness.partial or a
-    campaign store), the runs it holds are taken from it, and each run that finishes is put there."""
+    threshold, force histories, the precision check) runs in this thread while the engines' threads run theirs.
+    With `partial` (harness.partial or a campaign store), the runs it holds are taken from it, and each run that
+    finishes is put there."""
     law, scene = request.law, request.scene
     found = statuses(request)
     engines = {ENGINES[s.name]: request.engine_options.get(s.name, {}) for s in found if s.available}
@@ -87,7 +87,7 @@ def compare_request(request, on_frame=None, progress=None, partial=None):
     extra = [run_ for _, pair in checks for run_ in pair]
     if progress:
         progress.expect(len(plan) + len(extra) + 1)
-    measured = in_background(measurements, law, scene, engines, engine_resolution)
+    measured = []
     in_plan = {id(run_) for run_ in plan}
 
     def finished(run_, frame, failure=None):
@@ -96,8 +96,9 @@ def compare_request(request, on_frame=None, progress=None, partial=None):
         if progress:
             progress.advance(f"{run_.engine} ({run_.dialect.dialect} formulas) e_n {run_.e_n:g}"
                              + "".join(f" {k} {v}" for k, v in run_.options))
-    done = run_all(plan + extra, finished, partial)
-    attributions, sliding, histories = measured.result()
+    done = run_all(plan + extra, finished, partial,
+                   meanwhile=lambda: measured.append(measurements(law, scene, engines, engine_resolution)))
+    attributions, sliding, histories = measured[0]
     if progress:
         progress.advance("attribution, sliding threshold, force histories")
     results = pd.concat([frame for frame, _ in done[:len(plan)]], ignore_index=True)

@@ -9,6 +9,7 @@ import pandas as pd
 from .engines import ENGINES, EXTERNAL
 from .errors import UserError
 from .execute import execute
+from .files import refuse_to_read_unless_regular
 from .laws import LAWS, compose
 from .plan import engine_plan, reference_runs
 from .results import read_csv, write_csv
@@ -88,6 +89,7 @@ def check(directory, now=None, progress=None, cache=None):
     path = os.path.join(directory, BASELINE_FILE)
     if not os.path.exists(path):
         raise UserError(f"no baseline at {path}; create it with `harness baseline --update --baseline {directory}`")
+    refuse_to_read_unless_regular(path, "the baseline")
     baseline = read_csv(path)
     if baseline.empty:
         raise UserError(f"the baseline {path} holds no rows; recreate it with `harness baseline --update`")

@@ -1,11 +1,13 @@
 """Executing a plan: the reference's runs in this thread, each external engine's runs in a worker thread of their
 own (engines are processes, so engines run side by side up to the machine's cores, and an engine may share one
 process between its runs); each frame handed on as soon as it is done, so that a caller keeps whatever is finished;
-one tidy results table in the plan's order, and the failed runs."""
+one tidy results table in the plan's order, and the failed runs. What the threads use is imported before they
+start (harness.before_threads)."""
 from concurrent.futures import ThreadPoolExecutor, as_completed
 
 import pandas as pd
 
+from .before_threads import import_what_threads_use
 from .engines import ENGINES
 from .engines.runner import allow, kill_all
 from .results import COLUMNS
@@ -21,10 +23,12 @@ def execute(runs, on_frame=None, cache=None):
     return table, [failure for _, failure in done if failure is not None]
 
 
-def run_all(runs, on_done=None, cache=None):
+def run_all(runs, on_done=None, cache=None, meanwhile=None):
     """(frame, failure or None) of each run, in the runs' order; on_done(run, frame, failure) as each is done; runs
-    the cache holds are taken from it, and each run that succeeds is put there."""
+    the cache holds are taken from it, and each run that succeeds is put there. meanwhile() runs in this thread
+    after the reference's runs, while the engines' threads run theirs."""
     allow()
+    import_what_threads_use()
     frames, failures = [None] * len(runs), [None] * len(runs)
     held = {i: frame for i, run in enumerate(runs) if cache is not None for frame in [cache.get(run)]
             if frame is not None}
@@ -51,6 +55,8 @@ def run_all(runs, on_done=None, cache=None):
                            for name, indices in external.items()}
                 for i in groups.get("reference", []):
                     done([i], ENGINES["reference"].run([runs[i]]))
+                if meanwhile is not None:
+                    meanwhile()
                 for future in as_completed(pending):
                     done(pending[future], future.result())
             except BaseException:

@@ -1,6 +1,7 @@
 """Nothing leaked and nothing lost: engine processes and temporary directories end with harness, whatever stops it
 (Ctrl-C, SIGTERM, SIGHUP, SIGKILL); a hung engine costs one timeout; logs are read from their tail; a LIGGGHTS run
 listens on no network interface."""
+import json
 import os
 import signal
 import subprocess
@@ -432,3 +433,220 @@ def test_ctrl_c_while_the_measurements_beside_the_engines_run_exits_at_once(tmp_
     proc.send_signal(signal.SIGINT)
     _, err = proc.communicate(timeout=30)
     assert time.perf_counter() - stopped < 5.0 and proc.returncode == 130, err
+
+
+# --- an interrupt at a rename ----------------------------------------------------------------------------------------
+
+class ReplaceThenInterrupt:
+    """The os module as harness.files sees it, but Ctrl-C arrives just after results.csv is renamed into place."""
+
+    def __getattr__(self, name):
+        return getattr(os, name)
+
+    @staticmethod
+    def replace(source, target):
+        os.replace(source, target)
+        if os.path.basename(target) == "results.csv":
+            raise KeyboardInterrupt
+
+
+def test_ctrl_c_just_after_a_rename_is_an_interruption_and_the_file_is_whole(tmp_path, monkeypatch, capfd):
+    import pandas as pd
+    import harness.files
+    monkeypatch.setattr(harness.files, "os", ReplaceThenInterrupt())
+    out = tmp_path / "out"
+    code, _, err = harness_main(capfd, "compare", "--model", "hertz-mindlin", "--en", "0.5", "--angles", "10",
+                                "--engines", "reference", "-o", str(out), "--quiet")
+    assert code == 130 and err.strip().splitlines() == [
+        f"harness: interrupted; engines stopped, finished results were kept in {out}"], err
+    assert len(pd.read_csv(out / "results.csv")) == 1
+    assert not [name for name in os.listdir(out) if name.endswith(".tmp")]
+
+
+# --- a baseline that is not a regular file ---------------------------------------------------------------------------
+
+@pytest.mark.parametrize("kind", ["fifo", "link to a fifo", "link to /dev/zero", "directory"])
+def test_check_refuses_a_baseline_that_is_not_a_regular_file_without_opening_it_for_good(tmp_path, kind):
+    """A FIFO would block the reader until a writer came, /dev/zero never ends: refused at once, in one line, and
+    left as it was."""
+    path, fifo = tmp_path / "baseline.csv", tmp_path / "elsewhere"
+    if kind == "fifo":
+        os.mkfifo(path)
+    elif kind == "link to a fifo":
+        os.mkfifo(fifo)
+        os.symlink(fifo, path)
+    elif kind == "link to /dev/zero":
+        os.symlink("/dev/zero", path)
+    else:
+        path.mkdir()
+    done = subprocess.run([sys.executable, "-m", "harness", "check", "--baseline", str(tmp_path)],
+                          capture_output=True, text=True, timeout=60)
+    lines = done.stderr.strip().splitlines()
+    assert done.returncode == 2 and len(lines) == 1 and "not a regular file" in lines[0], done.stderr
+    assert os.path.lexists(path) and (kind != "fifo" or stat_kind(path) == "fifo")
+
+
+# --- no earlier report beside new results ----------------------------------------------------------------------------
+
+def test_a_killed_compare_leaves_no_earlier_report_beside_its_results(tmp_path, capfd):
+    """DIR holds an earlier compare (another e_n) and its report; a compare killed once its first results are in
+    DIR must not leave that report standing beside them unmarked."""
+    out = tmp_path / "out"
+    assert main_in_process("compare", "--model", "hertz-mindlin", "--en", "0.9", "--angles", "10", "--engines",
+                           "reference", "-o", str(out), "--quiet") == 0
+    assert (out / "report.html").exists()
+    proc, engine, _ = start_hung_compare(tmp_path)
+    deadline = time.time() + 60                       # the reference's runs finish while LIGGGHTS hangs
+    while not (out / ".partial").is_dir() or len(os.listdir(out / ".partial")) < 2:
+        assert time.time() < deadline
+        time.sleep(0.1)
+    proc.kill()
+    proc.communicate(timeout=30)
+    assert wait_gone(engine)
+    assert set(__import__("pandas").read_csv(out / "results.csv").e_n_target) == {0.5}
+    report = out / "report.html"
+    assert not report.exists() or "PARTIAL" in report.read_text()
+
+
+def test_a_killed_cost_study_leaves_no_earlier_report_standing(tmp_path):
+    out = tmp_path / "out"
+    assert main_in_process("compare", "--model", "hertz-mindlin", "--en", "0.9", "--angles", "10", "--engines",
+                           "reference", "-o", str(out), "--quiet") == 0
+    proc = subprocess.Popen([sys.executable, "-m", "harness", "cost", "--model", "hertz-mindlin", "--en", "0.5",
+                             "--angles", "10", "--engines", "reference", "-o", str(out)],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    deadline = time.time() + 60
+    while not (out / "cost.json").exists():
+        assert time.time() < deadline and proc.poll() is None, proc.communicate()
+        time.sleep(0.05)
+    proc.kill()
+    proc.communicate(timeout=30)
+    assert not (out / "report.html").exists()
+
+
+# --- the report's figure workers --------------------------------------------------------------------------------------
+
+def report_while_drawing(tmp_path):
+    """`harness report DIR` on a compare of the reference (45 angles, 3 e_n), returned once its forked figure workers
+    run: (process, the workers' pids)."""
+    out = tmp_path / "out"
+    assert main_in_process("compare", "--model", "hertz-mindlin", "--engines", "reference", "-o", str(out),
+                           "--quiet") == 0
+    proc = subprocess.Popen([sys.executable, "-m", "harness", "report", str(out)], stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True, preexec_fn=interruptible)
+    deadline, workers = time.time() + 60, []
+    while len(workers) < 2:
+        assert time.time() < deadline and proc.poll() is None, proc.communicate()
+        workers = descendants(proc.pid)
+        time.sleep(0.01)
+    return proc, workers
+
+
+def test_a_killed_report_takes_its_figure_workers_along(tmp_path):
+    proc, workers = report_while_drawing(tmp_path)
+    proc.kill()
+    proc.communicate(timeout=30)
+    assert all(wait_gone(pid, 5) for pid in workers)
+
+
+@pytest.mark.parametrize("signum, code", [(signal.SIGINT, 130), (signal.SIGTERM, 143)])
+def test_a_report_stopped_while_drawing_ends_at_once_with_its_workers(tmp_path, signum, code):
+    proc, workers = report_while_drawing(tmp_path)
+    stopped = time.perf_counter()
+    proc.send_signal(signum)
+    _, err = proc.communicate(timeout=30)
+    assert proc.returncode == code and "Traceback" not in err, err
+    assert time.perf_counter() - stopped < 10.0
+    assert all(wait_gone(pid, 1) for pid in workers)
+
+
+# --- YADE's own temporary directory ----------------------------------------------------------------------------------
+
+YADE_START = r"""
+import glob, json, os, signal, subprocess, sys, time
+codes = []
+for k in range(int(sys.argv[1])):
+    proc = subprocess.Popen([sys.executable, "-m", "harness", "compare", "--model", "hertz-mindlin", "--en", "0.5",
+                             "--angles", "10", "--engines", "yade", "-o", f"/tmp/out{k}", "--quiet"],
+                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    made = lambda: set(glob.glob("/tmp/**/yade-*", recursive=True))
+    before, deadline = made(), time.time() + 120
+    while not made() - before and time.time() < deadline and proc.poll() is None:
+        time.sleep(0.002)
+    proc.send_signal(signal.SIGTERM)                   # YADE has made its directory and is still starting
+    proc.communicate(timeout=60)
+    codes.append(proc.returncode)
+left = sorted(os.path.relpath(os.path.join(root, name), "/tmp") for root, dirs, files in os.walk("/tmp")
+              for name in dirs + files if not os.path.relpath(os.path.join(root, name), "/tmp").startswith("out"))
+print(json.dumps({"codes": codes, "left": left}))
+"""
+
+
+def namespaces_allowed():
+    return subprocess.run(["unshare", "--user", "--map-root-user", "--mount", "true"],
+                          capture_output=True).returncode == 0
+
+
+@needs("yade")
+@pytest.mark.skipif(not namespaces_allowed(), reason="no user and mount namespaces here")
+def test_harness_stopped_while_yade_starts_leaves_no_yade_directory(tmp_path):
+    """YADE makes /tmp/yade-XXXXXX as it starts, whatever TMPDIR says, and removes it only when it exits normally.
+    Each compare runs with a /tmp of the test's own (a private mount namespace) and is stopped the moment YADE's
+    directory appears: nothing may be left in that /tmp."""
+    private = tmp_path / "tmp"
+    private.mkdir()
+    done = subprocess.run(["unshare", "--user", "--map-root-user", "--mount", "--", "sh", "-c",
+                           'mount --bind "$1" /tmp && shift && exec "$@"', "sh", str(private), sys.executable, "-c",
+                           YADE_START, "4"], capture_output=True, text=True, timeout=900, cwd=os.getcwd())
+    assert done.returncode == 0, done.stderr
+    found = json.loads(done.stdout)
+    assert found["codes"] == [143] * 4 and found["left"] == [], found
+
+
+# --- a stop raised where Python ignores exceptions --------------------------------------------------------------------
+
+LOST_STOP = r"""
+import os, signal, sys
+sent = []
+
+def at_fork():                                  # as logging's fork handler was when SIGTERM came under load
+    if not sent:
+        sent.append(os.kill(os.getpid(), signal.SIGTERM))
+        sum(range(1000))                        # the handler runs here, where Python ignores what it raises
+
+os.register_at_fork(after_in_parent=at_fork)
+from harness.commands import main
+sys.exit(main(["compare", "--model", "hertz-mindlin", "--engines", "reference", "-o", sys.argv[1], "--quiet"]))
+"""
+
+
+def test_a_stop_raised_where_python_ignores_exceptions_still_stops_harness(tmp_path):
+    """SIGTERM handled inside a fork handler (the report's figure workers are forked): Python ignores the exception
+    the handler raises there, and harness went on to finish as if never stopped."""
+    done = subprocess.run([sys.executable, "-c", LOST_STOP, str(tmp_path / "out")], capture_output=True, text=True,
+                          timeout=300)
+    assert done.returncode == 143 and "Traceback" not in done.stderr, done.stderr
+    assert "terminated" in done.stderr
+
+
+STOP_IN_AN_EXTENSION = r"""
+import os, signal, sys
+from harness.commands import main, models
+
+def load_extension(args):                       # as scipy's compiled optimiser did when SIGTERM came as it loaded
+    try:
+        os.kill(os.getpid(), signal.SIGTERM)
+        sum(range(1000))
+    except KeyboardInterrupt as exc:
+        raise ImportError("initialization failed") from exc
+
+models.main = load_extension
+sys.exit(main(["models"]))
+"""
+
+
+def test_a_stop_turned_into_another_error_is_still_a_stop():
+    """A compiled extension interrupted while it loads raises ImportError from the stop: still exit 143, one line."""
+    done = subprocess.run([sys.executable, "-c", STOP_IN_AN_EXTENSION], capture_output=True, text=True, timeout=120)
+    assert done.returncode == 143 and done.stderr.strip().splitlines() == [
+        "harness: terminated; engines stopped, nothing had been written yet"], done.stderr

@@ -2,6 +2,7 @@
 import os
 import subprocess
 import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -88,6 +89,15 @@ def test_float128_agrees_with_double_on_a_smooth_case(tmp_path):
     assert rel.max() > 0.0                                      # the flavours really are different arithmetic
 
 
+def where_yade_made_its_directory(workdir):
+    """The path of the directory YADE named in yade_tmpdir.txt, as harness sees it: inside the run's own directory
+    where the run had a /tmp of its own (runner.its_own_tmp), else in /tmp itself."""
+    from harness.engines.runner import PRIVATE_TMP, its_own_tmp
+    made = (workdir / "yade_tmpdir.txt").read_text()
+    assert made.startswith("/tmp/yade-")
+    return workdir / PRIVATE_TMP / os.path.basename(made) if its_own_tmp() else Path(made)
+
+
 @needs_yade
 def test_a_yade_run_leaves_nothing_in_tmp(tmp_path):
     """YADE makes /tmp/yade-XXXXXX at import whatever TMPDIR says (the script names it in yade_tmpdir.txt); a run
@@ -95,18 +105,22 @@ def test_a_yade_run_leaves_nothing_in_tmp(tmp_path):
     _, _, text = batch_and_script(Scene(e_n=(0.5,), angles_deg=(30.0,)))
     rows, _, _ = yade.run_script(text, 1, 120, str(tmp_path))
     assert rows[0, 0]                                            # the run did happen and the sphere left the wall
-    made = (tmp_path / "yade_tmpdir.txt").read_text()
-    assert made.startswith("/tmp/yade-") and not os.path.exists(made)
+    assert not where_yade_made_its_directory(tmp_path).exists()
 
 
 @needs_yade
 def test_a_killed_yade_run_leaves_nothing_in_tmp(tmp_path):
-    """YADE removes its /tmp/yade-XXXXXX only when it exits; killed at a timeout, harness removes it."""
+    """YADE removes its /tmp/yade-XXXXXX only when it exits: killed at a timeout, its directory is inside the run's
+    own (removed with it), or else harness removes it."""
+    from harness.engines.runner import PRIVATE_TMP, its_own_tmp
     _, _, text = batch_and_script(Scene(e_n=(0.5,), angles_deg=(30.0,)))
     with pytest.raises(EngineFailure, match="did not finish"):
         yade.run_script(text + "\nimport time\ntime.sleep(60)\n", 1, 8, str(tmp_path))
-    made = (tmp_path / "yade_tmpdir.txt").read_text()
-    assert made.startswith("/tmp/yade-") and not os.path.exists(made)
+    made = where_yade_made_its_directory(tmp_path)
+    if its_own_tmp():
+        assert made.is_dir() and made.parent == tmp_path / PRIVATE_TMP
+    else:
+        assert not made.exists()
 
 
 def test_crash_hang_truncation_give_clear_failures(tmp_path, monkeypatch):

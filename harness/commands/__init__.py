@@ -1,14 +1,17 @@
 """The command line: one thin module per command; bad input ends in one line on stderr and exit code 2."""
 import argparse
+import errno
 import os
 import signal
 import sys
-import threading
 import time
 
 from ..errors import UserError
 from ..version import __version__
-from .options import EXIT_CODES, EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_USAGE, Parser
+from .options import EXIT_CODES, EXIT_ENGINE, EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_USAGE, Parser
+from .stopping import Stopped, stop_behind, stop_on_signals
+
+EXIT_CLOSED_OUTPUT = 128 + signal.SIGPIPE
 
 
 def describe(sub, name, summary, example, exit_codes=EXIT_CODES):
@@ -44,25 +47,6 @@ def show_log(quiet):
     log.setLevel(logging.WARNING if quiet else logging.INFO)
 
 
-class Stopped(KeyboardInterrupt):
-    """SIGTERM or SIGHUP, raised where harness is so that it unwinds as for Ctrl-C: engines killed, files removed."""
-
-    def __init__(self, signum):
-        super().__init__(signum)
-        self.signum = signum
-
-
-def stop_on_signals():
-    """SIGTERM and SIGHUP stop harness the way Ctrl-C does (only the main thread can receive them); returns the
-    handlers they replace."""
-    if threading.current_thread() is not threading.main_thread():
-        return {}
-
-    def stop(signum, frame):
-        raise Stopped(signum)
-    return {signum: signal.signal(signum, stop) for signum in (signal.SIGTERM, signal.SIGHUP)}
-
-
 def what_was_kept(args, since):
     """Where the finished results of an interrupted command are, if it wrote any."""
     output = getattr(args, "output", None) if args is not None else None
@@ -74,25 +58,67 @@ def what_was_kept(args, since):
     return f"finished results were kept in {output}" if written else "nothing had been written yet"
 
 
+def disk_full(exc):
+    """What ran out, in words: the device's space, or the user's quota."""
+    what = "no space left on the device" if exc.errno == errno.ENOSPC else "disk quota exceeded"
+    return f"{what} (writing {exc.filename})" if exc.filename else what
+
+
+def output_closed():
+    """Whether the reader of stdout or stderr has gone (`harness ... | head`): its pipe reports an error. If so,
+    both are pointed at /dev/null, so that nothing more is said, not even by the interpreter's flush at exit."""
+    import select
+    poller, descriptors = select.poll(), []
+    for stream in (sys.stdout, sys.stderr):
+        try:
+            descriptors.append(stream.fileno())
+        except (AttributeError, OSError, ValueError):      # not a file (a test's capture): not a closed pipe
+            continue
+        poller.register(descriptors[-1], select.POLLOUT)
+    if not any(events & (select.POLLERR | select.POLLHUP) for _, events in poller.poll(0)):
+        return False
+    devnull = os.open(os.devnull, os.O_WRONLY)
+    for descriptor in descriptors:
+        os.dup2(devnull, descriptor)
+    os.close(devnull)
+    return True
+
+
+def interrupted(stop, args, since):
+    """The one line and exit code of a command stopped by Ctrl-C (130), SIGTERM (143) or SIGHUP (129)."""
+    signum = stop.signum if isinstance(stop, Stopped) else signal.SIGINT
+    how = {signal.SIGTERM: "terminated", signal.SIGHUP: "hung up"}.get(signum, "interrupted")
+    print(f"harness: {how}; engines stopped, {what_was_kept(args, since)}", file=sys.stderr)
+    return EXIT_INTERRUPTED if signum == signal.SIGINT else 128 + signum
+
+
 def main(argv=None):
-    """Parse, run one command, return its exit code; a user's mistake is one line and 2, Ctrl-C is 130."""
+    """Parse, run one command, return its exit code; a user's mistake is one line and 2, Ctrl-C is 130, a closed
+    output ends it quietly with 141 (128 + SIGPIPE, as a shell reports a Unix tool stopped by its closed pipe)."""
     from ..engines.runner import sweep_stale
     args, since = None, time.time() - 1.0
-    replaced = stop_on_signals()
+    restore_signals = stop_on_signals()
     try:
         sweep_stale()
         args = build_parser().parse_args(argv)
         show_log(quiet=getattr(args, "quiet", False))
         return args.func(args)
+    except KeyboardInterrupt as exc:
+        return interrupted(exc, args, since)
     except UserError as exc:
+        if stop_behind(exc):
+            return interrupted(stop_behind(exc), args, since)
         print(f"harness: error: {exc}", file=sys.stderr)
         return EXIT_USAGE
-    except KeyboardInterrupt as exc:
-        signum = exc.signum if isinstance(exc, Stopped) else signal.SIGINT
-        how = {signal.SIGTERM: "terminated", signal.SIGHUP: "hung up"}.get(signum, "interrupted")
-        print(f"harness: {how}; engines stopped, {what_was_kept(args, since)}", file=sys.stderr)
-        return EXIT_INTERRUPTED if signum == signal.SIGINT else 128 + signum
     except Exception as exc:                            # a bug of harness: never exit 1, which means disagreement
+        if stop_behind(exc):
+            return interrupted(stop_behind(exc), args, since)
+        if isinstance(exc, BrokenPipeError) and output_closed():
+            return EXIT_CLOSED_OUTPUT
+        if isinstance(exc, OSError) and exc.errno in (errno.ENOSPC, errno.EDQUOT):
+            print(f"harness: error: {disk_full(exc)}; every file is whole (written in full or not at all), "
+                  f"{what_was_kept(args, since)}", file=sys.stderr)
+            return EXIT_ENGINE
         if isinstance(exc, OSError) and exc.filename:   # the file system refused a path the user gave
             print(f"harness: error: cannot use {exc.filename}: {exc.strerror}", file=sys.stderr)
             return EXIT_USAGE
@@ -102,5 +128,4 @@ def main(argv=None):
               file=sys.stderr)
         return EXIT_INTERNAL
     finally:
-        for signum, handler in replaced.items():
-            signal.signal(signum, handler)
+        restore_signals()

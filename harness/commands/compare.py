@@ -12,12 +12,12 @@ from ..analyses.verdict import DISAGREE, NOT_COMPARED, verdict
 from ..api import compare_request
 from ..campaign.store import RunCache, Store
 from ..comparison import Comparison
+from ..files import discard
 from ..lock import exclusive
 from ..outputs import save_comparison, start_comparison
 from ..partial import PartialRuns
 from ..request import Request
 from ..results import write_csv
-from ..views.drawing import preload
 from ..views.html import rebuild
 from ..views.progress import Progress
 from ..views.terminal import print_comparison, print_summary, verdict_line
@@ -53,11 +53,12 @@ def main(args):
     request = Request.from_keywords(args.model, tolerances=args.tolerances, **keywords(args))
     check_results_directory(args.output)
     check_store(args.store)
-    results_path = os.path.join(args.output, "results.csv")
+    results_path, report_path = os.path.join(args.output, "results.csv"), os.path.join(args.output, "report.html")
     frames = []
 
     def keep(frame):                       # results.csv holds every finished run, whatever stops the compare
-        if not frames:                     # the first result replaces an earlier compare in DIR, never refused input
+        if not frames:                     # the first result replaces an earlier compare in DIR, never refused input;
+            discard(report_path)           # its report goes first, so that none stands beside the new results
             start_comparison(args.output, Comparison(request.law, request.scene, pd.DataFrame(),
                                                      overrides=dict(request.overrides), requested=request.engines,
                                                      engine_options=request.engine_options, command=command_line(),
@@ -65,7 +66,6 @@ def main(args):
         frames.append(frame)
         write_csv(pd.concat(frames, ignore_index=True), results_path)
 
-    preload()                              # the report's plotting library loads beside the runs
     with exclusive(args.output), Progress(f"compare {request.model}", quiet=args.quiet or args.json) as progress:
         partial = RunCache(Store(args.store)) if args.store else PartialRuns(args.output)
         try:

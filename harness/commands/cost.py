@@ -4,15 +4,17 @@ import os
 
 import pandas as pd
 
-from ..analyses.cost import COLUMNS, LADDER, convergence_orders, cost_table, recommendations
+from ..analyses.cost import COLUMNS, LADDER, TIMING_REPEATS, convergence_orders, cost_table, recommendations
 from ..api import statuses
 from ..campaign.store import RunCache, Store
 from ..engines import ENGINES
 from ..errors import UserError
+from ..files import discard
 from ..lock import exclusive
 from ..outputs import COST, save_cost
 from ..request import Request
 from ..results import write_csv
+from ..solver.plan import MAX_STEPS_PER_CONTACT
 from ..views.html import rebuild
 from ..views.progress import Progress
 from ..views.terminal import print_cost
@@ -37,8 +39,13 @@ def add(sub, describe):
     p.set_defaults(func=main)
 
 
+MAX_RUNGS = 30                              # each rung runs every curve at every e_n, timed up to 3 times
+MAX_LADDER_STEPS = 2 * MAX_STEPS_PER_CONTACT    # the rungs together: two runs at the finest resolution allowed
+
+
 def ladder_from_text(text):
-    """--ladder '5,10,20': whole steps per contact >= 1, ascending, no repeats."""
+    """--ladder '5,10,20': whole steps per contact >= 1, ascending, no repeats; at most MAX_RUNGS rungs, each at most
+    MAX_STEPS_PER_CONTACT (every resolution's bound) and MAX_LADDER_STEPS together, so that the study ends."""
     if text is None:
         return LADDER
     try:
@@ -47,6 +54,15 @@ def ladder_from_text(text):
         raise UserError(f"--ladder takes whole numbers of steps per contact, e.g. 5,10,100; got {text!r}") from None
     if not rungs or min(rungs) < 1 or list(rungs) != sorted(set(rungs)):
         raise UserError(f"--ladder needs ascending whole numbers >= 1 without repeats, got {text!r}")
+    if len(rungs) > MAX_RUNGS:
+        raise UserError(f"--ladder may have at most {MAX_RUNGS} rungs (each runs every curve at every e_n, timed up "
+                        f"to {TIMING_REPEATS} times), got {len(rungs)}")
+    if rungs[-1] > MAX_STEPS_PER_CONTACT:
+        raise UserError(f"--ladder rungs must be at most {MAX_STEPS_PER_CONTACT:.0e} steps per contact (the bound of "
+                        f"every resolution), got {rungs[-1]}")
+    if sum(rungs) > MAX_LADDER_STEPS:
+        raise UserError(f"--ladder rungs may add up to at most {MAX_LADDER_STEPS:.0e} steps per contact (the work of "
+                        f"two runs at the finest resolution allowed), got {sum(rungs):.3g}")
     return rungs
 
 
@@ -63,6 +79,7 @@ def main(args):
     skipped = [(s.name, s.reason) for s in found if not s.available]
     overrides = dict(request.overrides)
     with exclusive(args.output):
+        discard(os.path.join(args.output, "report.html"))     # an earlier report never stands beside this study
         save_cost(args.output, pd.DataFrame(columns=COLUMNS), {}, law, scene, overrides, skipped, [])
         with Progress(f"cost {law.name}", quiet=args.quiet or args.json) as progress:
             table, failures, uncertainty = cost_table(

@@ -20,7 +20,8 @@ EXIT_CODES = """exit codes:
      for by name or had runs that failed, or nothing was compared
   4  an internal error of harness (a bug: the traceback is printed)
   130 interrupted (Ctrl-C), 143 terminated (SIGTERM), 129 hung up (SIGHUP): engines stopped, temporary files
-     removed, finished results kept"""
+     removed, finished results kept
+  141 its output was closed before it was all printed (`harness ... | head`): ended quietly, files kept"""
 
 
 class Parser(argparse.ArgumentParser):

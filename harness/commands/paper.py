@@ -7,6 +7,7 @@ from ..laws import LAWS
 from ..lock import exclusive
 from ..paper import figure_set
 from ..results import write_csv
+from ..solver.plan import MAX_STEPS_PER_CONTACT
 from ..views.paper_html import NORMAL, OBLIQUE, PUBLISHED, SLIDING, write_paper_report
 from ..views.progress import Progress
 from ..views.terminal import published_summary, text_table
@@ -34,6 +35,9 @@ def main(args):
         raise UserError(f"unknown law(s) {', '.join(unknown) or args.laws!r}; known: {', '.join(LAWS)}")
     if args.steps_per_contact < 100:
         raise UserError(f"--steps-per-contact must be >= 100 for the paper's figures, got {args.steps_per_contact}")
+    if args.steps_per_contact > MAX_STEPS_PER_CONTACT:
+        raise UserError(f"--steps-per-contact must be at most {MAX_STEPS_PER_CONTACT:.0e} (the bound of every "
+                        f"resolution), got {args.steps_per_contact}")
     check_output_directory(args.output)
     with Progress("paper", quiet=args.quiet) as progress:
         oblique, normal, sliding, published = figure_set(laws, args.steps_per_contact, progress=progress)

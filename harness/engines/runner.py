@@ -7,6 +7,7 @@ import subprocess
 import threading
 import time
 from dataclasses import dataclass
+from functools import lru_cache
 
 LOG_TAIL_LINES = 40
 LOG_TAIL_BYTES = 64 * 1024
@@ -44,8 +45,34 @@ def launcher():
     return PARENT_DEATH if shutil.which(PARENT_DEATH[0]) else []
 
 
-def run_engine(argv, workdir, timeout_s, env=None, log_name="engine.log"):
-    """Run argv in workdir (own process group); EngineFailure on a missing binary, a crash or a timeout."""
+PRIVATE_TMP = "private-tmp"     # the directory of a run that the engine sees as /tmp (its_own_tmp)
+# /tmp becomes PRIVATE_TMP; a working directory under /tmp, hidden by that, is bound again at its own path inside
+BIND_TMP = (f'W=$(pwd -P) && mount --bind {PRIVATE_TMP} /tmp && case "$W" in /tmp/*) mkdir -p "$W" && '
+            'mount --no-canonicalize --bind /proc/self/cwd "$W" && cd "$W";; esac && exec "$@"')
+
+
+@lru_cache(maxsize=None)
+def its_own_tmp():
+    """The argv prefix that runs a command in a mount namespace of its own where /tmp is PRIVATE_TMP of its working
+    directory (for an engine that writes to /tmp whatever TMPDIR says, as YADE does); [] where the system allows no
+    such namespace (no unshare, user namespaces disabled), tried once."""
+    if shutil.which("unshare") is None:
+        return []
+    user = [] if os.geteuid() == 0 else ["--user", "--map-root-user"]
+    prefix = ["unshare", "--mount", "--propagation", "private", *user, "--", "sh", "-c", BIND_TMP, "sh"]
+    with scratch("probe") as probe:
+        os.mkdir(os.path.join(probe, PRIVATE_TMP))
+        try:
+            tried = subprocess.run([*prefix, "true"], cwd=probe, stdin=subprocess.DEVNULL, capture_output=True,
+                                   timeout=30)
+        except (OSError, subprocess.TimeoutExpired):
+            return []
+    return prefix if tried.returncode == 0 else []
+
+
+def run_engine(argv, workdir, timeout_s, env=None, log_name="engine.log", private_tmp=False):
+    """Run argv in workdir (own process group); EngineFailure on a missing binary, a crash or a timeout. With
+    `private_tmp`, what the engine writes to /tmp goes to workdir/PRIVATE_TMP, and is removed with workdir."""
     log_path = os.path.join(workdir, log_name)
     start = time.perf_counter()
     if STOPPED.is_set():
@@ -53,9 +80,12 @@ def run_engine(argv, workdir, timeout_s, env=None, log_name="engine.log"):
     if shutil.which(argv[0]) is None:
         raise EngineFailure(f"{argv[0]} not found")
     env = {**(os.environ if env is None else env), **ISOLATED, "TMPDIR": workdir}
+    prefix = its_own_tmp() if private_tmp else []
+    if prefix:
+        os.makedirs(os.path.join(workdir, PRIVATE_TMP), exist_ok=True)
     try:
         with open(log_path, "wb") as log:
-            proc = subprocess.Popen(launcher() + argv, cwd=workdir, stdout=log, stderr=subprocess.STDOUT,
+            proc = subprocess.Popen(launcher() + prefix + argv, cwd=workdir, stdout=log, stderr=subprocess.STDOUT,
                                     stdin=subprocess.DEVNULL, env=env, start_new_session=True)
             with _live_lock:
                 LIVE.add(proc)
@@ -122,8 +152,10 @@ ENGINE_TMPDIR = "yade_tmpdir.txt"     # an engine that makes its own directory o
 
 def remove_engine_tmpdir(workdir):
     """Remove the directory an engine made outside `workdir` and named in it (YADE's /tmp/yade-XXXXXX, which it
-    removes itself only when it exits normally)."""
+    removes itself only when it exits normally); nothing when the engine's /tmp was workdir's own (its_own_tmp)."""
     import re
+    if os.path.isdir(os.path.join(workdir, PRIVATE_TMP)):
+        return
     try:
         with open(os.path.join(workdir, ENGINE_TMPDIR)) as handle:
             path = handle.read().strip()

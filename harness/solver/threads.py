@@ -40,14 +40,6 @@ def fulfil(future, fn, args):
             future.set_exception(exc)
 
 
-def in_background(fn, *args):
-    """fn(*args) on a daemon thread of its own, as a Future: a caller stopped by Ctrl-C or a signal exits without
-    waiting for it (a ThreadPoolExecutor would join it, compiling or not, before the process could end)."""
-    future = Future()
-    threading.Thread(target=fulfil, args=(future, fn, args), name="harness-beside", daemon=True).start()
-    return future
-
-
 def pool():
     if not _pool:
         _pool.append(DaemonPool(THREADS))
@@ -55,10 +47,13 @@ def pool():
 
 
 def in_threads(kernel, n, *args, threads=None):
-    """kernel(first, last, *args) over rows 0..n-1 in contiguous chunks on up to `threads` threads."""
+    """kernel(first, last, *args) over rows 0..n-1 in contiguous chunks on up to `threads` threads. The kernel is
+    compiled (or loaded from numba's cache) here first, by a call over no rows: what compiling imports is imported
+    by this thread, not by a worker, where an import could wait on another thread's import lock."""
     threads = max(1, min(threads or THREADS, n))
     if n == 0:
         return
+    kernel(0, 0, *args)
     if threads == 1:
         pool().submit(kernel, 0, n, *args).result()
         return

@@ -116,7 +116,8 @@ def run_script(text, n_spheres, timeout_s, workdir, precision="double"):
     with open(os.path.join(workdir, "harness_yade.py"), "w") as handle:
         handle.write(text)
     try:
-        done = run_engine([python(), "harness_yade.py"], workdir, timeout_s, env=environment(precision))
+        done = run_engine([python(), "harness_yade.py"], workdir, timeout_s, env=environment(precision),
+                          private_tmp=True)            # YADE's /tmp/yade-XXXXXX made inside workdir
     finally:
         remove_engine_tmpdir(workdir)
     try:
@@ -131,7 +132,8 @@ def run_inputs(precision, count, timeout_s, workdir):
     with open(os.path.join(workdir, "harness_driver.py"), "w") as handle:
         handle.write(render(TEMPLATES, "driver.py.j2", harness_version=__version__, count=count))
     try:
-        done = run_engine([python(), "harness_driver.py"], workdir, timeout_s, env=environment(precision))
+        done = run_engine([python(), "harness_driver.py"], workdir, timeout_s, env=environment(precision),
+                          private_tmp=True)            # YADE's /tmp/yade-XXXXXX made inside workdir
     finally:
         remove_engine_tmpdir(workdir)
     walls = []
