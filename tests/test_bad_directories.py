@@ -254,3 +254,16 @@ def test_render_checks_every_input_it_would_write_before_writing_one(tmp_path, c
     line = refused_in_one_line(capfd, ["render", "--model", "hertz-mindlin", "--engine", "liggghts", "--en",
                                        "0.9,0.5", "-o", str(decks)], tmp_path)
     assert names[-1] in line and len(names) == 2
+
+
+PAPER_ENTRIES = ("paper.csv", "paper-normal.csv", "paper-sliding.csv", "paper-published.csv", "paper.html",
+                 ".harness.lock")
+
+
+@pytest.mark.parametrize("how", ["fifo", "directory", "link"])
+@pytest.mark.parametrize("name", PAPER_ENTRIES)
+def test_paper_refuses_an_occupied_output_before_computing_or_writing(tmp_path, capfd, how, name):
+    directory = occupied(tmp_path / "out", name, how)
+    line = refused_in_one_line(capfd, ["paper", "--laws", "linear-spring-dashpot", "--steps-per-contact", "100", "-o",
+                                       str(directory)], tmp_path)
+    assert name in line

@@ -17,6 +17,8 @@ from .paper_axes import PANELS, draw_published, draw_rigid_body, set_paper_axes
 from .pieces import figure_svg, records
 
 OBLIQUE, NORMAL, SLIDING, PUBLISHED = "paper.csv", "paper-normal.csv", "paper-sliding.csv", "paper-published.csv"
+PAGE = "paper.html"
+FILES = (OBLIQUE, NORMAL, SLIDING, PUBLISHED, PAGE)
 PUBLISHED_LABEL = "published (TCC13, digitised)"
 COLOURS = ("#1b9e77", "#d95f02", "#7570b3", "#e7298a", "#66a61e", "#e6ab02")    # one per e_n, in every figure
 
@@ -87,4 +89,4 @@ def write_paper_report(out_dir, oblique, normal, sliding, command, published=Non
         published=records(published.round(4)) if published is not None and not published.empty else None,
         goal=GOAL, provenance=provenance(), date=datetime.datetime.now().strftime("%Y-%m-%d %H:%M"),
         files=(OBLIQUE, NORMAL, SLIDING) + ((PUBLISHED,) if published is not None else ()))
-    return write_text(os.path.join(out_dir, "paper.html"), html)
+    return write_text(os.path.join(out_dir, PAGE), html)
