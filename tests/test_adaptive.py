@@ -168,3 +168,13 @@ def test_a_stick_that_lasts_to_the_release_falls_back_to_the_ladder():
     assert frame.message[0].endswith("(the adaptive step underflowed or stalled)") and frame.status[0] == "ok"
     assert frame.message[1].startswith("converged: adaptive")
     assert frame.e_t[0] == pytest.approx(frame.e_t[1], abs=1e-6)
+
+
+def test_the_ladder_may_go_finer_than_a_users_time_step_bound():
+    """linear-spring-dashpot at e_n 0.5 and 21 deg (the spring-first Coulomb test switching inside the contact) needs
+    2^20 graded steps, finer than the 1e6 steps per contact a user's --dt may ask for: the ladder runs them, and its
+    e_n is the exact linear dashpot's target (theory: e_n = exp(-pi zeta/sqrt(1 - zeta^2)) set to 0.5)."""
+    row = simulate(compose("linear-spring-dashpot"), Scene(e_n=(0.5,), angles_deg=(21.0,)), converged=True)[0].iloc[0]
+    assert row.status == "ok" and row.message.startswith("converged: Richardson"), row.message
+    assert row.steps_per_contact > 1e6
+    assert row.e_n == pytest.approx(0.5, abs=1e-7)

@@ -74,18 +74,20 @@ def contact_point_lever(scene):
     return 0.5 * contact.mass * contact.radius * spread
 
 
-def plan_batch(law, scene, e_n, steps_per_contact, check_stability=True, every_effect=False):
+def plan_batch(law, scene, e_n, steps_per_contact, check_stability=True, every_effect=False, bounded=True):
     """Kernel rows for every impact of the scene at target e_n; dt = (contact-time estimate at V) / steps, or the
     given FixedTimeStep; a dt above the stability limit is refused (harness.stability) unless the rows are for the
     adaptive integrator, which chooses its own steps. every_effect: the tangential model on every row whether the
-    scene calls for it or not (what benchmarks/bench_effects.py measures the saving against)."""
+    scene calls for it or not (what benchmarks/bench_effects.py measures the saving against). bounded: a FixedTimeStep
+    (a user's --dt) giving more than MAX_STEPS_PER_CONTACT is refused; the converged ladder's own finest levels are
+    not a user's request and pass bounded=False."""
     contact = scene.contact
     v_n0, v_t0, omega0, theta = scene.impacts(e_n)
     normal = law.normal.parameters(contact, e_n, scene.speed)
     dashpot = law.damping.dashpot(law.normal, contact, e_n, scene.speed, law.end)
     if isinstance(steps_per_contact, FixedTimeStep):
         steps_per_contact = normal.contact_time / steps_per_contact.seconds
-        if steps_per_contact > MAX_STEPS_PER_CONTACT:
+        if bounded and steps_per_contact > MAX_STEPS_PER_CONTACT:
             raise UserError(f"--dt gives {steps_per_contact:.3g} steps per contact at e_n {e_n:g}; at most "
                             f"{MAX_STEPS_PER_CONTACT:.0e} (a contact lasts {normal.contact_time:.3g} s)")
     if not steps_per_contact > 0:

@@ -72,7 +72,7 @@ def graded_rows(law, scene, e_n, n, span, rows):
     first touch and towards span, just beyond the release, so that the onset and release singularities
     (alpha^(1/4), alpha^(1/2), alpha^(3/2)) become smooth in the step and the error expands in powers of 1/n.
     The stability limit is checked at the largest graded step."""
-    batch = plan_batch(law, scene, e_n, FixedTimeStep(float(np.max(graded_largest_step(n, span)))))
+    batch = plan_batch(law, scene, e_n, FixedTimeStep(float(np.max(graded_largest_step(n, span)))), bounded=False)
     batch.params[:, C.P_GRADE_T] = span
     batch.params[:, C.P_GRADE_N] = n
     return run_kernel(batch, rows=rows)
