@@ -21,7 +21,8 @@ import time
 
 import numpy as np
 
-from harness.analyses.cost import relative_errors, truth_of
+from harness.analyses.cost import relative_errors
+from harness.cost_plan import truth_of
 from harness.laws import LAWS, compose
 from harness.scene import Scene
 from harness.solver import reference

@@ -13,8 +13,8 @@ import numpy as np
 
 from harness.engines import ENGINES
 from harness.laws import compose
+from harness.plan import RunSpec
 from harness.scene import Scene
-from harness.solver import codes as C
 from harness.solver.plan import plan_batch
 
 STEPS = 1000
@@ -29,10 +29,9 @@ def one_row(batch, i):
 
 
 def timed_run(engine, law, scene, batch):
-    max_steps = int(batch.params[:, C.P_MAXSTEPS].max())
     with tempfile.TemporaryDirectory() as workdir:
         start = time.perf_counter()
-        final, _, _ = engine.run_batch(law, scene, batch, max_steps, 600, workdir)
+        final, _, _ = engine.run_batch(law, scene, RunSpec.of(batch), 600, workdir)
         return time.perf_counter() - start, final
 
 

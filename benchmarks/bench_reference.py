@@ -13,6 +13,7 @@ import numpy as np
 
 from harness.engines import liggghts
 from harness.laws import LAWS, compose
+from harness.plan import RunSpec
 from harness.scene import Scene
 from harness.solver import codes as C
 from harness.solver.extension import table as extension_table
@@ -42,11 +43,10 @@ def liggghts_seconds(law, scene, batches):
     """LIGGGHTS' wall time over the same batches, and its start-up (the same decks stopped after one step)."""
     total = startup = 0.0
     for batch in batches:
-        max_steps = int(batch.params[:, C.P_MAXSTEPS].max())
         with tempfile.TemporaryDirectory(prefix="harness-bench-") as workdir:
-            total += liggghts.run_batch(law, scene, batch, max_steps, 600, workdir)[1]
+            total += liggghts.run_batch(law, scene, RunSpec.of(batch), 600, workdir)[1]
         with tempfile.TemporaryDirectory(prefix="harness-bench-") as workdir:
-            startup += liggghts.run_batch(law, scene, batch, 1, 600, workdir)[1]
+            startup += liggghts.run_batch(law, scene, RunSpec.of(batch, step_cap=1), 600, workdir)[1]
     return total, startup
 
 

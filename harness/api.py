@@ -5,13 +5,15 @@ import pandas as pd
 
 from .analyses.attribution import attribution
 from .analyses.precision import precision_gap
-from .analyses.sliding import sliding_thresholds, threshold_table
+from .analyses.sliding import threshold_table
 from .comparison import Comparison
 from .engines import ENGINES, EXTERNAL
 from .engines.protocol import Status
 from .execute import execute, run_all
+from .outputs import arithmetic_of
 from .plan import CONVERGED, compare_plan, reference_runs, target_of
 from .request import Request
+from .sliding_search import sliding_thresholds
 from .solver.reference import simulate
 from .two_spheres import with_bodies
 
@@ -109,6 +111,7 @@ def compare_request(request, on_frame=None, progress=None, partial=None):
             (double, _), (high, _) = next(checked), next(checked)
             precision = precision_gap(double, high, name, pair[1].options_dict["precision"])
     return Comparison(law, scene, results, overrides=dict(request.overrides), engine_options=request.engine_options,
+                      arithmetic=arithmetic_of(request.engine_options),
                       requested=request.engines, skipped=[(s.name, s.reason) for s in found if not s.available],
                       failures=failures, attribution=attributions, sliding=sliding, precision=precision,
                       histories=histories, tolerances=request.tolerances)

@@ -39,6 +39,7 @@ def _write_run(out_dir, comparison, partial):
     write_text(os.path.join(out_dir, RUN), json.dumps(
         {"model": comparison.law.name, "overrides": comparison.overrides, "scene": scene_fields,
          "skipped": comparison.skipped, "engine_options": comparison.engine_options,
+         "arithmetic": comparison.arithmetic,
          "requested": comparison.requested, "command": comparison.command, "date": comparison.date,
          "tolerances": comparison.tolerances.as_dict(), "partial": partial}, indent=1))
 
@@ -148,13 +149,25 @@ def load_comparison(out_dir):
         tolerances = Tolerances.of(run.get("tolerances") or {})
     except UserError as exc:
         raise UserError(f"{out_dir}/{RUN} is damaged or foreign: {exc}") from None
-    return Comparison(law, scene, frame, overrides=run.get("overrides") or {},
-                      engine_options=run.get("engine_options", {}), requested=tuple(requested) if requested else None,
+    engine_options = run.get("engine_options", {})
+    return Comparison(law, scene, frame, overrides=run.get("overrides") or {}, engine_options=engine_options,
+                      arithmetic=run.get("arithmetic") or arithmetic_of(engine_options), requested=tuple(requested) if requested else None,
                       skipped=[tuple(s) for s in run.get("skipped", [])], failures=failures, attribution=attributions,
                       sliding=sliding if not sliding.empty else None,
                       precision=precision.iloc[0].to_dict() if not precision.empty else None, histories=histories,
                       command=run.get("command", ""), date=run.get("date", ""), partial=bool(run.get("partial")),
                       tolerances=tolerances)
+
+
+DOUBLE = "double (IEEE 754 binary64)"
+
+
+def arithmetic_of(engine_options):
+    """The floating-point arithmetic each engine runs in with these options (an engine that can change it says so:
+    `arithmetic`); a comparison records it, and one read from a record that lacks it gets it from here."""
+    from .engines import ENGINES
+    return {name: engine.arithmetic(engine_options.get(name, {})) if hasattr(engine, "arithmetic") else DOUBLE
+            for name, engine in ENGINES.items()}
 
 
 def load_cost(out_dir):

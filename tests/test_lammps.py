@@ -2,6 +2,7 @@
 measured findings, its input and its failures."""
 import math
 import os
+from dataclasses import replace
 
 import numpy as np
 
@@ -165,7 +166,7 @@ def test_a_pair_deck_names_both_materials_and_the_pair_mixing():
     scene = scene_from(en=(0.5,), angles=(30.0,), target="sphere", target_radius=0.01,
                        target_material="E=2.1e11,nu=0.29,rho=7800", target_fixed=True)
     run = engine_runs(lammps, compose("hertz-mindlin"), scene, 200)[0]
-    text = lammps.render_batch(run.law, run.scene, run.batch(), 1000)
+    text = lammps.render_batch(run.law, run.scene, replace(run.spec, step_cap=1000))
     coefficients = [line.split() for line in text.splitlines() if line.startswith("pair_coeff")]
     assert [c[1:3] for c in coefficients] == [["1", "1"], ["2", "2"], ["1", "2"]]
     E12, nu12 = float(coefficients[2][4]), float(coefficients[2][6])
@@ -222,7 +223,7 @@ def test_lammps_wall_stiffness_numbers_follow_the_wall_and_hertz_material_keeps_
     for wall in ("same", "rigid"):
         scene = Scene(e_n=(0.5,), angles_deg=(30.0,), **(wall_fields(wall) if wall != "same" else {}))
         run = engine_runs(lammps, compose("hertz-kuwabara-kono"), scene, 200, {"style": "history"})[0]
-        text = lammps.render_batch(run.law, run.scene, run.batch(), 1000, run.options_dict)
+        text = lammps.render_batch(run.law, run.scene, replace(run.spec, step_cap=1000), run.options_dict)
         line = next(line for line in text.splitlines() if line.startswith("fix wall all wall/gran hertz/history"))
         coefficients[wall] = float(line.split()[5])
     E, nu = Scene().E, Scene().nu

@@ -3,6 +3,7 @@ decks cannot be injected into."""
 import os
 import subprocess
 import sys
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -12,7 +13,7 @@ from harness.engines import liggghts
 from harness.engines.runner import EngineFailure, run_engine
 from harness.execute import execute
 from harness.laws import compose
-from harness.plan import engine_runs
+from harness.plan import RunSpec, engine_runs
 from harness.render import RenderError, render
 from harness.scene import Scene
 from harness.solver import codes as C
@@ -27,8 +28,7 @@ def engine_and_dialect(name, scene, e_n, steps=200, tmp_path=None, options=None)
     law = liggghts.dialect(name, options)
     batch = plan_batch(law, scene, e_n, steps)
     out, _, _ = run_kernel(batch)
-    final, _, _ = liggghts.run_batch(compose(name), scene, batch, int(batch.params[:, C.P_MAXSTEPS].max()), 300,
-                                     str(tmp_path), options)
+    final, _, _ = liggghts.run_batch(compose(name), scene, RunSpec.of(batch), 300, str(tmp_path), options)
     engine = np.column_stack([final["v_n1"], final["v_t1"], final["omega1"]])
     reference = out[:, [C.O_VZ, C.O_VX, C.O_W]]
     return engine, reference, final
@@ -118,7 +118,7 @@ def test_lost_atoms_are_a_clear_failure(tmp_path):
     law = compose("hertz-mindlin")
     scene = Scene(e_n=(0.5,), angles_deg=(0.0,))
     batch = plan_batch(liggghts.dialect("hertz-mindlin"), scene, 0.5, 100)
-    deck = liggghts.deck(law, scene, 0.5, batch.dt, batch.v_n0, np.array([5e3]), batch.omega0, 100, 100000)
+    deck = liggghts.deck(law, scene, replace(RunSpec.of(batch, step_cap=100000), v_t0=np.array([5e3])))
     with pytest.raises(EngineFailure) as failure:
         liggghts.run_deck(deck.text, deck.n_atoms, 120, str(tmp_path))
     assert "Lost atoms" in failure.value.log_tail
@@ -233,7 +233,7 @@ def test_rendered_deck_holds_only_the_expected_commands():
     """Every line of a real deck starts with a known LIGGGHTS command or is a comment."""
     law = compose("hertz-mindlin")
     batch = plan_batch(liggghts.dialect("hertz-mindlin"), SCENE, 0.5, 100)
-    text = liggghts.deck(law, SCENE, 0.5, batch.dt, batch.v_n0, batch.v_t0, batch.omega0, 100, 1000).text
+    text = liggghts.deck(law, SCENE, RunSpec.of(batch, step_cap=1000)).text
     allowed = {"atom_style", "atom_modify", "boundary", "newton", "communicate", "units", "hard_particles",
                "soft_particles", "region",
                "create_box", "neighbor", "neigh_modify", "fix", "pair_style", "pair_coeff", "timestep",

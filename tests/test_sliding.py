@@ -8,7 +8,8 @@ import pytest
 import oracles
 from harness.laws import compose
 from harness.scene import Scene
-from harness.analyses.sliding import derived_threshold, impulse_deficit, sliding_thresholds
+from harness.analyses.sliding import derived_threshold, impulse_deficit
+from harness.sliding_search import sliding_thresholds
 from harness.solver.reference import simulate
 
 PAPER_EN = (0.25, 0.5, 0.75, 0.9)

@@ -12,6 +12,7 @@ from harness.engines import yade
 from harness.engines.runner import EngineFailure
 from harness.execute import execute
 from harness.laws import compose
+from harness.plan import RunSpec
 from harness.scene import Scene
 from harness.solver.plan import plan_batch
 
@@ -69,7 +70,7 @@ def test_yade_as_a_module_opens_no_listening_socket(tmp_path):
 def batch_and_script(scene, e_n=0.5, steps=200):
     law = compose("hertz-mindlin")
     batch = plan_batch(law, scene, e_n, steps)
-    return law, batch, yade.script(law, scene, e_n, batch.dt, batch.v_n0, batch.v_t0, batch.omega0, steps, 40000)
+    return law, batch, yade.script(law, scene, RunSpec.of(batch, step_cap=40000))
 
 
 @needs_yade
@@ -148,7 +149,8 @@ def test_viscel_against_a_wall_uses_half_the_mass():
     scene = Scene(e_n=(0.5,), angles_deg=(0.0,))
     batch = plan_batch(yade.dialect("linear-spring-dashpot"), scene, 0.5, 2000)
     with tempfile.TemporaryDirectory() as workdir:
-        final, _, _ = yade.run_batch(compose("linear-spring-dashpot"), scene, batch, 200000, 300, workdir)
+        final, _, _ = yade.run_batch(compose("linear-spring-dashpot"), scene, RunSpec.of(batch, step_cap=200000), 300,
+                                     workdir)
     assert final["v_n1"][0] / scene.speed == pytest.approx(lsd_notension_e(g_a / math.sqrt(2.0)), abs=2e-3)
 
 
@@ -190,7 +192,7 @@ def test_engine_agrees_with_its_yade_dialect_at_equal_dt(name, options, e_n, ome
     scene = Scene(e_n=(e_n,), angles_deg=(0.0, 10.0, 30.0, 60.0, 85.0), omega0=omega0)
     batch = plan_batch(yade.dialect(name, options), scene, e_n, 200)
     out, _, _ = run_kernel(batch)
-    final, _, _ = yade.run_batch(compose(name), scene, batch, 20000, 120, str(tmp_path), options)
+    final, _, _ = yade.run_batch(compose(name), scene, RunSpec.of(batch, step_cap=20000), 120, str(tmp_path), options)
     assert final["separated"].all()
     engine = np.column_stack([final["v_n1"], final["v_t1"], final["omega1"]])
     reference = out[:, [C.O_VZ, C.O_VX, C.O_W]]

@@ -4,9 +4,10 @@ import os
 
 import pandas as pd
 
-from ..analyses.cost import COLUMNS, LADDER, TIMING_REPEATS, convergence_orders, cost_table, recommendations
+from ..analyses.cost import COLUMNS, LADDER, convergence_orders, recommendations
 from ..api import statuses
 from ..campaign.store import RunCache, Store
+from ..cost_plan import TIMING_REPEATS, cost_table
 from ..engines import ENGINES
 from ..errors import UserError
 from ..files import discard

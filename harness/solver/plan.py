@@ -37,6 +37,11 @@ class Batch:
     steps_per_contact: float
     tangential_active: np.ndarray
 
+    @property
+    def step_cap(self):
+        """The most steps any of its impacts may take (the largest of the rows' caps)."""
+        return int(self.params[:, C.P_MAXSTEPS].max())
+
 
 def join(batches):
     """One batch holding the impacts of several batches of one material and one dt (one engine run)."""

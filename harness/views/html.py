@@ -151,16 +151,6 @@ def write_report(out_dir, comparison=None, cost=None):
     return write_text(os.path.join(out_dir, "report.html"), html)
 
 
-def arithmetic(engine_options):
-    """The floating-point arithmetic each engine ran in: an engine that can change it says so (`arithmetic`)."""
-    from ..engines import ENGINES
-    return {name: engine.arithmetic(engine_options.get(name, {})) if hasattr(engine, "arithmetic") else DOUBLE
-            for name, engine in ENGINES.items()}
-
-
-DOUBLE = "double (IEEE 754 binary64)"
-
-
 def sliding_lines(sliding):
     """{e_n: simulated threshold} of the paper law, from the sliding table (None when there is none)."""
     if sliding is None or sliding.empty:
@@ -214,7 +204,7 @@ def compare_context(comparison, files=()):
                 verdict=record, command=comparison.command, date=comparison.date, files=files,
                 partial=comparison.partial,
                 summary=records(summary), skipped=comparison.skipped, rows=len(frame),
-                ran=engines_ran(frame), facts=records(run_facts(frame, arithmetic(comparison.engine_options))),
+                ran=engines_ran(frame), facts=records(run_facts(frame, comparison.arithmetic)),
                 agreement=records(comparison.agreement), physics=records(checks), deviation=records(comparison.deviation), cross=cross,
                 findings=records(comparison.findings), failures=comparison.failures, precision=records(precision),
                 ratios=ratios, sliding=records(sliding), published=records(distances),

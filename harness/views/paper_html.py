@@ -9,7 +9,7 @@ from ..kinematics import CONVENTIONS
 from ..laws import LAWS
 from ..analyses.published import GOAL
 from ..digitised import points_of, provenance
-from ..paper import ELASTIC, PSI1_GRID
+from ..figures import ELASTIC, PSI1_GRID
 from ..render import environment
 from ..version import __version__
 from .drawing import draw_all

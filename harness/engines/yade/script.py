@@ -7,7 +7,7 @@ import numpy as np
 
 from ...version import __version__
 from ...render import render
-from ..batches import max_steps_of, run_grouped
+from ..batches import run_grouped
 from ..dumps import pair_rebound
 from ..runner import EngineFailure, remove_engine_tmpdir, run_engine
 from .dialect import COUNTERPARTS
@@ -28,18 +28,18 @@ def viscel_contact_time(law, scene, e_n):
     return math.sqrt((math.pi ** 2 + math.log(e_n) ** 2) * 0.5 * scene.contact.mass / k)
 
 
-def script(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, linear="viscel", observe=False):
-    """Render the batched script (validated numbers and fixed words only; see harness.render); `observe` adds the
-    per-step PyRunner that writes OBSERVE_FILE."""
+def script(law, scene, spec, linear="viscel", observe=False):
+    """Render the batched script of a run's spec (harness.plan.RunSpec; validated numbers and fixed words only, see
+    harness.render); `observe` adds the per-step PyRunner that writes OBSERVE_FILE."""
     import math
+    e_n, v_n0, v_t0, omega0 = spec.e_n, spec.v_n0, spec.v_t0, spec.omega0
     radius = scene.radius
     spheres = [{"x": i * 4.0 * radius, "vx": float(vt), "vz": -float(vn), "omegay": float(w)}
                for i, (vn, vt, w) in enumerate(zip(v_n0, v_t0, omega0))]
-    chunk = max(10, int(steps_per_contact // 10))
     common = dict(harness_version=__version__, law=law.name, law2=COUNTERPARTS[law.name], e_n=e_n, rho=scene.rho,
                   friction_angle=math.atan(scene.mu), radius=radius, height=radius, spheres=spheres,
-                  ig2="Ig2_Wall_Sphere_ScGeom", hertzian=True, dt=dt, chunk=chunk,
-                  max_chunks=max(1, max_steps // chunk + 1), observe=bool(observe), other=None, target=None)
+                  ig2="Ig2_Wall_Sphere_ScGeom", hertzian=True, dt=spec.dt, chunk=spec.chunk,
+                  max_chunks=spec.chunks, observe=bool(observe), other=None, target=None)
     if scene.spheres:
         return pair_script(scene, e_n, v_n0, v_t0, omega0, common)
     if scene.wall != "same":
@@ -149,16 +149,16 @@ def run_inputs(precision, count, timeout_s, workdir):
     return [w if isinstance(w, EngineFailure) else w + startup for w in walls]
 
 
-def read_batch(run, batch, directory):
-    """The final state of one batch run in `directory` (and what observe mode saw)."""
-    n = len(batch.v_n0)
+def read_batch(run, directory):
+    """The final state of one run in `directory` (and what observe mode saw)."""
+    n = run.spec.impacts
     if run.scene.spheres:
         rows = read_result(os.path.join(directory, "result.txt"), n, columns=PAIR_COLUMNS)
         final = pair_rebound(rows.reshape(2 * n, 5), run.scene, "YADE")
     else:
         final = final_of(read_result(os.path.join(directory, "result.txt"), n))
     if run.observe:
-        final.update(read_observation(os.path.join(directory, OBSERVE_FILE), len(batch.v_n0), batch.dt))
+        final.update(read_observation(os.path.join(directory, OBSERVE_FILE), n, run.spec.dt))
     return final
 
 
@@ -166,8 +166,7 @@ def run_together(runs, engine_version):
     """(results frame, failure or None) of each run; the runs of one flavour share one interpreter (its start-up,
     about 1 s, paid once)."""
     return run_grouped("yade", engine_version, runs, "harness_yade.py",
-                       lambda run, batch: render_batch(run.law, run.scene, batch, max_steps_of(batch),
-                                                       run.options_dict, run.observe),
+                       lambda run: render_batch(run.law, run.scene, run.spec, run.options_dict, run.observe),
                        lambda run: run.options_dict.get("precision", "double"), run_inputs, read_batch)
 
 
@@ -189,19 +188,18 @@ def read_observation(path, n_spheres, dt):
     return {"t_contact": (last - first + 1) * dt, "f_n_max": force, "overlap_max": overlap}
 
 
-def render_batch(paper_law, scene, batch, max_steps, options=None, observe=False):
-    """The script text for one batch, as run_batch would run it (for `harness render`)."""
-    return script(paper_law, scene, batch.e_n, batch.dt, batch.v_n0, batch.v_t0, batch.omega0,
-                  batch.steps_per_contact, max_steps, dict(options or {}).get("linear", "viscel"), observe)
+def render_batch(paper_law, scene, spec, options=None, observe=False):
+    """The script text of one run's spec, as run_batch would run it (for `harness render`)."""
+    return script(paper_law, scene, spec, dict(options or {}).get("linear", "viscel"), observe)
 
 
-def run_batch(paper_law, scene, batch, max_steps, timeout_s, workdir, options=None, observe=False):
-    """One batch (one e_n) in YADE: final v_n1, v_t1, omega1 per impact and whether each sphere separated; with
+def run_batch(paper_law, scene, spec, timeout_s, workdir, options=None, observe=False):
+    """One run's spec (one e_n) in YADE: final v_n1, v_t1, omega1 per impact and whether each sphere separated; with
     `observe` also t_contact (a whole number of steps), f_n_max and overlap_max (see read_observation)."""
     precision = dict(options or {}).get("precision", "double")
-    rows, wall, log_tail = run_script(render_batch(paper_law, scene, batch, max_steps, options, observe),
-                                      len(batch.v_n0), timeout_s, workdir, precision)
+    rows, wall, log_tail = run_script(render_batch(paper_law, scene, spec, options, observe), spec.impacts, timeout_s,
+                                      workdir, precision)
     final = final_of(rows, log_tail)
     if observe:
-        final.update(read_observation(os.path.join(workdir, OBSERVE_FILE), len(batch.v_n0), batch.dt))
+        final.update(read_observation(os.path.join(workdir, OBSERVE_FILE), spec.impacts, spec.dt))
     return final, wall, log_tail
