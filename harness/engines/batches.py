@@ -36,23 +36,26 @@ def max_steps_of(batch):
     return batch.step_cap
 
 
-def identity_of(engine, version, run, spec):
+def identity_of(engine, version, run):
+    spec = run.spec
     return dict(model=run.law.name, dialect=run.dialect.dialect, engine=engine, engine_version=version, dt=spec.dt,
                 steps_per_contact=spec.steps_per_contact)
 
 
-def failed_rows(engine, version, run, spec, failure):
+def failed_rows(engine, version, run, failure):
     """'failed' rows of a run that produced nothing, carrying its one-line message, and its FailedRun."""
+    spec = run.spec
     nan = np.full(spec.impacts, np.nan)
-    frame = impact_frame(run.scene, spec, **identity_of(engine, version, run, spec), v_n1=nan, v_t1=nan, omega1=nan,
+    frame = impact_frame(run.scene, spec, **identity_of(engine, version, run), v_n1=nan, v_t1=nan, omega1=nan,
                          wall_s=np.nan, status="failed", message=str(failure))
     return frame, FailedRun(engine, spec.e_n, str(failure), failure.log_tail)
 
 
-def result_rows(engine, version, run, spec, final, wall):
+def result_rows(engine, version, run, final, wall):
     """The rows of a run that finished: each impact's rebound, whether it separated, its share of the wall time."""
+    spec = run.spec
     observed = {name: final[name] for name in OBSERVED if run.observe}
-    return impact_frame(run.scene, spec, **identity_of(engine, version, run, spec), v_n1=final["v_n1"],
+    return impact_frame(run.scene, spec, **identity_of(engine, version, run), v_n1=final["v_n1"],
                         v_t1=final["v_t1"], omega1=final["omega1"], wall_s=wall / spec.impacts,
                         status=np.where(final["separated"], "ok", "no-separation"), message="", **observed)
 
@@ -63,16 +66,16 @@ def run_grouped(engine, version, runs, input_name, render, group_of, run_inputs,
     directory with its input in `input_name`; the processes run side by side. render(run) -> its input text (an
     EngineFailure refuses that run alone); run_inputs(group, n, timeout, workdir) runs the n inputs and returns each
     batch's wall seconds (an EngineFailure fails the process: its batches are then run one per process, so that each
-    failure is its own); read(run, directory) -> its final state (each learns what it runs from run.spec). The engine's deadline: after its first
-    timeout, its batches not yet finished are skipped with the reason (a hung engine costs one timeout, not one per
-    batch)."""
+    failure is its own); read(run, directory) -> its final state; each learns what it runs from run.spec. The engine's
+    deadline: after its first timeout, its batches not yet finished are skipped with the reason (a hung engine costs
+    one timeout, not one per batch)."""
     out, groups = [None] * len(runs), {}
     deadline = deadline if deadline is not None else []         # the first timeout of this engine, once it happens
     for i, run in enumerate(runs):
         try:
             text = render(run)
         except EngineFailure as exc:
-            out[i] = failed_rows(engine, version, run, run.spec, exc)
+            out[i] = failed_rows(engine, version, run, exc)
             continue
         groups.setdefault(group_of(run), []).append((i, run, text))
     shares = [(group, items[k::processes]) for group, items in groups.items()
@@ -80,7 +83,7 @@ def run_grouped(engine, version, runs, input_name, render, group_of, run_inputs,
 
     def skipped(items):
         for i, run, _ in items:
-            out[i] = failed_rows(engine, version, run, run.spec, EngineFailure(
+            out[i] = failed_rows(engine, version, run, EngineFailure(
                 f"skipped: an earlier {engine} run timed out ({deadline[0]})", deadline[0].log_tail))
 
     def one_process(group, items):
@@ -98,7 +101,7 @@ def run_grouped(engine, version, runs, input_name, render, group_of, run_inputs,
                 if exc.timed_out:            # every batch of this process shares the timeout; later ones skip
                     deadline.append(exc)
                     for i, run, _ in items:
-                        out[i] = failed_rows(engine, version, run, run.spec, exc)
+                        out[i] = failed_rows(engine, version, run, exc)
                     return
                 if len(items) > 1:           # one process per batch, so that the failure names its batch
                     for i, run, _ in items:
@@ -111,9 +114,9 @@ def run_grouped(engine, version, runs, input_name, render, group_of, run_inputs,
                     if isinstance(wall, EngineFailure):
                         raise wall
                     final = read(run, os.path.join(workdir, f"batch{k}"))
-                    out[i] = (result_rows(engine, version, run, run.spec, final, wall), None)
+                    out[i] = (result_rows(engine, version, run, final, wall), None)
                 except EngineFailure as exc:        # every failure carries the log of the process that ran it
-                    out[i] = failed_rows(engine, version, run, run.spec, EngineFailure(
+                    out[i] = failed_rows(engine, version, run, EngineFailure(
                         str(exc), exc.log_tail or read_tail(os.path.join(workdir, "engine.log"))))
     if len(shares) == 1:
         one_process(*shares[0])
