@@ -6,6 +6,7 @@ import importlib
 from dataclasses import dataclass
 
 from ..errors import UserError
+from . import stepping
 from .damping.kuwabara_kono import KuwabaraKonoDashpot
 from .damping.linear import LinearDashpot
 from .damping.none import NoDamping
@@ -95,6 +96,9 @@ TANGENTIAL_MODELS = {cls.name: cls for cls in (LinearTangential, Mindlin, Mindli
                                                ViscousTangential)}
 ENGINE_TANGENTIAL_MODELS = {cls.name: cls for cls in (LammpsWallMindlin,)}
 DAMPING_MODELS = {cls.name: cls for cls in (NoDamping, LinearDashpot, TsujiDashpot, KuwabaraKonoDashpot)}
+INTEGRATORS = {s.name: s for s in stepping.INTEGRATORS}          # stepping sub-models: the codes the steppers take
+COULOMB_RULES = {s.name: s for s in stepping.COULOMB_RULES}
+GEOMETRIES = {s.name: s for s in stepping.GEOMETRIES}
 
 EXTENSION_SLOTS = 4         # normal kernels registered at run time, beyond the generated dispatch
 EXTENSIONS = []             # their Kernels, in registration order

@@ -33,10 +33,9 @@ DIALECTS = {                    # sub-models that make the paper law compute wha
                  "tangential-damping": "reversed-beta"},
 }
 PAIR_DIALECTS = {              # pair gran between two spheres: slip and torque from each sphere's own R_i - d/2
-    "hertz-mindlin": {**DIALECTS["hertz-mindlin"], "integrator": "liggghts-pair", "torque": "contact-point"},
-    "linear-spring-dashpot": {**DIALECTS["linear-spring-dashpot"], "integrator": "liggghts-pair",
-                              "torque": "contact-point"},
-    "walton-braun": {**DIALECTS["walton-braun"], "integrator": "liggghts-pair", "torque": "contact-point"},
+    "hertz-mindlin": {**DIALECTS["hertz-mindlin"], "geometry": "pair", "torque": "contact-point"},
+    "linear-spring-dashpot": {**DIALECTS["linear-spring-dashpot"], "geometry": "pair", "torque": "contact-point"},
+    "walton-braun": {**DIALECTS["walton-braun"], "geometry": "pair", "torque": "contact-point"},
 }
 KT_TO_KN_USER = "0.285714286"   # the literal LIGGGHTS multiplies by, not exactly 2/7
 

@@ -11,10 +11,11 @@ DIALECTS = {                    # sub-models that make the paper law compute wha
     "linear-spring-dashpot": {"damping": "linear:half-mass", "end": "no-tension", "tangential": "linear:2/7",
                               "tangential-damping": "proportional", "integrator": "leapfrog", "lever": "1"},
     "walton-braun": {"normal": "yade-luding", "end": "no-tension", "tangential": "linear:2/7",
-                     "tangential-damping": "none", "integrator": "leapfrog", "lever": "0.5"},
+                     "tangential-damping": "none", "integrator": "leapfrog", "geometry": "stand-in-sphere",
+                     "lever": "0.5"},
 }
 PAIR_DIALECTS = {              # Ig2_Sphere_Sphere_ScGeom between two spheres: slip from the full radii with noRatch
-    "hertz-mindlin": {**DIALECTS["hertz-mindlin"], "integrator": "yade-pair", "lever": "0", "slip": "noratch-pair",
+    "hertz-mindlin": {**DIALECTS["hertz-mindlin"], "geometry": "pair-vector", "lever": "0", "slip": "noratch-pair",
                       "torque": "contact-point"},       # (R1 + R2)/(R1 + R2 - d), torque from each R_i - d/2
 }
 OPTIONS = {                     # declared options, default first (`--engine-option yade:KEY=VALUE`)
