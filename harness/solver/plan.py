@@ -5,7 +5,7 @@ import numpy as np
 
 from ..errors import UserError
 
-from ..submodels.registry import COULOMB_RULES, GEOMETRIES, INTEGRATORS, kernel_code
+from ..submodels.registry import COULOMB_RULES, GEOMETRIES, INTEGRATORS, check_parameters, kernel_code
 from ..submodels.tangential_damping import CONE_CODES
 from . import codes as C
 from .dispatch import TANGENTIAL_NONE
@@ -102,7 +102,7 @@ def plan_batch(law, scene, e_n, steps_per_contact, check_stability=True, every_e
     params[:, C.P_DT] = dt
     params[:, C.P_GRAVITY] = scene.gravity
     params[:, C.P_MU] = scene.mu
-    params[:, C.P_N1:C.P_N4 + 1] = normal.values
+    params[:, C.P_N1:C.P_N4 + 1] = check_parameters(law.normal, normal)
     params[:, C.P_DAMP_C0] = dashpot.c0
     params[:, C.P_DAMP_POWER] = dashpot.power
     if tangential.any():

@@ -20,14 +20,14 @@ OPTIONS = {                  # declared options, default first (`--engine-option
 }
 COMMON = {"end": "tension", "integrator": "velocity-verlet", "coulomb": "total", "lever": "0"}
 PAIR = {**COMMON, "geometry": "pair"}     # two spheres: their relative motion, the normal turning
-HERTZ = {**COMMON, "normal": "lammps-wall-hertz"}
+HERTZ = {**COMMON, "normal": "hertz-wall-modulus"}
 DIALECTS = {                 # sub-models that make the paper law compute what LAMMPS computes
     "linear-spring-dashpot": {**COMMON},
-    "hertz-mindlin": {**HERTZ, "damping": "tsuji:lammps"},
+    "hertz-mindlin": {**HERTZ, "damping": "tsuji:polynomial"},
     "hertz-kuwabara-kono": {**HERTZ},
 }
 PAIR_DIALECTS = {            # pair granular between two spheres: the pair's own mixing of E* and G* (the paper's), the
-    "hertz-mindlin": {**PAIR, "damping": "tsuji:lammps", "tangential": "mindlin:total", "torque": "contact-point"},
+    "hertz-mindlin": {**PAIR, "damping": "tsuji:polynomial", "tangential": "mindlin:total", "torque": "contact-point"},
     "hertz-kuwabara-kono": {**PAIR, "tangential": "mindlin:total", "torque": "contact-point"},
     "linear-spring-dashpot": {**PAIR, "torque": "contact-point"},
 }                            # slip from the full radii, the torque from each R_i - d/2
@@ -87,5 +87,5 @@ def dialect(law_name, options=None, target="wall"):
     overrides = dict(DIALECTS[law_name])
     if GRANULAR[law_name][0] == "hertz/material":
         form = MINDLIN_FORMS[options.get("tangential", "mindlin")]
-        overrides["tangential"] = f"lammps-wall-mindlin:{form}"
+        overrides["tangential"] = f"mindlin-wall-coefficient:{form}"
     return replace_submodels(compose(law_name), overrides, "lammps")

@@ -10,7 +10,7 @@ DIALECTS = {                    # sub-models that make the paper law compute wha
                       "slip": "noratch"},
     "linear-spring-dashpot": {"damping": "linear:half-mass", "end": "no-tension", "tangential": "linear:2/7",
                               "tangential-damping": "proportional", "integrator": "leapfrog", "lever": "1"},
-    "walton-braun": {"normal": "yade-luding", "end": "no-tension", "tangential": "linear:2/7",
+    "walton-braun": {"normal": "luding-incremental", "end": "no-tension", "tangential": "linear:2/7",
                      "tangential-damping": "none", "integrator": "leapfrog", "geometry": "stand-in-sphere",
                      "lever": "0.5"},
 }
@@ -25,7 +25,7 @@ OPTIONS = {                     # declared options, default first (`--engine-opt
                      "YADE's law for linear-spring-dashpot: ViscEl, or the elastic CundallStrack"),
 }
 CUNDALL_STRACK = {             # K_n = E R, K_s = nu K_n, no damping (e = 1 whatever e_n), noRatch slip with the
-    "normal": "yade-cundall-strack", "damping": "none", "end": "tension",  # default wall geometry (r1 = R),
+    "normal": "cundall-strack", "damping": "none", "end": "tension",  # default wall geometry (r1 = R),
     "tangential": "linear:nu", "tangential-damping": "none",                 # torque lever R - d/2
     "integrator": "leapfrog", "lever": "0.5", "slip": "noratch-sphere"}
 

@@ -1,25 +1,24 @@
-"""LAMMPS' wall Hertz (fix wall/gran granular hertz/material): F = 4/3 E_w R^1/2 alpha^3/2 with E_w = E/(2(1 - nu)),
+"""Hertz against a wall of the sphere's own material mixed as E_w: F = 4/3 E_w R^1/2 alpha^3/2 with E_w = E/(2(1 - nu)),
 the wall's own mixing of the sphere's E and nu, where a pair of spheres gets E* = E/(2(1 - nu^2))
-(docs/lammps-dialect.md)."""
+(docs/laws.md)."""
 from .. import calibration as cal
 from ..base import NormalParameters
 from .hertz import Hertz
 
 
 def wall_modulus(contact):
-    """E_w = E/(2(1 - nu)) of LAMMPS' granular wall of the sphere's own material."""
+    """E_w = E/(2(1 - nu)): the sphere's E and nu mixed with themselves as a wall's."""
     return contact.E / (2.0 * (1.0 - contact.nu))
 
 
-class LammpsWallHertz(Hertz):
-    """F = 4/3 E_w R^1/2 alpha^3/2, E_w = E/(2(1 - nu)) (LAMMPS' wall mixing); the Hertz kernel."""
-    name = "lammps-wall-hertz"
+class HertzWallModulus(Hertz):
+    """F = 4/3 E_w R^1/2 alpha^3/2, E_w = E/(2(1 - nu)) ; the Hertz kernel."""
+    name = "hertz-wall-modulus"
 
     def parameters(self, contact, e_n, speed):
         e_w = wall_modulus(contact)
-        return NormalParameters((e_w, 0.0, 0.0, 0.0), cal.hertz_equivalent_stiffness(e_w, contact.radius,
-                                                                                       contact.mass, speed),
-                                cal.hertz_contact_time(e_w, contact.radius, contact.mass, speed))
+        return NormalParameters.named(cal.hertz_equivalent_stiffness(e_w, contact.radius, contact.mass, speed),
+                                      cal.hertz_contact_time(e_w, contact.radius, contact.mass, speed), E_star=e_w)
 
     def peak(self, contact, e_n, speed):
         """Elastic Hertz with E_w: alpha_max = (5 m V^2/(4 k_h))^2/5, dF/dalpha = 2 E_w sqrt(R alpha)."""
