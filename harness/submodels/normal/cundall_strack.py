@@ -1,4 +1,4 @@
-"""Cundall & Strack's elastic linear spring against a wall of the sphere's own material: K_n = E R (docs/laws.md)."""
+"""Cundall & Strack's (1979) elastic linear spring against a wall of the sphere's own material: K_n = E R."""
 import math
 
 from ..base import NormalParameters

@@ -1,6 +1,5 @@
-"""Hertz against a wall of the sphere's own material mixed as E_w: F = 4/3 E_w R^1/2 alpha^3/2 with E_w = E/(2(1 - nu)),
-the wall's own mixing of the sphere's E and nu, where a pair of spheres gets E* = E/(2(1 - nu^2))
-(docs/laws.md)."""
+"""Hertz against a wall of the sphere's own material: F = 4/3 E_w R^1/2 alpha^3/2 with E_w = E/(2(1 - nu)), a wall's
+mixing of the sphere's E and nu with themselves, where a pair of spheres gets E* = E/(2(1 - nu^2))."""
 from .. import calibration as cal
 from ..base import NormalParameters
 from .hertz import Hertz

@@ -1,5 +1,5 @@
 """Luding's hysteretic spring in its incremental form without adhesion (kc = 0), against a huge fixed sphere standing
-in for the wall: the plastic overlap DeltNull carried step to step (docs/laws.md)."""
+in for the wall: the plastic overlap DeltNull carried step to step (Luding 2008)."""
 
 from ...jit import compiled
 from ..base import NormalParameters

@@ -1,5 +1,5 @@
 """Luding's hysteretic spring as a function of the overlap and its peak, without adhesion: the unloading stiffness
-grows with the peak up to a limit overlap (docs/laws.md)."""
+grows with the peak up to a limit overlap (Luding 2008)."""
 import math
 
 from ...jit import compiled

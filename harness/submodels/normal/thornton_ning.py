@@ -1,4 +1,4 @@
-"""Thornton & Ning's incremental elastoplastic normal law without adhesion: dF = 2E* a dd (docs/laws.md)."""
+"""Thornton & Ning's incremental elastoplastic normal law without adhesion: dF = 2E* a dd (Thornton & Ning 1998)."""
 import math
 
 from ...jit import compiled

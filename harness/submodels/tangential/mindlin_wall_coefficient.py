@@ -1,7 +1,6 @@
 """Mindlin springs with the wall coefficient of the sphere's own material: k_t = K a with K = E/4 (2 - nu)
-(1 + nu), the wall's own stiffness coefficient from the sphere's E and nu, on the total displacement xi (`mindlin`,
-F = -k_t xi) or on the force (`mindlin/force`, F - k_t dd), each rescaled by a/a_old while a falls in its `_rescale`
-form (docs/laws.md#tangential-laws)."""
+(1 + nu), on the total displacement xi ('total', F = -k_t xi) or on the force ('force', F - k_t dd), each also
+rescaled by a/a_old while a falls ('total-rescale', 'force-rescale')."""
 from ...jit import compiled
 from .mindlin import Mindlin, stiffness, total_after_cap  # noqa: F401  (the dispatch points its kernels share)
 from .state import T_AUX1
