@@ -259,7 +259,7 @@ def test_yade_two_spheres_agree_with_their_dialect_at_equal_dt(pair, omega0):
     scene = scene_from(en=(0.3, 0.6, 0.9), angles=(0.0, 10.0, 30.0, 50.0, 70.0, 85.0), omega0=omega0,
                        target="sphere", **PAIR_TARGETS[pair])
     frame, failures = execute(engine_plan(yade, compose("hertz-mindlin"), scene, 200))
-    assert failures == [] and yade.dialect("hertz-mindlin", {}, "sphere").integrator == "yade-pair"
+    assert failures == [] and yade.dialect("hertz-mindlin", {}, "sphere").geometry == "pair-vector"
     assert agreement(frame, "yade") < 1e-6
 
 
@@ -268,7 +268,7 @@ def test_the_yade_pair_stepper_head_on_is_the_wall_stepper():
     stepper on the relative motion equals its wall leapfrog on the equivalent sphere (the pair's own moduli and
     mass), to round-off."""
     assert_head_on_pair_is_wall(yade.dialect("hertz-mindlin", {}, "sphere"),
-                                {"integrator": "leapfrog", "slip": "lever", "torque": "lever"})
+                                {"geometry": "wall", "slip": "lever", "torque": "lever"})
 
 
 def test_yade_takes_a_sphere_target_for_hertz_mindlin_only():

@@ -54,9 +54,9 @@ def settings(law, scene, e_n, options=None):
         properties.append(("characteristicVelocity", "scalar", scene.speed))
     if model == "hooke/hysteresis":
         restitution = 1.0                               # no viscous part: all dissipation by hysteresis
-        from ...submodels.normal.liggghts_hysteresis import LudingHysteresis
+        from ...submodels.normal.luding_peak import LudingPeak
         k1 = law_stiffness(scene)
-        k2max, d_lim = LudingHysteresis.stiffness_and_limit(k1, scene.contact, e_n, scene.speed)
+        k2max, d_lim = LudingPeak.stiffness_and_limit(k1, scene.contact, e_n, scene.speed)
         depth = d_lim * (k2max - k1) / (k2max * 2 * scene.radius)
         if depth == 0.0:        # e_n = 1: LIGGGHTS' d_lim = k2max/(k2max - k1) phi 2R would be 0/0 and its force NaN,
             depth = d_lim / (2 * scene.radius)      # which it drops (the sphere passes through the wall); any phi > 0

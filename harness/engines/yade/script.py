@@ -48,12 +48,12 @@ def script(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps
         common["other"] = ({"young": RIGID_E, "poisson": 0.0, "rho": scene.rho} if scene.wall == "rigid" else
                            {"young": scene.wall_E, "poisson": scene.wall_nu, "rho": scene.rho})
     if law.name == "walton-braun":
-        from ...submodels.normal.yade_luding import YadeLuding
-        luding = YadeLuding()
+        from ...submodels.normal.luding_incremental import LudingIncremental
+        luding = LudingIncremental()
         k1, kp, d_p_max, _ = luding.parameters(scene.contact, e_n, scene.speed).values
         if not kp > k1:             # YADE throws 'k1 have to be less as kp!' and the interpreter aborts (signal 6)
             raise EngineFailure(f"YADE's Luding law needs kp > k1, i.e. e_n < 1; e_n = {e_n:g} was not run")
-        big = YadeLuding.HUGE * radius
+        big = LudingIncremental.HUGE * radius
         spacing = 2.0 * math.sqrt(2.0 * big * radius)        # a neighbour's huge sphere stays 4R below
         for i, s in enumerate(spheres):
             s["x"] = i * spacing
