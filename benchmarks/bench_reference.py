@@ -71,7 +71,7 @@ def main(smoke=False):
         print(f"RATIO liggghts/reference (its dialect, one thread), start-up excluded: "
               f"{(total - startup) / reference:.1f}; with start-up: {total / reference:.1f}")
     else:
-        print(f"liggghts: not available ({liggghts.missing_reason()}), no side-by-side timing")
+        print(f"liggghts: not available ({liggghts.ENGINE.missing_reason()}), no side-by-side timing")
     if smoke:
         return
     start = time.perf_counter()
