@@ -1,11 +1,11 @@
-"""The engines: one subpackage each behind the protocol of protocol.py, and this registry, one line each."""
+"""The engines: one subpackage each holding a subclass of base.Engine, and this registry, one line each."""
 from . import lammps, liggghts, reference, yade
 
 ENGINES = {
-    "reference": reference,
-    "liggghts": liggghts,
-    "yade": yade,
-    "lammps": lammps,
+    "reference": reference.ENGINE,
+    "liggghts": liggghts.ENGINE,
+    "yade": yade.ENGINE,
+    "lammps": lammps.ENGINE,
 }
 EXTERNAL = tuple(name for name in ENGINES if name != "reference")     # the engines harness checks
 

@@ -1,12 +1,10 @@
-"""One run of the plan through an external engine as result rows (a failed batch keeps its log), and the input it
-would be given."""
+"""One run of the plan through an external engine as result rows (a failed batch keeps its log)."""
 import os
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import UserError
 from ..results import impact_frame
 from ..solver.threads import THREADS
 from ..solver.codes import P_MAXSTEPS
@@ -128,14 +126,3 @@ def run_grouped(engine, version, runs, input_name, render, group_of, run_inputs,
             for future in [pool.submit(one_process, group, items) for group, items in shares]:
                 future.result()
     return out
-
-
-def render_input(engine, suffix, render_batch, run):
-    """(file name, text) of the input one run gives an external engine (harness render); a refusal of the engine's
-    input rules is the user's to fix, so it is a UserError."""
-    batch = run.batch()
-    try:
-        text = render_batch(run.law, run.scene, batch, max_steps_of(batch), run.options_dict)
-    except EngineFailure as exc:
-        raise UserError(str(exc)) from None
-    return f"{engine}-{run.law.name}-en{run.e_n:g}{suffix}", text

@@ -1,9 +1,12 @@
-"""How every figure draws a curve: one colour per engine and one line style per dialect, the same in every figure;
-an engine's own run wide and pale under the thin line of its formulas in the reference, so both stay visible."""
+"""How every figure draws a curve: one colour per engine and one line style per dialect (each engine declares its
+own), the same in every figure; an engine's own run wide and pale under the thin line of its formulas in the
+reference, so both stay visible."""
 from itertools import cycle
 
-COLOURS = {"reference": "black", "liggghts": "tab:orange", "yade": "tab:green", "lammps": "tab:purple"}
-DASHES = {"paper": "-", "liggghts": "--", "yade": ":", "lammps": "-."}
+from ..engines import ENGINES
+
+COLOURS = {name: engine.COLOUR for name, engine in ENGINES.items() if engine.COLOUR}
+DASHES = {engine.dialect_label: engine.DASHES for engine in ENGINES.values() if engine.DASHES}
 _spare_colours = cycle(["tab:red", "tab:brown", "tab:pink", "tab:olive", "tab:cyan"])
 _spare_dashes = cycle([(0, (5, 1, 1, 1)), (0, (1, 2))])
 

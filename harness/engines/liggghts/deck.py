@@ -7,16 +7,21 @@ from pathlib import Path
 
 from ...version import __version__
 from ...render import render
-from ..batches import max_steps_of, run_grouped
 from ..dumps import pair_rebound, read_final, read_observed, read_observed_pairs, rebound
+from ..executable import chosen
 from ..runner import EngineFailure, run_engine
-from .binary import binary
 from .dialect import COUNTERPARTS
+
+BINARY_VARIABLE = "HARNESS_LIGGGHTS"     # path of another liggghts binary (a custom build, or a test's fake)
 
 TEMPLATES = Path(__file__).resolve().parent / "templates"
 MIN_RESTITUTION = 0.05          # LIGGGHTS refuses coefficientRestitution <= 0.05 and poissonsRatio < 0; youngsModulus
                                 # < 5e6 or > 1e9 only with soft_particles/hard_particles yes (sanity checks only)
 OBSERVE_DUMP = "observe.dump"   # observe mode: `id z fz` of every sphere in contact, every step
+
+
+def binary():
+    return chosen(BINARY_VARIABLE, "liggghts")
 
 
 @dataclass(frozen=True)
@@ -177,41 +182,21 @@ def final_state(state, radius, log_tail=""):
     return rebound(state, radius, "LIGGGHTS", log_tail)
 
 
-def read_batch(run, batch, directory):
+def read_batch(scene, batch, directory, observe=False):
     """The final state of one batch run in `directory` (and what observe mode saw)."""
-    if run.scene.spheres:
+    if scene.spheres:
         final = pair_rebound(read_final(os.path.join(directory, "final.dump"), 2 * len(batch.v_n0), "LIGGGHTS", 6),
-                             run.scene, "LIGGGHTS")
-        if run.observe:
-            projectile, target = run.scene.spheres
+                             scene, "LIGGGHTS")
+        if observe:
+            projectile, target = scene.spheres
             final.update(read_observed_pairs(os.path.join(directory, OBSERVE_DUMP), len(batch.v_n0),
                                              projectile.radius + target.radius, batch.dt, "LIGGGHTS"))
         return final
-    final = final_state(read_dump(os.path.join(directory, "final.dump"), len(batch.v_n0)), run.scene.radius)
-    if run.observe:
-        final.update(read_observation(os.path.join(directory, OBSERVE_DUMP), len(batch.v_n0), run.scene.radius,
+    final = final_state(read_dump(os.path.join(directory, "final.dump"), len(batch.v_n0)), scene.radius)
+    if observe:
+        final.update(read_observation(os.path.join(directory, OBSERVE_DUMP), len(batch.v_n0), scene.radius,
                                       batch.dt))
     return final
-
-
-def run_together(runs, engine_version):
-    """(results frame, failure or None) of each run; the runs share one LIGGGHTS process (a failed process: one
-    process per run, so that each failure is its own)."""
-    return run_grouped("liggghts", engine_version, runs, "in.harness",
-                       lambda run, batch: render_batch(run.law, run.scene, batch, max_steps_of(batch),
-                                                       run.options_dict, run.observe),
-                       lambda run: None, run_inputs, read_batch)
-
-
-def run_batch(paper_law, scene, batch, max_steps, timeout_s, workdir, options=None, observe=False):
-    """One batch (one e_n) in LIGGGHTS: final v_n1, v_t1, omega1 per impact and whether each sphere separated;
-    with `observe` also t_contact (a whole number of steps), f_n_max and overlap_max (see read_observation)."""
-    text = render_batch(paper_law, scene, batch, max_steps, options, observe)
-    state, wall, log_tail = run_deck(text, len(batch.v_n0), timeout_s, workdir)
-    final = final_state(state, scene.radius, log_tail)
-    if observe:
-        final.update(read_observation(os.path.join(workdir, OBSERVE_DUMP), len(batch.v_n0), scene.radius, batch.dt))
-    return final, wall, log_tail
 
 
 def render_batch(paper_law, scene, batch, max_steps, options=None, observe=False):

@@ -7,7 +7,6 @@ import numpy as np
 
 from ...version import __version__
 from ...render import render
-from ..batches import max_steps_of, run_grouped
 from ..dumps import pair_rebound
 from ..runner import EngineFailure, remove_engine_tmpdir, run_engine
 from .dialect import COUNTERPARTS
@@ -149,26 +148,17 @@ def run_inputs(precision, count, timeout_s, workdir):
     return [w if isinstance(w, EngineFailure) else w + startup for w in walls]
 
 
-def read_batch(run, batch, directory):
+def read_batch(scene, batch, directory, observe=False):
     """The final state of one batch run in `directory` (and what observe mode saw)."""
     n = len(batch.v_n0)
-    if run.scene.spheres:
+    if scene.spheres:
         rows = read_result(os.path.join(directory, "result.txt"), n, columns=PAIR_COLUMNS)
-        final = pair_rebound(rows.reshape(2 * n, 5), run.scene, "YADE")
+        final = pair_rebound(rows.reshape(2 * n, 5), scene, "YADE")
     else:
         final = final_of(read_result(os.path.join(directory, "result.txt"), n))
-    if run.observe:
+    if observe:
         final.update(read_observation(os.path.join(directory, OBSERVE_FILE), len(batch.v_n0), batch.dt))
     return final
-
-
-def run_together(runs, engine_version):
-    """(results frame, failure or None) of each run; the runs of one flavour share one interpreter (its start-up,
-    about 1 s, paid once)."""
-    return run_grouped("yade", engine_version, runs, "harness_yade.py",
-                       lambda run, batch: render_batch(run.law, run.scene, batch, max_steps_of(batch),
-                                                       run.options_dict, run.observe),
-                       lambda run: run.options_dict.get("precision", "double"), run_inputs, read_batch)
 
 
 def final_of(rows, log_tail=""):
@@ -193,15 +183,3 @@ def render_batch(paper_law, scene, batch, max_steps, options=None, observe=False
     """The script text for one batch, as run_batch would run it (for `harness render`)."""
     return script(paper_law, scene, batch.e_n, batch.dt, batch.v_n0, batch.v_t0, batch.omega0,
                   batch.steps_per_contact, max_steps, dict(options or {}).get("linear", "viscel"), observe)
-
-
-def run_batch(paper_law, scene, batch, max_steps, timeout_s, workdir, options=None, observe=False):
-    """One batch (one e_n) in YADE: final v_n1, v_t1, omega1 per impact and whether each sphere separated; with
-    `observe` also t_contact (a whole number of steps), f_n_max and overlap_max (see read_observation)."""
-    precision = dict(options or {}).get("precision", "double")
-    rows, wall, log_tail = run_script(render_batch(paper_law, scene, batch, max_steps, options, observe),
-                                      len(batch.v_n0), timeout_s, workdir, precision)
-    final = final_of(rows, log_tail)
-    if observe:
-        final.update(read_observation(os.path.join(workdir, OBSERVE_FILE), len(batch.v_n0), batch.dt))
-    return final, wall, log_tail
