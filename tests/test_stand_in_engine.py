@@ -61,3 +61,20 @@ def test_a_campaign_runs_it(registered, tmp_path, capsys):
     assert main(["campaign", str(path), "-o", str(tmp_path / "store")]) == 0
     assert "stand-in" in capsys.readouterr().out
     assert main(["campaign", str(path), "-o", str(tmp_path / "store"), "--dry-run"]) == 0
+
+
+def test_its_stored_runs_are_keyed_on_its_own_source(registered, tmp_path):
+    """A store key carries a digest of the engine's source: the stand-in's is its own package's, not an empty one
+    (sha256 of no bytes), and it changes when a file of that package changes."""
+    import hashlib
+    import shutil
+
+    import standin
+    from harness.sources import source_digest
+    folder = tmp_path / "standin"
+    shutil.copytree(standin.__path__[0], folder)
+    empty = hashlib.sha256(b"").hexdigest()[:12]
+    assert ENGINE.sources() == (standin.__path__[0],)
+    before = source_digest(str(folder))
+    (folder / "__init__.py").write_text((folder / "__init__.py").read_text() + "\n# changed\n")
+    assert empty != before != source_digest(str(folder))

@@ -37,6 +37,11 @@ class Engine:
     def dialect_label(self):
         return self.DIALECT or self.NAME
 
+    def sources(self):
+        """The folders of source whose change changes its results (its own subpackage): stored runs are keyed on them."""
+        import sys
+        return (os.path.dirname(os.path.abspath(sys.modules[type(self).__module__].__file__)),)
+
     # --- where it is and what it is -----------------------------------------------------------------------------
     def binary(self):
         """The executable that runs: the path in VARIABLE, else EXECUTABLE on PATH."""

@@ -31,6 +31,16 @@ def curve(engine, dialect):
     return {"color": colour(engine), "ls": dashes(dialect), "lw": 3.0, "alpha": 0.55, "zorder": 2}
 
 
+STYLE_WORDS = {"-": "solid", "--": "dashed", ":": "dotted", "-.": "dash-dotted"}
+
+
+def dialect_styles():
+    """'dashed: liggghts' formulas; dotted: yade's; ...' for each engine's dialect line style (the report's legend)."""
+    words = [f"{STYLE_WORDS.get(engine.DASHES, 'own style')}: {name}'s formulas"
+             for name, engine in ENGINES.items() if engine.DASHES and name != "reference"]
+    return "; ".join(words)
+
+
 def label(engine, dialect):
     """The legend's words for a curve."""
     if engine == "reference" and dialect == "paper":

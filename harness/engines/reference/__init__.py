@@ -1,5 +1,7 @@
 """The reference solver as an engine (docs/engines.md): it runs any law, the paper's or an engine's dialect, in the
 compiled kernels of harness/solver, at a number of steps per contact, a time step or converged."""
+import os
+
 from ...laws import LAWS
 from ...version import __version__
 from ..base import Engine
@@ -21,6 +23,11 @@ class Reference(Engine):
 
     def version(self):
         return __version__
+
+    def sources(self):
+        """Its subpackage, the solver and the sub-models."""
+        root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+        return super().sources() + (os.path.join(root, "solver"), os.path.join(root, "submodels"))
 
     def walls(self, law_name, options=None):
         """Every wall: the contact's E* and G* carry it."""
