@@ -14,7 +14,8 @@ FIELDS = {key: key.replace("-", "_") for key in SUBMODEL_KEYS}
 STEPPING = ("integrator", "coulomb", "geometry")    # switched together where no stepper takes one without the others
 NOTES = {   # what switching an ingredient carries with it, beyond its name
     "integrator": "the scheme's conventions go with it: tangential dashpot after the Coulomb test without a second "
-                  "cap, release at the step rather than inside it; the velocity-Verlet dialects also their force at first touch",
+                  "cap, release at the step rather than inside it; the velocity-Verlet dialects also their force at "
+                  "first touch",
     "damping": "the calibration alone; the end rule stays the dialect's",
     "end": "clipping alone; the damping calibration stays the dialect's",
 }
