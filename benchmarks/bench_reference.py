@@ -44,9 +44,9 @@ def liggghts_seconds(law, scene, batches):
     total = startup = 0.0
     for batch in batches:
         with tempfile.TemporaryDirectory(prefix="harness-bench-") as workdir:
-            total += liggghts.run_batch(law, scene, RunSpec.of(batch), 600, workdir)[1]
+            total += liggghts.ENGINE.run_batch(law, scene, RunSpec.of(batch), 600, workdir)[1]
         with tempfile.TemporaryDirectory(prefix="harness-bench-") as workdir:
-            startup += liggghts.run_batch(law, scene, RunSpec.of(batch, step_cap=1), 600, workdir)[1]
+            startup += liggghts.ENGINE.run_batch(law, scene, RunSpec.of(batch, step_cap=1), 600, workdir)[1]
     return total, startup
 
 
@@ -63,7 +63,7 @@ def main(smoke=False):
         rates[threads] = seconds / steps * 1e6
         print(f"reference, {threads} thread(s): {steps} impact-steps in {seconds:.3f} s = {rates[threads]:.4f} us per "
               f"impact-step")
-    if liggghts.available():
+    if liggghts.ENGINE.available():
         dialect_batches = [plan_batch(liggghts.dialect(law.name), scene, e, STEPS) for e in scene.e_n]
         total, startup = liggghts_seconds(law, scene, dialect_batches)
         reference, _ = reference_seconds(dialect_batches, 1)
@@ -71,7 +71,7 @@ def main(smoke=False):
         print(f"RATIO liggghts/reference (its dialect, one thread), start-up excluded: "
               f"{(total - startup) / reference:.1f}; with start-up: {total / reference:.1f}")
     else:
-        print(f"liggghts: not available ({liggghts.missing_reason()}), no side-by-side timing")
+        print(f"liggghts: not available ({liggghts.ENGINE.missing_reason()}), no side-by-side timing")
     if smoke:
         return
     start = time.perf_counter()

@@ -9,6 +9,7 @@ from .analyses.sliding import threshold_table
 from .comparison import Comparison
 from .engines import ENGINES, EXTERNAL
 from .engines.protocol import Status
+from .errors import UserError
 from .execute import execute, run_all
 from .outputs import arithmetic_of
 from .plan import CONVERGED, compare_plan, reference_runs, target_of
@@ -52,7 +53,8 @@ def compare(model, engines=None, engine_options=None, **keywords):
 
 def statuses(request):
     """The Status of every external engine for the request: asked for (or every one when none was named), able to run
-    the law and to express the scene."""
+    the law, to express the scene and to follow its replacements (--with; an engine named in --engines that cannot is
+    refused, one that was not is skipped with the reason)."""
     names = [e for e in (request.engines if request.engines is not None else EXTERNAL) if e != "reference"]
     out = []
     scene = request.scene
@@ -64,10 +66,26 @@ def statuses(request):
                        ("engine inputs do not model gravity" if scene.gravity else
                        f"its {request.law.name} inputs use a wall of the sphere's own material"
                        if not scene.spheres and scene.wall not in engine.walls(request.law.name, options) else None))
+        if not unsupported and status.available and request.overrides:
+            try:
+                options_for(request, name)
+            except UserError as exc:
+                if request.engines is not None:
+                    raise
+                unsupported = str(exc)
         if unsupported:
             status = Status(name, False, unsupported)
         out.append(status)
     return out
+
+
+def options_for(request, name):
+    """The options of engine `name` in the request: those asked for, and those that make its inputs follow the
+    replaced sub-models (--with, Engine.with_options)."""
+    options = request.engine_options.get(name, {})
+    if not request.overrides:
+        return options
+    return ENGINES[name].with_options(request.law.name, dict(request.overrides), options, target_of(request.scene))
 
 
 def compare_request(request, on_frame=None, progress=None, partial=None):
@@ -78,14 +96,13 @@ def compare_request(request, on_frame=None, progress=None, partial=None):
     finishes is put there."""
     law, scene = request.law, request.scene
     found = statuses(request)
-    engines = {ENGINES[s.name]: request.engine_options.get(s.name, {}) for s in found if s.available}
+    engines = {ENGINES[s.name]: options_for(request, s.name) for s in found if s.available}
     engine_resolution = 1000 if request.resolution == CONVERGED else request.resolution
     plan = compare_plan(law, scene, request.resolution, engines, engine_resolution)
     for run_ in plan:                          # a time step above a stability limit: refused before anything runs
         if run_.resolution != CONVERGED:
             run_.batch()
-    checks = [(engine.NAME, engine.precision_runs(law, scene)) for engine, options in engines.items()
-              if hasattr(engine, "precision_runs") and options.get("precision", "double") == "double"]
+    checks = [(engine.NAME, engine.precision_runs(law, scene, options)) for engine, options in engines.items()]
     extra = [run_ for _, pair in checks for run_ in pair]
     if progress:
         progress.expect(len(plan) + len(extra) + 1)

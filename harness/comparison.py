@@ -55,7 +55,8 @@ class Comparison:
 
     @cached_property
     def findings(self):
-        return findings(self.results, self.scene.gravity)
+        from .engines import known_cause
+        return findings(self.results, self.scene.gravity, known_cause)
 
     @cached_property
     def physics(self):

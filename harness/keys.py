@@ -15,4 +15,4 @@ def run_key(run):
 @lru_cache(maxsize=None)
 def code_digest(engine):
     """sha256 of the source files that determine an engine's results in harness."""
-    return source_digest(f"engines/{engine}", *(("solver", "submodels") if engine == "reference" else ()))
+    return source_digest(*ENGINES[engine].sources())

@@ -6,8 +6,8 @@ ROOT = Path(__file__).resolve().parent
 
 
 def source_digest(*folders):
-    """sha256 (12 hex digits) of the .py and .j2 files among the given files and folders of the harness package, in
-    path order."""
+    """sha256 (12 hex digits) of the .py and .j2 files among the given files and folders (of the harness package when
+    relative), in path order."""
     paths = [p for name in folders for p in ([ROOT / name] if (ROOT / name).is_file() else (ROOT / name).rglob("*"))]
     digest = hashlib.sha256()
     for path in sorted(p for p in paths if p.suffix in (".py", ".j2")):

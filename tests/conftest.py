@@ -54,8 +54,15 @@ def assert_head_on_pair_is_wall(pair, wall_form):
     assert (a.v_n1 > 0).all()
 
 
-NOWHERE = {"HARNESS_LIGGGHTS": "/nonexistent/liggghts", "HARNESS_YADE_PYTHON": "/nonexistent/python3.11",
-           "HARNESS_LAMMPS": "/nonexistent/lmp"}
+def nowhere():
+    """Every external engine's executable variable pointing nowhere."""
+    import os
+    from harness.engines import ENGINES
+    return {engine.VARIABLE: f"/nonexistent/{os.path.basename(engine.EXECUTABLE)}" for engine in ENGINES.values()
+            if engine.VARIABLE}
+
+
+NOWHERE = nowhere()
 
 
 def pytest_configure(config):

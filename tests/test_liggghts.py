@@ -28,7 +28,7 @@ def engine_and_dialect(name, scene, e_n, steps=200, tmp_path=None, options=None)
     law = liggghts.dialect(name, options)
     batch = plan_batch(law, scene, e_n, steps)
     out, _, _ = run_kernel(batch)
-    final, _, _ = liggghts.run_batch(compose(name), scene, RunSpec.of(batch), 300, str(tmp_path), options)
+    final, _, _ = liggghts.ENGINE.run_batch(compose(name), scene, RunSpec.of(batch), 300, str(tmp_path), options)
     engine = np.column_stack([final["v_n1"], final["v_t1"], final["omega1"]])
     reference = out[:, [C.O_VZ, C.O_VX, C.O_W]]
     return engine, reference, final
@@ -68,7 +68,7 @@ def test_soft_and_stiff_materials_run_and_negative_poisson_is_refused_clearly(tm
         assert final["separated"].all()
         scale = np.array([1.0, 1.0, 1.0 / scene.radius]) * scene.speed
         assert (np.abs(engine - reference) / np.maximum(np.abs(reference), 1e-9 * scale)).max() < 1e-6, E
-    frame, failures = execute(engine_runs(liggghts, compose("hertz-mindlin"), Scene(nu=-0.5, e_n=(0.5,)), 100))
+    frame, failures = execute(engine_runs(liggghts.ENGINE, compose("hertz-mindlin"), Scene(nu=-0.5, e_n=(0.5,)), 100))
     assert [f.message for f in failures] == ["LIGGGHTS accepts poissonsRatio in [0, 0.5] only; nu = -0.5 was not run"]
     assert (frame.status == "failed").all()
 
@@ -179,12 +179,12 @@ def test_version_is_the_installed_packages():
     package = subprocess.run(["dpkg-query", "-W", "-f=${Version}", "liggghts"], capture_output=True, text=True)
     if package.returncode != 0:
         pytest.skip("liggghts is not a Debian package here")
-    assert liggghts.version() == package.stdout.split("+")[0].split("-")[0]
+    assert liggghts.ENGINE.version() == package.stdout.split("+")[0].split("-")[0]
 
 
 def test_missing_binary_is_reported_not_raised(tmp_path, monkeypatch):
     monkeypatch.setenv(liggghts.BINARY_VARIABLE, str(tmp_path / "nowhere"))
-    status = liggghts.status("hertz-mindlin")
+    status = liggghts.ENGINE.status("hertz-mindlin")
     assert not status.available and status.reason == f"HARNESS_LIGGGHTS={str(tmp_path / 'nowhere')!r} is not an executable file"
     with pytest.raises(EngineFailure, match="not found"):
         run_engine([str(tmp_path / "nowhere")], str(tmp_path), 5)
@@ -251,7 +251,7 @@ def test_thornton_ning_energy_gain_is_reported_as_a_finding():
     tangential + rotational energy than it had; compare must say so, for the engine itself."""
     from harness.analyses.findings import findings
     scene = Scene(**EXAMPLE, e_n=(0.5,), angles_deg=(10.0, 20.0, 60.0))   # mu 0.3: at 10 deg it sticks
-    frame, failures = execute(engine_runs(liggghts, compose("thornton"), scene, 200))
+    frame, failures = execute(engine_runs(liggghts.ENGINE, compose("thornton"), scene, 200))
     assert not failures
     found = findings(frame)
     gains = found[(found.engine == "liggghts") & (found.kind == "tangential energy gain")]
@@ -274,7 +274,7 @@ def test_compare_cli_prints_agreement_deviation_attribution(tmp_path):
     frame = pd.read_csv(tmp_path / "results.csv")
     assert set(zip(frame.engine, frame.dialect)) == {("reference", "paper"), ("reference", "liggghts"),
                                                      ("liggghts", "liggghts")}
-    assert (frame[frame.engine == "liggghts"].engine_version.astype(str) == liggghts.version()).all()
+    assert (frame[frame.engine == "liggghts"].engine_version.astype(str) == liggghts.ENGINE.version()).all()
 
 
 @needs_liggghts
@@ -303,11 +303,11 @@ def test_walls_of_another_material_run_and_agree_with_the_dialect(name, wall):
     from harness.plan import engine_plan
     from harness.request import wall_fields
     scene = Scene(e_n=(0.3, 0.9), angles_deg=(0.0, 30.0, 60.0), psi1_star=None, omega0=-20.0, **wall_fields(wall))
-    frame, failures = execute(engine_plan(liggghts, compose(name), scene, 200))
+    frame, failures = execute(engine_plan(liggghts.ENGINE, compose(name), scene, 200))
     assert failures == []
     ref, eng = (frame[frame.engine == e].reset_index(drop=True) for e in ("reference", "liggghts"))
     assert np.abs(eng[["v_n1", "v_t1"]].to_numpy() - ref[["v_n1", "v_t1"]].to_numpy()).max() < 1e-6 * scene.speed
-    same = execute(engine_runs(liggghts, compose(name), Scene(e_n=(0.3, 0.9), angles_deg=(0.0, 30.0, 60.0),
+    same = execute(engine_runs(liggghts.ENGINE, compose(name), Scene(e_n=(0.3, 0.9), angles_deg=(0.0, 30.0, 60.0),
                                                                psi1_star=None, omega0=-20.0), 200))[0]
     assert np.abs(same.omega1.to_numpy() - eng.omega1.to_numpy()).max() > 1e-3
 
@@ -319,7 +319,7 @@ def test_models_with_per_type_properties_skip_other_walls_with_the_reason():
     request = Request.from_keywords("thornton", engines=["liggghts"], wall="rigid")
     (status,) = statuses(request)
     assert not status.available and status.reason == "its thornton inputs use a wall of the sphere's own material"
-    assert liggghts.walls("hertz-mindlin") == ("same", "other", "rigid")
+    assert liggghts.ENGINE.walls("hertz-mindlin") == ("same", "other", "rigid")
 
 
 @needs_liggghts
@@ -334,7 +334,7 @@ def test_liggghts_two_spheres_agree_with_their_dialect_at_equal_dt(name, pair, o
     from harness.request import scene_from
     scene = scene_from(en=(0.3, 0.6, 0.9), angles=(0.0, 10.0, 30.0, 50.0, 70.0, 85.0), omega0=omega0,
                        target="sphere", **PAIR_TARGETS[pair])
-    frame, failures = execute(engine_plan(liggghts, compose(name), scene, 200))
+    frame, failures = execute(engine_plan(liggghts.ENGINE, compose(name), scene, 200))
     assert failures == []
     assert agreement(frame, "liggghts") < 1e-6
 
@@ -342,9 +342,9 @@ def test_liggghts_two_spheres_agree_with_their_dialect_at_equal_dt(name, pair, o
 def test_liggghts_takes_a_sphere_target_for_all_but_thornton_ning():
     from harness.request import scene_from
     law = "hertz-mindlin"
-    assert liggghts.target_reason(law, scene_from(target="sphere")) == ""
-    assert liggghts.target_reason(law, scene_from(target="sphere", target_radius=0.01, target_fixed=True)) == ""
-    assert "no sphere target" in liggghts.target_reason("thornton", scene_from(target="sphere"))
-    assert liggghts.target_reason("walton-braun", scene_from(target="sphere")) == ""
-    assert liggghts.target_reason("linear-spring-dashpot", scene_from(target="sphere")) == ""
-    assert liggghts.target_reason(law, scene_from()) == ""
+    assert liggghts.ENGINE.target_reason(law, scene_from(target="sphere")) == ""
+    assert liggghts.ENGINE.target_reason(law, scene_from(target="sphere", target_radius=0.01, target_fixed=True)) == ""
+    assert "no sphere target" in liggghts.ENGINE.target_reason("thornton", scene_from(target="sphere"))
+    assert liggghts.ENGINE.target_reason("walton-braun", scene_from(target="sphere")) == ""
+    assert liggghts.ENGINE.target_reason("linear-spring-dashpot", scene_from(target="sphere")) == ""
+    assert liggghts.ENGINE.target_reason(law, scene_from()) == ""

@@ -199,3 +199,27 @@ def test_compare_refuses_a_bad_tolerance_in_one_line_and_writes_nothing(tmp_path
                  *bad, "-o", str(tmp_path / "out")])
     err = capfd.readouterr().err.strip().splitlines()
     assert code == 2 and len(err) == 1 and err[0].startswith("harness: error: ") and not (tmp_path / "out").exists()
+
+
+def test_a_stepping_field_no_stepper_takes_alone_is_switched_with_the_others_and_measured():
+    """LAMMPS' hertz-mindlin dialect steps with velocity Verlet and caps spring + dashpot together; the paper scheme
+    applies its own Coulomb test only. Switching the integrator alone composes nothing, so its row switches the
+    Coulomb rule too and measures it: equal to simulating that law directly, and said in the note."""
+    from dataclasses import replace
+
+    from harness.analyses.attribution import attribution
+    from harness.engines import ENGINES
+    from harness.laws import compose
+    from harness.scene import Scene
+    from harness.solver.reference import simulate
+
+    dialect, paper = ENGINES["lammps"].dialect("hertz-mindlin", {}), compose("hertz-mindlin")
+    scene = Scene(e_n=(0.5,), angles_deg=(20.0, 60.0))
+    run = lambda law, s: simulate(law, s, steps_per_contact=500)[0]     # noqa: E731
+    table = attribution(paper, dialect, scene, run).set_index("ingredient")
+    row = table.loc["integrator"]
+    assert "switched with its coulomb" in row.note
+    both = run(replace(dialect, integrator=paper.integrator, coulomb=paper.coulomb), scene)
+    change = (both.omega_star - run(dialect, scene).omega_star).to_numpy()
+    assert row.d_omega_star == pytest.approx(change[np.argmax(np.abs(change))], abs=1e-12)
+    assert abs(row.d_omega_star) > 1e-3 and np.isfinite(table.loc["coulomb"].d_e_t)

@@ -35,8 +35,8 @@ def test_integrators_know_capabilities_not_names():
 
 
 def test_a_missing_branch_is_an_error_value_not_another_law():
-    ning = registry.code_of("normal", "liggghts-thornton-ning")        # incremental: it has a step, no force
-    hysteresis = registry.code_of("normal", "liggghts-hysteresis")     # not in the adaptive integrator: no slope
+    ning = registry.code_of("normal", "thornton-ning")        # incremental: it has a step, no force
+    hysteresis = registry.code_of("normal", "luding-peak")     # not in the adaptive integrator: no slope
     table = tuple([dispatch_missing()] * registry.EXTENSION_SLOTS)
     normal_force, normal_slope = python_twin(dispatch.normal_force), python_twin(dispatch.normal_slope)
     tangential_stiffness = python_twin(dispatch.tangential_stiffness)
@@ -56,6 +56,7 @@ def dispatch_missing():
 # ---- a made-up normal law, registered from this file: F = k alpha^2, k from Hertz's peak force at V -----------------
 NAME = "quadratic"
 ADAPTIVE = True
+SLOTS = ("k",)
 
 
 class Quadratic(NormalModel):
@@ -65,7 +66,7 @@ class Quadratic(NormalModel):
     def parameters(self, contact, e_n, speed):
         alpha, f = hertz_peak(contact, speed)
         k = f / alpha ** 2
-        return NormalParameters((k, 0.0, 0.0, 0.0), f / alpha, 2.0 * alpha / speed)
+        return NormalParameters.named(f / alpha, 2.0 * alpha / speed, k=k)
 
     def peak(self, contact, e_n, speed):
         alpha, f = hertz_peak(contact, speed)
@@ -114,7 +115,7 @@ def test_a_law_registered_from_a_test_file_runs_through_run(registered, mode, tm
     assert code == 0
     frame = pd.read_csv(out)
     scene = Scene()
-    k = Quadratic().parameters(scene.contact, 0.5, scene.speed).values[0]
+    k = Quadratic().parameters(scene.contact, 0.5, scene.speed)["k"]
     oracle = quadratic_oracle(scene, k)
     normal = frame[frame.theta_deg == 0].iloc[0]
     tolerance = 1e-6 if mode == "converged" else 1e-5
@@ -124,3 +125,87 @@ def test_a_law_registered_from_a_test_file_runs_through_run(registered, mode, tm
     assert (frame.status == "ok").all() and frame.ke_ratio.max() <= 1.0 + 1e-9
     if mode == "converged":
         assert frame.message.str.startswith("converged: adaptive").all()
+
+
+# ---- registration refuses a kernel module that lacks what its family needs ----------------------------------------
+FUNCTIONS = {name: f"def {name}(*args):\n    return 0.0, 0.0\n" for name in
+             ("force", "slope", "below", "step", "stiffness", "spring", "extension")}
+
+
+def throwaway(tmp_path, monkeypatch, text, *functions):
+    """A kernel module written to tmp_path with the constants in `text` and the functions named: its import name."""
+    throwaway.count = getattr(throwaway, "count", 0) + 1
+    package = tmp_path / f"made_up_kernels_{throwaway.count}"
+    package.mkdir()
+    (package / "__init__.py").write_text("")
+    (package / "kernel.py").write_text(text + "".join(FUNCTIONS[f] for f in functions))
+    monkeypatch.syspath_prepend(str(tmp_path))
+    return f"{package.name}.kernel"
+
+
+COMPLETE = 'NAME = "made-up"\nADAPTIVE = True\nSLOTS = ("k", "c")\n'
+
+
+def test_a_complete_normal_module_is_taken_with_its_slot_names(tmp_path, monkeypatch):
+    kernel = registry.normal_kernel(throwaway(tmp_path, monkeypatch, COMPLETE, "force", "slope", "below"))
+    assert kernel.slots == ("k", "c") and dict(kernel.functions) == {"force": "force", "below": "below",
+                                                                     "slope": "slope"}
+
+
+@pytest.mark.parametrize("text, functions, missing", [
+    (COMPLETE, ("slope",), "function force"),                                  # misspelt or absent force
+    (COMPLETE, ("force",), "function slope (ADAPTIVE)"),                       # adaptive without its slope
+    ('NAME = "made-up"\nADAPTIVE = True\n', ("force", "slope"), "constant SLOTS"),
+    ('ADAPTIVE = False\nSLOTS = ()\n', ("force",), "constant NAME"),
+    ('NAME = "made-up"\nSLOTS = ()\n', ("force",), "constant ADAPTIVE"),
+    ('NAME = "made-up"\nADAPTIVE = False\nSLOTS = ("a", "b", "c", "d", "e")\n', ("force",), "SLOTS as at most 4"),
+    ('NAME = "made-up"\nADAPTIVE = False\nSLOTS = ("a", "a")\n', ("force",), "distinct names"),
+    ('NAME = "made-up"\nADAPTIVE = False\nSLOTS = ()\n', ("step",), "constant HISTORY_RESET"),
+    ('NAME = "made-up"\nADAPTIVE = False\nSLOTS = ()\nHISTORY_RESET = (0.0,)\n', (), "function step"),
+])
+def test_a_normal_module_lacking_a_required_point_is_refused_naming_it(tmp_path, monkeypatch, text, functions,
+                                                                       missing):
+    from harness.errors import UserError
+    module = throwaway(tmp_path, monkeypatch, text, *functions)
+    with pytest.raises(UserError, match=re.escape(missing)):
+        registry.normal_kernel(module)
+
+
+@pytest.mark.parametrize("points, missing", [
+    ({"spring": "spring"}, "dispatch point stiffness"),
+    ({"stiffness": "stiffness"}, "dispatch point spring"),
+    ({"stiffness": "stiffness", "spring": "sprign"}, "function sprign (its spring)"),
+    ({"stiffness": "stiffness", "spring": "spring", "implicit": True}, "dispatch point force_from_w"),
+    ({"stiffness": "stiffness", "sping": "spring"}, "no dispatch point sping"),
+])
+def test_a_tangential_kernel_lacking_a_point_its_capabilities_need_is_refused(tmp_path, monkeypatch, points,
+                                                                             missing):
+    from harness.errors import UserError
+    module = throwaway(tmp_path, monkeypatch, "", "stiffness", "spring")
+    with pytest.raises(UserError, match=re.escape(missing)):
+        registry.tangential_kernel("made-up", module, **points)
+
+
+def test_a_viscous_tangential_kernel_needs_no_spring(tmp_path, monkeypatch):
+    module = throwaway(tmp_path, monkeypatch, "", "stiffness")
+    assert registry.tangential_kernel("made-up", module, stiffness="stiffness", viscous=True).viscous
+
+
+def test_register_normal_refuses_a_module_or_class_that_is_not_one(tmp_path, monkeypatch):
+    from harness.errors import UserError
+    before = list(registry.EXTENSIONS)
+    with pytest.raises(UserError, match="function extension"):
+        registry.register_normal(Quadratic, throwaway(tmp_path, monkeypatch, COMPLETE, "force"))
+    with pytest.raises(UserError, match="is not a normal model"):
+        registry.register_normal(Quadratic, throwaway(tmp_path, monkeypatch, COMPLETE, "extension"))
+    assert registry.EXTENSIONS == before
+
+
+def test_parameters_named_otherwise_than_the_kernels_slots_are_refused():
+    from harness.errors import UserError
+    from harness.submodels.normal.hertz import Hertz
+    contact = Scene().contact
+    assert registry.check_parameters(Hertz(), Hertz().parameters(contact, 0.5, 1.0)) == (contact.E_star, 0.0, 0.0,
+                                                                                         0.0)
+    with pytest.raises(UserError, match="gives parameters k_n; its kernel hertz takes E_star"):
+        registry.check_parameters(Hertz(), NormalParameters.named(1.0, 1.0, k_n=contact.E_star))

@@ -14,7 +14,7 @@ import pytest
 
 from conftest import fake_executable, interruptible, needs
 from harness.engines import liggghts
-from harness.engines.liggghts.binary import VERSION_TIMEOUT_S
+from harness.engines.executable import BANNER_TIMEOUT_S as VERSION_TIMEOUT_S
 from harness.engines.runner import read_tail, run_engine, sweep_stale
 
 # --- sockets -------------------------------------------------------------------------------------------------------
@@ -87,7 +87,7 @@ def test_a_liggghts_run_listens_on_no_network_interface(tmp_path):
     done = {}
 
     def start():
-        done["run"] = run_engine([liggghts.binary(), "-in", "in.wait"], str(tmp_path), 60)
+        done["run"] = run_engine([liggghts.ENGINE.binary(), "-in", "in.wait"], str(tmp_path), 60)
     seen = listeners_while(start, 30)
     assert "waiting" in done["run"].log_tail
     assert seen == set()

@@ -52,7 +52,7 @@ print(bool(hertz.force.signatures), bool(mindlin.rescale.signatures), bool(thorn
       bool(stronge.force.signatures), bool(walton_braun.spring.signatures))
 schemes, pair = sys.modules["harness.solver_paper_n1.schemes"], sys.modules["harness.solver_paper_n1.pair"]
 print(bool(schemes.step.signatures), bool(schemes.step_velocity_verlet.signatures),
-      bool(schemes.step_leapfrog.signatures), bool(pair.step_yade_pair.signatures))
+      bool(schemes.step_leapfrog.signatures), bool(pair.step_leapfrog_pair.signatures))
 """
 
 

@@ -62,6 +62,33 @@ def test_lower_layers_do_not_import_the_layers_above(layer):
     assert not {k: v for k, v in offenders.items() if v}
 
 
+ENGINE_NAMES = ("liggghts", "yade", "lammps", "kratos")
+
+
+@pytest.mark.parametrize("layer", ["solver", "submodels"])
+def test_no_engine_is_named_in_the_solver_or_the_submodels(layer):
+    """The solver and the sub-models say what they compute, never whose code computes it: no engine name in their
+    code, docstrings or comments (an engine's knowledge lives in its subpackage and docs/<engine>-dialect.md)."""
+    found = [f"{path.relative_to(PACKAGE)}:{number}: {line.strip()}"
+             for path in sorted((PACKAGE / layer).rglob("*.py"))
+             for number, line in enumerate(path.read_text().splitlines(), 1)
+             if any(name in line.lower() for name in ENGINE_NAMES)]
+    assert not found, "\n".join(found)
+
+
+def test_the_engine_name_check_sees_a_comment(tmp_path):
+    """The check above fails on an engine named in a comment of a module of its layer."""
+    layer = tmp_path / "solver"
+    layer.mkdir()
+    (layer / "step.py").write_text("x = 1   # as Yade does\n")
+    globals()["PACKAGE"], saved = tmp_path, PACKAGE
+    try:
+        with pytest.raises(AssertionError, match="step.py:1"):
+            test_no_engine_is_named_in_the_solver_or_the_submodels("solver")
+    finally:
+        globals()["PACKAGE"] = saved
+
+
 def test_modules_stay_small():
     sizes = {name: len(path.read_text().splitlines()) for name, path in modules()}
     assert max(sizes.values()) <= 400, sorted(sizes.items(), key=lambda kv: -kv[1])[:3]

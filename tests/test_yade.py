@@ -149,7 +149,7 @@ def test_viscel_against_a_wall_uses_half_the_mass():
     scene = Scene(e_n=(0.5,), angles_deg=(0.0,))
     batch = plan_batch(yade.dialect("linear-spring-dashpot"), scene, 0.5, 2000)
     with tempfile.TemporaryDirectory() as workdir:
-        final, _, _ = yade.run_batch(compose("linear-spring-dashpot"), scene, RunSpec.of(batch, step_cap=200000), 300,
+        final, _, _ = yade.ENGINE.run_batch(compose("linear-spring-dashpot"), scene, RunSpec.of(batch, step_cap=200000), 300,
                                      workdir)
     assert final["v_n1"][0] / scene.speed == pytest.approx(lsd_notension_e(g_a / math.sqrt(2.0)), abs=2e-3)
 
@@ -192,7 +192,7 @@ def test_engine_agrees_with_its_yade_dialect_at_equal_dt(name, options, e_n, ome
     scene = Scene(e_n=(e_n,), angles_deg=(0.0, 10.0, 30.0, 60.0, 85.0), omega0=omega0)
     batch = plan_batch(yade.dialect(name, options), scene, e_n, 200)
     out, _, _ = run_kernel(batch)
-    final, _, _ = yade.run_batch(compose(name), scene, RunSpec.of(batch, step_cap=20000), 120, str(tmp_path), options)
+    final, _, _ = yade.ENGINE.run_batch(compose(name), scene, RunSpec.of(batch, step_cap=20000), 120, str(tmp_path), options)
     assert final["separated"].all()
     engine = np.column_stack([final["v_n1"], final["v_t1"], final["omega1"]])
     reference = out[:, [C.O_VZ, C.O_VX, C.O_W]]
@@ -203,7 +203,7 @@ def test_engine_agrees_with_its_yade_dialect_at_equal_dt(name, options, e_n, ome
 @needs_yade
 def test_compare_with_both_engines_prints_the_engine_against_engine_attribution(tmp_path):
     from harness.engines import liggghts
-    if not liggghts.available():
+    if not liggghts.ENGINE.available():
         pytest.skip("liggghts is not installed")
     proc = subprocess.run([sys.executable, "-m", "harness", "compare", "--model",
                            "hertz-mindlin", "--en", "0.5", "--angles", "0,30,60", "--verbose", "-o", str(tmp_path)],
@@ -224,7 +224,7 @@ def test_precision_gap_double_against_mpfr150_is_round_off():
     """The report's precision figure: double and mpfr150 differ on a smooth impact at round-off level only."""
     from harness.analyses.precision import precision_gap
     from harness.execute import execute
-    if not yade.available("mpfr150"):
+    if not yade.ENGINE.available("mpfr150"):
         pytest.skip("yade-mpfr150 is not installed")
     double, high = yade.precision_runs(compose("hertz-mindlin"), Scene(e_n=(0.5,), angles_deg=(10.0, 30.0, 60.0)))
     assert double.options_dict == {"precision": "double"} and high.options_dict == {"precision": "mpfr150"}
@@ -241,7 +241,8 @@ def test_luding_at_e_n_1_is_refused_with_one_line_not_an_abort():
     interpreter aborted with signal 6): harness refuses it with the reason, and the other e_n still run."""
     from harness.execute import execute
     from harness.plan import engine_runs
-    frame, failures = execute(engine_runs(yade, compose("walton-braun"), Scene(e_n=(0.5, 1.0), angles_deg=(0.0, 45.0)),
+    frame, failures = execute(engine_runs(yade.ENGINE, compose("walton-braun"),
+                                          Scene(e_n=(0.5, 1.0), angles_deg=(0.0, 45.0)),
                                           200))
     assert [f.message for f in failures] == ["YADE's Luding law needs kp > k1, i.e. e_n < 1; e_n = 1 was not run"]
     by_e_n = frame.groupby("e_n_target").status.unique()
@@ -260,8 +261,8 @@ def test_yade_two_spheres_agree_with_their_dialect_at_equal_dt(pair, omega0):
     from harness.request import scene_from
     scene = scene_from(en=(0.3, 0.6, 0.9), angles=(0.0, 10.0, 30.0, 50.0, 70.0, 85.0), omega0=omega0,
                        target="sphere", **PAIR_TARGETS[pair])
-    frame, failures = execute(engine_plan(yade, compose("hertz-mindlin"), scene, 200))
-    assert failures == [] and yade.dialect("hertz-mindlin", {}, "sphere").integrator == "yade-pair"
+    frame, failures = execute(engine_plan(yade.ENGINE, compose("hertz-mindlin"), scene, 200))
+    assert failures == [] and yade.dialect("hertz-mindlin", {}, "sphere").geometry == "pair-vector"
     assert agreement(frame, "yade") < 1e-6
 
 
@@ -270,16 +271,16 @@ def test_the_yade_pair_stepper_head_on_is_the_wall_stepper():
     stepper on the relative motion equals its wall leapfrog on the equivalent sphere (the pair's own moduli and
     mass), to round-off."""
     assert_head_on_pair_is_wall(yade.dialect("hertz-mindlin", {}, "sphere"),
-                                {"integrator": "leapfrog", "slip": "lever", "torque": "lever"})
+                                {"geometry": "wall", "slip": "lever", "torque": "lever"})
 
 
 def test_yade_takes_a_sphere_target_for_hertz_mindlin_only():
     from harness.errors import UserError
     from harness.request import scene_from
-    assert yade.target_reason("hertz-mindlin", scene_from(target="sphere", target_fixed=True)) == ""
-    assert yade.target_reason("walton-braun", scene_from(target="sphere")) == \
+    assert yade.ENGINE.target_reason("hertz-mindlin", scene_from(target="sphere", target_fixed=True)) == ""
+    assert yade.ENGINE.target_reason("walton-braun", scene_from(target="sphere")) == \
         "its walton-braun inputs have no sphere target yet"
-    assert yade.target_reason("walton-braun", scene_from()) == ""
+    assert yade.ENGINE.target_reason("walton-braun", scene_from()) == ""
     with pytest.raises(UserError, match="sphere-target inputs run hertz-mindlin only"):
         yade.dialect("linear-spring-dashpot", {}, "sphere")
 
@@ -294,12 +295,13 @@ def test_yade_walls_of_another_material_agree_with_the_dialect(wall):
     from harness.request import wall_fields
     kwargs = dict(e_n=(0.3, 0.9), angles_deg=(0.0, 30.0, 60.0), psi1_star=None, omega0=-20.0)
     scene = Scene(**kwargs, **wall_fields(wall))
-    frame, failures = execute(engine_plan(yade, compose("hertz-mindlin"), scene, 200))
+    frame, failures = execute(engine_plan(yade.ENGINE, compose("hertz-mindlin"), scene, 200))
     assert failures == [] and agreement(frame, "yade") < 1e-6
-    same = execute(engine_runs(yade, compose("hertz-mindlin"), Scene(**kwargs), 200))[0]
+    same = execute(engine_runs(yade.ENGINE, compose("hertz-mindlin"), Scene(**kwargs), 200))[0]
     engine = frame[frame.engine == "yade"].reset_index(drop=True)
     assert np.abs(same.omega1.to_numpy() - engine.omega1.to_numpy()).max() * scene.radius > 1e-4 * scene.speed
-    assert yade.walls("hertz-mindlin") == ("same", "other", "rigid") and yade.walls("walton-braun") == ("same",)
+    assert yade.ENGINE.walls("hertz-mindlin") == ("same", "other", "rigid")
+    assert yade.ENGINE.walls("walton-braun") == ("same",)
 
 
 @needs_yade
@@ -312,7 +314,7 @@ def test_yade_pairs_observed_contact_agrees_with_the_dialect():
     from harness.request import scene_from
     scene = scene_from(en=(0.5,), angles=(0.0, 40.0, 70.0), omega0=20.0, target="sphere", target_radius=0.04)
     law = compose("hertz-mindlin")
-    seen, failures = execute(engine_runs(yade, law, scene, 200, observe=True))
+    seen, failures = execute(engine_runs(yade.ENGINE, law, scene, 200, observe=True))
     own, _ = execute(reference_runs(law, scene, 200, yade.dialect("hertz-mindlin", {}, "sphere")))
     assert failures == [] and (seen.status == "ok").all()
     assert np.array_equal(np.round(seen.t_contact / seen.dt), np.round(own.t_contact / own.dt) - 1)

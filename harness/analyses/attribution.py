@@ -11,9 +11,11 @@ from .invariants import coulomb_ratio
 
 METRICS = ("e_n", "e_t", "omega_star", "psi2_star", "v_n1", "v_t1", "omega1", "coulomb_ratio", "ke_ratio")
 FIELDS = {key: key.replace("-", "_") for key in SUBMODEL_KEYS}
+STEPPING = ("integrator", "coulomb", "geometry")    # switched together where no stepper takes one without the others
 NOTES = {   # what switching an ingredient carries with it, beyond its name
     "integrator": "the scheme's conventions go with it: tangential dashpot after the Coulomb test without a second "
-                  "cap, release at the step rather than inside it; LIGGGHTS also its force at first touch",
+                  "cap, release at the step rather than inside it; the velocity-Verlet dialects also their force at "
+                  "first touch",
     "damping": "the calibration alone; the end rule stays the dialect's",
     "end": "clipping alone; the damping calibration stays the dialect's",
 }
@@ -37,10 +39,9 @@ def attribution(paper, dialect, scene, simulate):
         field = FIELDS[key]
         law = replace(dialect, **{field: getattr(paper, field)}, dialect=f"{dialect.dialect}+paper-{key}")
         row = {"ingredient": key, "dialect": str(theirs), "target": str(ours)}
-        try:
-            check_composition(law)
-        except UserError as exc:
-            rows.append({**row, "note": f"not separable alone: {exc}"})
+        law, carried, refusal = separable(law, paper, key)
+        if refusal:
+            rows.append({**row, "note": f"not separable alone: {refusal}"})
             continue
         switched = measured(law)
         for metric in METRICS:
@@ -49,5 +50,26 @@ def attribution(paper, dialect, scene, simulate):
                 continue
             worst = int(np.nanargmax(np.abs(diff)))
             row[f"d_{metric}"] = float(diff[worst])
-        rows.append({**row, "note": NOTES.get(key, "")})
+        note = "; ".join(filter(None, [NOTES.get(key, ""), carried]))
+        rows.append({**row, "note": note})
     return pd.DataFrame(rows)
+
+
+def separable(law, paper, key):
+    """(law, what it carries, refusal): the law with one ingredient switched, or, for a stepping field no stepper
+    takes alone, with the other stepping fields switched to the paper's too (and said); a refusal when neither
+    composes."""
+    try:
+        check_composition(law)
+        return law, "", ""
+    except UserError as exc:
+        refusal = str(exc)
+    if key not in STEPPING:
+        return law, "", refusal
+    others = [k for k in STEPPING if k != key and getattr(law, FIELDS[k]) != getattr(paper, FIELDS[k])]
+    both = replace(law, **{FIELDS[k]: getattr(paper, FIELDS[k]) for k in others})
+    try:
+        check_composition(both)
+    except UserError:
+        return law, "", refusal
+    return both, f"switched with its {' and '.join(others)} ({refusal})", ""

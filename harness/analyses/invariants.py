@@ -28,35 +28,6 @@ PARAMETER_METRICS = ("e_n", "e_t", "omega_star")
 SWEEP_IDENTITY = ("engine", "dialect", "model", "e_n_target", "mu", "theta_deg", "omega0", "radius", "E", "nu", "rho",
                   "case")       # "case": a hard-case label (harness.hard_cases), where the table has one
 COLUMNS = ["engine", "dialect", "model", "e_n_target", "theta_deg", "kind", "value", "limit", "row"]
-KNOWN_CAUSES = {              # (dialect, model, kind) -> the documented cause, printed with the finding
-    ("paper", "hertz-mindlin", "e_n off target"): "Thornton 2013 App. B fit degrades above e_n 0.95 (docs/laws.md)",
-    ("yade", "hertz-mindlin", "e_n off target"): "Thornton 2013 App. B fit degrades above e_n 0.95 (docs/laws.md)",
-    ("yade", "linear-spring-dashpot", "e_n off target"):
-        "ViscEl uses the reduced mass m/2 against a wall; CundallStrack has no damping (docs/yade-dialect.md)",
-    ("yade", "linear-spring-dashpot", "energy gain"): "CundallStrack's k_s = nu k_n is negative for nu < 0",
-    ("liggghts", "thornton", "e_n off target"):
-        "thornton_ning unloads with R unmodified, so Thornton's p_y calibration misses (docs/liggghts-dialect.md)",
-    ("liggghts", "linear-spring-dashpot", "friction at mu = 0"):
-        "hooke's zero shear history at first touch passes the Coulomb test, so its tangential dashpot acts",
-    ("liggghts", "thornton", "energy gain"): "thornton_ning's tangential damping has the wrong sign (docs/liggghts-dialect.md)",
-    ("liggghts", "thornton", "Coulomb bound"): "thornton_ning's tangential damping has the wrong sign: it pushes "
-                                               "(docs/liggghts-dialect.md)",
-    ("lammps", "hertz-mindlin", "e_n off target"):
-        "LAMMPS' Tsuji polynomial is 1/sqrt2 of the coefficient that returns e (docs/lammps-dialect.md)",
-    ("lammps", "hertz-kuwabara-kono", "e_n off target"):
-        "LAMMPS' wall modulus E/(2(1 - nu)) is (1 + nu) E*; the viscoelastic dashpot's e moves with it "
-        "(docs/lammps-dialect.md)",
-    ("lammps", "linear-spring-dashpot", "e_n off target"):
-        "the paper's dashpot is calibrated for a force clipped at 0; LAMMPS does not clip (docs/lammps-dialect.md)",
-    ("paper", "stronge", "energy gain"): "the provisional reconstruction gains energy for 1 < V/V_y < 1.55 (README)",
-    **{("yade", model, "Coulomb bound"):
-       "its formulas in the reference do the same; with its leapfrog step alone switched to the paper scheme the "
-       "bound holds (docs/findings.md)" for model in ("hertz-mindlin", "linear-spring-dashpot")},
-    **{("liggghts", model, "Coulomb bound"):
-       "its formulas in the reference do the same; its velocity-Verlet step is the largest part: the paper scheme "
-       "alone cuts the worst excess on the hard cases from 170-270% to 31% (docs/findings.md)"
-       for model in ("hertz-mindlin", "linear-spring-dashpot")},
-}
 
 
 def contact_time_bound(frame):
@@ -214,7 +185,3 @@ def discontinuities(frame, parameter="theta_deg", metrics=CONTINUITY_METRICS, fl
                                np.full(len(sweep), SMOOTH_JUMP_RATIO)))
     return _joined(parts)
 
-
-def cause(dialect, model, kind):
-    """The documented cause of a known break, or ''."""
-    return KNOWN_CAUSES.get((dialect, model, kind), "")

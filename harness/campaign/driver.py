@@ -4,7 +4,6 @@ import os
 from collections import Counter
 from dataclasses import dataclass, field
 
-from ..engines.batches import max_steps_of
 from ..engines.runner import sweep_stale
 from ..keys import run_key
 from .spec import tasks
@@ -44,7 +43,7 @@ def estimate_s(run):
     """Rough wall seconds of one task (the dry run's estimate)."""
     batch = run.batch() if run.resolution != "converged" else None
     impacts = len(batch.v_n0) if batch is not None else 1
-    steps = (max_steps_of(batch) if run.engine != "reference" else 1.2 * batch.steps_per_contact) if batch else 5e3
+    steps = (run.spec.step_cap if run.engine != "reference" else 1.2 * batch.steps_per_contact) if batch else 5e3
     return STARTUP_S.get(run.engine, 1.0) + SPHERE_STEP_S.get(run.engine, 1e-6) * impacts * steps
 
 

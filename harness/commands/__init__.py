@@ -23,10 +23,11 @@ def describe(sub, name, summary, example, exit_codes=EXIT_CODES):
 
 
 def build_parser():
+    from ..engines import EXTERNAL
     from . import benchmark, campaign, check, compare, cost, models, paper, query, render, report, run
     parser = Parser(prog="harness", formatter_class=argparse.RawDescriptionHelpFormatter,
                     description="Cross-validate DEM contact force models against the literature (Thornton, Cummins "
-                                "& Cleary 2013) and against LIGGGHTS and YADE.",
+                                f"& Cleary 2013) and against the engines {', '.join(EXTERNAL)}.",
                     epilog=f"example:\n  harness compare --model hertz-mindlin\n\n{EXIT_CODES}")
     parser.add_argument("--version", action="version", version=f"harness {__version__}")
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND", parser_class=Parser)

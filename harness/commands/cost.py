@@ -5,7 +5,7 @@ import os
 import pandas as pd
 
 from ..analyses.cost import COLUMNS, LADDER, convergence_orders, recommendations
-from ..api import statuses
+from ..api import options_for, statuses
 from ..campaign.store import RunCache, Store
 from ..cost_plan import TIMING_REPEATS, cost_table
 from ..engines import ENGINES
@@ -74,7 +74,7 @@ def main(args):
     check_results_directory(args.output)
     check_store(args.store)
     found = statuses(request)
-    adapters = {s.name: (ENGINES[s.name], request.engine_options.get(s.name, {})) for s in found if s.available}
+    adapters = {s.name: (ENGINES[s.name], options_for(request, s.name)) for s in found if s.available}
     for name, (adapter, options) in adapters.items():
         adapter.dialect(law.name, options)                    # bad options: exit 2 before anything runs
     skipped = [(s.name, s.reason) for s in found if not s.available]

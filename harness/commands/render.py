@@ -1,7 +1,8 @@
 """`harness render`: an engine's input deck or script for every e_n of the scene, without running it."""
 import os
 
-from ..engines import get_engine
+from ..api import options_for
+from ..engines import EXTERNAL, get_engine
 from ..errors import UserError
 from ..files import write_text
 from ..plan import engine_runs
@@ -15,7 +16,7 @@ EXAMPLE = "harness render --model hertz-mindlin --engine liggghts --en 0.5 -o de
 def add(sub, describe):
     p = describe(sub, "render", "write an engine's input deck/script for the scene without running it", EXAMPLE)
     p.add_argument("--model", required=True, help="law name (see `harness models`)")
-    p.add_argument("--engine", required=True, help="the engine whose input to write (liggghts, yade)")
+    p.add_argument("--engine", required=True, help=f"the engine whose input to write ({', '.join(EXTERNAL)})")
     p.add_argument("--engine-option", dest="engine_options", type=engine_option, action="append", default=[],
                    metavar="ENGINE:KEY=VALUE", help="an engine's option (see `harness compare --help`)")
     add_scene_options(p)
@@ -32,7 +33,7 @@ def main(args):
         raise UserError(f"{args.engine} has no counterpart of {request.law.name}")
     check_output_directory(args.output)
     texts = [engine.render(run) for run in engine_runs(engine, request.law, request.scene, request.resolution,
-                                                       request.engine_options.get(args.engine))]
+                                                       options_for(request, args.engine))]
     check_entries(args.output, [name for name, _ in texts])      # every input checked before any is written
     os.makedirs(args.output, exist_ok=True)
     for name, text in texts:

@@ -1,11 +1,11 @@
-"""The engines: one subpackage each behind the protocol of protocol.py, and this registry, one line each."""
+"""The engines: one subpackage each holding a subclass of base.Engine, and this registry, one line each."""
 from . import lammps, liggghts, reference, yade
 
 ENGINES = {
-    "reference": reference,
-    "liggghts": liggghts,
-    "yade": yade,
-    "lammps": lammps,
+    "reference": reference.ENGINE,
+    "liggghts": liggghts.ENGINE,
+    "yade": yade.ENGINE,
+    "lammps": lammps.ENGINE,
 }
 EXTERNAL = tuple(name for name in ENGINES if name != "reference")     # the engines harness checks
 
@@ -15,3 +15,9 @@ def get_engine(name):
     if name not in ENGINES:
         raise UserError(f"unknown engine {name!r}; known: {', '.join(ENGINES)}")
     return ENGINES[name]
+
+
+def known_cause(dialect, model, kind):
+    """The documented cause of a finding of `model` in `dialect`, from the engine whose dialect it is
+    (Engine.KNOWN_CAUSES), or ''."""
+    return next((engine.known_cause(model, kind) for engine in ENGINES.values() if engine.dialect_label == dialect), "")

@@ -1,12 +1,11 @@
-"""One run of the plan through an external engine as result rows (a failed batch keeps its log), and the input it
-would be given; an engine learns what to run from the run's spec (harness.plan.RunSpec)."""
+"""One run of the plan through an external engine as result rows (a failed batch keeps its log); an engine learns
+what to run from the run's spec (harness.plan.RunSpec)."""
 import os
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import UserError
 from ..results import impact_frame
 from ..solver.threads import THREADS
 from .runner import EngineFailure, read_tail, scratch
@@ -29,11 +28,6 @@ OBSERVED = ("t_contact", "f_n_max", "overlap_max")
 
 def stepping_s(spec):
     return SECONDS_PER_ATOM_STEP * spec.impacts * spec.step_cap
-
-
-def max_steps_of(batch):
-    """The step cap of a planned batch (a run's spec carries it: run.spec.step_cap)."""
-    return batch.step_cap
 
 
 def identity_of(engine, version, run):
@@ -125,13 +119,3 @@ def run_grouped(engine, version, runs, input_name, render, group_of, run_inputs,
             for future in [pool.submit(one_process, group, items) for group, items in shares]:
                 future.result()
     return out
-
-
-def render_input(engine, suffix, render_batch, run):
-    """(file name, text) of the input one run gives an external engine (harness render); a refusal of the engine's
-    input rules is the user's to fix, so it is a UserError."""
-    try:
-        text = render_batch(run.law, run.scene, run.spec, run.options_dict)
-    except EngineFailure as exc:
-        raise UserError(str(exc)) from None
-    return f"{engine}-{run.law.name}-en{run.e_n:g}{suffix}", text

@@ -9,17 +9,17 @@ from ..submodels.damping.none import NoDamping
 from ..submodels.damping.tsuji import TsujiDashpot
 from ..submodels.normal.hertz import Hertz
 from ..submodels.normal.linear import LinearSpring
-from ..submodels.registry import (DAMPING_MODELS, ENGINE_NORMAL_MODELS, ENGINE_TANGENTIAL_MODELS, NORMAL_MODELS,
-                                  TANGENTIAL_MODELS, kernel_code, kernel_of)
+from ..submodels.registry import (COULOMB_RULES, DAMPING_MODELS, ENGINE_NORMAL_MODELS, ENGINE_TANGENTIAL_MODELS,
+                                  GEOMETRIES, INTEGRATORS, NORMAL_MODELS, TANGENTIAL_MODELS, kernel_code, kernel_of)
+from ..submodels.stepping import STEPPERS
 from ..submodels.tangential_damping import TangentialDashpot
 
 END_RULES = ("tension", "no-tension")
-INTEGRATORS = ("paper", "velocity-verlet", "leapfrog", "lammps", "lammps-pair", "liggghts-pair", "yade-pair")
 SLIPS = ("lever", "noratch", "noratch-sphere", "noratch-pair")
 TORQUES = ("lever", "contact-point")
 LEVERS = ("0", "0.25", "0.5", "1")
-SUBMODEL_KEYS = ("normal", "damping", "end", "tangential", "tangential-damping", "integrator", "lever", "slip",
-                 "torque")
+SUBMODEL_KEYS = ("normal", "damping", "end", "tangential", "tangential-damping", "integrator", "coulomb", "geometry",
+                 "lever", "slip", "torque")
 
 
 @dataclass(frozen=True)
@@ -31,13 +31,15 @@ class Law:
     end: str
     tangential: object
     tangential_damping: TangentialDashpot = TangentialDashpot("none")
-    integrator: str = "paper"            # time stepping: 'paper' (second order), 'velocity-verlet' (LIGGGHTS), 'lammps'
-    lever: float = 0.0                   # lever arm R - lever * alpha for slip and torque (paper 0, LIGGGHTS 1/2)
-    slip: str = "lever"                  # slip V_t - lever omega, or YADE's noRatch form with the wall's reference
-                                         # radius 1e8 R ('noratch', hertzian wall) or R ('noratch-sphere'), or
+    integrator: str = "paper"            # time stepping: 'paper' (second order), 'velocity-verlet', 'leapfrog'
+    coulomb: str = "spring"              # what the Coulomb cap bounds: the spring ('spring'), or spring + dashpot
+    geometry: str = "wall"               # a wall, a stand-in sphere, or two spheres (submodels/stepping.py)
+    lever: float = 0.0                   # lever arm R - lever * alpha for slip and torque (paper 0)
+    slip: str = "lever"                  # slip V_t - lever omega, or the noRatch form with the wall's reference
+                                         # radius 1e8 R ('noratch', flat wall) or R ('noratch-sphere'), or
                                          # with two spheres' R1 + R2 ('noratch-pair')
     torque: str = "lever"                # torque lever: the slip's ('lever'), or each body's R_i - d/2 ('contact-point',
-                                         # LAMMPS' pairs; Verlet schemes)
+                                         # Verlet schemes)
     summary: str = ""
     dialect: str = "paper"               # whose formulas these are: the paper's, or an engine's
 
@@ -46,7 +48,7 @@ class Law:
         damping = self.damping.name + (f":{self.damping.calibration}" if self.damping.calibration else "")
         return {"normal": self.normal.label(), "damping": damping, "end": self.end,
                 "tangential": self.tangential.label(), "tangential-damping": self.tangential_damping.label(),
-                "integrator": self.integrator,
+                "integrator": self.integrator, "coulomb": self.coulomb, "geometry": self.geometry,
                 "lever": {0.0: "R", 0.25: "R - d/4", 0.5: "R - d/2", 1.0: "R - d"}.get(self.lever,
                                                                                      f"R - {self.lever:g} d"),
                 "slip": self.slip, "torque": self.torque}
@@ -105,7 +107,11 @@ def replace_submodels(law, overrides, dialect=None):
         elif key == "tangential-damping":
             changes["tangential_damping"] = TangentialDashpot(spec)
         elif key == "integrator":
-            changes["integrator"] = _choice(key, spec, INTEGRATORS)
+            changes["integrator"] = _choice(key, spec, tuple(INTEGRATORS))
+        elif key == "coulomb":
+            changes["coulomb"] = _choice(key, spec, tuple(COULOMB_RULES))
+        elif key == "geometry":
+            changes["geometry"] = _choice(key, spec, tuple(GEOMETRIES))
         elif key == "lever":
             changes["lever"] = float(_choice(key, spec, LEVERS))
         elif key == "slip":
@@ -131,4 +137,19 @@ def check_composition(law):
         raise UserError(f"the incremental {law.normal.name} force is defined step by step only in an engine's scheme")
     if law.normal.plastic and law.end != "no-tension":
         raise UserError(f"{law.normal.name} ends contact at zero force; use end no-tension")
+    check_stepping(law)
+
+
+def check_stepping(law):
+    """Reject an (integrator, geometry) pair no stepper computes, a Coulomb rule its stepper does not apply, and a
+    stand-in sphere without a normal model that gives its radius."""
+    stepper = STEPPERS.get((law.integrator, law.geometry))
+    if stepper is None:
+        known = ", ".join(f"{i} with {g}" for i, g in STEPPERS)
+        raise UserError(f"no stepper integrates {law.integrator} with geometry {law.geometry}; known: {known}")
+    if law.coulomb not in stepper[1]:
+        raise UserError(f"the {law.integrator} stepper with geometry {law.geometry} applies Coulomb rule "
+                        f"{' or '.join(stepper[1])}, not {law.coulomb}")
+    if law.geometry == "stand-in-sphere" and not hasattr(law.normal, "stand_in_radius"):
+        raise UserError(f"geometry stand-in-sphere needs a normal model with a stand-in radius, not {law.normal.name}")
 

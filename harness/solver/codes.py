@@ -1,21 +1,12 @@
-"""The kernel rows' layout: parameter and integer slots, end rules, integrators, outputs and statuses (the
-sub-models' kernel codes are the registry's: solver/dispatch.py)."""
+"""The kernel rows' layout: parameter and integer slots, end rules, outputs and statuses (the sub-models' kernel
+codes are the registry's: solver/dispatch.py; the stepping codes submodels/stepping.py's)."""
+from ..submodels.stepping import (COULOMB_SPRING, COULOMB_TOTAL, GEOMETRY_PAIR, GEOMETRY_PAIR_VECTOR,  # noqa: F401
+                                  GEOMETRY_STAND_IN_SPHERE, GEOMETRY_WALL, INTEGRATOR_LEAPFROG, INTEGRATOR_PAPER,
+                                  INTEGRATOR_VELOCITY_VERLET)
 
 # end-of-contact rule
 END_ALPHA = 0              # tension allowed, contact ends when alpha returns to 0
 END_FORCE = 1              # no tension: F clipped at 0, contact ends when F returns to 0
-
-# integrator
-INTEGRATOR_PAPER = 0            # second-order splitting on u = m alpha_dot + D(alpha), release located in-step
-INTEGRATOR_VELOCITY_VERLET = 1  # LIGGGHTS nve/sphere: forces from half-step velocities, release at the step
-INTEGRATOR_LEAPFROG = 2         # YADE NewtonIntegrator: forces at x(t) from v(t - h/2), then v, then x
-INTEGRATOR_LAMMPS = 3           # LAMMPS nve/sphere: LIGGGHTS' steps; the Coulomb cap on spring plus dashpot
-INTEGRATOR_LAMMPS_PAIR = 4      # LAMMPS nve/sphere on two spheres: their relative motion, its normal turning
-INTEGRATOR_LIGGGHTS_PAIR = 5    # the same with LIGGGHTS' Coulomb rule (the spring capped, its dashpot added below it)
-INTEGRATOR_YADE_PAIR = 6        # YADE NewtonIntegrator on two spheres: leapfrog on their relative motion, vector shear
-INTEGRATORS = {"paper": INTEGRATOR_PAPER, "velocity-verlet": INTEGRATOR_VELOCITY_VERLET,
-               "leapfrog": INTEGRATOR_LEAPFROG, "lammps": INTEGRATOR_LAMMPS, "lammps-pair": INTEGRATOR_LAMMPS_PAIR,
-               "liggghts-pair": INTEGRATOR_LIGGGHTS_PAIR, "yade-pair": INTEGRATOR_YADE_PAIR}
 
 # per-impact parameter slots (columns of the float parameter matrix)
 P_MASS, P_INERTIA, P_RADIUS, P_DT, P_GRAVITY, P_MU = 0, 1, 2, 3, 4, 5
@@ -26,20 +17,22 @@ P_TDAMP = 14                                 # tangential dashpot: c_t = P_TDAMP
 P_LEVER = 15                                 # lever arm R - P_LEVER alpha (paper 0)
 P_VZ0, P_VX0, P_W0 = 16, 17, 18              # initial velocities (vz < 0 approaching), spin omega_y
 P_MAXSTEPS = 19
-P_SLIP_R1 = 20                               # slip form: 0 -> V_t - lever omega; r1 > 0 -> YADE noRatch
-P_BIG_R = 21                                 # > 0: the wall is a fixed sphere of this radius (YADE Luding set-up);
-                                             # *-pair: R1 + R2 - R*, the centres' distance at touch less R*
+P_SLIP_R1 = 20                               # slip form: 0 -> V_t - lever omega; r1 > 0 -> the noRatch form
+                                             # (r1 + R)/(r1 + R - d) V_t - R omega
+P_BIG_R = 21                                 # geometry stand-in-sphere: the radius of the fixed sphere playing the
+                                             # wall; pair geometries: R1 + R2 - R*, the centres' distance at touch
+                                             # less R*
 P_GRADE_T, P_GRADE_N = 22, 23                # > 0: graded steps, N of them over [0, T] (paper scheme, converged mode)
 P_TORQUE_LEVER = 24                          # torque lever R - P_TORQUE_LEVER alpha in the Verlet schemes (= P_LEVER
-                                             # but for LAMMPS' pairs: slip from full radii, torque from R_i - d/2)
+                                             # unless torque 'contact-point': torque from each R_i - d/2)
 P_R1, P_R2, P_INV_I1, P_INV_I2, P_W2 = 25, 26, 27, 28, 29   # two spheres: radii, 1/inertias (0: fixed), target's spin
 P_TCONE = 30                                 # the paper scheme's Coulomb test with a tangential dashpot: 0 the
                                              # spring's first, 1 spring plus dashpot (tangential_damping.CONES)
 N_PARAMS = 31
 
 # per-impact integer slots
-I_NORMAL, I_END, I_TANGENTIAL, I_INTEGRATOR = 0, 1, 2, 3
-N_INTS = 4
+I_NORMAL, I_END, I_TANGENTIAL, I_INTEGRATOR, I_COULOMB, I_GEOMETRY = 0, 1, 2, 3, 4, 5
+N_INTS = 6
 
 # outputs
 O_VZ, O_VX, O_W, O_TC, O_FMAX, O_AMAX, O_STEPS, O_STATUS = 0, 1, 2, 3, 4, 5, 6, 7

@@ -12,15 +12,15 @@ from ..submodels.normal import hertz as normal_hertz
 from ..submodels.normal import walton_braun as normal_walton_braun
 from ..submodels.normal import thornton as normal_thornton
 from ..submodels.normal import stronge as normal_stronge
-from ..submodels.normal import liggghts_hysteresis as normal_liggghts_hysteresis
-from ..submodels.normal import liggghts_thornton_ning as normal_liggghts_thornton_ning
-from ..submodels.normal import yade_luding as normal_yade_luding
+from ..submodels.normal import luding_peak as normal_luding_peak
+from ..submodels.normal import thornton_ning as normal_thornton_ning
+from ..submodels.normal import luding_incremental as normal_luding_incremental
 from ..submodels.tangential import linear as tangential_linear
 from ..submodels.tangential import mindlin as tangential_mindlin
 from ..submodels.tangential import mindlin_deresiewicz as tangential_mindlin_deresiewicz
 from ..submodels.tangential import walton_braun as tangential_walton_braun
 from ..submodels.tangential import viscous as tangential_viscous
-from ..submodels.tangential import lammps_wall_mindlin as tangential_lammps_wall_mindlin
+from ..submodels.tangential import mindlin_wall_coefficient as tangential_mindlin_wall_coefficient
 from .extension import BELOW, FORCE, KINK, RESIDUAL, SLOPE, call
 
 N_NORMAL = 8
@@ -29,9 +29,9 @@ NORMAL_HERTZ = 1
 NORMAL_WALTON_BRAUN = 2
 NORMAL_THORNTON = 3
 NORMAL_STRONGE = 4
-NORMAL_LIGGGHTS_HYSTERESIS = 5
-NORMAL_LIGGGHTS_THORNTON_NING = 6
-NORMAL_YADE_LUDING = 7
+NORMAL_LUDING_PEAK = 5
+NORMAL_THORNTON_NING = 6
+NORMAL_LUDING_INCREMENTAL = 7
 NORMAL_HISTORY = 3
 NORMAL_RESET = np.array([[0.0, 0.0, 0.0], [0.0, 0.0, 0.0], [0.0, 0.0, 0.0], [0.0, 0.0, 0.0], [0.0, 0.0, 0.0], [0.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 0.0, 0.0]], dtype=np.float64)
 NORMAL_INCREMENTAL = (6, 7)
@@ -44,8 +44,8 @@ TANGENTIAL_MINDLIN_DERESIEWICZ = 5
 TANGENTIAL_WALTON_BRAUN = 6
 TANGENTIAL_VISCOUS_LINEAR = 7
 TANGENTIAL_VISCOUS_MINDLIN = 8
-TANGENTIAL_LAMMPS_MINDLIN_TOTAL_RESCALE = 9
-TANGENTIAL_LAMMPS_MINDLIN_FORCE_RESCALE = 10
+TANGENTIAL_MINDLIN_TOTAL_RESCALE = 9
+TANGENTIAL_MINDLIN_FORCE_RESCALE = 10
 TANGENTIAL_VISCOUS = np.array([False, False, False, False, False, False, False, True, True, False, False], dtype=np.bool_)
 TANGENTIAL_IMPLICIT = np.array([False, False, False, False, False, False, True, False, False, False, False], dtype=np.bool_)
 TANGENTIAL_LOG_RATE = np.array([0, 0, 0, 1, 2, 0, 0, 0, 0, 0, 0], dtype=np.int64)
@@ -65,7 +65,7 @@ def normal_force(code, p1, p2, p3, p4, radius, alpha, alpha_max, ext):
     if code == 4:
         return normal_stronge.force(p1, p2, p3, p4, radius, alpha, alpha_max)
     if code == 5:
-        return normal_liggghts_hysteresis.force(p1, p2, p3, p4, radius, alpha, alpha_max)
+        return normal_luding_peak.force(p1, p2, p3, p4, radius, alpha, alpha_max)
     if code >= N_NORMAL:
         return call(ext, code - N_NORMAL, FORCE, p1, p2, p3, p4, radius, alpha, alpha_max, 0.0, 0.0)
     return math.nan, math.nan
@@ -117,7 +117,7 @@ def normal_kink(code, p1, p2, p3, p4, ext):
     if code == 4:
         return normal_stronge.kink(p1, p2, p3, p4)
     if code == 5:
-        return normal_liggghts_hysteresis.kink(p1, p2, p3, p4)
+        return normal_luding_peak.kink(p1, p2, p3, p4)
     if code >= N_NORMAL:
         return call(ext, code - N_NORMAL, KINK, p1, p2, p3, p4, 0.0, 0.0, 0.0, 0.0, 0.0)[0]
     return 0.0
@@ -126,9 +126,9 @@ def normal_kink(code, p1, p2, p3, p4, ext):
 @compiled
 def normal_step(code, p1, p2, p3, p4, radius, alpha, alpha_old, f_old, alpha_max, history, new_history, ext):
     if code == 6:
-        return normal_liggghts_thornton_ning.step(p1, p2, p3, p4, radius, alpha, alpha_old, f_old, alpha_max, history, new_history)
+        return normal_thornton_ning.step(p1, p2, p3, p4, radius, alpha, alpha_old, f_old, alpha_max, history, new_history)
     if code == 7:
-        return normal_yade_luding.step(p1, p2, p3, p4, radius, alpha, alpha_old, f_old, alpha_max, history, new_history)
+        return normal_luding_incremental.step(p1, p2, p3, p4, radius, alpha, alpha_old, f_old, alpha_max, history, new_history)
     return normal_force(code, p1, p2, p3, p4, radius, alpha, alpha_max, ext)
 
 
@@ -151,9 +151,9 @@ def tangential_stiffness(code, p1, a):
     if code == 8:
         return tangential_viscous.mindlin_stiffness(p1, a)
     if code == 9:
-        return tangential_lammps_wall_mindlin.stiffness(p1, a)
+        return tangential_mindlin_wall_coefficient.stiffness(p1, a)
     if code == 10:
-        return tangential_lammps_wall_mindlin.stiffness(p1, a)
+        return tangential_mindlin_wall_coefficient.stiffness(p1, a)
     return math.nan
 
 
@@ -172,9 +172,9 @@ def tangential_spring(code, f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, 
     if code == 6:
         return tangential_walton_braun.spring(f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, scratch, midpoint)
     if code == 9:
-        return tangential_lammps_wall_mindlin.total_rescale(f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, scratch, midpoint)
+        return tangential_mindlin_wall_coefficient.total_rescale(f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, scratch, midpoint)
     if code == 10:
-        return tangential_lammps_wall_mindlin.force_rescale(f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, scratch, midpoint)
+        return tangential_mindlin_wall_coefficient.force_rescale(f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, scratch, midpoint)
     return math.nan
 
 
@@ -184,7 +184,7 @@ def tangential_after_cap(code, f_s, p1, a, st):
         tangential_mindlin.total_after_cap(f_s, p1, a, st)
         return
     if code == 9:
-        tangential_lammps_wall_mindlin.total_after_cap(f_s, p1, a, st)
+        tangential_mindlin_wall_coefficient.total_after_cap(f_s, p1, a, st)
         return
     return
 

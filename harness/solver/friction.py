@@ -7,17 +7,18 @@ from numba import njit
 from ..submodels.tangential.state import N_TSTATE, T_HELD, T_MARGIN, T_STEP
 from ..submodels.tangential.viscous import friction as viscous_friction
 from . import codes as C
-from .compiles import PAIR, PAPER, VELOCITY_VERLET
+from .compiles import LEAPFROG, PAPER, VELOCITY_VERLET, VERLET_PAIR
 from .dispatch import TANGENTIAL_NONE, TANGENTIAL_VISCOUS, tangential_after_cap, tangential_stiffness
 from .spring import cap, spring_force
 from .state import S_ALPHA, S_FEL, S_FS, S_FT, S_NOLD, S_U, S_VX, S_VZ, S_W
 
 
 @njit(cache=True, inline="always")
-def friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, in_contact, scheme, lever):
+def friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, in_contact, scheme, coulomb, lever):
     """Tangential force for this step and the spring force kept in history: spring increment from the slip,
-    Coulomb cap, tangential dashpot. The paper's dashpot is implicit and capped again; the engines' is explicit
-    and added after the Coulomb test only (LIGGGHTS and YADE alike, docs/liggghts-dialect.md, docs/yade-dialect.md). History cleared out of contact."""
+    Coulomb cap, tangential dashpot. The paper scheme's dashpot is implicit and capped again; the explicit schemes'
+    is added after the Coulomb test only (Coulomb rule 'spring') or capped with the spring (rule 'total'). History
+    cleared out of contact."""
     paper = scheme == C.INTEGRATOR_PAPER
     f_t, f_s = 0.0, 0.0
     if TANGENTIAL_VISCOUS[code] and alpha > 0.0:
@@ -28,7 +29,7 @@ def friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, in_contact, scheme
         ot[T_MARGIN] = ot[T_HELD] = abs(f_s) - limit
         if PAPER and paper and p[C.P_TDAMP] != 0.0:
             f_t, f_s = damped_friction(ot, p, code, h, a, f_s, slip, limit, lever)
-        elif (VELOCITY_VERLET or PAIR) and scheme == C.INTEGRATOR_LAMMPS:      # LAMMPS: walls and pairs
+        elif (VELOCITY_VERLET or VERLET_PAIR or LEAPFROG) and coulomb == C.COULOMB_TOTAL:
             f_t, f_s = capped_total(ot, p, code, a, f_s, slip, limit)
         elif abs(f_s) > limit:
             f_s = cap(f_s, limit)
@@ -46,7 +47,7 @@ def friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, in_contact, scheme
 
 @njit(cache=True, inline="always")
 def capped_total(ot, p, code, a, f_s, slip, limit):
-    """LAMMPS' granular friction: the spring and its dashpot together, F_s - c_t V_s, capped at mu |F_n|; when capped,
+    """Coulomb rule 'total': the spring and its dashpot together, F_s - c_t V_s, capped at mu |F_n|; when capped,
     the spring is set to what the capped total leaves to it, F_t + c_t V_s. Returns (F_t, F_s)."""
     c_t = p[C.P_TDAMP] * math.sqrt(tangential_stiffness(code, p[C.P_T1], a)) if p[C.P_TDAMP] != 0.0 else 0.0
     total = f_s - c_t * slip
@@ -82,7 +83,7 @@ def damped_friction(ot, p, code, h, a, f_s, slip, limit, lever):
 
 @njit(cache=True, inline="always")
 def slip_velocity(p, alpha, vx, w, lever):
-    """Contact-point slip: V_t - lever omega, or YADE's noRatch form alpha_f V_t - R omega with
+    """Contact-point slip: V_t - lever omega, or the noRatch form alpha_f V_t - R omega with
     alpha_f = (r1 + R)/(r1 + R - d) (r1 the wall's reference radius)."""
     r1 = p[C.P_SLIP_R1]
     if r1 == 0.0:
@@ -94,7 +95,7 @@ def slip_velocity(p, alpha, vx, w, lever):
 @njit(cache=True, inline="always")
 def tangential_update(s, st, o, ot, p, ints, h, scratch, alpha, a, f_n, in_contact, scheme):
     """Tangential half of a Verlet step: half kick with the previous force, slip at the half step, friction,
-    closing half kick (paper and LIGGGHTS schemes)."""
+    closing half kick (the paper and velocity Verlet schemes)."""
     for k in range(N_TSTATE):
         ot[k] = st[k]
     code = ints[C.I_TANGENTIAL]
@@ -108,7 +109,8 @@ def tangential_update(s, st, o, ot, p, ints, h, scratch, alpha, a, f_n, in_conta
     vx_half = s[S_VX] + 0.5 * h * s[S_FT] / m
     w_half = s[S_W] - 0.5 * h * torque_old * s[S_FT] / inertia
     slip = slip_velocity(p, alpha, vx_half, w_half, lever)
-    f_t, f_s = friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, in_contact, scheme, lever)
+    f_t, f_s = friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, in_contact, scheme, ints[C.I_COULOMB],
+                        lever)
     kick = f_t
     sliding = (st[T_HELD] >= 0.0 and ot[T_HELD] > 0.0        # on the same side of the Coulomb cone at both ends
                and s[S_FT] * f_t >= 0.0)                     # (a dashpot-held force may cross to the other side)

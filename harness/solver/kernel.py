@@ -14,15 +14,16 @@ import math
 import numpy as np
 from numba import njit
 
+from ..submodels.stepping import GEOMETRIES, INTEGRATORS, STEPPERS
 from ..submodels.tangential.state import N_TSTATE, T_HELD, T_MARGIN
 from ..submodels.tangential.viscous import friction as viscous_friction
 from . import codes as C
 from .compiled import announce_compiling
-from .compiles import LEAPFROG, LEAPFROG_SPHERE, PAIR, PAPER, VELOCITY_VERLET, YADE_PAIR
+from .compiles import LEAPFROG, LEAPFROG_PAIR, LEAPFROG_SPHERE, PAPER, VELOCITY_VERLET, VERLET_PAIR
 from .dispatch import N_NORMAL, TANGENTIAL_NONE, TANGENTIAL_VISCOUS, tangential_stiffness
 from .events import locate_release, split_at_event
 from .mesh import PEAK_POINTS, graded_step, parabola_peak, polynomial_peak
-from .pair import step_lammps_pair, step_yade_pair
+from .pair import step_leapfrog_pair, step_verlet_pair
 from .schemes import paper_first_touch, step, step_leapfrog, step_leapfrog_sphere, step_velocity_verlet
 from .specialise import specialised
 from .state import N_STATE, S_ALPHA, S_C, S_FN, S_FT, S_U, S_VX, S_VZ, S_W, S_Z, reset_history
@@ -53,7 +54,7 @@ def integrate_rows(first, last, params, ints, out, history, stride, ext, work):
         peak_x, peak_coef = w[T_END + 2 * PEAK_POINTS:T_END + 3 * PEAK_POINTS], w[T_END + 3 * PEAK_POINTS:WORK]
         p = params[i]
         row_ints = ints[i]
-        scheme = row_ints[C.I_INTEGRATOR]
+        scheme, geometry = row_ints[C.I_INTEGRATOR], row_ints[C.I_GEOMETRY]
         paper = scheme == C.INTEGRATOR_PAPER
         h = p[C.P_DT]
         s[S_VZ], s[S_VX], s[S_W] = p[C.P_VZ0], p[C.P_VX0], p[C.P_W0]
@@ -65,10 +66,10 @@ def integrate_rows(first, last, params, ints, out, history, stride, ext, work):
             s[S_C] = p[C.P_DAMP_C0]
         # the spring starts at 0, inside the Coulomb cone (strictly: a slide starting in the first step is an event)
         st[T_MARGIN] = st[T_HELD] = -p[C.P_MU] * abs(s[S_FN]) - 1e-300
-        engine_setup = scheme in (C.INTEGRATOR_VELOCITY_VERLET, C.INTEGRATOR_LAMMPS)
-        if VELOCITY_VERLET and engine_setup and row_ints[C.I_TANGENTIAL] != TANGENTIAL_NONE:
-            # the engines' setup force at first touch (gap 0 counts as contact): the tangential dashpot alone; LAMMPS
-            # drops it when it exceeds mu |F_n|, its spring being empty
+        setup = scheme == C.INTEGRATOR_VELOCITY_VERLET and geometry == C.GEOMETRY_WALL
+        if VELOCITY_VERLET and setup and row_ints[C.I_TANGENTIAL] != TANGENTIAL_NONE:
+            # the setup force at first touch (gap 0 counts as contact): the tangential dashpot alone; the Coulomb
+            # rule 'total' drops it when it exceeds mu |F_n|, its spring being empty
             code = row_ints[C.I_TANGENTIAL]
             slip0 = p[C.P_VX0] - p[C.P_RADIUS] * p[C.P_W0]
             if TANGENTIAL_VISCOUS[code]:
@@ -76,7 +77,7 @@ def integrate_rows(first, last, params, ints, out, history, stride, ext, work):
                                            p[C.P_MU] * abs(s[S_FN]))
             else:
                 s[S_FT] = -p[C.P_TDAMP] * math.sqrt(tangential_stiffness(code, p[C.P_T1], 0.0)) * slip0
-            if scheme == C.INTEGRATOR_LAMMPS and abs(s[S_FT]) > p[C.P_MU] * abs(s[S_FN]):
+            if row_ints[C.I_COULOMB] == C.COULOMB_TOTAL and abs(s[S_FT]) > p[C.P_MU] * abs(s[S_FN]):
                 s[S_FT] = 0.0
         elif (PAPER and paper and p[C.P_TDAMP] != 0.0
               and row_ints[C.I_TANGENTIAL] != TANGENTIAL_NONE and not TANGENTIAL_VISCOUS[row_ints[C.I_TANGENTIAL]]):
@@ -99,16 +100,16 @@ def integrate_rows(first, last, params, ints, out, history, stride, ext, work):
                 h = graded_step(k, grade_n, p[C.P_GRADE_T])
             if PAPER and paper:
                 indicator = step(s, st, o, ot, p, row_ints, h, scratch, ext)
-            elif VELOCITY_VERLET and (scheme == C.INTEGRATOR_VELOCITY_VERLET or scheme == C.INTEGRATOR_LAMMPS):
+            elif VELOCITY_VERLET and scheme == C.INTEGRATOR_VELOCITY_VERLET and geometry == C.GEOMETRY_WALL:
                 indicator = step_velocity_verlet(s, st, o, ot, p, row_ints, h, scratch, ext)
-            elif LEAPFROG and scheme == C.INTEGRATOR_LEAPFROG and p[C.P_BIG_R] == 0.0:
+            elif LEAPFROG and scheme == C.INTEGRATOR_LEAPFROG and geometry == C.GEOMETRY_WALL:
                 indicator = step_leapfrog(s, st, o, ot, p, row_ints, h, scratch, ext)
-            elif LEAPFROG_SPHERE and scheme == C.INTEGRATOR_LEAPFROG:
+            elif LEAPFROG_SPHERE and scheme == C.INTEGRATOR_LEAPFROG and geometry == C.GEOMETRY_STAND_IN_SPHERE:
                 indicator = step_leapfrog_sphere(s, st, o, ot, p, row_ints, h, scratch, ext)
-            elif PAIR and (scheme == C.INTEGRATOR_LAMMPS_PAIR or scheme == C.INTEGRATOR_LIGGGHTS_PAIR):
-                indicator = step_lammps_pair(s, st, o, ot, p, row_ints, h, scratch, ext)
-            elif YADE_PAIR and scheme == C.INTEGRATOR_YADE_PAIR:
-                indicator = step_yade_pair(s, st, o, ot, p, row_ints, h, scratch, ext)
+            elif VERLET_PAIR and scheme == C.INTEGRATOR_VELOCITY_VERLET and geometry == C.GEOMETRY_PAIR:
+                indicator = step_verlet_pair(s, st, o, ot, p, row_ints, h, scratch, ext)
+            elif LEAPFROG_PAIR and scheme == C.INTEGRATOR_LEAPFROG and geometry == C.GEOMETRY_PAIR_VECTOR:
+                indicator = step_leapfrog_pair(s, st, o, ot, p, row_ints, h, scratch, ext)
             else:                                  # a scheme this copy does not compile (never planned)
                 indicator = math.nan
             h_last = h
@@ -183,10 +184,10 @@ def kernel_of_batch(params, ints):
     only that scheme's stepper and, for a batch of one normal and one tangential kernel (not registered at run time),
     only those kernels; the integrator of this module (every stepper and kernel) where no copy can be written.
     Returns (integrator, its stepper)."""
-    schemes = set(ints[:, C.I_INTEGRATOR].tolist())
+    schemes = set(zip(ints[:, C.I_INTEGRATOR].tolist(), ints[:, C.I_GEOMETRY].tolist()))
     if len(schemes) != 1:
         raise ValueError(f"a batch holds one scheme, got {sorted(schemes)}")
-    stepper = stepper_of(schemes.pop(), params)
+    stepper = stepper_of(*schemes.pop())
     copy = specialised("kernel", stepper, *law_kernels(ints))
     return (integrate_rows if copy is None else copy.integrate_rows), stepper
 
@@ -199,17 +200,10 @@ def law_kernels(ints):
     return ()
 
 
-def stepper_of(scheme, params):
-    """The stepper (compiles.STEPPERS) of a scheme's batch."""
-    if scheme == C.INTEGRATOR_PAPER:
-        return "PAPER"
-    if scheme in (C.INTEGRATOR_VELOCITY_VERLET, C.INTEGRATOR_LAMMPS):
-        return "VELOCITY_VERLET"
-    if scheme in (C.INTEGRATOR_LAMMPS_PAIR, C.INTEGRATOR_LIGGGHTS_PAIR):
-        return "PAIR"
-    if scheme == C.INTEGRATOR_YADE_PAIR:
-        return "YADE_PAIR"
-    return "LEAPFROG_SPHERE" if (params[:, C.P_BIG_R] > 0.0).any() else "LEAPFROG"
+def stepper_of(integrator, geometry):
+    """The stepper (compiles.STEPPERS) of a batch of the integrator and geometry codes given."""
+    names = ({k.code: k.name for k in INTEGRATORS}[integrator], {k.code: k.name for k in GEOMETRIES}[geometry])
+    return STEPPERS[names][0]
 
 
 def integrate(params, ints, out, history, stride, ext, threads=None):

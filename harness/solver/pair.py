@@ -1,5 +1,6 @@
-"""LAMMPS' pair granular, LIGGGHTS' pair gran and YADE's sphere-sphere Mindlin law between two spheres, stepped in
-their relative motion (docs/two-spheres.md)."""
+"""Two spheres stepped in their relative motion, the normal turning as they pass each other: velocity Verlet with a
+scalar shear along the tangent (geometry pair), leapfrog with the shear vector turned with the normal (geometry
+pair-vector) (docs/two-spheres.md)."""
 import math
 
 from ..jit import compiled
@@ -25,15 +26,13 @@ def carry_and_spins(s, st, o, ot, p):
 
 
 @compiled
-def step_lammps_pair(s, st, o, ot, p, ints, h, scratch, ext):
-    """fix nve/sphere on both spheres with pair granular (LAMMPS) or pair gran (LIGGGHTS), as the relative motion
+def step_verlet_pair(s, st, o, ot, p, ints, h, scratch, ext):
+    """Velocity Verlet on both spheres, as the relative motion
     r = x1 - x2 (mass m*) and each sphere's spin (the projectile's from the equivalent spin w* = (R1 w1 + R2 w2)/R*,
     the target's from its change): half kicks with the last force, drift, then from r the overlap R1 + R2 - |r| and
     the normal n = r/|r|, which turns as the spheres pass each other; slip u.t - (l1 w1 + l2 w2) along t = (n_z, -n_x)
     with levers l_i = R_i - lever d, torques -(R_i - torque d) F_t on each; the tangential history kept along t at
-    its length (LAMMPS projects it onto the new tangent plane and rescales it; LIGGGHTS projects it only:
-    docs/liggghts-dialect.md); LAMMPS' Coulomb rule or LIGGGHTS' (integrator lammps-pair or liggghts-pair); contact
-    while the overlap is > 0. Returns the overlap."""
+    its length; the law's Coulomb rule (friction.friction); contact while the overlap is > 0. Returns the overlap."""
     m, radius = p[C.P_MASS], p[C.P_RADIUS]
     r1, r2, inv1, inv2 = p[C.P_R1], p[C.P_R2], p[C.P_INV_I1], p[C.P_INV_I2]
     c_slip, c_torque = p[C.P_LEVER], p[C.P_TORQUE_LEVER]
@@ -61,9 +60,8 @@ def step_lammps_pair(s, st, o, ot, p, ints, h, scratch, ext):
             f_n = 0.0
         if code != TANGENTIAL_NONE:
             slip = (vx * nz - vz * nx) - ((r1 - c_slip * alpha) * w1 + (r2 - c_slip * alpha) * w2)
-            rule = C.INTEGRATOR_LAMMPS if ints[C.I_INTEGRATOR] == C.INTEGRATOR_LAMMPS_PAIR else \
-                C.INTEGRATOR_VELOCITY_VERLET
-            f_t, f_s = friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, True, rule, radius)
+            f_t, f_s = friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, True, C.INTEGRATOR_VELOCITY_VERLET,
+                                ints[C.I_COULOMB], radius)
     else:
         for k in range(N_TSTATE):
             ot[k] = 0.0
@@ -79,13 +77,13 @@ def step_lammps_pair(s, st, o, ot, p, ints, h, scratch, ext):
 
 
 @compiled
-def step_yade_pair(s, st, o, ot, p, ints, h, scratch, ext):
-    """YADE's NewtonIntegrator on both spheres with Ig2_Sphere_Sphere_ScGeom and Law2_ScGeom_MindlinPhys_Mindlin, as
-    the relative motion r = x1 - x2 (mass m*) and each sphere's spin: forces at r(t) from the half-step velocities,
-    then u += h F/m*, spins += h T_i/I_i, r += h u. Overlap d = R1 + R2 - |r|, normal n = r/|r|; the normal dashpot
+def step_leapfrog_pair(s, st, o, ot, p, ints, h, scratch, ext):
+    """Leapfrog on both spheres with the shear force a vector turned with the normal, as the relative motion
+    r = x1 - x2 (mass m*) and each sphere's spin: forces at r(t) from the half-step velocities, then u += h F/m*,
+    spins += h T_i/I_i, r += h u. Overlap d = R1 + R2 - |r|, normal n = r/|r|; the normal dashpot
     sees u.n, the slip noRatch's alpha_f u.t - (R1 w1 + R2 w2) along t = (n_z, -n_x) with
-    alpha_f = (R1 + R2)/(R1 + R2 - d); the shear force is a vector in the plane, turned with the normal by
-    ScGeom::rotate (S -= S x (n_old x n)) and incremented by -k_s slip h t (k_s not reduced as it falls); normal force
+    alpha_f = (R1 + R2)/(R1 + R2 - d); the shear force is a vector in the plane, turned with the normal
+    (S -= S x (n_old x n)) and incremented by -k_s slip h t (k_s not reduced as it falls); normal force
     clipped at 0, the spring capped at mu F_n, else the dashpot -c_s slip t added; torques -(R_i - d/2) (n x F)_y on
     each. Contact while d >= 0; the first negative overlap applies no force and ends it (returns -1)."""
     m, radius = p[C.P_MASS], p[C.P_RADIUS]

@@ -5,13 +5,13 @@ import numpy as np
 
 from ..errors import UserError
 
-from ..submodels.registry import kernel_code
+from ..submodels.registry import COULOMB_RULES, GEOMETRIES, INTEGRATORS, check_parameters, kernel_code
 from ..submodels.tangential_damping import CONE_CODES
 from . import codes as C
 from .dispatch import TANGENTIAL_NONE
 from .stability import check_time_step
 
-NORATCH_WALL_RADIUS = 1e8      # YADE's hertzian wall: reference radius 1e8 R (its noRatch slip factor uses it)
+NORATCH_WALL_RADIUS = 1e8      # slip 'noratch': the wall's reference radius 1e8 R in the noRatch slip factor
 
 
 MAX_STEPS_PER_CONTACT = 10 ** 6      # beyond, a run of one impact takes minutes and round-off dominates
@@ -107,7 +107,7 @@ def plan_batch(law, scene, e_n, steps_per_contact, check_stability=True, every_e
     params[:, C.P_DT] = dt
     params[:, C.P_GRAVITY] = scene.gravity
     params[:, C.P_MU] = scene.mu
-    params[:, C.P_N1:C.P_N4 + 1] = normal.values
+    params[:, C.P_N1:C.P_N4 + 1] = check_parameters(law.normal, normal)
     params[:, C.P_DAMP_C0] = dashpot.c0
     params[:, C.P_DAMP_POWER] = dashpot.power
     if tangential.any():
@@ -118,14 +118,15 @@ def plan_batch(law, scene, e_n, steps_per_contact, check_stability=True, every_e
         params[:, C.P_TCONE] = CONE_CODES[law.tangential_damping.cone]
     params[:, C.P_LEVER] = law.lever
     params[:, C.P_TORQUE_LEVER] = law.lever if law.torque == "lever" else contact_point_lever(scene)
-    if law.integrator.endswith("-pair"):                  # each body's own levers R_i - c alpha and spins
+    pair = GEOMETRIES[law.geometry].pair
+    if pair:                                              # each body's own levers R_i - c alpha and spins
         params[:, C.P_TORQUE_LEVER] = law.lever if law.torque == "lever" else 0.5
         projectile, target = scene.spheres
         params[:, C.P_R1], params[:, C.P_R2], params[:, C.P_W2] = projectile.radius, target.radius, target.omega
         params[:, C.P_INV_I1] = 1.0 / projectile.inertia
         params[:, C.P_INV_I2] = 0.0 if target.fixed else 1.0 / target.inertia
-    params[:, C.P_BIG_R] = (law.normal.stand_in_radius(contact) if hasattr(law.normal, "stand_in_radius") else
-                            centres_less_radius(scene) if law.integrator.endswith("-pair") else 0.0)
+    params[:, C.P_BIG_R] = (law.normal.stand_in_radius(contact) if law.geometry == "stand-in-sphere" else
+                            centres_less_radius(scene) if pair else 0.0)
     params[:, C.P_SLIP_R1] = (NORATCH_WALL_RADIUS * contact.radius if law.slip == "noratch" else
                               contact.radius if law.slip == "noratch-sphere" else
                               centres_less_radius(scene) if law.slip == "noratch-pair" else 0.0)
@@ -144,5 +145,7 @@ def plan_batch(law, scene, e_n, steps_per_contact, check_stability=True, every_e
     ints[:, C.I_NORMAL] = kernel_code(law.normal)
     ints[:, C.I_END] = C.END_ALPHA if law.end == "tension" else C.END_FORCE
     ints[:, C.I_TANGENTIAL] = np.where(tangential, kernel_code(law.tangential), TANGENTIAL_NONE)
-    ints[:, C.I_INTEGRATOR] = C.INTEGRATORS[law.integrator]
+    ints[:, C.I_INTEGRATOR] = INTEGRATORS[law.integrator].code
+    ints[:, C.I_COULOMB] = COULOMB_RULES[law.coulomb].code
+    ints[:, C.I_GEOMETRY] = GEOMETRIES[law.geometry].code
     return Batch(params, ints, e_n, v_n0, v_t0, omega0, theta, dt, steps_per_contact, tangential)

@@ -1,6 +1,7 @@
 """One step of each integrator: the paper scheme (velocity Verlet on the normal momentum u = m alpha_dot + D(alpha),
-linearised implicit-midpoint drift, second order and unconditionally stable in the dashpot), LIGGGHTS' velocity
-Verlet, YADE's leapfrog, and YADE's leapfrog against a stand-in sphere; and the paper scheme's first touch."""
+linearised implicit-midpoint drift, second order and unconditionally stable in the dashpot), velocity Verlet with
+forces from the half-step velocities, leapfrog, and leapfrog against a stand-in sphere; and the paper scheme's first
+touch."""
 import math
 
 from numba import njit
@@ -46,7 +47,7 @@ def drift(alpha, rate0, c_alpha, h):
 
 @compiled
 def step_leapfrog(s, st, o, ot, p, ints, h, scratch, ext):
-    """YADE NewtonIntegrator: forces from the overlap at x(t) and the half-step velocities v(t - h/2), then
+    """Leapfrog: forces from the overlap at x(t) and the half-step velocities v(t - h/2), then
     v(t + h/2) = v(t - h/2) + h F/m and x(t + h) = x(t) + h v(t + h/2). A contact exists while the overlap is
     >= 0 (a sphere placed touching starts in contact with zero force); the first step with a negative overlap
     applies no force and ends it (returns -1)."""
@@ -72,7 +73,8 @@ def step_leapfrog(s, st, o, ot, p, ints, h, scratch, ext):
     lever = radius - p[C.P_LEVER] * alpha
     if code != TANGENTIAL_NONE:
         slip = slip_velocity(p, alpha, s[S_VX], s[S_W], lever)
-        f_t, f_s = friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, in_contact, C.INTEGRATOR_LEAPFROG, lever)
+        f_t, f_s = friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, in_contact, C.INTEGRATOR_LEAPFROG,
+                            ints[C.I_COULOMB], lever)
     vz = s[S_VZ] + h * (f_n / m - g)
     o[S_VZ], o[S_FN], o[S_AMAX] = vz, f_n, amax
     o[S_VX] = s[S_VX] + h * f_t / m
@@ -119,10 +121,10 @@ def step(s, st, o, ot, p, ints, h, scratch, ext):
 
 @compiled
 def step_velocity_verlet(s, st, o, ot, p, ints, h, scratch, ext):
-    """LIGGGHTS nve/sphere + wall/gran: half kick, drift, forces from the half-step velocities, half kick.
+    """Velocity Verlet against a wall: half kick, drift, forces from the half-step velocities, half kick.
 
-    The normal dashpot and the tangential increment see v(t + h/2); the tangential dashpot is added after the
-    Coulomb test and is not capped again; the contact ends at the first step with alpha <= 0 (docs/liggghts-dialect.md).
+    The normal dashpot and the tangential increment see v(t + h/2); the tangential dashpot follows the Coulomb rule
+    (friction.friction); the contact ends at the first step with alpha <= 0.
     """
     m, radius, g = p[C.P_MASS], p[C.P_RADIUS], p[C.P_GRAVITY]
     vz_half = s[S_VZ] + 0.5 * h * (s[S_FN] / m - g)
@@ -140,15 +142,15 @@ def step_velocity_verlet(s, st, o, ot, p, ints, h, scratch, ext):
             f_n = 0.0
     o[S_ALPHA], o[S_VZ], o[S_FN], o[S_FEL] = alpha, vz_half + 0.5 * h * (f_n / m - g), f_n, f_el
     o[S_AMAX] = alpha if alpha > amax else amax
-    tangential_update(s, st, o, ot, p, ints, h, scratch, alpha, a, f_n, alpha > 0.0, ints[C.I_INTEGRATOR])
+    tangential_update(s, st, o, ot, p, ints, h, scratch, alpha, a, f_n, alpha > 0.0, C.INTEGRATOR_VELOCITY_VERLET)
     return alpha
 
 
 @compiled
 def step_leapfrog_sphere(s, st, o, ot, p, ints, h, scratch, ext):
-    """YADE Luding against a fixed sphere of radius R_big standing in for the wall, with YADE's own geometry:
-    overlap (R_big + R) - |x2 - x1|, normal along x2 - x1, contact point in the middle of the overlap, shear force
-    rotated with the normal (ScGeom::rotate), forces and torque from the contact-point branch; leapfrog as above."""
+    """Leapfrog against a fixed sphere of radius R_big standing in for the wall (geometry stand-in-sphere): overlap
+    (R_big + R) - |x2 - x1|, normal along x2 - x1, contact point in the middle of the overlap, shear force rotated
+    with the normal (S -= S x (n_old x n)), forces and torque from the contact-point branch."""
     m, inertia, radius, big = p[C.P_MASS], p[C.P_INERTIA], p[C.P_RADIUS], p[C.P_BIG_R]
     dx, dz = s[S_X], s[S_Z] + big
     norm = math.sqrt(dx * dx + 0.0 + dz * dz)
@@ -161,8 +163,8 @@ def step_leapfrog_sphere(s, st, o, ot, p, ints, h, scratch, ext):
     else:
         in_contact = True
         nx, nz = dx / norm, dz / norm
-        if s[S_NX] != 0.0 or s[S_NZ] != 0.0:          # ScGeom::rotate about prevNormal x normal (no twist in-plane)
-            axis = s[S_NZ] * nx - s[S_NX] * nz        # y component of prevNormal x normal
+        if s[S_NX] != 0.0 or s[S_NZ] != 0.0:          # shear turned about n_old x n (no twist in-plane)
+            axis = s[S_NZ] * nx - s[S_NX] * nz        # y component of n_old x n
             sx, sz = s[S_SX], s[S_SZ]
             sx, sz = sx + axis * sz, sz - axis * sx
         else:
@@ -206,7 +208,7 @@ def step_leapfrog_sphere(s, st, o, ot, p, ints, h, scratch, ext):
 
 @njit(cache=True, inline="always")
 def loading_kink(p, ints, ext):
-    """Overlap at which the loading curve bends (yield of Stronge and Thornton, d_lim of LIGGGHTS' hysteresis);
+    """Overlap at which the loading curve bends (yield of Stronge and Thornton, d_lim of the peak-limited hysteresis);
     0 for the smooth curves."""
     return normal_kink(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], ext)
 

@@ -2,7 +2,7 @@
 
 Each contact mode is a damped oscillator m_eff x'' + c x' + k x = 0 at its stiffest (normal: the law's peak
 dF/dalpha at the scene speed; tangential: the spring at the deepest overlap, with 1/m_eff = 1/m + R^2/I).
-Explicit schemes (LIGGGHTS velocity Verlet, YADE leapfrog) are stable for h < 2/(sqrt(w^2 + g^2) + g), w^2 = k/m_eff,
+Explicit schemes (velocity Verlet, leapfrog) are stable for h < 2/(sqrt(w^2 + g^2) + g), w^2 = k/m_eff,
 g = c/(2 m_eff), i.e. w h < 2 (sqrt(1 + z^2) - z) with z the damping ratio (O'Sullivan & Bray 2004, Eng. Comput.
 21); the paper scheme treats both dashpots implicitly, so its limit is the undamped w h < 2.
 """
@@ -57,7 +57,7 @@ def stability_limit(law, scene, e_n, params, tangential=True):
         from .dispatch import TANGENTIAL_VISCOUS
         p1 = law.tangential.parameter(contact, law.normal.parameters(contact, e_n, scene.speed).linear_stiffness)
         stiffness = python_point("tangential", code, "stiffness")
-        k_t = abs(stiffness(p1, math.sqrt(contact.radius * alpha)))                 # |k_s| = |nu| k_n for YADE
+        k_t = abs(stiffness(p1, math.sqrt(contact.radius * alpha)))                 # |k_s| = |nu| k_n for k_t/k_n = nu
         c_t = abs(params[C.P_TDAMP]) * math.sqrt(k_t)                               # CundallStrack with nu < 0
         m_t = 1.0 / (1.0 / mass + contact.radius ** 2 / contact.inertia)
         spring = 0.0 if TANGENTIAL_VISCOUS[code] else k_t

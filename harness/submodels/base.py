@@ -3,13 +3,33 @@ registry numbers), its parameters for one contact and the capabilities the integ
 from dataclasses import dataclass
 
 
+N_SLOTS = 4                 # the compiled normal kernels' parameter slots p1..p4
+
+
 @dataclass(frozen=True)
 class NormalParameters:
-    """The kernel's four parameter slots (each kernel module names its slots), k_n for linear tangential springs,
-    and a contact-time estimate for the time step."""
-    values: tuple
+    """The kernel's parameters by the slot names its module declares (SLOTS, in order: at most N_SLOTS), k_n for
+    linear tangential springs, and a contact-time estimate for the time step."""
+    slots: tuple                # ((slot name, value), ...)
     linear_stiffness: float
     contact_time: float
+
+    @classmethod
+    def named(cls, linear_stiffness, contact_time, **slots):
+        """NormalParameters.named(k_n, t_c, k1=..., k2=...): the slots in the order given."""
+        return cls(tuple(slots.items()), linear_stiffness, contact_time)
+
+    def __getitem__(self, name):
+        return dict(self.slots)[name]
+
+    @property
+    def names(self):
+        return tuple(name for name, _ in self.slots)
+
+    @property
+    def values(self):
+        """The positional slots p1..p4 the compiled kernels take, the unused ones 0."""
+        return tuple(value for _, value in self.slots) + (0.0,) * (N_SLOTS - len(self.slots))
 
 
 class SubModel:

@@ -47,13 +47,13 @@ def thornton_appendix_b_g(e):
     return math.sqrt(1.0 / (1.0 - (1.0 + e) ** 2 * math.exp(x)) - 1.0)
 
 
-LAMMPS_TSUJI = (1.2728, -4.2783, 11.087, -22.348, 27.467, -18.022, 4.8218)
+TSUJI_POLYNOMIAL = (1.2728, -4.2783, 11.087, -22.348, 27.467, -18.022, 4.8218)
 
 
-def lammps_tsuji_A(e):
-    """LAMMPS' `damping tsuji`: A = 1.2728 - 4.2783 e + 11.087 e^2 - 22.348 e^3 + 27.467 e^4 - 18.022 e^5 + 4.8218 e^6
-    (a fit of A against e for Hertz with its dashpot, fix_wall_gran.cpp and pair_granular.cpp)."""
-    return sum(c * e ** i for i, c in enumerate(LAMMPS_TSUJI))
+def polynomial_tsuji_A(e):
+    """A = 1.2728 - 4.2783 e + 11.087 e^2 - 22.348 e^3 + 27.467 e^4 - 18.022 e^5 + 4.8218 e^6, a polynomial fit of A
+    against e for Hertz with its dashpot."""
+    return sum(c * e ** i for i, c in enumerate(TSUJI_POLYNOMIAL))
 
 
 def tsuji_tension_A(e):

@@ -11,11 +11,11 @@ CONE_CODES = {"spring-first": 0.0, "total": 1.0}      # solver.codes.P_TCONE
 
 
 class TangentialDashpot:
-    """g_t fixed, or borrowed from the normal dashpot: g_t = g_n ('normal-ratio', LIGGGHTS hertz, YADE) or
-    c_t = c_n ('normal-coefficient', LIGGGHTS hooke: g_t = g_n sqrt(k_n/k_t), constant k_t only) or
-    c_t = c_n k_t/k_n ('proportional', YADE ViscEl: g_t = g_n sqrt(k_t/k_n), constant k_t only); or from e_n:
+    """g_t fixed, or borrowed from the normal dashpot: g_t = g_n ('normal-ratio') or
+    c_t = c_n ('normal-coefficient': g_t = g_n sqrt(k_n/k_t), constant k_t only) or
+    c_t = c_n k_t/k_n ('proportional': g_t = g_n sqrt(k_t/k_n), constant k_t only); or from e_n:
     g_t = -ln e/sqrt(ln^2 e + pi^2) ('classical', the linear oscillator's with tension), g_t = sqrt(5/6)|beta|
-    ('beta', Tsuji's with tension), and its negative ('reversed-beta': the sign defect of LIGGGHTS thornton_ning,
+    ('beta', Tsuji's with tension), and its negative ('reversed-beta': a dashpot of the wrong sign,
     which adds energy), beta = ln e/sqrt(ln^2 e + pi^2).
     Options, for the paper scheme: 'spring-first' (default: a spring beyond mu F_n slides and carries the whole
     force; a sticking spring gets the dashpot, the sum capped at mu F_n) or 'total' (the spring held within the

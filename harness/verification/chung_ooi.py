@@ -21,7 +21,7 @@ GROSS_SLIDING_PSI = 7.5      # |Psi1*| above which Hertz-Mindlin slides througho
 NO_SLIP = 1e-12              # |V_s0| / V at or below which nothing slides at first touch (test 7)
 DAMPING = {   # a dialect's damping label -> what returns its e_n
     "tsuji:appendix-b": "the App. B damping fit of Thornton et al. (2013)",
-    "tsuji:lammps": "LAMMPS' Tsuji polynomial in e",
+    "tsuji:polynomial": "LAMMPS' Tsuji polynomial in e",
     "tsuji:tension": "the Tsuji damping calibrated for a contact ending at zero overlap",
     "tsuji:exact": "the exact Tsuji calibration",
 }

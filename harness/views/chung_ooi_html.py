@@ -8,9 +8,9 @@ from ..verification import chung_ooi as suite
 from ..verification.chung_ooi_cases import TESTS
 from ..version import __version__
 from .pieces import figure_svg, records
+from .style import colour
 
 CSV = "chung-ooi.csv"
-COLOURS = {"reference": "#333333", "liggghts": "#1f77b4", "yade": "#d62728", "lammps": "#2ca02c"}
 
 
 def summary(table):
@@ -39,7 +39,7 @@ def sliding_figure(table, test):
     fig, ax = plt.subplots(figsize=(7, 4), constrained_layout=True)
     for (engine, material), group in rows.groupby([rows.engine, rows.case.str.split(",").str[0]], sort=False):
         angle = group.case.str.extract(r"theta ([0-9.]+)")[0].astype(float)
-        ax.plot(angle, group.value, marker="o", ms=3, color=COLOURS.get(engine, "k"),
+        ax.plot(angle, group.value, marker="o", ms=3, color=colour(engine),
                 ls="-" if material == rows.case.iloc[0].split(",")[0] else ":", label=f"{engine}, {material}")
         ax.plot(angle, group.expected, color="0.5", ls="--", lw=0.8)
     ax.set(xlabel="impact angle from the normal [deg]", ylabel="rebound tangential velocity [m/s]",

@@ -145,7 +145,7 @@ def write_report(out_dir, comparison=None, cost=None):
     cost_part = cost_section(*cost) if cost is not None else None
     files = sorted(name for name in os.listdir(out_dir) if name.endswith((".csv", ".json")))
     context = {"compare": compare_context(comparison, files) if comparison is not None else None, "cost": cost_part,
-               "conventions": CONVENTIONS, "files": files, "version": __version__,
+               "conventions": CONVENTIONS, "files": files, "version": __version__, "dialect_styles": style.dialect_styles(),
                "title": comparison.law.name if comparison is not None else cost_part["model"]}
     html = env.get_template("report.html.j2").render(**context)
     return write_text(os.path.join(out_dir, "report.html"), html)

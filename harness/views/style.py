@@ -1,9 +1,11 @@
-"""How every figure draws a curve: one colour per engine and one line style per dialect, the same in every figure;
-an engine's own run wide and pale under the thin line of its formulas in the reference, so both stay visible."""
+"""How every figure draws a curve: one colour per engine and one line style per dialect (each engine declares its
+own), the same in every figure; an engine's own run wide and pale under the thin line of its formulas in the
+reference, so both stay visible."""
 from itertools import cycle
 
-COLOURS = {"reference": "black", "liggghts": "tab:orange", "yade": "tab:green", "lammps": "tab:purple"}
-DASHES = {"paper": "-", "liggghts": "--", "yade": ":", "lammps": "-."}
+from ..figures import engine_styles
+
+COLOURS, DASHES, _ = engine_styles()
 _spare_colours = cycle(["tab:red", "tab:brown", "tab:pink", "tab:olive", "tab:cyan"])
 _spare_dashes = cycle([(0, (5, 1, 1, 1)), (0, (1, 2))])
 
@@ -26,6 +28,15 @@ def curve(engine, dialect):
         return {"color": colour(engine), "ls": dashes(dialect), "lw": 1.6 if dialect == "paper" else 1.0,
                 "zorder": 3}
     return {"color": colour(engine), "ls": dashes(dialect), "lw": 3.0, "alpha": 0.55, "zorder": 2}
+
+
+STYLE_WORDS = {"-": "solid", "--": "dashed", ":": "dotted", "-.": "dash-dotted"}
+
+
+def dialect_styles():
+    """'dashed: liggghts' formulas; dotted: yade's; ...' for each engine's dialect line style (the report's legend)."""
+    words = [f"{STYLE_WORDS.get(style, 'own style')}: {name}'s formulas" for name, style in engine_styles()[2]]
+    return "; ".join(words)
 
 
 def label(engine, dialect):

@@ -1,44 +1,49 @@
 """LAMMPS (29 Sep 2021) as an engine (docs/engines.md): one batched deck per (law, e_n) through `fix wall/gran
-granular`, run as a subprocess; its dialects are in dialect.py, its input and output in deck.py, its binary in
-binary.py."""
-from ..batches import render_input
-from ..protocol import status_of
-from .binary import BINARY_VARIABLE, available, binary, missing_reason, version
-from .deck import OBSERVE_DUMP, TEMPLATES, deck, read_batch, render_batch, run_batch, run_together, settings
+granular`, run as a subprocess; its dialects are in dialect.py, its input and output in deck.py."""
+import re
+
+from ..base import Engine, split_submodels
+from .deck import BINARY_VARIABLE, OBSERVE_DUMP, TEMPLATES, deck, read_batch, render_batch, run_inputs, settings
 from .dialect import (COUNTERPARTS, DIALECTS, HISTORY_STYLES, OPTIONS, PAIR_DIALECTS, check_options, dialect, walls,
                       words)
 
-NAME = "lammps"
-INPUT_SUFFIX = ".in"
+
+class Lammps(Engine):
+    NAME = "lammps"
+    EXECUTABLE, PACKAGE, VARIABLE = "lmp", "lammps", BINARY_VARIABLE
+    OPTIONS, COUNTERPARTS, DIALECTS, PAIR_DIALECTS = OPTIONS, COUNTERPARTS, DIALECTS, PAIR_DIALECTS
+    WITH = {("tangential-damping", "none"): {"with:tangential-damping": "none"}}    # x_gamma_t, dampflag 0 (deck.py)
+    KNOWN_CAUSES = {
+        ("hertz-mindlin", "e_n off target"):
+            "LAMMPS' Tsuji polynomial is 1/sqrt2 of the coefficient that returns e (docs/lammps-dialect.md)",
+        ("hertz-kuwabara-kono", "e_n off target"):
+            "LAMMPS' wall modulus E/(2(1 - nu)) is (1 + nu) E*; the viscoelastic dashpot's e moves with it "
+            "(docs/lammps-dialect.md)",
+        ("linear-spring-dashpot", "e_n off target"):
+            "the paper's dashpot is calibrated for a force clipped at 0; LAMMPS does not clip (docs/lammps-dialect.md)",
+    }
+    COLOUR, DASHES = "tab:purple", "-."
+    render_batch, run_inputs = staticmethod(render_batch), staticmethod(run_inputs)
+    read_batch = staticmethod(read_batch)
+
+    def read_version(self, text):
+        """'29Sep2021_update2' (the stable release's own spelling) from the banner of `lmp -h`, '29 Sep 2021 -
+        Update 2'."""
+        match = re.search(r"Simulator - ([0-9]+) ([A-Za-z]+) ([0-9]+)(?: - Update ([0-9]+))?\s*$", text, re.MULTILINE)
+        if not match:
+            return "unknown"
+        day, month, year, update = match.groups()
+        return f"{day}{month}{year}" + (f"_update{update}" if update else "")
+
+    def walls(self, law_name, options=None):
+        return walls(law_name, split_submodels(options)[0])
+
+    def composition(self, law_name, options, target):
+        return dialect(law_name, options, target)
 
 
-def target_reason(law_name, scene):
-    """Why its inputs cannot put the sphere against the scene's target ('' when they can): pair granular between
-    two atoms for every law it has."""
-    if scene.spheres and law_name not in PAIR_DIALECTS:
-        return f"its {law_name} inputs have no sphere target"
-    return ""
+ENGINE = Lammps()
 
-
-def supports(law_name):
-    return law_name in COUNTERPARTS and law_name in DIALECTS
-
-
-def status(law_name, options=None):
-    """Installed (the binary named, or `lmp` on PATH), with a dialect of the law?"""
-    return status_of(NAME, available(), missing_reason, supports(law_name), law_name)
-
-
-def run(runs):
-    """(results frame, failure or None) of each run; the runs share one process per core."""
-    return run_together(runs, version())
-
-
-def render(run):
-    """(file name, deck text) of one run (harness render)."""
-    return render_input(NAME, INPUT_SUFFIX, render_batch, run)
-
-
-__all__ = ["BINARY_VARIABLE", "COUNTERPARTS", "DIALECTS", "HISTORY_STYLES", "NAME", "OBSERVE_DUMP", "OPTIONS", "TEMPLATES", "available",
-           "binary", "check_options", "deck", "dialect", "missing_reason", "read_batch", "render", "render_batch", "run",
-           "run_batch", "run_together", "settings", "status", "supports", "target_reason", "version", "words", "walls"]
+__all__ = ["BINARY_VARIABLE", "COUNTERPARTS", "DIALECTS", "ENGINE", "HISTORY_STYLES", "OBSERVE_DUMP", "OPTIONS",
+           "PAIR_DIALECTS", "TEMPLATES", "check_options", "deck", "dialect", "render_batch", "settings", "walls",
+           "words"]

@@ -7,15 +7,20 @@ from pathlib import Path
 
 from ...render import render
 from ...version import __version__
-from ..batches import run_grouped
+from ..base import split_submodels
 from ..dumps import pair_rebound, read_final, read_observed, read_observed_pairs, rebound
+from ..executable import chosen
 from ..runner import EngineFailure, run_engine
-from .binary import binary
 from .dialect import dialect, walls, words
 
 TEMPLATES = Path(__file__).resolve().parent / "templates"
 INPUT = "in.harness"
 OBSERVE_DUMP = "observe.dump"   # observe mode: `id z fz` of every sphere in contact, every step
+BINARY_VARIABLE = "HARNESS_LAMMPS"      # path of another lmp binary (a custom build, or a test's fake)
+
+
+def binary():
+    return chosen(BINARY_VARIABLE, "lmp")
 
 
 def settings(law, scene, e_n, options=None):
@@ -23,9 +28,14 @@ def settings(law, scene, e_n, options=None):
     granular: LAMMPS' damping coefficient is e itself for tsuji, c/m for mass_velocity and c/(m sqrt R) for
     viscoelastic; x_gamma_t = c_t/c_n, a constant for each counterpart (Mindlin's k_t and the Tsuji dashpot both grow
     as alpha^1/2 and alpha^1/4). history: k_n (4/3 E* for hertz/history), k_t (8 G*), gamma_n = c_n/m (c_n/(m sqrt R)
-    for hertz/history), gamma_t = c_t/m, and dampflag 1 where there is a tangential dashpot."""
+    for hertz/history), gamma_t = c_t/m, and dampflag 1 where there is a tangential dashpot. A sub-model among the
+    options (a mapped `--with`) replaces that of the dialect, and the numbers follow it."""
+    options, submodels = split_submodels(options)
     style, normal, damping, tangential = words(law.name, options)
     own = dialect(law.name, options, "sphere" if scene.spheres else "wall")
+    if submodels:
+        from ...laws.law import replace_submodels
+        own = replace_submodels(own, submodels)
     c = scene.contact
     stiffness = own.normal.parameters(c, e_n, scene.speed)
     dashpot = own.damping.dashpot(own.normal, c, e_n, scene.speed, own.end)
@@ -90,7 +100,7 @@ def deck(law, scene, spec, options=None, observe=False):
     harness.render); `observe` adds the per-step contact dump (OBSERVE_DUMP)."""
     if scene.spheres:
         return pair_deck(law, scene, spec, options, observe)
-    if scene.wall not in walls(law.name, options):
+    if scene.wall not in walls(law.name, split_submodels(options)[0]):
         raise EngineFailure(f"LAMMPS' {law.name} decks use a wall of the sphere's own material")
     radius = scene.radius
     spacing = 4.0 * radius
@@ -100,18 +110,6 @@ def deck(law, scene, spec, options=None, observe=False):
                   atoms=atoms, x_lo=-2.0 * radius, x_hi=len(atoms) * spacing, box_half=2.0 * radius, z_lo=-radius,
                   z_hi=4.0 * radius, skin=0.5 * radius, dt=spec.dt, radius=radius, rho=scene.rho, chunk=spec.chunk,
                   max_chunks=spec.chunks, observe=bool(observe), **settings(law, scene, spec.e_n, options))
-
-
-def run_batch(paper_law, scene, spec, timeout_s, workdir, options=None, observe=False):
-    """One run's spec (one e_n) in LAMMPS, in `workdir`: (final state as read_batch gives it, wall seconds, log
-    tail)."""
-    with open(os.path.join(workdir, INPUT), "w") as handle:
-        handle.write(render_batch(paper_law, scene, spec, options, observe))
-    done = run_engine([binary(), "-in", INPUT, "-log", "none", "-echo", "none", "-nocite"], workdir, timeout_s)
-    try:
-        return read_outputs(workdir, spec, scene.radius, observe), done.wall_s, done.log_tail
-    except EngineFailure as exc:
-        raise EngineFailure(str(exc), exc.log_tail or done.log_tail) from None
 
 
 def run_inputs(_, count, timeout_s, workdir):
@@ -126,18 +124,18 @@ def run_inputs(_, count, timeout_s, workdir):
     return [done.wall_s / count] * count
 
 
-def read_batch(run, directory):
-    """Rebound velocities and separation of one run in `directory` (and what observe mode saw)."""
-    spec = run.spec
-    if run.scene.spheres:
+def read_batch(scene, spec, directory, observe=False):
+    """Rebound velocities and separation of one run's spec (harness.plan.RunSpec) run in `directory` (and what
+    observe mode saw)."""
+    if scene.spheres:
         final = pair_rebound(read_final(os.path.join(directory, "final.dump"), 2 * spec.impacts, "LAMMPS", 6),
-                             run.scene, "LAMMPS")
-        if run.observe:
-            projectile, target = run.scene.spheres
+                             scene, "LAMMPS")
+        if observe:
+            projectile, target = scene.spheres
             final.update(read_observed_pairs(os.path.join(directory, OBSERVE_DUMP), spec.impacts,
                                              projectile.radius + target.radius, spec.dt, "LAMMPS"))
         return final
-    return read_outputs(directory, spec, run.scene.radius, run.observe)
+    return read_outputs(directory, spec, scene.radius, observe)
 
 
 def read_outputs(directory, spec, radius, observe):
@@ -150,12 +148,5 @@ def read_outputs(directory, spec, radius, observe):
 
 
 def render_batch(paper_law, scene, spec, options=None, observe=False):
-    """The deck text of one run's spec (for `harness render` and the runs)."""
+    """The deck text of one run's spec (harness.plan.RunSpec; for `harness render` and the runs)."""
     return deck(paper_law, scene, spec, options, observe)
-
-
-def run_together(runs, engine_version):
-    """(results frame, failure or None) of each run; the runs share one LAMMPS process per core."""
-    return run_grouped("lammps", engine_version, runs, INPUT,
-                       lambda run: render_batch(run.law, run.scene, run.spec, run.options_dict, run.observe),
-                       lambda run: None, run_inputs, read_batch)

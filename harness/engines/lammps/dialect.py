@@ -18,19 +18,18 @@ OPTIONS = {                  # declared options, default first (`--engine-option
                     "(hertz-kuwabara-kono)"),
     "tangential": Option(tuple(MINDLIN_FORMS), "the Mindlin spring of the granular style's hertz/material laws"),
 }
-COMMON = {"end": "tension", "integrator": "lammps", "lever": "0"}
-HERTZ = {**COMMON, "normal": "lammps-wall-hertz"}
+COMMON = {"end": "tension", "integrator": "velocity-verlet", "coulomb": "total", "lever": "0"}
+PAIR = {**COMMON, "geometry": "pair"}     # two spheres: their relative motion, the normal turning
+HERTZ = {**COMMON, "normal": "hertz-wall-modulus"}
 DIALECTS = {                 # sub-models that make the paper law compute what LAMMPS computes
     "linear-spring-dashpot": {**COMMON},
-    "hertz-mindlin": {**HERTZ, "damping": "tsuji:lammps"},
+    "hertz-mindlin": {**HERTZ, "damping": "tsuji:polynomial"},
     "hertz-kuwabara-kono": {**HERTZ},
 }
 PAIR_DIALECTS = {            # pair granular between two spheres: the pair's own mixing of E* and G* (the paper's), the
-    "hertz-mindlin": {**COMMON, "integrator": "lammps-pair", "damping": "tsuji:lammps", "tangential": "mindlin:total",
-                      "torque": "contact-point"},
-    "hertz-kuwabara-kono": {**COMMON, "integrator": "lammps-pair", "tangential": "mindlin:total",
-                            "torque": "contact-point"},
-    "linear-spring-dashpot": {**COMMON, "integrator": "lammps-pair", "torque": "contact-point"},
+    "hertz-mindlin": {**PAIR, "damping": "tsuji:polynomial", "tangential": "mindlin:total", "torque": "contact-point"},
+    "hertz-kuwabara-kono": {**PAIR, "tangential": "mindlin:total", "torque": "contact-point"},
+    "linear-spring-dashpot": {**PAIR, "torque": "contact-point"},
 }                            # slip from the full radii, the torque from each R_i - d/2
 HISTORY_DIALECTS = {         # the older styles take harness' own k_n, E* and G* (no mixing of their own)
     "linear-spring-dashpot": {**COMMON},
@@ -72,7 +71,7 @@ def walls(law_name, options=None):
 def dialect(law_name, options=None, target="wall"):
     """The law as LAMMPS computes it through fix wall/gran and fix nve/sphere: LIGGGHTS' velocity Verlet steps
     (forces from the half-step velocities, contact from gap 0, no clipping of the normal force), lever R, the Coulomb
-    cap on spring plus dashpot (scheme `lammps`); the granular style's own wall moduli E_w = E/(2(1 - nu)) and
+    cap on spring plus dashpot (Coulomb rule `total`); the granular style's own wall moduli E_w = E/(2(1 - nu)) and
     K = E/4 (2 - nu)(1 + nu) and its Mindlin forms; the older styles with the numbers harness gives them. Against a
     sphere (target 'sphere', pair granular): E* and G* mixed as the paper does, `mindlin` on the total displacement,
     slip from the full radii and torque from R_i - d/2, contact from overlap > 0."""
@@ -88,5 +87,5 @@ def dialect(law_name, options=None, target="wall"):
     overrides = dict(DIALECTS[law_name])
     if GRANULAR[law_name][0] == "hertz/material":
         form = MINDLIN_FORMS[options.get("tangential", "mindlin")]
-        overrides["tangential"] = f"lammps-wall-mindlin:{form}"
+        overrides["tangential"] = f"mindlin-wall-coefficient:{form}"
     return replace_submodels(compose(law_name), overrides, "lammps")

@@ -7,16 +7,21 @@ from pathlib import Path
 
 from ...version import __version__
 from ...render import render
-from ..batches import run_grouped
 from ..dumps import pair_rebound, read_final, read_observed, read_observed_pairs, rebound
+from ..executable import chosen
 from ..runner import EngineFailure, run_engine
-from .binary import binary
 from .dialect import COUNTERPARTS
+
+BINARY_VARIABLE = "HARNESS_LIGGGHTS"     # path of another liggghts binary (a custom build, or a test's fake)
 
 TEMPLATES = Path(__file__).resolve().parent / "templates"
 MIN_RESTITUTION = 0.05          # LIGGGHTS refuses coefficientRestitution <= 0.05 and poissonsRatio < 0; youngsModulus
                                 # < 5e6 or > 1e9 only with soft_particles/hard_particles yes (sanity checks only)
 OBSERVE_DUMP = "observe.dump"   # observe mode: `id z fz` of every sphere in contact, every step
+
+
+def binary():
+    return chosen(BINARY_VARIABLE, "liggghts")
 
 
 @dataclass(frozen=True)
@@ -54,9 +59,9 @@ def settings(law, scene, e_n, options=None):
         properties.append(("characteristicVelocity", "scalar", scene.speed))
     if model == "hooke/hysteresis":
         restitution = 1.0                               # no viscous part: all dissipation by hysteresis
-        from ...submodels.normal.liggghts_hysteresis import LudingHysteresis
+        from ...submodels.normal.luding_peak import LudingPeak
         k1 = law_stiffness(scene)
-        k2max, d_lim = LudingHysteresis.stiffness_and_limit(k1, scene.contact, e_n, scene.speed)
+        k2max, d_lim = LudingPeak.stiffness_and_limit(k1, scene.contact, e_n, scene.speed)
         depth = d_lim * (k2max - k1) / (k2max * 2 * scene.radius)
         if depth == 0.0:        # e_n = 1: LIGGGHTS' d_lim = k2max/(k2max - k1) phi 2R would be 0/0 and its force NaN,
             depth = d_lim / (2 * scene.radius)      # which it drops (the sphere passes through the wall); any phi > 0
@@ -176,42 +181,22 @@ def final_state(state, radius, log_tail=""):
     return rebound(state, radius, "LIGGGHTS", log_tail)
 
 
-def read_batch(run, directory):
-    """The final state of one run in `directory` (and what observe mode saw)."""
-    spec = run.spec
-    if run.scene.spheres:
+def read_batch(scene, spec, directory, observe=False):
+    """The final state of one run's spec (harness.plan.RunSpec) run in `directory` (and what observe mode saw)."""
+    if scene.spheres:
         final = pair_rebound(read_final(os.path.join(directory, "final.dump"), 2 * spec.impacts, "LIGGGHTS", 6),
-                             run.scene, "LIGGGHTS")
-        if run.observe:
-            projectile, target = run.scene.spheres
+                             scene, "LIGGGHTS")
+        if observe:
+            projectile, target = scene.spheres
             final.update(read_observed_pairs(os.path.join(directory, OBSERVE_DUMP), spec.impacts,
                                              projectile.radius + target.radius, spec.dt, "LIGGGHTS"))
         return final
-    final = final_state(read_dump(os.path.join(directory, "final.dump"), spec.impacts), run.scene.radius)
-    if run.observe:
-        final.update(read_observation(os.path.join(directory, OBSERVE_DUMP), spec.impacts, run.scene.radius, spec.dt))
+    final = final_state(read_dump(os.path.join(directory, "final.dump"), spec.impacts), scene.radius)
+    if observe:
+        final.update(read_observation(os.path.join(directory, OBSERVE_DUMP), spec.impacts, scene.radius, spec.dt))
     return final
 
 
-def run_together(runs, engine_version):
-    """(results frame, failure or None) of each run; the runs share one LIGGGHTS process (a failed process: one
-    process per run, so that each failure is its own)."""
-    return run_grouped("liggghts", engine_version, runs, "in.harness",
-                       lambda run: render_batch(run.law, run.scene, run.spec, run.options_dict, run.observe),
-                       lambda run: None, run_inputs, read_batch)
-
-
-def run_batch(paper_law, scene, spec, timeout_s, workdir, options=None, observe=False):
-    """One run's spec (one e_n) in LIGGGHTS: final v_n1, v_t1, omega1 per impact and whether each sphere separated;
-    with `observe` also t_contact (a whole number of steps), f_n_max and overlap_max (see read_observation)."""
-    text = render_batch(paper_law, scene, spec, options, observe)
-    state, wall, log_tail = run_deck(text, spec.impacts, timeout_s, workdir)
-    final = final_state(state, scene.radius, log_tail)
-    if observe:
-        final.update(read_observation(os.path.join(workdir, OBSERVE_DUMP), spec.impacts, scene.radius, spec.dt))
-    return final, wall, log_tail
-
-
 def render_batch(paper_law, scene, spec, options=None, observe=False):
-    """The deck text of one run's spec, as run_batch would run it (for `harness render`)."""
+    """The deck text of one run's spec (harness.plan.RunSpec), as Engine.run_batch would run it."""
     return deck(paper_law, scene, spec, options, observe).text

@@ -27,16 +27,15 @@ DIALECTS = {                    # sub-models that make the paper law compute wha
                               "tangential-damping": "normal-coefficient"},
     "hertz-mindlin": {**COMMON, "damping": "tsuji:tension", "tangential": "mindlin:total",
                       "tangential-damping": "normal-ratio"},
-    "walton-braun": {**COMMON, "end": "no-tension", "normal": "liggghts-hysteresis", "tangential": "linear:1",
+    "walton-braun": {**COMMON, "end": "no-tension", "normal": "luding-peak", "tangential": "linear:1",
                      "tangential-damping": "none"},
-    "thornton": {**COMMON, "end": "no-tension", "normal": "liggghts-thornton-ning", "tangential": "mindlin:total",
+    "thornton": {**COMMON, "end": "no-tension", "normal": "thornton-ning", "tangential": "mindlin:total",
                  "tangential-damping": "reversed-beta"},
 }
 PAIR_DIALECTS = {              # pair gran between two spheres: slip and torque from each sphere's own R_i - d/2
-    "hertz-mindlin": {**DIALECTS["hertz-mindlin"], "integrator": "liggghts-pair", "torque": "contact-point"},
-    "linear-spring-dashpot": {**DIALECTS["linear-spring-dashpot"], "integrator": "liggghts-pair",
-                              "torque": "contact-point"},
-    "walton-braun": {**DIALECTS["walton-braun"], "integrator": "liggghts-pair", "torque": "contact-point"},
+    "hertz-mindlin": {**DIALECTS["hertz-mindlin"], "geometry": "pair", "torque": "contact-point"},
+    "linear-spring-dashpot": {**DIALECTS["linear-spring-dashpot"], "geometry": "pair", "torque": "contact-point"},
+    "walton-braun": {**DIALECTS["walton-braun"], "geometry": "pair", "torque": "contact-point"},
 }
 KT_TO_KN_USER = "0.285714286"   # the literal LIGGGHTS multiplies by, not exactly 2/7
 

@@ -10,11 +10,12 @@ DIALECTS = {                    # sub-models that make the paper law compute wha
                       "slip": "noratch"},
     "linear-spring-dashpot": {"damping": "linear:half-mass", "end": "no-tension", "tangential": "linear:2/7",
                               "tangential-damping": "proportional", "integrator": "leapfrog", "lever": "1"},
-    "walton-braun": {"normal": "yade-luding", "end": "no-tension", "tangential": "linear:2/7",
-                     "tangential-damping": "none", "integrator": "leapfrog", "lever": "0.5"},
+    "walton-braun": {"normal": "luding-incremental", "end": "no-tension", "tangential": "linear:2/7",
+                     "tangential-damping": "none", "integrator": "leapfrog", "geometry": "stand-in-sphere",
+                     "lever": "0.5"},
 }
 PAIR_DIALECTS = {              # Ig2_Sphere_Sphere_ScGeom between two spheres: slip from the full radii with noRatch
-    "hertz-mindlin": {**DIALECTS["hertz-mindlin"], "integrator": "yade-pair", "lever": "0", "slip": "noratch-pair",
+    "hertz-mindlin": {**DIALECTS["hertz-mindlin"], "geometry": "pair-vector", "lever": "0", "slip": "noratch-pair",
                       "torque": "contact-point"},       # (R1 + R2)/(R1 + R2 - d), torque from each R_i - d/2
 }
 OPTIONS = {                     # declared options, default first (`--engine-option yade:KEY=VALUE`)
@@ -24,7 +25,7 @@ OPTIONS = {                     # declared options, default first (`--engine-opt
                      "YADE's law for linear-spring-dashpot: ViscEl, or the elastic CundallStrack"),
 }
 CUNDALL_STRACK = {             # K_n = E R, K_s = nu K_n, no damping (e = 1 whatever e_n), noRatch slip with the
-    "normal": "yade-cundall-strack", "damping": "none", "end": "tension",  # default wall geometry (r1 = R),
+    "normal": "cundall-strack", "damping": "none", "end": "tension",  # default wall geometry (r1 = R),
     "tangential": "linear:nu", "tangential-damping": "none",                 # torque lever R - d/2
     "integrator": "leapfrog", "lever": "0.5", "slip": "noratch-sphere"}
 

@@ -7,7 +7,6 @@ import numpy as np
 
 from ...version import __version__
 from ...render import render
-from ..batches import run_grouped
 from ..dumps import pair_rebound
 from ..runner import EngineFailure, remove_engine_tmpdir, run_engine
 from .dialect import COUNTERPARTS
@@ -48,12 +47,12 @@ def script(law, scene, spec, linear="viscel", observe=False):
         common["other"] = ({"young": RIGID_E, "poisson": 0.0, "rho": scene.rho} if scene.wall == "rigid" else
                            {"young": scene.wall_E, "poisson": scene.wall_nu, "rho": scene.rho})
     if law.name == "walton-braun":
-        from ...submodels.normal.yade_luding import YadeLuding
-        luding = YadeLuding()
+        from ...submodels.normal.luding_incremental import LudingIncremental
+        luding = LudingIncremental()
         k1, kp, d_p_max, _ = luding.parameters(scene.contact, e_n, scene.speed).values
         if not kp > k1:             # YADE throws 'k1 have to be less as kp!' and the interpreter aborts (signal 6)
             raise EngineFailure(f"YADE's Luding law needs kp > k1, i.e. e_n < 1; e_n = {e_n:g} was not run")
-        big = YadeLuding.HUGE * radius
+        big = LudingIncremental.HUGE * radius
         spacing = 2.0 * math.sqrt(2.0 * big * radius)        # a neighbour's huge sphere stays 4R below
         for i, s in enumerate(spheres):
             s["x"] = i * spacing
@@ -149,25 +148,17 @@ def run_inputs(precision, count, timeout_s, workdir):
     return [w if isinstance(w, EngineFailure) else w + startup for w in walls]
 
 
-def read_batch(run, directory):
-    """The final state of one run in `directory` (and what observe mode saw)."""
-    n = run.spec.impacts
-    if run.scene.spheres:
+def read_batch(scene, spec, directory, observe=False):
+    """The final state of one run's spec (harness.plan.RunSpec) run in `directory` (and what observe mode saw)."""
+    n = spec.impacts
+    if scene.spheres:
         rows = read_result(os.path.join(directory, "result.txt"), n, columns=PAIR_COLUMNS)
-        final = pair_rebound(rows.reshape(2 * n, 5), run.scene, "YADE")
+        final = pair_rebound(rows.reshape(2 * n, 5), scene, "YADE")
     else:
         final = final_of(read_result(os.path.join(directory, "result.txt"), n))
-    if run.observe:
-        final.update(read_observation(os.path.join(directory, OBSERVE_FILE), n, run.spec.dt))
+    if observe:
+        final.update(read_observation(os.path.join(directory, OBSERVE_FILE), n, spec.dt))
     return final
-
-
-def run_together(runs, engine_version):
-    """(results frame, failure or None) of each run; the runs of one flavour share one interpreter (its start-up,
-    about 1 s, paid once)."""
-    return run_grouped("yade", engine_version, runs, "harness_yade.py",
-                       lambda run: render_batch(run.law, run.scene, run.spec, run.options_dict, run.observe),
-                       lambda run: run.options_dict.get("precision", "double"), run_inputs, read_batch)
 
 
 def final_of(rows, log_tail=""):
@@ -189,17 +180,5 @@ def read_observation(path, n_spheres, dt):
 
 
 def render_batch(paper_law, scene, spec, options=None, observe=False):
-    """The script text of one run's spec, as run_batch would run it (for `harness render`)."""
+    """The script text of one run's spec (harness.plan.RunSpec), as Engine.run_batch would run it."""
     return script(paper_law, scene, spec, dict(options or {}).get("linear", "viscel"), observe)
-
-
-def run_batch(paper_law, scene, spec, timeout_s, workdir, options=None, observe=False):
-    """One run's spec (one e_n) in YADE: final v_n1, v_t1, omega1 per impact and whether each sphere separated; with
-    `observe` also t_contact (a whole number of steps), f_n_max and overlap_max (see read_observation)."""
-    precision = dict(options or {}).get("precision", "double")
-    rows, wall, log_tail = run_script(render_batch(paper_law, scene, spec, options, observe), spec.impacts, timeout_s,
-                                      workdir, precision)
-    final = final_of(rows, log_tail)
-    if observe:
-        final.update(read_observation(os.path.join(workdir, OBSERVE_FILE), spec.impacts, spec.dt))
-    return final, wall, log_tail

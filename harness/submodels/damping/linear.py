@@ -9,7 +9,7 @@ from . import Dashpot
 class LinearDashpot:
     """c_n = 2 g sqrt(m k_n); g exact for the end rule (closed form with tension, Schwager-Poeschel inverted without),
     'tension': the convention-A g whatever the end rule (what engines do, clipped or not), or 'half-mass': the
-    convention-A g for a reduced mass m/2, i.e. g/sqrt2 (YADE ViscEl against a wall, docs/yade-dialect.md)."""
+    convention-A g for a reduced mass m/2, i.e. g/sqrt2 (a wall as a body of reduced mass m/2)."""
     name = "linear"
     CALIBRATIONS = ("exact", "tension", "half-mass")
 

@@ -6,13 +6,13 @@ from ...errors import UserError
 from .. import calibration as cal
 from . import Dashpot
 
-CALIBRATIONS = ("exact", "appendix-b", "tension", "lammps")
+CALIBRATIONS = ("exact", "appendix-b", "tension", "polynomial")
 
 
 class TsujiDashpot:
     """eta alpha^1/4 alpha_dot, eta = A sqrt(m k), k = 4/3 E* sqrt(R); A exact for the end rule (sqrt5 beta with
-    tension), 'tension' (sqrt5 beta whatever the end rule), 'appendix-b' (the Thornton 2013 fit) or 'lammps' (LAMMPS'
-    polynomial in e, with k from the normal model's own modulus)."""
+    tension), 'tension' (sqrt5 beta whatever the end rule), 'appendix-b' (the Thornton 2013 fit) or 'polynomial' (a
+    polynomial fit in e, with k from the normal model's own modulus)."""
     name = "tsuji"
 
     def __init__(self, calibration="appendix-b"):
@@ -24,13 +24,13 @@ class TsujiDashpot:
         """A for the end rule; 'appendix-b' uses A = sqrt6 g_fit (c_n = 2 g sqrt(m 2E*a), Thornton 2013 App. B)."""
         if self.calibration == "appendix-b":
             return math.sqrt(6.0) * cal.thornton_appendix_b_g(e_n)
-        if self.calibration == "lammps":
-            return cal.lammps_tsuji_A(e_n)
+        if self.calibration == "polynomial":
+            return cal.polynomial_tsuji_A(e_n)
         tension = end == "tension" or self.calibration == "tension"
         return cal.tsuji_tension_A(e_n) if tension else cal.tsuji_notension_A(e_n)
 
     def dashpot(self, normal, contact, e_n, speed, end):
         a = self.coefficient_A(e_n, end)
-        e_star = normal.parameters(contact, e_n, speed).values[0] if self.calibration == "lammps" else contact.E_star
+        e_star = normal.parameters(contact, e_n, speed).values[0] if self.calibration == "polynomial" else contact.E_star
         k = 4.0 / 3.0 * e_star * math.sqrt(contact.radius)
         return Dashpot(a * math.sqrt(contact.mass * k), 0.25, a / math.sqrt(6.0))

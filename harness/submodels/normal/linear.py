@@ -1,5 +1,5 @@
 """Linear spring F = k_n alpha (Walton), k_n from elastic Hertz's contact duration at V (the paper's) or its peak
-overlap (LIGGGHTS hooke's) (docs/laws.md#normal-laws)."""
+overlap (docs/laws.md#normal-laws)."""
 import math
 
 from ...errors import UserError
@@ -9,12 +9,12 @@ from ..base import NormalModel, NormalParameters
 
 NAME = "linear"
 ADAPTIVE = True
-K_N = 0                     # kernel slot: k_n
+SLOTS = ("k_n",)            # kernel slots p1..
 
 
 class LinearSpring(NormalModel):
     """F = k_n alpha; k_n = m (pi/t_H)^2, the elastic Hertz contact duration at V ('duration', the paper's), or
-    16/15 sqrt(R) E* (15 m V^2/(16 sqrt(R) E*))^1/5, Hertz's peak overlap at V ('peak-overlap', LIGGGHTS hooke's)."""
+    16/15 sqrt(R) E* (15 m V^2/(16 sqrt(R) E*))^1/5, Hertz's peak overlap at V ('peak-overlap')."""
     name, kernel, plastic = "linear", NAME, False
     CALIBRATIONS = ("duration", "peak-overlap")
 
@@ -34,11 +34,11 @@ class LinearSpring(NormalModel):
 
     def parameters(self, contact, e_n, speed):
         k = self.stiffness(contact, speed)
-        return NormalParameters((k, 0.0, 0.0, 0.0), k, math.pi * math.sqrt(contact.mass / k))
+        return NormalParameters.named(k, math.pi * math.sqrt(contact.mass / k), k_n=k)
 
     def peak(self, contact, e_n, speed):
         """(stiffest dF/dalpha, deepest overlap) of an impact at normal speed <= V: k, V sqrt(m/k)."""
-        k = self.parameters(contact, e_n, speed).values[0]
+        k = self.parameters(contact, e_n, speed)["k_n"]
         return k, speed * math.sqrt(contact.mass / k)
 
 

@@ -8,7 +8,7 @@ from .thornton import Thornton
 
 NAME = "stronge"
 ADAPTIVE = True
-E_STAR, ALPHA_Y, F_Y = 0, 1, 2              # kernel slots
+SLOTS = ("E_star", "alpha_y", "f_y")         # kernel slots p1..
 
 
 class Stronge(Thornton):
@@ -19,7 +19,7 @@ class Stronge(Thornton):
         return 2.0 * f_y / alpha_y
 
     def kernel_values(self, contact, p_y, alpha_y, f_y):
-        return (contact.E_star, alpha_y, f_y, 0.0)
+        return {"E_star": contact.E_star, "alpha_y": alpha_y, "f_y": f_y}
 
 
 @compiled

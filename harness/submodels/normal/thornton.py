@@ -10,7 +10,7 @@ from .hertz_shapes import FOUR_THIRDS, hertz, hertz_slope
 
 NAME = "thornton"
 ADAPTIVE = True
-E_STAR, P_Y, ALPHA_Y, F_Y = 0, 1, 2, 3      # kernel slots
+SLOTS = ("E_star", "p_y", "alpha_y", "f_y")   # kernel slots p1..
 
 
 def yield_point(E_star, p_y, radius):
@@ -36,10 +36,10 @@ class Thornton(NormalModel):
         t_c = max(cal.hertz_contact_time(contact.E_star, contact.radius, contact.mass, speed),
                   0.5 * math.pi * math.sqrt(contact.mass / k_plastic) * (1.0 + e_n))
         k_lin = cal.hertz_equivalent_stiffness(contact.E_star, contact.radius, contact.mass, speed)
-        return NormalParameters(self.kernel_values(contact, p_y, alpha_y, f_y), k_lin, t_c)
+        return NormalParameters.named(k_lin, t_c, **self.kernel_values(contact, p_y, alpha_y, f_y))
 
     def kernel_values(self, contact, p_y, alpha_y, f_y):
-        return (contact.E_star, p_y, alpha_y, f_y)
+        return {"E_star": contact.E_star, "p_y": p_y, "alpha_y": alpha_y, "f_y": f_y}
 
     def peak(self, contact, e_n, speed):
         """Energy balance 1/2 m V^2 = W_y + F_y d + k_p d^2/2 gives F_max = sqrt(F_y^2 + 2 k_p (E0 - W_y)); Hertzian

@@ -8,7 +8,7 @@ from ..base import NormalModel, NormalParameters
 
 NAME = "walton-braun"
 ADAPTIVE = True
-K1, K2 = 0, 1               # kernel slots: loading and unloading stiffness
+SLOTS = ("k1", "k2")        # kernel slots p1..: loading and unloading stiffness
 
 
 class WaltonBraun(NormalModel):
@@ -22,7 +22,7 @@ class WaltonBraun(NormalModel):
     def parameters(self, contact, e_n, speed):
         k1 = self.loading_stiffness(contact, e_n, speed)
         t_c = 0.5 * math.pi * math.sqrt(contact.mass / k1) * (1.0 + e_n)
-        return NormalParameters((k1, k1 / e_n ** 2, 0.0, 0.0), k1, t_c)
+        return NormalParameters.named(k1, t_c, k1=k1, k2=k1 / e_n ** 2)
 
     def peak(self, contact, e_n, speed):
         """Unloading is stiffest: K2; loading reaches V sqrt(m/K1)."""

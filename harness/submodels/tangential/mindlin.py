@@ -1,5 +1,5 @@
-"""No-slip Mindlin k_t = 8 G* a in three forms: the paper's eq. 18b (rescale on unloading), incremental (YADE) and
-total displacement (LIGGGHTS) (docs/laws.md#tangential-laws)."""
+"""No-slip Mindlin k_t = 8 G* a in three forms: the paper's eq. 18b (rescale on unloading), incremental (not reduced
+as a falls) and on the total displacement (docs/laws.md#tangential-laws)."""
 import math
 
 from ...errors import UserError
@@ -11,7 +11,7 @@ FORMS = {"rescale": "mindlin:rescale", "incremental": "mindlin:incremental", "to
 
 
 class Mindlin(TangentialModel):
-    """No-slip Mindlin k_t = 8 G* a: 'rescale' = paper eq. 18b, 'incremental' (YADE), 'total' (LIGGGHTS)."""
+    """No-slip Mindlin k_t = 8 G* a: 'rescale' = paper eq. 18b, 'incremental' (F_s - k_t dd), 'total' (-k_t xi)."""
     name = "mindlin"
     FORMS, DEFAULT_FORM = FORMS, "rescale"          # form -> kernel
 
@@ -36,7 +36,7 @@ def stiffness(p1, a):
 
 @compiled
 def incremental(f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, scratch, midpoint):
-    """F_s - 8 G* a dd, not reduced as a falls (YADE)."""
+    """F_s - 8 G* a dd, not reduced as a falls."""
     return f_s - stiffness(p1, a_mid) * dd
 
 
@@ -51,7 +51,7 @@ def rescale(f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, scratch, midpoin
 
 @compiled
 def total(f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, scratch, midpoint):
-    """F = -8 G* a xi, xi the total tangential displacement (LIGGGHTS)."""
+    """F = -8 G* a xi, xi the total tangential displacement."""
     st[T_AUX1] += dd
     return -8.0 * p1 * a * st[T_AUX1]
 

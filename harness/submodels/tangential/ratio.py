@@ -5,7 +5,7 @@ from ...errors import UserError
 
 
 def parse_ratio(text):
-    """'2/7', 'kappa', 'nu' (Poisson's ratio: YADE CundallStrack) or a positive number -> float or the name."""
+    """'2/7', 'kappa', 'nu' (Poisson's ratio: k_s = nu k_n) or a positive number -> float or the name."""
     if text in ("kappa", "nu"):
         return text
     try:

@@ -1,4 +1,4 @@
-"""Spring-less friction: F_t = -sign(V_s) min(c_t |V_s|, mu F_n), c_t from k_t = k_n or 8 G* a (LIGGGHTS
+"""Spring-less friction: F_t = -sign(V_s) min(c_t |V_s|, mu F_n), c_t from k_t = k_n or 8 G* a (
 'tangential no_history'); needs a tangential-damping rule."""
 import math
 
@@ -11,7 +11,7 @@ FORMS = {"linear": "viscous:linear", "mindlin": "viscous:mindlin"}
 
 class ViscousTangential(TangentialModel):
     """No spring: F_t = -sign(V_s) min(c_t |V_s|, mu F_n) with the tangential dashpot's c_t computed from k_t =
-    k_n ('linear') or 8 G* a ('mindlin'); LIGGGHTS 'tangential no_history'. Needs a tangential-damping rule."""
+    k_n ('linear') or 8 G* a ('mindlin'), no spring history. Needs a tangential-damping rule."""
     name = "viscous"
 
     def __init__(self, form="linear"):

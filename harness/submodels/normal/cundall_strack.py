@@ -1,4 +1,4 @@
-"""YADE FrictPhys against a wall: K_n = E R (an engine dialect's normal law, docs/yade-dialect.md)."""
+"""Cundall & Strack's (1979) elastic linear spring against a wall of the sphere's own material: K_n = E R."""
 import math
 
 from ..base import NormalParameters
@@ -6,13 +6,13 @@ from .linear import LinearSpring
 
 
 class CundallStrackSpring(LinearSpring):
-    """YADE FrictPhys against a wall (default geometry, wall radius R): K_n = 2 E R E R/(E R + E R) = E R, with E
+    """Against a wall of reference radius R: K_n = 2 E R E R/(E R + E R) = E R, with E
     Young's modulus, whatever the impact speed; runs on the linear spring's kernel."""
-    name = "yade-cundall-strack"
+    name = "cundall-strack"
 
     def label(self):
         return self.name
 
     def parameters(self, contact, e_n, speed):
         k = contact.E * contact.radius
-        return NormalParameters((k, 0.0, 0.0, 0.0), k, math.pi * math.sqrt(contact.mass / k))
+        return NormalParameters.named(k, math.pi * math.sqrt(contact.mass / k), k_n=k)

@@ -1,25 +1,26 @@
-"""LIGGGHTS hooke/hysteresis without adhesion (an engine dialect's normal law, docs/liggghts-dialect.md)."""
+"""Luding's hysteretic spring as a function of the overlap and its peak, without adhesion: the unloading stiffness
+grows with the peak up to a limit overlap (Luding 2008)."""
 import math
 
 from ...jit import compiled
 from .. import calibration as cal
 from ..base import NormalModel, NormalParameters
 
-NAME = "liggghts-hysteresis"
+NAME = "luding-peak"
 ADAPTIVE = False
-K1, K2_MAX, D_LIM = 0, 1, 2                 # kernel slots
+SLOTS = ("k1", "k2_max", "d_lim")           # kernel slots p1..
 
 
-class LudingHysteresis(NormalModel):
-    """LIGGGHTS hooke/hysteresis: k1 as the linear spring; d_lim = 2 x the undamped normal peak overlap at V and
+class LudingPeak(NormalModel):
+    """k1 as the linear spring; d_lim = 2 x the undamped normal peak overlap at V and
     k2max = k1 (2/e^2 - 1), so that at the scene speed the unloading stiffness is K1/e^2."""
-    name, kernel, plastic = "liggghts-hysteresis", NAME, True
+    name, kernel, plastic = "luding-peak", NAME, True
 
     def parameters(self, contact, e_n, speed):
         k1 = cal.hertz_equivalent_stiffness(contact.E_star, contact.radius, contact.mass, speed)
         k2max, d_lim = self.stiffness_and_limit(k1, contact, e_n, speed)
         t_c = 0.5 * math.pi * math.sqrt(contact.mass / k1) * (1.0 + e_n)
-        return NormalParameters((k1, k2max, d_lim, 0.0), k1, t_c)
+        return NormalParameters.named(k1, t_c, k1=k1, k2_max=k2max, d_lim=d_lim)
 
     def peak(self, contact, e_n, speed):
         """k2 grows to k2max with the overlap; loading reaches V sqrt(m/k1)."""
@@ -34,7 +35,7 @@ class LudingHysteresis(NormalModel):
 @compiled
 def force(p1, p2, p3, p4, radius, alpha, alpha_max):
     """min(k1 d, k2 (d - d_max) + k1 d_max), k2 = k1 + (k2max - k1) d_max/d_lim; beyond d_lim the line
-    k2max (d - d_lim) + k1 d_lim (read in LIGGGHTS 3.8.0, reproduced exactly)."""
+    k2max (d - d_lim) + k1 d_lim."""
     d_max = alpha if alpha > alpha_max else alpha_max
     if d_max >= p3:
         return p2 * (alpha - p3) + p1 * p3, math.sqrt(radius * alpha)

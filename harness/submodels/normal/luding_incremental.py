@@ -1,33 +1,34 @@
-"""YADE Law2_ScGeom_LudingPhys_Basic with kc = 0, against a huge fixed sphere (an engine dialect's incremental normal
-law, docs/yade-dialect.md)."""
+"""Luding's hysteretic spring in its incremental form without adhesion (kc = 0), against a huge fixed sphere standing
+in for the wall: the plastic overlap DeltNull carried step to step (Luding 2008)."""
 
 from ...jit import compiled
 from ..base import NormalParameters
-from .liggghts_hysteresis import LudingHysteresis
+from .luding_peak import LudingPeak
 
-NAME = "yade-luding"
+NAME = "luding-incremental"
 ADAPTIVE = False
-K1, KP, DELT_P_MAX, DELT_P_NULL = 0, 1, 2, 3        # kernel slots
-DELT_MAX, DELT_NULL, DELT_PREV = 0, 1, 2            # its history: YADE's DeltMax, DeltNull, DeltPrev
+SLOTS = ("k1", "kp", "delt_p_max", "delt_p_null")   # kernel slots p1..
+DELT_MAX, DELT_NULL, DELT_PREV = 0, 1, 2            # its history: largest, plastic and previous overlap
 HISTORY_RESET = (0.0, 0.0, 0.0)
 
 
-class YadeLuding(LudingHysteresis):
-    """YADE LudingMat against a huge fixed sphere: k1 as the linear spring, kp = k1 (2/e^2 - 1), DeltPMax = 2x the
+class LudingIncremental(LudingPeak):
+    """Luding's incremental spring against a huge fixed sphere: k1 as the linear spring, kp = k1 (2/e^2 - 1), DeltPMax = 2x the
     normal peak overlap, so k2 = K1/e^2 at the scene speed; DeltPNull = PhiF 2R* with R* = R_big R/(R_big + R) of
     the huge sphere, kc = 0, G0 = 0."""
-    name, kernel = "yade-luding", NAME
+    name, kernel = "luding-incremental", NAME
     HUGE = 3e5      # radius of the fixed sphere standing in for the wall, in sphere radii (the kernel reproduces
-                    # YADE's sphere-sphere geometry with it: overlap round-off, tilting normal, rotated shear force)
+                    # sphere-sphere geometry with it: overlap round-off, tilting normal, rotated shear force)
 
     def parameters(self, contact, e_n, speed):
         base = super().parameters(contact, e_n, speed)
-        k1, kp, d_p_max, _ = base.values
-        return NormalParameters((k1, kp, d_p_max, self.plasticity_depth(k1, kp, d_p_max, contact) * 2.0 *
-                                 self.reduced_radius(contact)), base.linear_stiffness, base.contact_time)
+        k1, kp, d_p_max = base["k1"], base["k2_max"], base["d_lim"]
+        return NormalParameters.named(base.linear_stiffness, base.contact_time, k1=k1, kp=kp, delt_p_max=d_p_max,
+                                      delt_p_null=self.plasticity_depth(k1, kp, d_p_max, contact) * 2.0 *
+                                      self.reduced_radius(contact))
 
     def stand_in_radius(self, contact):
-        """Radius of the fixed sphere that plays the wall (the kernel then uses YADE's sphere-sphere geometry)."""
+        """Radius of the fixed sphere that plays the wall (geometry stand-in-sphere)."""
         return self.HUGE * contact.radius
 
     def reduced_radius(self, contact):
@@ -35,7 +36,7 @@ class YadeLuding(LudingHysteresis):
         return big * contact.radius / (big + contact.radius)
 
     def plasticity_depth(self, k1, kp, d_p_max, contact):
-        """PhiF from DeltPMax = kp/(kp - k1) PhiF 2R* (YADE's equation (7) of Luding 2008)."""
+        """PhiF from DeltPMax = kp/(kp - k1) PhiF 2R* (equation (7) of Luding 2008)."""
         return d_p_max * (kp - k1) / (kp * 2.0 * self.reduced_radius(contact))
 
 
@@ -43,8 +44,8 @@ class YadeLuding(LudingHysteresis):
 def luding(k1, kp, delt_p_max, delt_p_null, delt, delt_max, delt_null, delt_prev):
     """k2 from the previous largest overlap, k2 = k1 + (kp - k1) DeltMax/DeltPMax (<= kp); a new maximum moves
     DeltNull = min((1 - k1/k2) DeltMax, DeltPNull); force k1 d while k2 (d - DeltNull) >= k1 d (k2 line beyond
-    DeltPMax), else k2 (d - DeltNull) down to 0, where an unloading contact resets DeltMax = d k2/(k2 - k1) (read in
-    YADE's LudingPM.cpp). Returns (F, DeltMax, DeltNull)."""
+    DeltPMax), else k2 (d - DeltNull) down to 0, where an unloading contact resets DeltMax = d k2/(k2 - k1).
+    Returns (F, DeltMax, DeltNull)."""
     k2 = kp if delt_max / delt_p_max >= 1.0 else k1 + (kp - k1) * delt_max / delt_p_max
     if k2 > kp:
         k2 = kp
@@ -67,7 +68,7 @@ def luding(k1, kp, delt_p_max, delt_p_null, delt, delt_max, delt_null, delt_prev
 
 @compiled
 def step(p1, p2, p3, p4, radius, alpha, alpha_old, f_old, alpha_max, history, new_history):
-    """One step of YADE's Luding law at overlap alpha: (F, 0) and its history after the step."""
+    """One step of the incremental Luding law at overlap alpha: (F, 0) and its history after the step."""
     f, new_history[DELT_MAX], new_history[DELT_NULL] = luding(p1, p2, p3, p4, alpha, history[DELT_MAX],
                                                               history[DELT_NULL], history[DELT_PREV])
     new_history[DELT_PREV] = alpha

@@ -1,23 +1,23 @@
-"""LIGGGHTS thornton_ning with surfaceEnergy 0 (an engine dialect's incremental normal law, docs/liggghts-dialect.md)."""
+"""Thornton & Ning's incremental elastoplastic normal law without adhesion: dF = 2E* a dd (Thornton & Ning 1998)."""
 import math
 
 from ...jit import compiled
 from .thornton import Thornton
 
-NAME = "liggghts-thornton-ning"
+NAME = "thornton-ning"
 ADAPTIVE = False
-E_STAR, A_Y = 0, 1                          # kernel slots
+SLOTS = ("E_star", "a_y")                   # kernel slots p1..
 F_MAX, YIELDED, DETACHED_AT = 0, 1, 2       # its history: peak force, yielded (1), overlap where it detached (< 0: no)
 HISTORY_RESET = (0.0, 0.0, -1.0)            # history at first touch and after the contact ends
 
 
 class ThorntonNing(Thornton):
-    """LIGGGHTS thornton_ning: incremental dF = 2E* a dd, a = sqrt(R d) capped at a_y = pi p_y R/(2E*) while
+    """Incremental dF = 2E* a dd, a = sqrt(R d) capped at a_y = pi p_y R/(2E*) while
     loading, unloading with R unmodified, no damping; p_y as the paper's Thornton law at the scene speed."""
-    name, kernel = "liggghts-thornton-ning", NAME
+    name, kernel = "thornton-ning", NAME
 
     def kernel_values(self, contact, p_y, alpha_y, f_y):
-        return (contact.E_star, math.pi * p_y * contact.radius / (2.0 * contact.E_star), 0.0, 0.0)
+        return {"E_star": contact.E_star, "a_y": math.pi * p_y * contact.radius / (2.0 * contact.E_star)}
 
 
 @compiled

@@ -1,0 +1,228 @@
+"""What an engine is to harness: the Engine base class, which carries what every engine shares (its executable, version
+and status, its dialects composed from sub-models, batching in scratch directories, failures with their log tails)
+and declares every hook a command uses; an engine is a subclass that overrides what differs (docs/engines.md)."""
+import os
+from functools import lru_cache
+
+from ..errors import UserError
+from .executable import banner, chosen, missing, present
+from .protocol import Status, check_options as check_declared
+from .runner import read_tail
+
+DOUBLE = "double (IEEE 754 binary64)"
+
+
+class Engine:
+    """An engine: one subpackage of harness/engines holding a subclass of this, and one line of the registry
+    (engines/__init__.py). The defaults are those of an external engine run as a subprocess on batched inputs."""
+    NAME = ""                   # its name in the registry, in --engines and in the results' engine column
+    DIALECT = None              # the label of its dialects (the results' dialect column) when not NAME
+    INPUT_SUFFIX = ".in"        # of the input `harness render` writes
+    INPUT_NAME = "in.harness"   # of the input in each batch's own directory
+    EXECUTABLE = ""             # its executable's name on PATH
+    VARIABLE = ""               # the environment variable naming another executable (a custom build, a test's fake)
+    PACKAGE = ""                # the Debian package that installs it
+    OPTIONS = {}                # option name -> protocol.Option, surfaced by `--engine-option`
+    COUNTERPARTS = {}           # harness law -> the engine's name of its model
+    DIALECTS = {}               # harness law -> the sub-models that make the paper law compute what it computes
+    PAIR_DIALECTS = {}          # the same between two spheres, for the laws its inputs run against a sphere
+    WITH = {}                   # (sub-model key, label) of `--with` -> the engine options whose inputs compute it
+    KNOWN_CAUSES = {}           # (law, finding kind) -> the documented cause, printed with the finding
+    COLOUR = None               # of its curves in every figure (matplotlib colour)
+    DASHES = None               # of the curves of its dialect (matplotlib line style)
+    STARTUP_S = 1.0             # campaign --dry-run estimate: seconds per process start
+    SPHERE_STEP_S = 1e-6        # and per sphere-step (docs/performance.md)
+
+    @property
+    def dialect_label(self):
+        return self.DIALECT or self.NAME
+
+    def sources(self):
+        """The folders of source whose change changes its results (its own subpackage): stored runs are keyed on them."""
+        import sys
+        return (os.path.dirname(os.path.abspath(sys.modules[type(self).__module__].__file__)),)
+
+    # --- where it is and what it is -----------------------------------------------------------------------------
+    def binary(self):
+        """The executable that runs: the path in VARIABLE, else EXECUTABLE on PATH."""
+        return chosen(self.VARIABLE, self.EXECUTABLE)
+
+    def available(self, flavour=None):
+        """It is installed here (in `flavour`, for an engine that has several)."""
+        return present(self.VARIABLE, self.EXECUTABLE)
+
+    def missing_reason(self, flavour=None):
+        """What was looked for, and where, when it is not installed."""
+        return missing(self.VARIABLE, self.EXECUTABLE, self.PACKAGE)
+
+    def version(self):
+        """Its version, read without writing into the user's directory."""
+        return banner_version(self, self.binary())
+
+    def read_version(self, text):
+        """Its version from the head of what `EXECUTABLE -h` prints."""
+        return "unknown"
+
+    def flavour(self, options):
+        """The flavour (arithmetic, build) the options ask for; runs of one flavour share processes."""
+        return None
+
+    def arithmetic(self, options):
+        """The floating-point arithmetic of a run with these options."""
+        return DOUBLE
+
+    def status(self, law_name, options=None):
+        """Installed (in the flavour the options ask for), and able to run `law_name` (a verified dialect exists)?"""
+        flavour = self.flavour(dict(options or {}))
+        if not self.available(flavour):
+            return Status(self.NAME, False, self.missing_reason(flavour))
+        if not self.supports(law_name):
+            return Status(self.NAME, False, f"{self.NAME} has no counterpart of {law_name}")
+        return Status(self.NAME, True)
+
+    # --- what it computes ---------------------------------------------------------------------------------------
+    def supports(self, law_name):
+        """Has a counterpart of the law and a verified dialect of it."""
+        return law_name in self.COUNTERPARTS and law_name in self.DIALECTS
+
+    def walls(self, law_name, options=None):
+        """The walls its inputs model for the law: 'same' (the sphere's material), and 'other', 'rigid' where they
+        can."""
+        return ("same",)
+
+    def target_reason(self, law_name, scene):
+        """Why its inputs cannot put the sphere against the scene's target (a wall, or a sphere: scene.spheres), ''
+        when they can."""
+        if scene.spheres and law_name not in self.PAIR_DIALECTS:
+            return f"its {law_name} inputs have no sphere target yet"
+        return ""
+
+    def check_options(self, law_name, options):
+        """The options given, validated against the declared ones: one clear line for a bad one."""
+        return check_declared(self.NAME, self.OPTIONS, options)
+
+    def composition(self, law_name, options, target):
+        """Its dialect of the law for its own options: the paper law with DIALECTS (PAIR_DIALECTS against a
+        sphere) in place of the paper's sub-models."""
+        from ..laws import compose
+        from ..laws.law import replace_submodels
+        self.check_options(law_name, options)
+        chosen_ = self.PAIR_DIALECTS if target == "sphere" else self.DIALECTS
+        return replace_submodels(compose(law_name), chosen_[law_name], self.dialect_label)
+
+    def dialect(self, law_name, options=None, target="wall"):
+        """The law as this engine computes it (a harness.laws.Law), for the options given, against a wall or a
+        sphere (the two-sphere dialect, reduced to the equivalent wall impact). An option `with:KEY` (with_options)
+        replaces sub-model KEY of the dialect, which the engine's inputs then follow."""
+        from ..laws.law import replace_submodels
+        options, submodels = split_submodels(options)
+        law = self.composition(law_name, options, target)
+        return replace_submodels(law, submodels) if submodels else law
+
+    def with_options(self, law_name, overrides, options=None, target="wall"):
+        """The engine options (those given, and more) that make its inputs compute the law with `overrides` (--with
+        KEY=VALUE); a UserError naming the first they cannot: an override maps where WITH declares options for it
+        and the dialect with them then carries it (or carries it already)."""
+        options = dict(options or {})
+        for key, value in overrides.items():
+            if self._carries(law_name, options, target, key, value):
+                continue
+            mapped = self.WITH.get((key, value), {})
+            clash = [k for k in mapped if k in options and options[k] != mapped[k]]
+            if clash:
+                raise UserError(f"--with {key}={value} needs {self.NAME} option {clash[0]}={mapped[clash[0]]}, "
+                                f"not {options[clash[0]]}")
+            if not mapped or not self._carries(law_name, {**options, **mapped}, target, key, value):
+                raise UserError(f"{self.NAME} cannot follow --with {key}={value}: its {law_name} inputs have no "
+                                f"setting that computes it (docs/{self.NAME}-dialect.md)")
+            options.update(mapped)
+        return options
+
+    def _carries(self, law_name, options, target, key, value):
+        from ..laws import compose
+        from ..laws.law import replace_submodels
+        try:
+            dialect = self.dialect(law_name, options, target)
+        except UserError:               # options its inputs refuse for this law or target
+            return False
+        wanted = replace_submodels(compose(law_name), {key: value}).describe()[key]
+        return dialect.describe()[key] == wanted
+
+    def precision_runs(self, law, scene, options):
+        """Runs of the plan that check its own arithmetic beside a comparison (docs/engines.md), () when none."""
+        return ()
+
+    def known_cause(self, law_name, kind):
+        """The documented cause of a finding of its dialect, or ''."""
+        return self.KNOWN_CAUSES.get((law_name, kind), "")
+
+    def campaign_seconds(self, impacts, steps):
+        """A campaign's --dry-run estimate of one run: a process start and its sphere-steps."""
+        return self.STARTUP_S + self.SPHERE_STEP_S * impacts * steps
+
+    # --- running it ---------------------------------------------------------------------------------------------
+    def render_batch(self, paper_law, scene, spec, options=None, observe=False):
+        """The text of the input that runs one run's spec (harness.plan.RunSpec: its impacts, time step, step cap and
+        output cadence); an EngineFailure refuses it, with the reason."""
+        raise NotImplementedError(f"{self.NAME} renders no input")
+
+    def run_inputs(self, flavour, count, timeout_s, workdir):
+        """Run the inputs batch<k>/INPUT_NAME (k < count) of workdir: each batch's wall seconds, or the
+        EngineFailure that ended it."""
+        raise NotImplementedError(f"{self.NAME} runs no input")
+
+    def read_batch(self, scene, spec, directory, observe=False):
+        """The final state of a finished run's spec from `directory`: v_n1, v_t1, omega1 and separated per impact;
+        with `observe` also t_contact, f_n_max and overlap_max."""
+        raise NotImplementedError(f"{self.NAME} writes no output")
+
+    def run(self, runs):
+        """Each run of the plan (one batch: a law, an e_n, every impact) as (results frame, failure or None), each
+        told what to run by run.spec; the runs of one flavour share processes, one per core."""
+        from .batches import run_grouped
+        return run_grouped(self.NAME, self.version(), runs, self.INPUT_NAME,
+                           lambda run: self.render_batch(run.law, run.scene, run.spec, run.options_dict, run.observe),
+                           lambda run: self.flavour(run.options_dict), self.run_inputs,
+                           lambda run, directory: self.read_batch(run.scene, run.spec, directory, run.observe))
+
+    def run_batch(self, paper_law, scene, spec, timeout_s, workdir, options=None, observe=False):
+        """One run's spec alone in `workdir`: (final state as read_batch gives it, wall seconds, log tail)."""
+        from .runner import EngineFailure
+        directory = os.path.join(workdir, "batch0")
+        os.makedirs(directory, exist_ok=True)
+        with open(os.path.join(directory, self.INPUT_NAME), "w") as handle:
+            handle.write(self.render_batch(paper_law, scene, spec, options, observe))
+        wall, = self.run_inputs(self.flavour(dict(options or {})), 1, timeout_s, workdir)
+        log_tail = read_tail(os.path.join(workdir, "engine.log"))
+        if isinstance(wall, EngineFailure):
+            raise wall
+        try:
+            return self.read_batch(scene, spec, directory, observe), wall, log_tail
+        except EngineFailure as exc:
+            raise EngineFailure(str(exc), exc.log_tail or log_tail) from None
+
+    def render(self, run):
+        """(file name, text) of the input a run would give the engine (harness render); a refusal of its input
+        rules is the user's to fix, so it is a UserError."""
+        from .runner import EngineFailure
+        try:
+            text = self.render_batch(run.law, run.scene, run.spec, run.options_dict)
+        except EngineFailure as exc:
+            raise UserError(str(exc)) from None
+        return f"{self.NAME}-{run.law.name}-en{run.e_n:g}{self.INPUT_SUFFIX}", text
+
+
+@lru_cache(maxsize=None)
+def banner_version(engine, path):
+    """An engine's version from the banner the executable at `path` prints (read once per executable)."""
+    return engine.read_version(banner(path, engine.NAME))
+
+
+WITH_PREFIX = "with:"       # an option `with:KEY`, a --with KEY=VALUE mapped by Engine.with_options, sets a sub-model
+
+
+def split_submodels(options):
+    """(engine options, sub-model replacements) of an engine's options: an option `with:KEY` replaces sub-model KEY
+    of its dialect."""
+    options = dict(options or {})
+    return options, {key[len(WITH_PREFIX):]: options.pop(key) for key in list(options) if key.startswith(WITH_PREFIX)}

@@ -1,0 +1,80 @@
+"""A fourth engine added as its author would add it: a subclass of the Engine base class in its own package
+(tests/standin, a stand-in that declares itself as one) and one registry line; every command that runs engines runs
+it. Its agreement with its own dialect is exact (it runs that dialect in the reference's kernel), so any difference
+is the harness' plumbing."""
+import pandas as pd
+import pytest
+from standin import ENGINE, StandIn
+
+from harness.commands import main
+from harness.engines import ENGINES
+from harness.engines.base import Engine
+
+SCENE = ["--en", "0.5", "--angles", "10,40"]
+
+
+@pytest.fixture
+def registered(monkeypatch):
+    monkeypatch.setitem(ENGINES, ENGINE.NAME, ENGINE)      # the one registry line
+
+
+def test_it_overrides_only_what_differs_from_the_base_class():
+    own = {name: value for name, value in vars(StandIn).items() if not name.startswith("__")}
+    assert own and all(getattr(Engine, name, None) != value for name, value in own.items()), own
+
+
+def test_compare_runs_it_and_it_agrees_with_its_dialect(registered, tmp_path):
+    assert main(["compare", "--model", "hertz-mindlin", "--engines", "stand-in", *SCENE, "-o", str(tmp_path)]) == 0
+    results = pd.read_csv(tmp_path / "results.csv")
+    mine = results[results.engine == "stand-in"].reset_index(drop=True)
+    dialect = results[(results.engine == "reference") & (results.dialect == "stand-in")].reset_index(drop=True)
+    assert len(mine) == len(dialect) == 2 and (mine.status == "ok").all()
+    for column in ("v_n1", "v_t1", "omega1"):
+        assert (mine[column] == dialect[column]).all(), column
+
+
+def test_a_with_it_cannot_follow_is_refused_for_it(registered, tmp_path, capsys):
+    assert main(["compare", "--model", "hertz-mindlin", "--engines", "stand-in", *SCENE, "--with",
+                 "end=tension", "-o", str(tmp_path)]) == 2
+    assert "stand-in cannot follow --with end=tension" in capsys.readouterr().err
+
+
+def test_cost_runs_it(registered, tmp_path):
+    assert main(["cost", "--model", "hertz-mindlin", "--engines", "stand-in", "--en", "0.5", "--angles", "30",
+                 "--ladder", "50,100", "-o", str(tmp_path)]) == 0
+    table = pd.read_csv(tmp_path / "cost.csv")
+    assert set(table[table.engine == "stand-in"].status) == {"ok"}
+
+
+def test_the_chung_ooi_benchmark_runs_it(registered, tmp_path):
+    code = main(["benchmark", "chung-ooi", "--engines", "reference,stand-in", "-o", str(tmp_path)])
+    table = pd.read_csv(tmp_path / "chung-ooi.csv")
+    mine = table[table.engine == "stand-in"]
+    checked = mine[mine.passed.notna()]
+    assert code in (0, 1) and len(checked) > 0 and not mine.quantity.isin(["not run", "failed"]).any()
+
+
+def test_a_campaign_runs_it(registered, tmp_path, capsys):
+    path = tmp_path / "c.toml"
+    path.write_text('name = "stand-in"\nlaws = ["hertz-mindlin"]\nengines = ["reference", "stand-in"]\n'
+                    'e_n = [0.5]\nangles = [10, 40]\nsteps_per_contact = [200]\n')
+    assert main(["campaign", str(path), "-o", str(tmp_path / "store")]) == 0
+    assert "stand-in" in capsys.readouterr().out
+    assert main(["campaign", str(path), "-o", str(tmp_path / "store"), "--dry-run"]) == 0
+
+
+def test_its_stored_runs_are_keyed_on_its_own_source(registered, tmp_path):
+    """A store key carries a digest of the engine's source: the stand-in's is its own package's, not an empty one
+    (sha256 of no bytes), and it changes when a file of that package changes."""
+    import hashlib
+    import shutil
+
+    import standin
+    from harness.sources import source_digest
+    folder = tmp_path / "standin"
+    shutil.copytree(standin.__path__[0], folder)
+    empty = hashlib.sha256(b"").hexdigest()[:12]
+    assert ENGINE.sources() == (standin.__path__[0],)
+    before = source_digest(str(folder))
+    (folder / "__init__.py").write_text((folder / "__init__.py").read_text() + "\n# changed\n")
+    assert empty != before != source_digest(str(folder))
