@@ -1,0 +1,88 @@
+"""A read-only SQL query over a campaign store (`harness query`). DuckDB gets the store's fragments as Arrow datasets
+opened here by path (no file name ever becomes SQL text), each task's rows once, and runs with access to files,
+extensions and Python objects switched off and its configuration locked from the start; only one SELECT (WITH,
+DESCRIBE, SHOW, SUMMARIZE, VALUES) is run, and its result must be small enough to print."""
+import os
+
+import pandas as pd
+import pyarrow as pa
+import pyarrow.dataset as ds
+import pyarrow.fs as pafs
+import pyarrow.parquet as pq
+
+from ..errors import UserError
+from .fragments import KEY
+from .limits import MAX_QUERY_BYTES, MAX_ROWS
+
+VIEW = "results"
+LOCKED = {"enable_external_access": False, "autoinstall_known_extensions": False,
+          "autoload_known_extensions": False, "python_enable_replacements": False, "lock_configuration": True}
+
+
+def statement(sql):
+    """The one SELECT statement of `sql`; UserError for none, several, or any other kind."""
+    import duckdb
+    if len(sql.encode("utf-8", "replace")) > MAX_QUERY_BYTES:
+        raise UserError(f"the query is longer than {MAX_QUERY_BYTES} bytes")
+    try:
+        found = duckdb.extract_statements(sql)
+    except duckdb.Error as exc:
+        raise UserError(f"query failed: {first_line(exc)}") from None
+    if not found:
+        raise UserError("the query is empty: give one SELECT over the view results")
+    if len(found) > 1:
+        raise UserError(f"the query holds {len(found)} statements; give one SELECT over the view results")
+    if found[0].type != duckdb.StatementType.SELECT:
+        kind = found[0].type.name.replace("_", " ")
+        raise UserError(f"harness query only reads: SELECT, WITH, DESCRIBE, SHOW or SUMMARIZE, not {kind}")
+    return found[0].query
+
+
+def first_line(exc):
+    return (str(exc).strip().splitlines() or [type(exc).__name__])[0][:300]
+
+
+def connection(store):
+    """An in-memory DuckDB connection, locked down, whose view `results` is the store with each task once."""
+    import duckdb
+    copies = {name: keys for name, keys in store.copies().items() if keys}
+    if not copies:
+        raise UserError(f"store {store.path} holds no campaign results (no *.parquet fragments)")
+    paths = {name: os.path.abspath(os.path.join(store.path, name)) for name in copies}
+    local = pafs.LocalFileSystem()
+    try:
+        schema = pa.unify_schemas([pq.read_schema(paths[name], filesystem=local) for name in copies])
+    except (OSError, pa.ArrowException) as exc:
+        raise UserError(f"store {store.path}: its fragments' columns do not agree ({first_line(exc)})") from None
+    db = duckdb.connect(":memory:", config=LOCKED)
+    whole = [paths[name] for name, keys in copies.items() if keys == store.held[name]]
+    parts = []
+    if whole:
+        db.register("store_fragments", ds.dataset(whole, schema=schema, format="parquet", filesystem=local))
+        parts.append("SELECT * FROM store_fragments")
+    for i, name in enumerate(n for n, keys in copies.items() if keys != store.held[n]):
+        db.register(f"store_partial_{i}", ds.dataset([paths[name]], schema=schema, format="parquet",
+                                                     filesystem=local))
+        db.register(f"store_keys_{i}", pa.table({KEY: sorted(copies[name])}))
+        parts.append(f"SELECT * FROM store_partial_{i} WHERE {KEY} IN (SELECT {KEY} FROM store_keys_{i})")
+    db.execute(f"CREATE VIEW {VIEW} AS " + " UNION ALL BY NAME ".join(parts))
+    return db
+
+
+def query(store, sql):
+    """The result of one read-only SELECT over the store's view `results`, as a table of at most MAX_ROWS rows."""
+    import duckdb
+    text = statement(sql)
+    db = connection(store)
+    try:
+        cursor = db.execute(text)
+        rows = cursor.fetchmany(MAX_ROWS + 1)
+        names = [column[0] for column in cursor.description or ()]
+    except duckdb.Error as exc:
+        raise UserError(f"query failed: {first_line(exc)}") from None
+    finally:
+        db.close()
+    if len(rows) > MAX_ROWS:
+        raise UserError(f"the result has more than {MAX_ROWS} rows, too many to print: narrow the query "
+                        "(WHERE, GROUP BY, LIMIT)")
+    return pd.DataFrame.from_records(rows, columns=names)
