@@ -6,7 +6,7 @@ import os
 from ..campaign.driver import dry_run, run_campaign
 from ..campaign.executors import executor, slurm_cluster, slurm_options
 from ..campaign.spec import load
-from ..campaign.store import Store
+from ..campaign.store import DROP, DROP_HELP, Store
 from ..errors import UserError
 from ..lock import exclusive
 from ..views.campaign_html import write_campaign_report
@@ -33,6 +33,7 @@ def add(sub, describe):
     p.add_argument("--slurm-script", action="store_true", help="print the SLURM job script --slurm would submit")
     p.add_argument("--dry-run", action="store_true", help="print the tasks, what is cached and an estimate; run nothing")
     p.add_argument("--no-cache", action="store_true", help="rerun every task, even those the store holds")
+    p.add_argument(DROP, action="store_true", help=DROP_HELP)
     add_output_options(p, json=True)
     p.set_defaults(func=main)
 
@@ -50,8 +51,9 @@ def main(args):
     if args.workers is not None and args.workers < 1:
         raise UserError(f"--workers must be at least 1, got {args.workers}")
     check_output_directory(args.output)
+    store = Store(args.output, create=False, drop_damaged=args.drop_damaged) if os.path.isdir(args.output) else None
     if args.dry_run:
-        return report(args, dry_run(campaign, args.output, args.no_cache), None, dry=True)
+        return report(args, dry_run(campaign, store, args.no_cache), None, dry=True)
     with exclusive(args.output), Progress(f"campaign {os.path.basename(args.file)}",
                                           quiet=args.quiet or args.json) as progress:
         where = executor(args.executor, args.workers, args.scheduler, args.scheduler_file, slurm)
