@@ -5,6 +5,7 @@ leaves every file as it was; a result too large to print is refused; a store who
 characters is read as it is, and its names inject nothing."""
 import os
 import shutil
+import time
 
 import pytest
 
@@ -78,7 +79,10 @@ ATTACKS = [
 ]
 EMPTY = ["", " ", ";", ";;", "-- only a comment", "/* a comment */", "\n\n"]
 TOO_LARGE = [("SELECT * FROM range(200000)", "more than 100000 rows"),
+             ("SELECT * FROM range(10000000000000)", "more than 100000 rows"),
              ("SELECT repeat('x', 20000) AS s", "characters"),
+             ("SELECT repeat('x', 1000) AS s FROM range(90000)", "more than 64 MiB"),
+             ("SELECT repeat('x', 600000000) AS s", "more than 512 MB of memory"),
              ("SELECT 1 -- " + "x" * 200_000, "longer than")]
 
 
@@ -97,6 +101,19 @@ def test_a_query_that_is_not_one_small_read_is_refused_in_one_line(tmp_path, sto
     assert len(lines) == 1 and lines[0].startswith("harness: error: ") and words in lines[0], err
     assert "root:" not in out + err and "Traceback" not in out + err
     assert snapshot(tmp_path) == before
+
+
+def test_a_query_that_runs_too_long_is_stopped_in_one_line(tmp_path, store, capfd, monkeypatch):
+    """With the limit set to 1 s: a count over 10^13 rows would run for hours. Nothing is printed meanwhile (no
+    progress bar on stdout)."""
+    from harness.campaign import query
+    monkeypatch.setattr(query, "MAX_QUERY_S", 1.0)
+    started = time.perf_counter()
+    code = main(["query", str(store), "SELECT count(*) FROM range(10000000000000)"])
+    out, err = capfd.readouterr()
+    assert code == 2 and out == "" and err.strip().splitlines() == [
+        "harness: error: the query ran longer than 1 s and was stopped: narrow it"], (out, err)
+    assert time.perf_counter() - started < 30
 
 
 @pytest.mark.parametrize("sql, expected", [

@@ -11,6 +11,9 @@ CONNECT_TIMEOUT_S = 30.0          # to reach an existing scheduler, and for sbat
 MAX_QUERY_BYTES = 100_000         # the SQL text of `harness query`
 MAX_ROWS = 100_000                # rows `harness query` prints
 MAX_CELL_CHARS = 10_000           # characters of one printed value
+MAX_RESULT_BYTES = 64 << 20       # bytes of the result `harness query` prints, as Arrow holds it
+QUERY_MEMORY_MB = 512             # memory DuckDB may use for one query (its default is 80% of the machine's)
+MAX_QUERY_S = 120.0               # seconds one query may run
 
 
 def max_workers():

@@ -1,10 +1,11 @@
 """A read-only SQL query over a campaign store (`harness query`). DuckDB gets the store's fragments as Arrow datasets
 opened here by path (no file name ever becomes SQL text), each task's rows once, and runs with access to files,
 extensions and Python objects switched off and its configuration locked from the start; only one SELECT (WITH,
-DESCRIBE, SHOW, SUMMARIZE, VALUES) is run, and its result must be small enough to print."""
+DESCRIBE, SHOW, SUMMARIZE, VALUES) is run, within stated limits of memory and time, and its result is read in
+batches only while it stays small enough to print."""
 import os
+import threading
 
-import pandas as pd
 import pyarrow as pa
 import pyarrow.dataset as ds
 import pyarrow.fs as pafs
@@ -12,11 +13,13 @@ import pyarrow.parquet as pq
 
 from ..errors import UserError
 from .fragments import KEY
-from .limits import MAX_QUERY_BYTES, MAX_ROWS
+from .limits import MAX_QUERY_BYTES, MAX_QUERY_S, MAX_RESULT_BYTES, MAX_ROWS, QUERY_MEMORY_MB
 
 VIEW = "results"
 LOCKED = {"enable_external_access": False, "autoinstall_known_extensions": False,
-          "autoload_known_extensions": False, "python_enable_replacements": False, "lock_configuration": True}
+          "autoload_known_extensions": False, "python_enable_replacements": False,
+          "memory_limit": f"{QUERY_MEMORY_MB}MB", "threads": 1}
+BATCH = 4096                      # rows read from DuckDB at a time
 
 
 def statement(sql):
@@ -55,6 +58,8 @@ def connection(store):
     except (OSError, pa.ArrowException) as exc:
         raise UserError(f"store {store.path}: its fragments' columns do not agree ({first_line(exc)})") from None
     db = duckdb.connect(":memory:", config=LOCKED)
+    db.execute("SET enable_progress_bar = false")     # not settable at connect; nothing else runs before the lock
+    db.execute("SET lock_configuration = true")
     whole = [paths[name] for name, keys in copies.items() if keys == store.held[name]]
     parts = []
     if whole:
@@ -70,19 +75,49 @@ def connection(store):
 
 
 def query(store, sql):
-    """The result of one read-only SELECT over the store's view `results`, as a table of at most MAX_ROWS rows."""
+    """The result of one read-only SELECT over the view `results`, within the limits (UserError beyond them)."""
     import duckdb
     text = statement(sql)
     db = connection(store)
+    timer = threading.Timer(MAX_QUERY_S, db.interrupt)
+    timer.daemon = True
+    timer.start()
     try:
-        cursor = db.execute(text)
-        rows = cursor.fetchmany(MAX_ROWS + 1)
-        names = [column[0] for column in cursor.description or ()]
-    except duckdb.Error as exc:
-        raise UserError(f"query failed: {first_line(exc)}") from None
+        relation = db.sql(text)
+        table = bounded(getattr(relation, "to_arrow_reader", None) or relation.fetch_arrow_reader)
+    except (duckdb.Error, pa.ArrowException, OSError) as exc:       # a batch's error comes through Arrow
+        raise refusal(exc) from None
     finally:
+        timer.cancel()
         db.close()
-    if len(rows) > MAX_ROWS:
-        raise UserError(f"the result has more than {MAX_ROWS} rows, too many to print: narrow the query "
-                        "(WHERE, GROUP BY, LIMIT)")
-    return pd.DataFrame.from_records(rows, columns=names)
+    try:
+        return table.to_pandas()
+    except pa.ArrowException as exc:
+        raise UserError(f"the result cannot be printed: {first_line(exc)}") from None
+
+
+def refusal(exc):
+    """The one line for a query DuckDB stopped: over its time or memory limit, or failing."""
+    import duckdb
+    text = first_line(exc)
+    if isinstance(exc, duckdb.InterruptException) or text.startswith("INTERRUPT"):
+        return UserError(f"the query ran longer than {MAX_QUERY_S:g} s and was stopped: narrow it")
+    if isinstance(exc, duckdb.OutOfMemoryException) or text.startswith("Out of Memory"):
+        return UserError(f"the query needs more than {QUERY_MEMORY_MB} MB of memory: narrow it")
+    return UserError(f"query failed: {text}")
+
+
+def bounded(open_reader):
+    """The batches of open_reader(BATCH) as one table, read only while within MAX_ROWS rows and MAX_RESULT_BYTES."""
+    reader = open_reader(BATCH)
+    batches, rows, size = [], 0, 0
+    for batch in reader:
+        rows, size = rows + batch.num_rows, size + batch.nbytes
+        if rows > MAX_ROWS:
+            raise UserError(f"the result has more than {MAX_ROWS} rows, too many to print: narrow the query "
+                            "(WHERE, GROUP BY, LIMIT)")
+        if size > MAX_RESULT_BYTES:
+            raise UserError(f"the result holds more than {MAX_RESULT_BYTES >> 20} MiB, too much to print: narrow "
+                            "the query")
+        batches.append(batch)
+    return pa.Table.from_batches(batches, schema=reader.schema)
