@@ -5,6 +5,8 @@ leaves every file as it was; a result too large to print is refused; a store who
 characters is read as it is, and its names inject nothing."""
 import os
 import shutil
+import subprocess
+import sys
 import time
 
 import pytest
@@ -83,6 +85,7 @@ TOO_LARGE = [("SELECT * FROM range(200000)", "more than 100000 rows"),
              ("SELECT repeat('x', 20000) AS s", "characters"),
              ("SELECT repeat('x', 1000) AS s FROM range(90000)", "more than 64 MiB"),
              ("SELECT repeat('x', 600000000) AS s", "more than 512 MB of memory"),
+             ("SELECT list(range(200000000)) AS l", "more than 512 MB of memory"),
              ("SELECT 1 -- " + "x" * 200_000, "longer than")]
 
 
@@ -114,6 +117,20 @@ def test_a_query_that_runs_too_long_is_stopped_in_one_line(tmp_path, store, capf
     assert code == 2 and out == "" and err.strip().splitlines() == [
         "harness: error: the query ran longer than 1 s and was stopped: narrow it"], (out, err)
     assert time.perf_counter() - started < 30
+
+
+def test_a_query_that_would_take_gigabytes_is_refused_at_a_bounded_size(store):
+    """DuckDB's own memory limit leaves out a scalar function's result: repeat() of 2 GB grew the process past 4 GB.
+    In a process of its own, so that its peak size is its own."""
+    code = ("import resource, sys\n"
+            "from harness.commands import main\n"
+            f"code = main(['query', {str(store)!r}, \"SELECT repeat('x', 2000000000) AS s\"])\n"
+            "print(code, resource.getrusage(resource.RUSAGE_SELF).ru_maxrss)")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
+    exit_code, peak_kib = map(int, done.stdout.split())
+    assert exit_code == 2 and done.stderr.strip().splitlines() == [
+        "harness: error: the query needs more than 512 MB of memory: narrow it"], done.stderr
+    assert peak_kib < 1.5 * 2 ** 20, f"peak {peak_kib / 2 ** 20:.1f} GiB"
 
 
 @pytest.mark.parametrize("sql, expected", [

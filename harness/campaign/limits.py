@@ -13,6 +13,8 @@ MAX_ROWS = 100_000                # rows `harness query` prints
 MAX_CELL_CHARS = 10_000           # characters of one printed value
 MAX_RESULT_BYTES = 64 << 20       # bytes of the result `harness query` prints, as Arrow holds it
 QUERY_MEMORY_MB = 512             # memory DuckDB may use for one query (its default is 80% of the machine's)
+QUERY_GROWTH_MB = 1024            # address space the process may add while a query runs (DuckDB's limit
+                                  # leaves out what a scalar function such as repeat() allocates)
 MAX_QUERY_S = 120.0               # seconds one query may run
 
 

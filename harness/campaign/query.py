@@ -3,7 +3,9 @@ opened here by path (no file name ever becomes SQL text), each task's rows once,
 extensions and Python objects switched off and its configuration locked from the start; only one SELECT (WITH,
 DESCRIBE, SHOW, SUMMARIZE, VALUES) is run, within stated limits of memory and time, and its result is read in
 batches only while it stays small enough to print."""
+import contextlib
 import os
+import resource
 import threading
 
 import pyarrow as pa
@@ -13,7 +15,7 @@ import pyarrow.parquet as pq
 
 from ..errors import UserError
 from .fragments import KEY
-from .limits import MAX_QUERY_BYTES, MAX_QUERY_S, MAX_RESULT_BYTES, MAX_ROWS, QUERY_MEMORY_MB
+from .limits import MAX_QUERY_BYTES, MAX_QUERY_S, MAX_RESULT_BYTES, MAX_ROWS, QUERY_GROWTH_MB, QUERY_MEMORY_MB
 
 VIEW = "results"
 LOCKED = {"enable_external_access": False, "autoinstall_known_extensions": False,
@@ -83,17 +85,32 @@ def query(store, sql):
     timer.daemon = True
     timer.start()
     try:
-        relation = db.sql(text)
-        table = bounded(getattr(relation, "to_arrow_reader", None) or relation.fetch_arrow_reader)
+        with growth_within(QUERY_GROWTH_MB << 20):
+            relation = db.sql(text)
+            table = bounded(getattr(relation, "to_arrow_reader", None) or relation.fetch_arrow_reader)
+            return table.to_pandas()
+    except MemoryError:
+        raise UserError(f"the query needs more than {QUERY_MEMORY_MB} MB of memory: narrow it") from None
     except (duckdb.Error, pa.ArrowException, OSError) as exc:       # a batch's error comes through Arrow
         raise refusal(exc) from None
     finally:
         timer.cancel()
         db.close()
+
+
+@contextlib.contextmanager
+def growth_within(extra):
+    """While the block runs, this process's address space may grow by `extra` bytes at most (an allocation beyond
+    fails, which DuckDB reports as out of memory)."""
+    soft, hard = resource.getrlimit(resource.RLIMIT_AS)
+    with open("/proc/self/statm") as statm:
+        size = int(statm.read().split()[0]) * resource.getpagesize()
+    limit = size + extra if hard == resource.RLIM_INFINITY else min(size + extra, hard)
+    resource.setrlimit(resource.RLIMIT_AS, (limit if soft == resource.RLIM_INFINITY else min(limit, soft), hard))
     try:
-        return table.to_pandas()
-    except pa.ArrowException as exc:
-        raise UserError(f"the result cannot be printed: {first_line(exc)}") from None
+        yield
+    finally:
+        resource.setrlimit(resource.RLIMIT_AS, (soft, hard))
 
 
 def refusal(exc):
