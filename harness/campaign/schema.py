@@ -68,8 +68,11 @@ class Text:
     """A string, one of `choices` when given."""
 
     def __init__(self, choices=None):
-        self.choices = tuple(choices) if choices else None
-        self.expected = f"one of {', '.join(self.choices)}" if self.choices else "a string"
+        self.choices = choices          # read when checked: a registry may gain an entry (an engine) after import
+
+    @property
+    def expected(self):
+        return f"one of {', '.join(self.choices)}" if self.choices else "a string"
 
     def __call__(self, value, where):
         if not isinstance(value, str) or (self.choices and value not in self.choices):
