@@ -12,6 +12,7 @@ import pandas as pd
 import pyarrow as pa
 import pyarrow.parquet as pq
 import pytest
+from conftest import SMALL_CAMPAIGN
 
 from harness.campaign.driver import run_campaign
 from harness.campaign.executors import InProcess
@@ -22,21 +23,12 @@ from harness.keys import run_key
 from harness.plan import compare_plan
 from harness.request import Request
 
-SMALL = dict(laws=["thornton"], e_n=[0.5, 0.9], angles=[10.0, 50.0, 85.0], steps_per_contact=[500])
 TOML = 'laws = ["thornton"]\ne_n = [0.5, 0.9]\nangles = [10, 50, 85]\nsteps_per_contact = [500]\n'
 
 
-@pytest.fixture(scope="module")
-def built(tmp_path_factory):
-    """A store of the small campaign's 2 tasks, 6 rows (compacted into one data file), built once."""
-    path = tmp_path_factory.mktemp("built") / "store"
-    run_campaign(from_dict(SMALL), path, InProcess())
-    return path
-
-
 @pytest.fixture
-def store(built, tmp_path):
-    shutil.copytree(built, tmp_path / "store")
+def store(small_store, tmp_path):
+    shutil.copytree(small_store, tmp_path / "store")
     (tmp_path / "c.toml").write_text(TOML)
     return tmp_path / "store"
 
@@ -195,7 +187,7 @@ def test_a_task_left_in_a_part_and_a_data_file_is_read_once(tmp_path, store, cap
     assert len(Store(store).table()) == 6
     assert main(["query", str(store), "SELECT count(*) AS n FROM results", "--csv"]) == 0
     assert capfd.readouterr().out.split() == ["n", "6"]
-    again = run_campaign(from_dict(SMALL), store, InProcess())         # its compaction removes the older copy
+    again = run_campaign(from_dict(SMALL_CAMPAIGN), store, InProcess())         # its compaction removes the older copy
     assert again.ran == 0 and len(pd.read_parquet(store)) == 6
     assert [n for n in os.listdir(store) if n.endswith(".parquet")] == [only(store, "data-")]
 

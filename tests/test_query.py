@@ -11,26 +11,14 @@ import time
 
 import pytest
 
-from harness.campaign.driver import run_campaign
-from harness.campaign.executors import InProcess
-from harness.campaign.spec import from_dict
 from harness.commands import main
-
-SMALL = dict(laws=["thornton"], e_n=[0.5, 0.9], angles=[10.0, 50.0, 85.0], steps_per_contact=[500])
-
-
-@pytest.fixture(scope="module")
-def built(tmp_path_factory):
-    path = tmp_path_factory.mktemp("built") / "store"
-    run_campaign(from_dict(SMALL), path, InProcess())
-    return path
 
 
 @pytest.fixture
-def store(built, tmp_path, monkeypatch):
+def store(small_store, tmp_path, monkeypatch):
     """A copy of a 2-task, 6-row store in tmp_path, which is also the working directory (where a relative COPY
     would write)."""
-    shutil.copytree(built, tmp_path / "store")
+    shutil.copytree(small_store, tmp_path / "store")
     monkeypatch.chdir(tmp_path)
     return tmp_path / "store"
 
