@@ -4,6 +4,7 @@ and a SLURM scheduler with TLS only, with no HTTP listener anywhere, and the wor
 user alone. Options: every --slurm value is checked before it reaches the job script, contradictions and limits are
 refused in one line; a missing sbatch or an unreachable scheduler is one line with exit 3 within a deadline; nothing
 a Dask campaign starts outlives it in TMPDIR."""
+import gc
 import json
 import os
 import socket
@@ -49,6 +50,9 @@ def refused(address, **security):
     try:
         client = Client(address, timeout=15, set_as_default=False, **security)
     except Exception:
+        client = None
+    if client is None:      # a half-made Client closes itself when collected: here, not inside the next Client's
+        gc.collect()        # start, where its close waits on the loop lock that start holds (a deadlock)
         return True
     try:
         client.submit(os.getpid).result(timeout=15)
