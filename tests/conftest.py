@@ -146,3 +146,16 @@ def small_store(tmp_path_factory):
     path = tmp_path_factory.mktemp("small-store") / "store"
     run_campaign(from_dict(SMALL_CAMPAIGN), path, InProcess())
     return path
+
+
+def snapshot(root):
+    """Every path under root with its size and modification time (links not followed): equal snapshots, nothing
+    written."""
+    import os
+    out = {}
+    for directory, names, files in os.walk(root):
+        for name in names + files:
+            path = os.path.join(directory, name)
+            info = os.lstat(path)
+            out[os.path.relpath(path, root)] = (info.st_size, info.st_mtime_ns)
+    return out

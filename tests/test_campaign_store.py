@@ -12,7 +12,7 @@ import pandas as pd
 import pyarrow as pa
 import pyarrow.parquet as pq
 import pytest
-from conftest import SMALL_CAMPAIGN
+from conftest import SMALL_CAMPAIGN, snapshot
 
 from harness.campaign.driver import run_campaign
 from harness.campaign.executors import InProcess
@@ -114,16 +114,6 @@ def commands(tmp_path, store):
 
 COMMANDS = ["campaign", "campaign --dry-run", "query", "compare", "check", "cost"]
 
-
-def snapshot(root):
-    """Every path under root with its size and modification time (links not followed)."""
-    out = {}
-    for directory, names, files in os.walk(root):
-        for name in names + files:
-            path = os.path.join(directory, name)
-            info = os.lstat(path)
-            out[os.path.relpath(path, root)] = (info.st_size, info.st_mtime_ns)
-    return out
 
 
 def test_the_catalogue_covers_each_damage_and_command():

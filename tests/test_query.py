@@ -10,6 +10,7 @@ import sys
 import time
 
 import pytest
+from conftest import snapshot
 
 from harness.commands import main
 
@@ -26,15 +27,6 @@ def store(small_store, tmp_path, monkeypatch):
 def fragment(store):
     return next(n for n in os.listdir(store) if n.startswith("data-"))
 
-
-def snapshot(root):
-    out = {}
-    for directory, names, files in os.walk(root):
-        for name in names + files:
-            path = os.path.join(directory, name)
-            info = os.lstat(path)
-            out[os.path.relpath(path, root)] = (info.st_size, info.st_mtime_ns)
-    return out
 
 
 ATTACKS = [
