@@ -115,7 +115,6 @@ def commands(tmp_path, store):
 COMMANDS = ["campaign", "campaign --dry-run", "query", "compare", "check", "cost"]
 
 
-
 def test_the_catalogue_covers_each_damage_and_command():
     assert len(DAMAGE) + 1 >= 10 and len(COMMANDS) == 6
 
