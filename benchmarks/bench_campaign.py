@@ -11,10 +11,8 @@ import sys
 import tempfile
 import time
 
-from distributed import Client
-
 from harness.campaign.driver import run_campaign
-from harness.campaign.executors import InProcess, OnDask, local_cluster
+from harness.campaign.executors import InProcess, executor
 from harness.campaign.spec import from_dict
 from harness.engines import ENGINES
 
@@ -40,14 +38,12 @@ def main(smoke=False, impacts=None):
         walls = {}
         walls["in-process"], summary = timed(campaign, InProcess(), f"{root}/a")
         for workers in (1, 2):
-            cluster = local_cluster(workers)
-            client = Client(cluster)
+            on_dask = executor("dask", workers)                              # the cluster a campaign starts
             try:
-                client.run(lambda: __import__("harness.solver.kernel"))           # workers start warm
-                walls[f"dask, {workers} worker(s)"], _ = timed(campaign, OnDask(client), f"{root}/w{workers}")
+                on_dask.client.run(lambda: __import__("harness.solver.kernel"))   # workers start warm
+                walls[f"dask, {workers} worker(s)"], _ = timed(campaign, on_dask, f"{root}/w{workers}")
             finally:
-                client.close()
-                cluster.close()
+                on_dask.close()
         cached, again = timed(campaign, InProcess(), f"{root}/a")
         print(f"campaign of {summary.tasks} tasks ({', '.join(f'{n} {e}' for e, n in summary.per_engine.items())})")
         for name, wall in walls.items():

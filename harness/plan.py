@@ -4,6 +4,7 @@ result; its spec is what an engine is told (time step, step cap, impacts, output
 compare, cost, check and the hard-case tests all execute plans (execute.py)."""
 import hashlib
 import json
+import numbers
 from dataclasses import asdict, dataclass, replace
 from functools import cached_property
 
@@ -94,8 +95,20 @@ class Run:
 
 
 def scene_identity(scene):
-    """The scene's fields that make a run what it is: not `extra`, nor `spheres` of a wall impact (None)."""
-    return {k: v for k, v in asdict(scene).items() if k != "extra" and not (k == "spheres" and v is None)}
+    """The scene's fields that make a run what it is: not `extra`, nor `spheres` of a wall impact (None); every
+    number a float, so that angles 10 and 10.0 are the same run."""
+    return {k: as_floats(v) for k, v in asdict(scene).items() if k != "extra" and not (k == "spheres" and v is None)}
+
+
+def as_floats(value):
+    """`value` with every integer (not a boolean) inside it as a float."""
+    if isinstance(value, bool) or not isinstance(value, (numbers.Integral, list, tuple, dict)):
+        return value
+    if isinstance(value, numbers.Integral):
+        return float(value)
+    if isinstance(value, dict):
+        return {k: as_floats(v) for k, v in value.items()}
+    return [as_floats(v) for v in value]
 
 
 def target_of(scene):

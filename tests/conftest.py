@@ -132,3 +132,30 @@ def count_kernel_steps(monkeypatch):
             monkeypatch.setattr(reference, "run_kernel", kernel)
         return frame, float(sum(counted))
     return run
+
+
+SMALL_CAMPAIGN = dict(laws=["thornton"], e_n=[0.5, 0.9], angles=[10.0, 50.0, 85.0], steps_per_contact=[500])
+
+
+@pytest.fixture(scope="session")
+def small_store(tmp_path_factory):
+    """A store of SMALL_CAMPAIGN's 2 tasks, 6 rows (compacted into one data file), built once; copy it to change it."""
+    from harness.campaign.driver import run_campaign
+    from harness.campaign.executors import InProcess
+    from harness.campaign.spec import from_dict
+    path = tmp_path_factory.mktemp("small-store") / "store"
+    run_campaign(from_dict(SMALL_CAMPAIGN), path, InProcess())
+    return path
+
+
+def snapshot(root):
+    """Every path under root with its size and modification time (links not followed): equal snapshots, nothing
+    written."""
+    import os
+    out = {}
+    for directory, names, files in os.walk(root):
+        for name in names + files:
+            path = os.path.join(directory, name)
+            info = os.lstat(path)
+            out[os.path.relpath(path, root)] = (info.st_size, info.st_mtime_ns)
+    return out

@@ -11,7 +11,8 @@ import pytest
 
 from conftest import interruptible, needs
 from harness.campaign.driver import dry_run, keyed, run_campaign
-from harness.campaign.executors import InProcess, OnDask, local_cluster, slurm_cluster
+from harness.campaign.executors import InProcess, executor
+from harness.campaign.slurm import forget_credentials, slurm_cluster
 from harness.campaign.spec import from_dict, load
 from harness.campaign.store import KEY, Store
 from harness.commands import main
@@ -104,13 +105,14 @@ def test_a_changed_law_or_engine_build_changes_the_key():
     assert run.key("0.1.0") != run.key("0.1.1")
 
 
-def test_the_slurm_job_script_carries_the_options():
-    cluster = slurm_cluster({"queue": "debug", "account": "proj", "cores": "4", "memory": "8GB",
-                             "walltime": "02:00:00"})
+def test_the_slurm_job_script_carries_the_options(tmp_path):
+    cluster = slurm_cluster({"queue": "debug", "account": "proj", "cores": 4, "memory": "8GB",
+                             "walltime": "02:00:00"}, tmp_path, tmp_path)
     try:
         script = cluster.job_script()
     finally:
         cluster.close()
+        forget_credentials(cluster)
     for line in ("#SBATCH -p debug", "#SBATCH -A proj", "#SBATCH --cpus-per-task=4", "#SBATCH --mem=8G",
                  "#SBATCH -t 02:00:00", f"{sys.executable} -m distributed.cli.dask_worker", "--nworkers 4"):
         assert line in script, (line, script)
@@ -135,20 +137,17 @@ class KillAWorker:
 @needs("liggghts")
 @needs("yade")
 def test_dask_workers_give_the_in_process_results_bit_for_bit_even_when_one_is_killed(tmp_path):
-    from distributed import Client
     campaign = from_dict({**SMALL, "engines": ["reference", "liggghts", "yade"]})
     local = run_campaign(campaign, tmp_path / "local", InProcess())
-    cluster = local_cluster(2)
-    client = Client(cluster)
+    on_dask = executor("dask", workers=2)
     try:
-        on_dask = run_campaign(campaign, tmp_path / "dask", OnDask(client))
-        killed = KillAWorker(client)
-        survived = run_campaign(campaign, tmp_path / "killed", OnDask(client), progress=killed)
+        dasked = run_campaign(campaign, tmp_path / "dask", on_dask)
+        killed = KillAWorker(on_dask.client)
+        survived = run_campaign(campaign, tmp_path / "killed", on_dask, progress=killed)
     finally:
-        client.close()
-        cluster.close()
-    assert killed.killed and local.tasks == on_dask.tasks == survived.tasks == 2 * (2 + 2 * 2) + 2 * 2  # YADE
-    assert local.failed == on_dask.failed == survived.failed == 0 and local.skipped == []       # has no thornton
+        on_dask.close()
+    assert killed.killed and local.tasks == dasked.tasks == survived.tasks == 2 * (2 + 2 * 2) + 2 * 2  # YADE
+    assert local.failed == dasked.failed == survived.failed == 0 and local.skipped == []       # has no thornton
     reference = sorted_rows(Store(tmp_path / "local").table())
     for other in ("dask", "killed"):
         rows = sorted_rows(Store(tmp_path / other).table())

@@ -47,10 +47,18 @@ def estimate_s(run):
     return STARTUP_S.get(run.engine, 1.0) + SPHERE_STEP_S.get(run.engine, 1e-6) * impacts * steps
 
 
-def dry_run(campaign, store_path, no_cache=False):
-    """Summary of what a run would do, with per engine its tasks, cached tasks and estimated seconds."""
+def opened(store):
+    """A Store, or the store at a path (made if missing)."""
+    return store if isinstance(store, Store) else Store(store)
+
+
+def dry_run(campaign, store, no_cache=False):
+    """Summary of what a run would do, with per engine its tasks, cached tasks and estimated seconds; `store` is
+    a Store, a path (read, never made) or None."""
     runs, skipped = keyed(campaign)
-    done = set() if no_cache or not os.path.isdir(store_path) else Store(store_path).finished()
+    if store is not None and not isinstance(store, Store):
+        store = Store(store, create=False) if os.path.isdir(store) else None
+    done = set() if no_cache or store is None else store.finished()
     per = {}
     for key, run in runs.items():
         entry = per.setdefault(run.engine, {"tasks": 0, "cached": 0, "estimated_s": 0.0})
@@ -63,10 +71,11 @@ def dry_run(campaign, store_path, no_cache=False):
     return Summary(len(runs), 0, cached, 0, skipped, per)
 
 
-def run_campaign(campaign, store_path, executor, no_cache=False, progress=None):
-    """Run the tasks the store lacks on `executor`, storing each as it finishes; compact the store at the end."""
+def run_campaign(campaign, store, executor, no_cache=False, progress=None):
+    """Run the tasks the store (a Store or a path) lacks on `executor`, storing each as it finishes; compact the
+    store at the end."""
     runs, skipped = keyed(campaign)
-    store = Store(store_path)
+    store = opened(store)
     done = set() if no_cache else store.finished()
     todo = [(key, run) for key, run in runs.items() if key not in done]
     summary = Summary(len(runs), len(todo), len(runs) - len(todo), 0, skipped,

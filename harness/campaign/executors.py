@@ -1,12 +1,17 @@
-"""Where a campaign's tasks run: in this process, or on Dask (a LocalCluster of worker processes bound to the
-loopback address, an existing scheduler, or SLURM through dask-jobqueue). Every executor calls on_done(i, frame,
-log tail) as each task finishes, in whatever order they finish, with a bounded number of tasks in flight."""
+"""Where a campaign's tasks run: in this process, or on Dask (a LocalCluster of worker processes here, an existing
+scheduler, or SLURM: harness.campaign.clusters and .slurm). Every executor calls on_done(i, frame, log tail) as each
+task finishes, in whatever order they finish, with a bounded number of tasks in flight."""
+import contextlib
+import logging
 import os
 
 from ..engines import ENGINES
 from ..errors import UserError
+from .clusters import address_in, connect, local_cluster, remove, scratch_directory
+from .limits import max_workers
+from .slurm import accepted, forget_credentials, slurm_cluster
 
-SLURM_KEYS = {"queue", "account", "cores", "memory", "walltime", "jobs", "processes", "job_extra"}
+log = logging.getLogger("harness")
 
 
 def run_task(run):
@@ -32,13 +37,14 @@ class OnDask:
     """Tasks on a Dask client; at most `in_flight` submitted and not yet finished."""
     name = "dask"
 
-    def __init__(self, client, cluster=None):
-        """`client` (and the local `cluster` it owns). Dask's garbage-collection diagnosis runs as a gc callback in
-        this process, and Python discards an exception raised inside one: a Ctrl-C landing during a collection
-        would be lost and the campaign run on. It is switched off here."""
+    def __init__(self, client, cluster=None, cleanups=()):
+        """`client`, the `cluster` it owns (closed with it) and what removes the files harness made for the
+        cluster (called last). Dask's garbage-collection diagnosis runs as a gc callback in this process, and Python
+        discards an exception raised inside one: a Ctrl-C landing during a collection would be lost and the
+        campaign run on. It is switched off here."""
         from distributed.gc import disable_gc_diagnosis
         disable_gc_diagnosis(force=True)
-        self.client, self.cluster = client, cluster
+        self.client, self.cluster, self.cleanups = client, cluster, tuple(cleanups)
 
     @property
     def workers(self):
@@ -47,7 +53,7 @@ class OnDask:
     def map(self, runs, keys, on_done):
         from distributed import as_completed
         pending = iter(range(len(runs)))
-        window = as_completed()
+        window = as_completed(loop=self.client.loop)
         index = {}
 
         def submit(count):
@@ -68,57 +74,58 @@ class OnDask:
             raise
 
     def close(self):
-        self.client.close()
-        if self.cluster is not None:
-            self.cluster.close()
+        """Close the client, then the cluster, then remove what harness made for them; a failure to close (a
+        cluster that cannot cancel its jobs) is said in one line and does not hide what stopped the campaign."""
+        for what, close in (("client", self.client.close), ("cluster", getattr(self.cluster, "close", None))):
+            if close is None:
+                continue
+            try:
+                close()
+            except Exception as exc:
+                log.warning(f"could not close the Dask {what}: {str(exc).splitlines()[0] if str(exc) else exc!r}")
+        for cleanup in self.cleanups:
+            cleanup()
 
 
-def local_cluster(workers=None):
-    """Worker processes on this machine, one thread each, listening on the loopback address only, no dashboard."""
-    from distributed import LocalCluster
-    return LocalCluster(n_workers=workers or len(os.sched_getaffinity(0)), threads_per_worker=1, processes=True,
-                        host="127.0.0.1", dashboard_address=None)
+def workers_for(workers):
+    """The LocalCluster's worker processes: `workers`, or one per core this process may use, within the limit."""
+    if workers is None:
+        return len(os.sched_getaffinity(0))
+    if not 1 <= workers <= max_workers():
+        raise UserError(f"--workers must be from 1 to {max_workers()} (four per core here), got {workers}")
+    return workers
 
 
-def slurm_options(pairs):
-    """{key: value} of --slurm KEY=VALUE (queue, account, cores, memory, walltime, jobs, processes, job_extra)."""
-    options = {}
-    for pair in pairs or ():
-        key, _, value = pair.partition("=")
-        if key not in SLURM_KEYS or not value:
-            raise UserError(f"--slurm takes KEY=VALUE with KEY one of {', '.join(sorted(SLURM_KEYS))}, got {pair!r}")
-        options[key] = value
-    return options
-
-
-def slurm_cluster(options):
-    """A dask-jobqueue SLURMCluster whose jobs run this Python (the harness installed here) with the options given."""
-    import sys
-
-    from dask_jobqueue import SLURMCluster
-    cores = int(options.get("cores", 2))
-    return SLURMCluster(queue=options.get("queue"), account=options.get("account"), cores=cores,
-                        processes=int(options.get("processes", cores)), memory=options.get("memory", "4GB"),
-                        walltime=options.get("walltime", "01:00:00"), python=sys.executable,
-                        job_extra_directives=[options["job_extra"]] if "job_extra" in options else [],
-                        scheduler_options={"dashboard_address": None})
-
-
-def executor(kind, workers=None, scheduler=None, scheduler_file=None, slurm=None):
-    """The executor a command asks for: 'local' (in this process) or 'dask' (an address or scheduler file, SLURM,
-    else a LocalCluster)."""
+def executor(kind, workers=None, scheduler=None, scheduler_file=None, slurm=None, shared=None):
+    """The executor a command asks for: 'local' (in this process) or 'dask' (an address or scheduler file, SLURM
+    with the workers' credentials under `shared`, else a LocalCluster)."""
     if kind == "local":
         return InProcess()
     if kind != "dask":
         raise UserError(f"--executor must be local or dask, got {kind!r}")
     from distributed import Client
-    if scheduler:
-        return OnDask(Client(scheduler))
-    if scheduler_file:
-        return OnDask(Client(scheduler_file=scheduler_file))
-    if slurm is not None:
-        cluster = slurm_cluster(slurm)
-        cluster.adapt(minimum_jobs=0, maximum_jobs=int(slurm.get("jobs", 4)))
-        return OnDask(Client(cluster), cluster)
-    cluster = local_cluster(workers)
-    return OnDask(Client(cluster), cluster)
+    if scheduler or scheduler_file:
+        return OnDask(connect(scheduler or address_in(scheduler_file)))
+    scratch = scratch_directory("dask")
+    cluster = None
+    try:
+        if slurm is not None:
+            cluster = slurm_cluster(slurm, shared, scratch)
+            accepted(cluster, scratch)
+            cluster.adapt(minimum_jobs=0, maximum_jobs=slurm.get("jobs", 4))
+        else:
+            cluster = local_cluster(workers_for(workers), scratch)
+        return OnDask(Client(cluster, set_as_default=False), cluster, cleanups(cluster, scratch))
+    except BaseException:
+        if cluster is not None:
+            with contextlib.suppress(Exception):
+                cluster.close()
+        for cleanup in cleanups(cluster, scratch):
+            cleanup()
+        raise
+
+
+def cleanups(cluster, scratch):
+    """What removes the files harness made for a cluster: the workers' credentials (SLURM), then its scratch."""
+    credentials = [lambda: forget_credentials(cluster)] if hasattr(cluster, "harness_credentials") else []
+    return credentials + [lambda: remove(scratch)]

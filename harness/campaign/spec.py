@@ -9,9 +9,11 @@ from ..engines import ENGINES
 from ..errors import UserError
 from ..plan import CONVERGED, compare_plan
 from ..request import Request
+from ..scene import DEFAULT_ANGLES
+from .limits import MAX_FILE_BYTES, MAX_TASKS
+from .reading import read_regular
+from .schema import validated
 
-KEYS = {"laws", "variants", "engines", "engine_options", "e_n", "angles", "psi", "vt", "materials", "speeds",
-        "normal_speeds", "spins", "steps_per_contact", "dt", "converged", "block", "name"}
 BLOCK = 20000                     # reference impacts per task: a few seconds of kernel time at 1000 steps/contact
 
 
@@ -25,56 +27,55 @@ class Campaign:
 
 
 def load(path):
-    """Campaign of the TOML file at `path`; a mistake in it is one line (UserError)."""
+    """Campaign of the TOML file at `path` (a regular file of at most MAX_FILE_BYTES); a mistake in it is one line
+    (UserError)."""
+    text = read_regular(path, "campaign", MAX_FILE_BYTES)
     try:
-        with open(path, "rb") as handle:
-            data = tomllib.load(handle)
-    except OSError as exc:
-        raise UserError(f"cannot read campaign {path}: {exc.strerror}") from None
+        data = tomllib.loads(text.decode("utf-8"))
+    except UnicodeDecodeError as exc:
+        raise UserError(f"campaign {path} is not UTF-8 text (byte {exc.start})") from None
     except tomllib.TOMLDecodeError as exc:
         raise UserError(f"campaign {path} is not valid TOML: {exc}") from None
+    except RecursionError:
+        raise UserError(f"campaign {path} nests arrays or tables too deeply for a campaign file") from None
     return from_dict(data, name=str(path))
 
 
-def _list(data, key, default):
-    value = data.get(key, default)
-    return list(value) if isinstance(value, (list, tuple)) else [value]
-
-
 def from_dict(data, name="campaign"):
-    """Campaign of the file's table."""
-    unknown = sorted(set(data) - KEYS)
-    if unknown:
-        raise UserError(f"{name}: unknown key(s) {', '.join(unknown)}; known: {', '.join(sorted(KEYS))}")
-    variants = [(law, ()) for law in _list(data, "laws", [])]
-    for variant in data.get("variants", []):
-        if not isinstance(variant, dict) or "law" not in variant:
-            raise UserError(f"{name}: each [[variants]] needs a law and may give with = {{KEY = VALUE}}")
-        variants.append((variant["law"], tuple(sorted(dict(variant.get("with", {})).items()))))
+    """Campaign of the file's table, checked against the schema and the task limit before anything is built."""
+    data = validated(data, name)
+    variants = [(law, ()) for law in data.get("laws", [])]
+    variants += [(v["law"], tuple(sorted(v.get("with", {}).items()))) for v in data.get("variants", [])]
     if not variants:
-        raise UserError(f"{name}: give laws = [...] or [[variants]]")
-    engines = tuple(_list(data, "engines", ["reference"]))
+        raise UserError(f"campaign {name}: give laws = [...] or [[variants]]")
+    engines = tuple(data.get("engines", ["reference"]))
     sweeps = {key: data[key] for key in ("angles", "psi", "vt") if key in data}
     if len(sweeps) > 1:
-        raise UserError(f"{name}: give one of angles, psi, vt")
-    materials = [m if isinstance(m, dict) else {"material": m} for m in _list(data, "materials", ["tcc13"])]
-    speeds = [("speed", v) for v in _list(data, "speeds", [])] + [("normal_speed", v)
-                                                                  for v in _list(data, "normal_speeds", [])]
-    resolutions = ([dict(steps_per_contact=int(n)) for n in _list(data, "steps_per_contact", [])]
-                   + [dict(dt=float(d)) for d in _list(data, "dt", [])]
+        raise UserError(f"campaign {name}: give one of angles, psi, vt")
+    materials = [m if isinstance(m, dict) else {"material": m} for m in data.get("materials", ["tcc13"])]
+    speeds = ([("speed", v) for v in data.get("speeds", [])]
+              + [("normal_speed", v) for v in data.get("normal_speeds", [])]) or [None]
+    resolutions = ([dict(steps_per_contact=n) for n in data.get("steps_per_contact", [])]
+                   + [dict(dt=d) for d in data.get("dt", [])]
                    + ([dict(converged=True)] if data.get("converged") else [])) or [dict(steps_per_contact=1000)]
+    spins, e_n = data.get("spins", [0.0]), data.get("e_n", [0.5])
+    block = data.get("block", BLOCK)
+    impacts = len(next(iter(sweeps.values()), DEFAULT_ANGLES))
+    external = sum(engine != "reference" for engine in set(engines))
+    bound = (len(variants) * len(materials) * len(speeds) * len(spins) * len(resolutions) * len(e_n)
+             * ((1 + external) * -(-impacts // block) + external))
+    if bound > MAX_TASKS:
+        raise UserError(f"campaign {name}: up to {bound} tasks (law variants x materials x speeds x spins x "
+                        f"resolutions x e_n x runs per engine); at most {MAX_TASKS} are taken: split the campaign")
     options = {engine: dict(o) for engine, o in data.get("engine_options", {}).items()}
     requests = []
     for (law, overrides), material, speed, spin, resolution in itertools.product(
-            variants, materials, speeds or [None], _list(data, "spins", [0.0]), resolutions):
-        keywords = {**material, **sweeps, "en": _list(data, "e_n", [0.5]), "omega0": float(spin), **resolution}
+            variants, materials, speeds, spins, resolutions):
+        keywords = {**material, **sweeps, "en": e_n, "omega0": spin, **resolution}
         if speed is not None:
-            keywords[speed[0]] = float(speed[1])
+            keywords[speed[0]] = speed[1]
         requests.append(Request.from_keywords(law, engines=list(engines), engine_options=options, with_=overrides,
                                               **keywords))
-    block = int(data.get("block", BLOCK))
-    if block < 1:
-        raise UserError(f"{name}: block must be a positive number of impacts, got {block}")
     return Campaign(data.get("name", name), tuple(requests), engines, block)
 
 

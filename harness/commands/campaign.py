@@ -2,12 +2,18 @@
 content-addressed Parquet store that a rerun resumes; `--dry-run` says what it would run and what is cached."""
 import json
 import os
+import sys
+import tempfile
 
+from ..campaign.clusters import Unavailable, remove
 from ..campaign.driver import dry_run, run_campaign
-from ..campaign.executors import executor, slurm_cluster, slurm_options
+from ..campaign.executors import executor
+from ..campaign.limits import max_workers
+from ..campaign.slurm import forget_credentials, preflight, shell_safe, slurm_cluster, slurm_options
 from ..campaign.spec import load
-from ..campaign.store import Store
+from ..campaign.store import DROP, DROP_HELP, Store
 from ..errors import UserError
+from ..files import refuse_unless_regular
 from ..lock import exclusive
 from ..views.campaign_html import write_campaign_report
 from ..views.progress import Progress
@@ -23,7 +29,8 @@ def add(sub, describe):
     p.add_argument("--executor", choices=("local", "dask"), default="local",
                    help="local: in this process; dask: a LocalCluster here unless --scheduler, --scheduler-file or "
                         "--slurm says where")
-    p.add_argument("--workers", type=int, default=None, help="LocalCluster worker processes (default: the cores)")
+    p.add_argument("--workers", type=int, default=None,
+                   help=f"LocalCluster worker processes (default: the cores; at most {max_workers()} here)")
     where = p.add_mutually_exclusive_group()
     where.add_argument("--scheduler", metavar="ADDRESS", help="an existing Dask scheduler, e.g. tcp://host:8786")
     where.add_argument("--scheduler-file", metavar="F", help="an existing Dask scheduler's file")
@@ -33,6 +40,7 @@ def add(sub, describe):
     p.add_argument("--slurm-script", action="store_true", help="print the SLURM job script --slurm would submit")
     p.add_argument("--dry-run", action="store_true", help="print the tasks, what is cached and an estimate; run nothing")
     p.add_argument("--no-cache", action="store_true", help="rerun every task, even those the store holds")
+    p.add_argument(DROP, action="store_true", help=DROP_HELP)
     add_output_options(p, json=True)
     p.set_defaults(func=main)
 
@@ -41,26 +49,74 @@ def main(args):
     campaign = load(args.file)
     slurm = slurm_options(args.slurm) if args.slurm else None
     if args.slurm_script:
-        cluster = slurm_cluster(slurm or {})
+        return print_script(slurm or {})
+    refuse_contradictions(args)
+    report_path = check_store_path(args.output)
+    store = Store(args.output, create=False, drop_damaged=args.drop_damaged) if os.path.isdir(args.output) else None
+    try:
+        if args.dry_run:
+            return report(args, dry_run(campaign, store, args.no_cache), None, dry=True)
+        if slurm is not None:
+            preflight()
+            shell_safe(os.path.abspath(args.output), "store directory (where the workers' credentials go)")
+        given = args.scheduler or args.scheduler_file      # reached before anything is written
+        where = executor(args.executor, scheduler=args.scheduler, scheduler_file=args.scheduler_file) \
+            if given else None
+        try:
+            with exclusive(args.output), Progress(f"campaign {os.path.basename(args.file)}",
+                                                  quiet=args.quiet or args.json) as progress:
+                store = Store(args.output)              # again, now that this process is its only writer
+                where = where or executor(args.executor, args.workers, slurm=slurm, shared=args.output)
+                summary = run_campaign(campaign, store, where, args.no_cache, progress)
+                page = write_campaign_report(store.table(), report_path, campaign.name)
+        finally:
+            if where is not None:
+                where.close()
+    except Unavailable as exc:
+        print(f"harness: error: {exc}", file=sys.stderr)
+        return EXIT_ENGINE
+    return report(args, summary, page)
+
+
+def refuse_contradictions(args):
+    """Options that only mean something together: refused in one line rather than silently ignored."""
+    dask = args.executor == "dask"
+    elsewhere = next((f"--{name}" for name in ("scheduler", "scheduler_file", "slurm") if getattr(args, name)), None)
+    if elsewhere and not dask:
+        raise UserError(f"{elsewhere.replace('_', '-')} runs the campaign on Dask: add --executor dask")
+    if args.workers is not None and not dask:
+        raise UserError("--workers sets the Dask LocalCluster's worker processes: add --executor dask")
+    if args.workers is not None and elsewhere:
+        raise UserError(f"--workers sets a LocalCluster's worker processes; with {elsewhere.replace('_', '-')} the "
+                        "workers are the scheduler's" + (" (--slurm jobs and processes)" if args.slurm else ""))
+    if args.workers is not None and not 1 <= args.workers <= max_workers():
+        raise UserError(f"--workers must be from 1 to {max_workers()} (four per core here), got {args.workers}")
+
+
+def check_store_path(path):
+    """The store directory and its report: writable, no empty path component (`/scratch/$USER/store` with USER
+    unset), the report a new path or a regular file; returns the report's path."""
+    check_output_directory(path)
+    if "//" in path.rstrip("/"):
+        raise UserError(f"store path {path} has an empty component (an unset variable?)")
+    report_path = path.rstrip("/") + ".html"
+    refuse_unless_regular(report_path)
+    return report_path
+
+
+def print_script(slurm):
+    """The job script --slurm would submit (its credential paths are this run's, removed again)."""
+    shared = tempfile.mkdtemp(prefix=f"harness-{os.getpid()}-script-")
+    try:
+        cluster = slurm_cluster(slurm, shared, shared)
         try:
             print(cluster.job_script())
         finally:
             cluster.close()
-        return EXIT_OK
-    if args.workers is not None and args.workers < 1:
-        raise UserError(f"--workers must be at least 1, got {args.workers}")
-    check_output_directory(args.output)
-    if args.dry_run:
-        return report(args, dry_run(campaign, args.output, args.no_cache), None, dry=True)
-    with exclusive(args.output), Progress(f"campaign {os.path.basename(args.file)}",
-                                          quiet=args.quiet or args.json) as progress:
-        where = executor(args.executor, args.workers, args.scheduler, args.scheduler_file, slurm)
-        try:
-            summary = run_campaign(campaign, args.output, where, args.no_cache, progress)
-        finally:
-            where.close()
-        page = write_campaign_report(Store(args.output).table(), args.output.rstrip("/") + ".html", campaign.name)
-    return report(args, summary, page)
+            forget_credentials(cluster)
+    finally:
+        remove(shared)
+    return EXIT_OK
 
 
 def report(args, summary, page, dry=False):

@@ -2,7 +2,7 @@
 import json
 
 from ..baseline import DEFAULT_BASELINE, check, update
-from ..campaign.store import RunCache, Store
+from ..campaign.store import DROP, DROP_HELP, RunCache, Store
 from ..errors import UserError
 from ..views.progress import Progress
 from ..views.terminal import text_table
@@ -16,6 +16,7 @@ def add(sub, describe):
                    help="baseline directory (default: the committed one, shipped with harness)")
     p.add_argument("--store", metavar="STORE", help="a campaign store: runs it holds (computed by this very code: "
                                                     "keys carry a digest of it) are taken from it, the others added")
+    p.add_argument(DROP, action="store_true", help=DROP_HELP)
     add_output_options(p, json=True)
     p.set_defaults(func=main)
     p = describe(sub, "baseline", "rewrite the committed baseline matrix on purpose",
@@ -28,7 +29,7 @@ def add(sub, describe):
 
 def main(args):
     with Progress("check", quiet=args.quiet or args.json) as progress:
-        cache = RunCache(Store(args.store)) if args.store else None
+        cache = RunCache(Store(args.store, drop_damaged=args.drop_damaged)) if args.store else None
         failures, skipped = check(args.baseline, progress=progress, cache=cache)
     code = EXIT_OK if failures.empty else EXIT_DISAGREE
     if args.json:

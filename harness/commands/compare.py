@@ -10,7 +10,7 @@ import pandas as pd
 from ..analyses.physics import DEVIATES
 from ..analyses.verdict import DISAGREE, NOT_COMPARED, verdict
 from ..api import compare_request
-from ..campaign.store import RunCache, Store
+from ..campaign.store import DROP, DROP_HELP, RunCache, Store
 from ..comparison import Comparison
 from ..files import discard
 from ..lock import exclusive
@@ -36,6 +36,7 @@ def add(sub, describe):
     p.add_argument("-o", "--output", default="harness-out", metavar="DIR", help="output directory (default %(default)s)")
     p.add_argument("--store", metavar="STORE", help="a campaign store: runs it holds are taken from it, the others "
                                                     "are added to it")
+    p.add_argument(DROP, action="store_true", help=DROP_HELP)
     verdict_options = p.add_argument_group("physics verdict (does each engine reproduce the paper law?)")
     verdict_options.add_argument("--tolerance", dest="tolerances", action="append", default=[], metavar="NAME=VALUE",
                                  help="a tolerance of the physics verdict, repeatable: velocity= (fraction of the "
@@ -67,7 +68,7 @@ def main(args):
         write_csv(pd.concat(frames, ignore_index=True), results_path)
 
     with exclusive(args.output), Progress(f"compare {request.model}", quiet=args.quiet or args.json) as progress:
-        partial = RunCache(Store(args.store)) if args.store else PartialRuns(args.output)
+        partial = RunCache(Store(args.store, drop_damaged=args.drop_damaged)) if args.store else PartialRuns(args.output)
         try:
             comparison = compare_request(request, on_frame=keep, progress=progress, partial=partial)
         except KeyboardInterrupt:

@@ -6,7 +6,7 @@ import pandas as pd
 
 from ..analyses.cost import COLUMNS, LADDER, convergence_orders, recommendations
 from ..api import options_for, statuses
-from ..campaign.store import RunCache, Store
+from ..campaign.store import DROP, DROP_HELP, RunCache, Store
 from ..cost_plan import TIMING_REPEATS, cost_table
 from ..engines import ENGINES
 from ..errors import UserError
@@ -36,6 +36,7 @@ def add(sub, describe):
     p.add_argument("-o", "--output", default="harness-out", metavar="DIR", help="output directory (default %(default)s)")
     p.add_argument("--store", metavar="STORE", help="a campaign store: the converged truths' runs are taken from it "
                                                     "or added to it (timed runs never are)")
+    p.add_argument(DROP, action="store_true", help=DROP_HELP)
     add_output_options(p, json=True)
     p.set_defaults(func=main)
 
@@ -79,13 +80,14 @@ def main(args):
         adapter.dialect(law.name, options)                    # bad options: exit 2 before anything runs
     skipped = [(s.name, s.reason) for s in found if not s.available]
     overrides = dict(request.overrides)
+    cache = RunCache(Store(args.store, drop_damaged=args.drop_damaged)) if args.store else None
     with exclusive(args.output):
         discard(os.path.join(args.output, "report.html"))     # an earlier report never stands beside this study
         save_cost(args.output, pd.DataFrame(columns=COLUMNS), {}, law, scene, overrides, skipped, [])
         with Progress(f"cost {law.name}", quiet=args.quiet or args.json) as progress:
             table, failures, uncertainty = cost_table(
                 law, scene, adapters, ladder, keep=lambda so_far: write_csv(so_far, os.path.join(args.output, COST)),
-                progress=progress, cache=RunCache(Store(args.store)) if args.store else None)
+                progress=progress, cache=cache)
         save_cost(args.output, table, uncertainty, law, scene, overrides, skipped, failures)
         report = rebuild(args.output)
     asked = set(request.engines or ()) - {"reference"}

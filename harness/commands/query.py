@@ -1,30 +1,33 @@
-"""`harness query STORE "SQL"`: SQL over a campaign store with DuckDB; the store is the view `results`."""
+"""`harness query STORE "SQL"`: one read-only SELECT over a campaign store with DuckDB; the store is the view
+`results`, each task's rows once (harness.campaign.query says what a query may and may not do)."""
+import pandas as pd
+
+from ..campaign.limits import MAX_CELL_CHARS
+from ..campaign.query import query
+from ..campaign.store import DROP, DROP_HELP, Store
 from ..errors import UserError
 from .options import EXIT_OK
 
 
 def add(sub, describe):
-    p = describe(sub, "query", "SQL over a campaign store (DuckDB; the store is the view `results`)",
-                 "harness query campaign-store \"SELECT engine, max(abs(e_t)) FROM results GROUP BY engine\"")
+    p = describe(sub, "query", "one read-only SQL query over a campaign store (DuckDB; the store is the view "
+                 "`results`)", "harness query campaign-store \"SELECT engine, max(abs(e_t)) FROM results GROUP BY "
+                 "engine\"")
     p.add_argument("store", metavar="STORE")
-    p.add_argument("sql", metavar="SQL")
+    p.add_argument("sql", metavar="SQL", help="one SELECT (or WITH, DESCRIBE, SHOW, SUMMARIZE); nothing that writes, "
+                   "reads other files, attaches or installs")
     p.add_argument("--csv", action="store_true", help="print CSV instead of a table")
+    p.add_argument(DROP, action="store_true", help=DROP_HELP)
     p.set_defaults(func=main)
 
 
 def main(args):
-    import glob
-    import os
-
-    import duckdb
-    files = sorted(glob.glob(os.path.join(args.store, "*.parquet")))
-    if not files:
-        raise UserError(f"{args.store} holds no campaign results (no *.parquet files)")
-    connection = duckdb.connect()
-    connection.execute(f"CREATE VIEW results AS SELECT * FROM read_parquet({files!r}, union_by_name = true)")
-    try:
-        frame = connection.execute(args.sql).df()
-    except duckdb.Error as exc:
-        raise UserError(f"query failed: {str(exc).splitlines()[0]}") from None
-    print(frame.to_csv(index=False) if args.csv else frame.to_string(index=False))
+    frame = query(Store(args.store, create=False, drop_damaged=args.drop_damaged), args.sql)
+    widest = max((int(frame.iloc[:, i].astype(str).str.len().fillna(0).max()) for i in range(frame.shape[1])
+                  if len(frame) and not pd.api.types.is_numeric_dtype(frame.iloc[:, i])), default=0)
+    if widest > MAX_CELL_CHARS:
+        raise UserError(f"a value of the result has {widest} characters, more than {MAX_CELL_CHARS} to print: "
+                        "narrow the query")
+    text = frame.to_csv(index=False) if args.csv else frame.to_string(index=False)
+    print(text, end="" if text.endswith("\n") else "\n")
     return EXIT_OK

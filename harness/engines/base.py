@@ -2,12 +2,16 @@
 and status, its dialects composed from sub-models, batching in scratch directories, failures with their log tails)
 and declares every hook a command uses; an engine is a subclass that overrides what differs (docs/engines.md)."""
 import os
+import sys
 from functools import lru_cache
 
 from ..errors import UserError
+from ..laws import compose
+from ..laws.law import replace_submodels
+from .batches import run_grouped
 from .executable import banner, chosen, missing, present
 from .protocol import Status, check_options as check_declared
-from .runner import read_tail
+from .runner import EngineFailure, read_tail
 
 DOUBLE = "double (IEEE 754 binary64)"
 
@@ -39,7 +43,6 @@ class Engine:
 
     def sources(self):
         """The folders of source whose change changes its results (its own subpackage): stored runs are keyed on them."""
-        import sys
         return (os.path.dirname(os.path.abspath(sys.modules[type(self).__module__].__file__)),)
 
     # --- where it is and what it is -----------------------------------------------------------------------------
@@ -104,8 +107,6 @@ class Engine:
     def composition(self, law_name, options, target):
         """Its dialect of the law for its own options: the paper law with DIALECTS (PAIR_DIALECTS against a
         sphere) in place of the paper's sub-models."""
-        from ..laws import compose
-        from ..laws.law import replace_submodels
         self.check_options(law_name, options)
         chosen_ = self.PAIR_DIALECTS if target == "sphere" else self.DIALECTS
         return replace_submodels(compose(law_name), chosen_[law_name], self.dialect_label)
@@ -114,7 +115,6 @@ class Engine:
         """The law as this engine computes it (a harness.laws.Law), for the options given, against a wall or a
         sphere (the two-sphere dialect, reduced to the equivalent wall impact). An option `with:KEY` (with_options)
         replaces sub-model KEY of the dialect, which the engine's inputs then follow."""
-        from ..laws.law import replace_submodels
         options, submodels = split_submodels(options)
         law = self.composition(law_name, options, target)
         return replace_submodels(law, submodels) if submodels else law
@@ -139,8 +139,6 @@ class Engine:
         return options
 
     def _carries(self, law_name, options, target, key, value):
-        from ..laws import compose
-        from ..laws.law import replace_submodels
         try:
             dialect = self.dialect(law_name, options, target)
         except UserError:               # options its inputs refuse for this law or target
@@ -179,7 +177,6 @@ class Engine:
     def run(self, runs):
         """Each run of the plan (one batch: a law, an e_n, every impact) as (results frame, failure or None), each
         told what to run by run.spec; the runs of one flavour share processes, one per core."""
-        from .batches import run_grouped
         return run_grouped(self.NAME, self.version(), runs, self.INPUT_NAME,
                            lambda run: self.render_batch(run.law, run.scene, run.spec, run.options_dict, run.observe),
                            lambda run: self.flavour(run.options_dict), self.run_inputs,
@@ -187,7 +184,6 @@ class Engine:
 
     def run_batch(self, paper_law, scene, spec, timeout_s, workdir, options=None, observe=False):
         """One run's spec alone in `workdir`: (final state as read_batch gives it, wall seconds, log tail)."""
-        from .runner import EngineFailure
         directory = os.path.join(workdir, "batch0")
         os.makedirs(directory, exist_ok=True)
         with open(os.path.join(directory, self.INPUT_NAME), "w") as handle:
@@ -204,7 +200,6 @@ class Engine:
     def render(self, run):
         """(file name, text) of the input a run would give the engine (harness render); a refusal of its input
         rules is the user's to fix, so it is a UserError."""
-        from .runner import EngineFailure
         try:
             text = self.render_batch(run.law, run.scene, run.spec, run.options_dict)
         except EngineFailure as exc:
