@@ -105,6 +105,14 @@ def test_a_changed_law_or_engine_build_changes_the_key():
     assert run.key("0.1.0") != run.key("0.1.1")
 
 
+@needs("liggghts")
+def test_a_variant_replacing_a_sub_model_reaches_the_engine_inputs():
+    campaign = from_dict({**SMALL, "laws": [], "engines": ["liggghts"],
+                          "variants": [{"law": "hertz-mindlin", "with": {"tangential-damping": "none"}}]})
+    liggghts = [run for run in keyed(campaign)[0].values() if run.engine == "liggghts"]
+    assert liggghts and all(run.options_dict["tangential_damping"] == "off" for run in liggghts)
+
+
 def test_the_slurm_job_script_carries_the_options(tmp_path):
     cluster = slurm_cluster({"queue": "debug", "account": "proj", "cores": 4, "memory": "8GB",
                              "walltime": "02:00:00"}, tmp_path, tmp_path)

@@ -4,7 +4,7 @@ import itertools
 import tomllib
 from dataclasses import dataclass, replace
 
-from ..api import statuses
+from ..api import options_for, statuses
 from ..engines import ENGINES
 from ..errors import UserError
 from ..plan import CONVERGED, compare_plan
@@ -96,7 +96,7 @@ def tasks(campaign):
         found = statuses(request)            # an engine without this law is left out of it, not skipped
         skipped.update({s.name: s.reason for s in found
                         if not s.available and ENGINES[s.name].supports(request.law.name)})
-        engines = {ENGINES[s.name]: request.engine_options.get(s.name, {}) for s in found if s.available}
+        engines = {ENGINES[s.name]: options_for(request, s.name) for s in found if s.available}
         engine_resolution = 1000 if request.resolution == CONVERGED else request.resolution
         plan = compare_plan(request.law, request.scene, request.resolution, engines, engine_resolution)
         for run in plan:
