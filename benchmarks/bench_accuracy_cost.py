@@ -19,7 +19,7 @@ from harness.execute import execute
 from harness.laws import compose
 from harness.plan import engine_runs
 from harness.scene import Scene
-from harness.solver.reference import simulate
+from harness.solver.simulate import simulate
 from harness.solver.stability import UnstableTimeStep
 
 TARGET = 1e-4

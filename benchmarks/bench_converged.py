@@ -26,7 +26,7 @@ from harness.cost_plan import truth_of
 from harness.laws import LAWS, compose
 from harness.scene import Scene
 from harness.solver import reference
-from harness.solver.reference import adaptive_batch, simulate, simulate_adaptive
+from harness.solver.simulate import adaptive_batch, simulate, simulate_adaptive
 
 SCENE = Scene(e_n=(0.9, 0.5, 0.1), angles_deg=tuple(np.arange(1.0, 90.0, 2.0)))
 

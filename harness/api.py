@@ -15,7 +15,7 @@ from .outputs import arithmetic_of
 from .plan import CONVERGED, compare_plan, reference_runs, target_of
 from .request import Request
 from .sliding_search import sliding_thresholds
-from .solver.reference import simulate
+from .solver.simulate import simulate
 from .two_spheres import with_bodies
 
 HISTORY_POINTS = 400

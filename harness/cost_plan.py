@@ -9,8 +9,8 @@ from .analyses.cost import (ADAPTIVE, ADAPTIVE_RUNGS, COLUMNS, EXTRAPOLATED, LAD
                             converged_rows, fastest, measure, per_e_n, rayleigh_time, refused, uncertainties)
 from .execute import execute
 from .plan import engine_runs, reference_runs
-from .solver.plan import FixedTimeStep
-from .solver.reference import CONVERGED_START, adaptive_batch, simulate, simulate_adaptive, simulate_extrapolated
+from .solver.batch import FixedTimeStep
+from .solver.simulate import CONVERGED_START, adaptive_batch, simulate, simulate_adaptive, simulate_extrapolated
 from .solver.stability import UnstableTimeStep
 
 TRUTH_STEPS = {"paper": 2 ** 16, "engine": 2 ** 18}   # the engines' schemes are first order: a finer truth

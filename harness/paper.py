@@ -15,7 +15,7 @@ from .scene import DEFAULT_EN, Scene
 from .analyses.published import published_distances
 from .analyses.sliding import threshold_table
 from .sliding_search import sliding_thresholds
-from .solver.reference import simulate
+from .solver.simulate import simulate
 
 NORMAL_EN = tuple(sorted(set(np.round(np.arange(0.1, 0.951, 0.05), 6)) | set(DEFAULT_EN)))
 

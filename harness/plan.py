@@ -10,7 +10,7 @@ from functools import cached_property
 
 import numpy as np
 
-from .solver.plan import FixedTimeStep, join, plan_batch
+from .solver.batch import FixedTimeStep, join, batch_of
 
 CONVERGED = "converged"       # the resolution of the converged mode
 SCHEMA = 1                    # of the results table and of the key: a change makes every key new
@@ -75,8 +75,8 @@ class Run:
     def batch(self):
         """The kernel rows of this run (their time step is the engine's too: agreement is at equal dt)."""
         if not self.together:
-            return plan_batch(self.dialect, self.scene, self.e_n, self.resolution)
-        return join([plan_batch(self.dialect, s, self.e_n, self.resolution) for s in (self.scene,) + self.together])
+            return batch_of(self.dialect, self.scene, self.e_n, self.resolution)
+        return join([batch_of(self.dialect, s, self.e_n, self.resolution) for s in (self.scene,) + self.together])
 
     @cached_property
     def spec(self):

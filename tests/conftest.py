@@ -45,7 +45,7 @@ def assert_head_on_pair_is_wall(pair, wall_form):
     import numpy as np
     from harness.laws.law import replace_submodels
     from harness.request import scene_from
-    from harness.solver.reference import simulate
+    from harness.solver.simulate import simulate
     scene = scene_from(en=(0.3, 0.8), angles=(0.0,), target="sphere", target_radius=0.04)
     a = simulate(pair, scene, steps_per_contact=300)[0]
     b = simulate(replace_submodels(pair, wall_form), scene, steps_per_contact=300)[0]

@@ -118,7 +118,7 @@ def test_the_papers_tangential_dashpot_is_accurate_if_not_smooth_in_h(dashpot):
     and slides again against a reversed slip the error is not smooth in h (docs/numerics.md), which this bound
     tolerates. Spring first (the paper's default) the spring and a strong dashpot take the force in turns near the
     release at low e, a first-order sliding mode: 4000 steps are at least 2x closer."""
-    from harness.solver.reference import simulate
+    from harness.solver.simulate import simulate
     scene = Scene(e_n=(0.9, 0.5, 0.25), angles_deg=tuple(np.linspace(5.0, 85.0, 12)))
     finer = 2000 if dashpot.endswith(":total") else 4000
     for name in ("hertz-mindlin", "linear-spring-dashpot"):

@@ -121,7 +121,7 @@ def test_a_run_spec_covers_its_step_cap_in_tenths_of_a_contact():
         spec = run.spec
         assert spec.chunk == max(10, steps // 10) and spec.steps_per_contact == pytest.approx(steps)
         assert spec.chunks * spec.chunk > spec.step_cap >= (spec.chunks - 1) * spec.chunk
-        assert spec.step_cap > 20 * steps and spec.impacts == 2       # at least 20 contact times (solver/plan.py)
+        assert spec.step_cap > 20 * steps and spec.impacts == 2       # at least 20 contact times (solver/batch.py)
         capped = replace(run, step_cap=1)
         assert capped.spec.step_cap == 1 and capped.spec.chunks == 1 and capped.spec.dt == spec.dt
         assert capped.key("v") != run.key("v") and replace(run).key("v") == run.key("v")

@@ -53,7 +53,7 @@ def test_tsuji_damping_returns_the_reported_restitution_and_the_dialect_says_why
     for e in (0.3, 0.6, 0.9):
         assert cal.polynomial_tsuji_A(e) / cal.tsuji_tension_A(e) == pytest.approx(1.0 / math.sqrt(2.0), rel=3e-3)
     exact = compose("hertz-mindlin", {"damping": "tsuji:tension", "end": "tension"})
-    from harness.solver.reference import simulate
+    from harness.solver.simulate import simulate
     assert np.allclose(simulate(exact, scene, steps_per_contact=1000)[0].e_n, [0.3, 0.6, 0.9], atol=2e-4)
 
 

@@ -117,7 +117,7 @@ def test_rebuilding_the_report_simulates_nothing(report, monkeypatch):
     """`harness report DIR` reads the directory only: the kernel and every engine are made to fail, and the
     rebuilt report still holds the same tables and figures."""
     import harness.engines.runner as runner
-    import harness.solver.reference as reference
+    import harness.solver.simulate as reference
     from harness.views.html import rebuild
 
     def forbidden(*args, **kwargs):

@@ -15,7 +15,7 @@ from ..lock import exclusive
 from ..outputs import COST, save_cost
 from ..request import Request
 from ..results import write_csv
-from ..solver.plan import MAX_STEPS_PER_CONTACT
+from ..solver.batch import MAX_STEPS_PER_CONTACT
 from ..views.html import rebuild
 from ..views.progress import Progress
 from ..views.terminal import print_cost

@@ -5,17 +5,20 @@ import os
 import numpy as np
 import pandas as pd
 
+from ..analyses.physics import CHECK_WORDS, Tolerances
+from ..analyses.published import published_distances
+from ..analyses.verdict import verdict
+from ..digitised import points_of, published_curves_apply
 from ..files import write_text
 from ..kinematics import CONVENTIONS
+from ..outputs import kinds, load_comparison, load_cost
 from ..render import environment
 from ..version import __version__
-from ..analyses.verdict import verdict
-from ..analyses.published import published_distances
-from ..digitised import published_curves_apply
 from . import style
+from .cost_html import cost_section
 from .drawing import draw_all
+from .paper_axes import ANGLE_LABELS, PANELS, PSI1_RANGE, draw_published, draw_rigid_body, in_window, set_paper_axes
 from .pieces import figure_svg, number, records, si
-from ..analyses.physics import CHECK_WORDS, Tolerances
 
 
 def engines_ran(frame):
@@ -47,9 +50,6 @@ def series_figure(frame, title, x, ys, thresholds=None, published=None):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    from ..digitised import points_of
-    from .paper_axes import (ANGLE_LABELS, PANELS, PSI1_RANGE, draw_published, draw_rigid_body, in_window,
-                             set_paper_axes)
     paper = x == "psi1_star"
     beyond = {}
     if paper:
@@ -131,7 +131,6 @@ def hertz_ratios(normal, contact, speed):
 def rebuild(out_dir):
     """Write DIR/report.html from the files in DIR alone (a comparison, a cost study or both); returns its path.
     The report is always built from the saved data, so `harness report DIR` simulates nothing."""
-    from ..outputs import kinds, load_comparison, load_cost
     has_compare, has_cost = kinds(out_dir)
     return write_report(out_dir, load_comparison(out_dir) if has_compare else None,
                         load_cost(out_dir) if has_cost else None)
@@ -140,7 +139,6 @@ def rebuild(out_dir):
 def write_report(out_dir, comparison=None, cost=None):
     """Render DIR/report.html (self-contained) from a Comparison, a cost study (table, truth uncertainty, its run
     record) or both; returns its path."""
-    from .cost_html import cost_section
     env = environment(autoescape=True)
     cost_part = cost_section(*cost) if cost is not None else None
     files = sorted(name for name in os.listdir(out_dir) if name.endswith((".csv", ".json")))

@@ -9,8 +9,8 @@ import numpy as np
 from harness.engines.base import Engine
 from harness.engines.runner import EngineFailure
 from harness.solver import codes as C
-from harness.solver.plan import plan_batch
-from harness.solver.reference import run_kernel
+from harness.solver.batch import batch_of
+from harness.solver.simulate import run_kernel
 
 
 class StandIn(Engine):
@@ -47,7 +47,7 @@ class StandIn(Engine):
         with open(os.path.join(directory, self.INPUT_NAME)) as handle:
             record = json.load(handle)
         dialect = self.dialect(record["law"], record["options"], "sphere" if scene.spheres else "wall")
-        batch = plan_batch(dialect, scene, spec.e_n, spec.steps_per_contact)
+        batch = batch_of(dialect, scene, spec.e_n, spec.steps_per_contact)
         if len(batch.v_n0) != spec.impacts or batch.dt != spec.dt:
             raise EngineFailure("the stand-in runs one scene's impacts at its own steps per contact")
         batch.params[:, C.P_MAXSTEPS] = np.minimum(batch.params[:, C.P_MAXSTEPS], spec.step_cap)
