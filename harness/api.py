@@ -51,10 +51,10 @@ def compare(model, engines=None, engine_options=None, **keywords):
     return compare_request(Request.from_keywords(model, engines=engines, engine_options=engine_options, **keywords))
 
 
-def statuses(request):
+def statuses(request, refuse=True):
     """The Status of every external engine for the request: asked for (or every one when none was named), able to run
     the law, to express the scene and to follow its replacements (--with; an engine named in --engines that cannot is
-    refused, one that was not is skipped with the reason)."""
+    refused when `refuse`, as compare does, and otherwise skipped with the reason, as a campaign's variants are)."""
     names = [e for e in (request.engines if request.engines is not None else EXTERNAL) if e != "reference"]
     out = []
     scene = request.scene
@@ -70,7 +70,7 @@ def statuses(request):
             try:
                 options_for(request, name)
             except UserError as exc:
-                if request.engines is not None:
+                if refuse and request.engines is not None:
                     raise
                 unsupported = str(exc)
         if unsupported:

@@ -93,7 +93,7 @@ def tasks(campaign):
     """(the campaign's tasks as Runs, [(engine, reason)] of engines asked for that cannot run)."""
     runs, skipped = [], {}
     for request in campaign.requests:
-        found = statuses(request)            # an engine without this law is left out of it, not skipped
+        found = statuses(request, refuse=False)      # an engine without this law is left out of it, not skipped
         skipped.update({s.name: s.reason for s in found
                         if not s.available and ENGINES[s.name].supports(request.law.name)})
         engines = {ENGINES[s.name]: options_for(request, s.name) for s in found if s.available}
