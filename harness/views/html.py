@@ -17,7 +17,8 @@ from ..version import __version__
 from . import style
 from .cost_html import cost_section
 from .drawing import draw_all
-from .paper_axes import ANGLE_LABELS, PANELS, PSI1_RANGE, draw_published, draw_rigid_body, in_window, set_paper_axes
+from .paper_axes import (ANGLE_LABELS, PAPER_PANELS, PSI1_RANGE, draw_published, draw_rigid_body, in_window,
+                         set_paper_axes)
 from .pieces import figure_svg, number, records, si
 
 
@@ -70,7 +71,7 @@ def series_figure(frame, title, x, ys, thresholds=None, published=None):
                 points = points_of(published, ys[0], e_n)
                 if not points.empty:
                     draw_published(ax, points, "tab:red", "published (TCC13, digitised)")
-            set_paper_axes(ax, ys[0], dict((c, label) for c, label, _ in PANELS)[ys[0]], int(beyond.get(e_n, 0)))
+            set_paper_axes(ax, ys[0], dict((c, label) for c, label, _ in PAPER_PANELS)[ys[0]], int(beyond.get(e_n, 0)))
             threshold = (thresholds or {}).get(e_n)
             if threshold is not None and np.isfinite(threshold):
                 ax.axvline(threshold, color="0.4", ls=":", lw=1, label=f"slides throughout (Psi1* >= {threshold:.3f})")
