@@ -23,8 +23,11 @@ class Lammps(Engine):
             "the paper's dashpot is calibrated for a force clipped at 0; LAMMPS does not clip (docs/lammps-dialect.md)",
     }
     COLOUR, DASHES = "tab:purple", "-."
-    render_batch, run_inputs = staticmethod(render_batch), staticmethod(run_inputs)
+    render_batch = staticmethod(render_batch)
     read_batch = staticmethod(read_batch)
+
+    def run_inputs(self, flavour, count, timeout_s, workdir):
+        return run_inputs(self.binary(), count, timeout_s, workdir)
 
     def read_version(self, text):
         """'29Sep2021_update2' (the stable release's own spelling) from the banner of `lmp -h`, '29 Sep 2021 -

@@ -9,18 +9,14 @@ from ...render import render
 from ...version import __version__
 from ..base import split_submodels
 from ..dumps import read_final, read_observed, read_pair_batch, rebound
-from ..executable import chosen
-from ..runner import EngineFailure, run_engine
+from ..batches import in_one_process
+from ..runner import EngineFailure
 from .dialect import dialect, walls, words
 
 TEMPLATES = Path(__file__).resolve().parent / "templates"
 INPUT = "in.harness"
 OBSERVE_DUMP = "observe.dump"   # observe mode: `id z fz` of every sphere in contact, every step
 BINARY_VARIABLE = "HARNESS_LAMMPS"      # path of another lmp binary (a custom build, or a test's fake)
-
-
-def binary():
-    return chosen(BINARY_VARIABLE, "lmp")
 
 
 def settings(law, scene, e_n, options=None):
@@ -112,16 +108,9 @@ def deck(law, scene, spec, options=None, observe=False):
                   max_chunks=spec.chunks, observe=bool(observe), **settings(law, scene, spec.e_n, options))
 
 
-def run_inputs(_, count, timeout_s, workdir):
-    """The decks batch<k>/in.harness in one LAMMPS process (one start-up; `clear` between them, each writing into its
-    own directory): each batch's share of the wall seconds."""
-    lines = []
-    for k in range(count):
-        lines += [f"shell cd batch{k}", f"include {INPUT}", "clear", "shell cd .."]
-    with open(os.path.join(workdir, "in.driver"), "w") as handle:
-        handle.write("\n".join(lines) + "\n")
-    done = run_engine([binary(), "-in", "in.driver", "-log", "none", "-echo", "none", "-nocite"], workdir, timeout_s)
-    return [done.wall_s / count] * count
+def run_inputs(lmp, count, timeout_s, workdir):
+    """The decks batch<k>/in.harness in one process of the LAMMPS executable `lmp` (batches.in_one_process)."""
+    return in_one_process([lmp, "-log", "none", "-echo", "none", "-nocite"], INPUT, count, timeout_s, workdir)
 
 
 def read_batch(scene, spec, directory, observe=False):

@@ -34,8 +34,11 @@ class Liggghts(Engine):
     }
     COLOUR, DASHES = "tab:orange", "--"
     STARTUP_S, SPHERE_STEP_S = 0.5, 0.05e-6
-    render_batch, run_inputs = staticmethod(render_batch), staticmethod(run_inputs)
+    render_batch = staticmethod(render_batch)
     read_batch = staticmethod(read_batch)
+
+    def run_inputs(self, flavour, count, timeout_s, workdir):
+        return run_inputs(self.binary(), count, timeout_s, workdir)
 
     def read_version(self, text):
         """'3.8.0' from the banner the binary prints."""
