@@ -29,10 +29,11 @@ def settings(law, scene, e_n, options=None, version=None):
     viscoelastic; x_gamma_t = c_t/c_n, a constant for each counterpart (Mindlin's k_t and the Tsuji dashpot both grow
     as alpha^1/2 and alpha^1/4). history: k_n (4/3 E* for hertz/history), k_t (8 G*), gamma_n = c_n/m (c_n/(m sqrt R)
     for hertz/history), gamma_t = c_t/m, and dampflag 1 where there is a tangential dashpot. A sub-model among the
-    options (a mapped `--with`) replaces that of the dialect, and the numbers follow it."""
+    options (a mapped `--with`) replaces that of the dialect, and the numbers follow it; the dialect is LAMMPS
+    `version`'s."""
     options, submodels = split_submodels(options)
-    style, normal, damping, tangential = words(law.name, options)
-    own = dialect(law.name, options, "sphere" if scene.spheres else "wall")
+    style, normal, damping, tangential = words(law.name, options, version)
+    own = dialect(law.name, options, "sphere" if scene.spheres else "wall", version)
     if submodels:
         from ...laws.law import replace_submodels
         own = replace_submodels(own, submodels)
