@@ -95,7 +95,7 @@ def dialect(law_name, options=None, target="wall", version=None):
     slip from the full radii and torque from R_i - d/2, contact from overlap > 0."""
     from ...laws import compose
     from ...laws.law import replace_submodels
-    options = check_options(law_name, options)
+    options = check_options(law_name, options, version)
     if target == "sphere":
         if options:
             raise UserError(f"LAMMPS' pair inputs take no option, got {', '.join(options)}")
