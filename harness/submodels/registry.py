@@ -23,7 +23,7 @@ from .normal.thornton import Thornton
 from .normal.walton_braun import WaltonBraun
 from .normal.cundall_strack import CundallStrackSpring
 from .normal.luding_incremental import LudingIncremental
-from .tangential.mindlin_wall_coefficient import MindlinWallCoefficient
+from .tangential.mindlin_wall_coefficient import MindlinPairCoefficient, MindlinWallCoefficient
 from .tangential.linear import LinearTangential
 from .tangential.mindlin import Mindlin
 from .tangential.mindlin_deresiewicz import MindlinDeresiewicz
@@ -158,7 +158,7 @@ ENGINE_NORMAL_MODELS = {cls.name: cls for cls in (LudingPeak, ThorntonNing, Cund
                                                    HertzWallModulus)}
 TANGENTIAL_MODELS = {cls.name: cls for cls in (LinearTangential, Mindlin, MindlinDeresiewicz, WaltonBraunTangential,
                                                ViscousTangential)}
-ENGINE_TANGENTIAL_MODELS = {cls.name: cls for cls in (MindlinWallCoefficient,)}
+ENGINE_TANGENTIAL_MODELS = {cls.name: cls for cls in (MindlinWallCoefficient, MindlinPairCoefficient)}
 DAMPING_MODELS = {cls.name: cls for cls in (NoDamping, LinearDashpot, TsujiDashpot, KuwabaraKonoDashpot)}
 INTEGRATORS = {s.name: s for s in stepping.INTEGRATORS}          # stepping sub-models: the codes the steppers take
 COULOMB_RULES = {s.name: s for s in stepping.COULOMB_RULES}

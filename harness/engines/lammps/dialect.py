@@ -1,7 +1,8 @@
-"""What LAMMPS (29 Sep 2021) computes for each law through `fix wall/gran` and `fix nve/sphere`, as a composition of
-sub-models (docs/lammps-dialect.md), and its options."""
+"""What LAMMPS computes for each law through `fix wall/gran` and `fix nve/sphere`, as a composition of sub-models
+keyed on the release (docs/lammps-dialect.md#versions), and its options."""
 from ...errors import UserError
 from ..protocol import Option, check_options as check_declared
+from .versions import holds, spelled
 
 GRANULAR = {                  # harness law -> LAMMPS granular (normal, damping, tangential) sub-models
     "linear-spring-dashpot": ("hooke", "mass_velocity", "linear_history"),
@@ -17,7 +18,18 @@ OPTIONS = {                  # declared options, default first (`--engine-option
                     "wall/gran granular, or the older hooke/history (linear-spring-dashpot), hertz/history "
                     "(hertz-kuwabara-kono)"),
     "tangential": Option(tuple(MINDLIN_FORMS), "the Mindlin spring of the granular style's hertz/material laws"),
+    "damping": Option(("tsuji", "coeff_restitution"),
+                      "hertz-mindlin's normal dashpot: Tsuji's polynomial, or coeff_restitution (from 2024.8.29)"),
 }
+DAMPING_LAWS = ("hertz-mindlin",)     # laws whose granular deck takes the `damping` option
+INGREDIENTS = {              # ingredient -> ((first, last release it holds for, choice), ...), read from each release
+    # hertz/material against a wall: the wall's own E/(2(1 - nu)) and E/4 (2 - nu)(1 + nu) (fix_wall_gran.cpp,
+    # FixWallGran::granular), then the pair's E* and G* (gran_sub_mod.cpp, mix_stiffnessE_wall/mix_stiffnessG_wall)
+    "wall-moduli": (((2021, 9, 29, 2), (2022, 6, 23, 4), "wall"), ((2023, 8, 2, 3), None, "pair")),
+    # `damping coeff_restitution` (gran_sub_mod_damping.cpp, GranSubModDampingCoeffRestitution): absent, then there
+    "coeff_restitution": (((2021, 9, 29, 2), (2023, 8, 2, 3), False), ((2024, 8, 29, 3), None, True)),
+}
+DAMPING = {"tsuji": "tsuji:polynomial", "coeff_restitution": "tsuji:tension"}   # A(e) polynomial; sqrt5 beta
 COMMON = {"end": "tension", "integrator": "velocity-verlet", "coulomb": "total", "lever": "0"}
 PAIR = {**COMMON, "geometry": "pair"}     # two spheres: their relative motion, the normal turning
 HERTZ = {**COMMON, "normal": "hertz-wall-modulus"}
@@ -37,9 +49,15 @@ HISTORY_DIALECTS = {         # the older styles take harness' own k_n, E* and G*
 }
 
 
-def check_options(law_name, options):
-    """The LAMMPS options given, validated; one clear line for a bad one (each option where its law has it)."""
+def check_options(law_name, options, version=None):
+    """The LAMMPS options given, validated; one clear line for a bad one (each option where its law and release have
+    it)."""
     options = check_declared("lammps", OPTIONS, options)
+    if "damping" in options and (law_name not in DAMPING_LAWS or options.get("style", "granular") != "granular"):
+        raise UserError(f"the damping option is for the granular style's {', '.join(DAMPING_LAWS)}, not {law_name}")
+    if options.get("damping") == "coeff_restitution" and version and not holds(INGREDIENTS["coeff_restitution"],
+                                                                                 version):
+        raise UserError(f"LAMMPS {version} has no damping coeff_restitution (it exists from 2024.8.29)")
     if options.get("style", "granular") == "history" and law_name not in HISTORY_STYLES:
         raise UserError(f"LAMMPS has no older wall style for {law_name}; style history is for "
                         f"{', '.join(HISTORY_STYLES)}")
@@ -49,13 +67,13 @@ def check_options(law_name, options):
     return options
 
 
-def words(law_name, options):
+def words(law_name, options, version=None):
     """(style, normal, damping, tangential) words of the deck for `law_name` with the options given."""
-    options = check_options(law_name, options)
+    options = check_options(law_name, options, version)
     if options.get("style", "granular") == "history":
         return HISTORY_STYLES[law_name], None, None, None
     normal, damping, tangential = GRANULAR[law_name]
-    return "granular", normal, damping, options.get("tangential", tangential)
+    return "granular", normal, options.get("damping", damping), options.get("tangential", tangential)
 
 
 def walls(law_name, options=None):
@@ -68,7 +86,7 @@ def walls(law_name, options=None):
     return ("same", "other", "rigid") if style in HISTORY_STYLES.values() or normal == "hooke" else ("same",)
 
 
-def dialect(law_name, options=None, target="wall"):
+def dialect(law_name, options=None, target="wall", version=None):
     """The law as LAMMPS computes it through fix wall/gran and fix nve/sphere: LIGGGHTS' velocity Verlet steps
     (forces from the half-step velocities, contact from gap 0, no clipping of the normal force), lever R, the Coulomb
     cap on spring plus dashpot (Coulomb rule `total`); the granular style's own wall moduli E_w = E/(2(1 - nu)) and
@@ -77,7 +95,7 @@ def dialect(law_name, options=None, target="wall"):
     slip from the full radii and torque from R_i - d/2, contact from overlap > 0."""
     from ...laws import compose
     from ...laws.law import replace_submodels
-    options = check_options(law_name, options)
+    options = check_options(law_name, options, version)
     if target == "sphere":
         if options:
             raise UserError(f"LAMMPS' pair inputs take no option, got {', '.join(options)}")
@@ -87,5 +105,21 @@ def dialect(law_name, options=None, target="wall"):
     overrides = dict(DIALECTS[law_name])
     if GRANULAR[law_name][0] == "hertz/material":
         form = MINDLIN_FORMS[options.get("tangential", "mindlin")]
-        overrides["tangential"] = f"mindlin-wall-coefficient:{form}"
+        if holds(INGREDIENTS["wall-moduli"], version) == "wall":
+            overrides["tangential"] = f"mindlin-wall-coefficient:{form}"
+        else:
+            overrides.update(normal="hertz", tangential=f"mindlin-pair-coefficient:{form}")
+    if "damping" in options:
+        overrides["damping"] = DAMPING[options["damping"]]
     return replace_submodels(compose(law_name), overrides, "lammps")
+
+
+def ingredients(version):
+    """{ingredient: choice} of the release nearest to `version` that was checked (versions.py)."""
+    return {name: holds(ranges, version) for name, ranges in INGREDIENTS.items()}
+
+
+def ranges_text(name):
+    """'2021.9.29.2 - 2022.6.23.4: wall; 2023.8.2.3 -: pair' for the docs and the report."""
+    return "; ".join(f"{spelled(first)} - {spelled(last) if last else ''}: {choice}"
+                     for first, last, choice in INGREDIENTS[name])
