@@ -2,6 +2,7 @@
 and status, its dialects composed from sub-models, batching in scratch directories, failures with their log tails)
 and declares every hook a command uses; an engine is a subclass that overrides what differs (docs/engines.md)."""
 import copy
+import dataclasses
 import os
 import shutil
 import sys
@@ -85,10 +86,14 @@ class Engine:
         build.NAME = f"{self.code}@{build.version()}"
         return build
 
+    def executable_file(self):
+        """The file whose content is the engine (hashed into every result): the binary itself."""
+        return shutil.which(self.binary()) or self.binary()
+
     def build(self):
-        """What ran: {version, binary, sha256, origin} (the record of every result)."""
+        """What ran: {version, binary, sha256 of its executable file, origin} (the record of every result)."""
         path = shutil.which(self.binary()) or self.binary()
-        return {"version": self.version(), "binary": os.path.abspath(path), "sha256": sha256(path),
+        return {"version": self.version(), "binary": os.path.abspath(path), "sha256": sha256(self.executable_file()),
                 "origin": self.origin or self.default_origin()}
 
     def dialect_note(self):
@@ -161,7 +166,8 @@ class Engine:
         replaces sub-model KEY of the dialect, which the engine's inputs then follow."""
         options, submodels = split_submodels(options)
         law = self.composition(law_name, options, target)
-        return replace_submodels(law, submodels) if submodels else law
+        law = replace_submodels(law, submodels) if submodels else law
+        return law if law.dialect == self.dialect_label else dataclasses.replace(law, dialect=self.dialect_label)
 
     def with_options(self, law_name, overrides, options=None, target="wall"):
         """The engine options (those given, and more) that make its inputs compute the law with `overrides` (--with

@@ -34,6 +34,7 @@ def run_facts(frame, arithmetic):
     rows = []
     for (engine, dialect), group in frame.groupby(["engine", "dialect"], sort=False):
         rows.append({"engine": engine, "dialect": dialect, "version": str(group.engine_version.iloc[0]),
+                     "binary": str(group.engine_binary.iloc[0]), "sha256": str(group.engine_sha256.iloc[0])[:16],
                      "arithmetic": arithmetic.get(engine, "double"),
                      "steps per contact": ", ".join(f"{n:.4g}" for n in group.steps_per_contact.unique()),
                      "dt min [s]": group.dt.min(), "dt max [s]": group.dt.max(), "impacts": len(group),
@@ -207,4 +208,6 @@ def compare_context(comparison, files=()):
                 agreement=records(comparison.agreement), physics=records(checks), deviation=records(comparison.deviation), cross=cross,
                 findings=records(comparison.findings), failures=comparison.failures, precision=records(precision),
                 ratios=ratios, sliding=records(sliding), published=records(distances),
-                attributions=[(name, records(table)) for name, table in comparison.attribution.items()])
+                attributions=[(name, records(table)) for name, table in comparison.attribution.items()],
+                versions=records(comparison.versions) if not comparison.versions.empty else None,
+                notes=[(engine, b["note"]) for engine, b in comparison.builds.items() if b.get("note")])

