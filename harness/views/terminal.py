@@ -56,7 +56,7 @@ def print_summary(record, comparison, written):
         print("largest deviation from the paper law (relative to the incident speed V; the spin as R omega1/V):")
         for e in engines:
             for d in e["deviation"]:
-                print(f"  {e['engine']:{width}s} {d['metric']:7s} {d['difference']:+11.4g} {d['unit']:6s} "
+                print(f"  {e['engine']:{max(10, len(e['engine']))}s} {d['metric']:7s} {d['difference']:+11.4g} {d['unit']:6s} "
                       f"{d['relative']:+8.2%} of {d['relative_to']:4s} at e_n {d['e_n_target']:g}, {d['theta_deg']:g} deg")
     print_versions(comparison.versions)
     for finding in told_once(record):
