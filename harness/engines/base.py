@@ -169,6 +169,11 @@ class Engine:
         law = replace_submodels(law, submodels) if submodels else law
         return law if law.dialect == self.dialect_label else dataclasses.replace(law, dialect=self.dialect_label)
 
+    def release_dialect(self, law_name, release):
+        """Its dialect of the law against a wall as it was for another release (the same where its formulas do not
+        depend on the release)."""
+        return self.dialect(law_name)
+
     def with_options(self, law_name, overrides, options=None, target="wall"):
         """The engine options (those given, and more) that make its inputs compute the law with `overrides` (--with
         KEY=VALUE); a UserError naming the first they cannot: an override maps where WITH declares options for it

@@ -65,6 +65,9 @@ class Lammps(Engine):
     def composition(self, law_name, options, target):
         return dialect(law_name, options, target, self.version())
 
+    def release_dialect(self, law_name, release):
+        return dialect(law_name, {}, "wall", release)
+
 
 ENGINE = Lammps()
 
