@@ -223,3 +223,30 @@ def test_a_stepping_field_no_stepper_takes_alone_is_switched_with_the_others_and
     change = (both.omega_star - run(dialect, scene).omega_star).to_numpy()
     assert row.d_omega_star == pytest.approx(change[np.argmax(np.abs(change))], abs=1e-12)
     assert abs(row.d_omega_star) > 1e-3 and np.isfinite(table.loc["coulomb"].d_e_t)
+
+
+def test_the_coulomb_bound_is_checked_from_below_where_the_paper_law_slides_throughout():
+    """Hand-made impacts at mu 0.1, V_n 1 m/s: the paper law rebounds at v_n1 0.5 with |J_t| = mu J_n (0.15 m/s
+    taken off v_t0 2); an engine that takes 0.12 off transmits 0.8 mu J_n, one that takes 0.15 off is not flagged,
+    and an impact the paper law sticks on (it takes less than mu J_n) is not compared."""
+    from harness.analyses.findings import under_friction
+    common = dict(model="m", e_n_target=0.5, v_n0=1.0, omega0=0.0, mu=0.1, radius=0.01, E=1e9, nu=0.3, rho=2500.0,
+                  v_n1=0.5, status="ok", t_contact=np.nan)
+    rows = []
+    for theta, v_t0, paper_dv in ((60.0, 2.0, 0.15), (5.0, 0.0875, 0.05)):
+        for engine, dialect, dv in (("reference", "paper", paper_dv), ("lmp", "lmp", 0.12), ("ok", "ok", 0.15)):
+            rows.append({**common, "engine": engine, "dialect": dialect, "theta_deg": theta, "v_t0": v_t0,
+                         "v_t1": v_t0 - (dv if theta == 60.0 or engine == "reference" else 0.04)})
+    found = under_friction(pd.DataFrame(rows))
+    assert [(f["engine"], f["kind"]) for f in found] == [("lmp", "Coulomb bound from below")]
+    assert "1 impacts" in found[0]["detail"] and "worst |J_t| 0.800 mu J_n at e_n 0.5, 60 deg" in found[0]["detail"]
+
+
+def test_a_build_of_a_release_its_dialects_were_not_checked_on_is_flagged():
+    from harness.engines import ENGINES
+    liggghts = ENGINES["liggghts"]
+    other = type(liggghts)()
+    other.version = lambda: "3.9.1"
+    assert other.dialect_note() == "liggghts's dialects were checked on 3.8.0, not on 3.9.1"
+    other.version = lambda: "3.8.0"
+    assert other.dialect_note() == ""

@@ -59,6 +59,9 @@ def print_summary(record, comparison, written):
                 print(f"  {e['engine']:{max(10, len(e['engine']))}s} {d['metric']:7s} {d['difference']:+11.4g} {d['unit']:6s} "
                       f"{d['relative']:+8.2%} of {d['relative_to']:4s} at e_n {d['e_n_target']:g}, {d['theta_deg']:g} deg")
     print_versions(comparison.versions)
+    for engine, build in comparison.builds.items():
+        if build.get("note"):
+            print(wrapped(f"note: {engine}: {build['note']}"))
     for finding in told_once(record):
         print(wrapped(f"finding: {finding['engine']} ({finding['dialect']}): {finding['kind']}: {finding['detail']}"))
     for skipped in record["skipped"]:

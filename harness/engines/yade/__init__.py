@@ -21,6 +21,7 @@ class Yade(Engine):
     NAME = "yade"
     INPUT_SUFFIX, INPUT_NAME = ".py", "harness_yade.py"
     EXECUTABLE, VARIABLE = "/usr/bin/python3.11", PYTHON_VARIABLE
+    VERIFIED = ("2023.02a",)    # Debian 12's, the release its dialects were read from and checked on
     OPTIONS, COUNTERPARTS, DIALECTS, PAIR_DIALECTS = OPTIONS, COUNTERPARTS, DIALECTS, PAIR_DIALECTS
     KNOWN_CAUSES = {
         ("hertz-mindlin", "e_n off target"): "Thornton 2013 App. B fit degrades above e_n 0.95 (docs/laws.md)",
