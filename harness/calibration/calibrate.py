@@ -144,7 +144,7 @@ def variation(dialect, scene, steps):
         for radius in RADII:
             varied = replace(scene, speed=scene.speed * speed, radius=scene.radius * radius)
             for target in scene.e_n:
-                found = restitution_input(dialect, varied, target, steps)
+                needed = restitution_input(dialect, varied, target, steps)
                 rows.append({"speed_m_s": varied.speed, "radius_m": varied.radius, "e_n_target": target,
-                             "input_e": found.value, "note": found.reason})
+                             "input_e": needed.value, "note": needed.reason})
     return pd.DataFrame(rows)
