@@ -56,6 +56,10 @@ def test_lammps_tsuji_given_the_calibrated_e_returns_the_target_in_the_engine(tm
         ["alternatives.csv", "attribution.csv", "calibration.json", "inputs.csv", "report.html", "results.csv",
          "stages.csv", "timestep.csv", "variation.csv"] +
         [f"lammps-hertz-mindlin-en{e:g}-calibrated.in" for e in (0.3, 0.6, 0.95)])
+    tried = pd.read_csv(out / "alternatives.csv").set_index("options")
+    tuned = [o for o in tried.index if o.startswith("with:tangential-damping=")]       # LAMMPS' x_gamma_t, searched
+    assert len(tuned) == 1 and tried.loc[tuned[0], "worst velocity / tolerance"] < \
+        tried.loc["default options", "worst velocity / tolerance"]
     again = tmp_path / "again"
     assert main(["render", "--calibration", str(out / "calibration.json"), "-o", str(again)]) == 0
     for name in os.listdir(again):

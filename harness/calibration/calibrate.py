@@ -13,7 +13,7 @@ from ..analyses.physics import IMPACT, Tolerances, engine_physics
 from ..execute import execute
 from ..plan import engine_runs
 from ..solver.simulate import simulate
-from .alternatives import alternatives, as_given, evaluate, refused, rows_at
+from .alternatives import alternatives, as_given, evaluate, refused, rows_at, takes_ratio, with_ratio
 from .restitution import restitution_input
 from .timestep import FINE, advise
 
@@ -56,15 +56,15 @@ def calibrate(engine, law, scene, steps=1000, tolerances=None, timestep_toleranc
     given = as_given(default_dialect, scene, steps, GIVEN)
     tried, scores = [], []
     for options, dialect in alternatives(engine, law.name, target):
-        alternative = evaluate(options, dialect, scene, steps, CALIBRATED)
-        if alternative.rows is None:
+        found = evaluate(options, dialect, scene, steps, CALIBRATED, paper)
+        if found.rows is None:
             continue
-        frame = pd.concat([paper, alternative.rows], ignore_index=True)
-        reached = len(alternative.reachable)
-        scores.append({"options": alternative.label, "targets reached": reached,
-                       "score": (-reached,) + score(frame, CALIBRATED, tolerances, scene.gravity)})
-        tried.append(alternative)
+        tuned = ([with_ratio(found, engine, law.name, scene, steps, CALIBRATED)]
+                 if takes_ratio(engine, law.name, options) else [])
+        for alternative in [found] + tuned:
+            tried_one(alternative, paper, tolerances, scene, tried, scores)
     best = min(range(len(tried)), key=lambda i: (scores[i]["score"], i))
+
     chosen = tried[best]
     table = pd.DataFrame([{"options": s["options"], "targets reached": s["targets reached"],
                            "failed checks": s["score"][1], "worst check / tolerance": s["score"][2],
@@ -92,6 +92,15 @@ def calibrate(engine, law, scene, steps=1000, tolerances=None, timestep_toleranc
                        agreement, advice, confirmed, variation(chosen.dialect, scene, steps),
                        refused(engine, law.name, target), failures, skipped,
                        engine.version() if status.available else "")
+
+
+def tried_one(alternative, paper, tolerances, scene, tried, scores):
+    """Score one alternative against the paper law (analyses.calibration.score) and keep it."""
+    frame = pd.concat([paper, alternative.rows], ignore_index=True)
+    reached = len(alternative.reachable)
+    scores.append({"options": alternative.label, "targets reached": reached,
+                   "score": (-reached,) + score(frame, CALIBRATED, tolerances, scene.gravity)})
+    tried.append(alternative)
 
 
 def inputs_table(alternative):
