@@ -12,13 +12,14 @@ import time
 
 import numpy as np
 
-from harness.analyses.cost import relative_errors, startup_seconds, truth_of
+from harness.analyses.cost import relative_errors
+from harness.cost_plan import startup_seconds, truth_of
 from harness.engines import ENGINES, EXTERNAL
 from harness.execute import execute
 from harness.laws import compose
 from harness.plan import engine_runs
 from harness.scene import Scene
-from harness.solver.reference import simulate
+from harness.solver.simulate import simulate
 from harness.solver.stability import UnstableTimeStep
 
 TARGET = 1e-4
@@ -48,8 +49,7 @@ def engine_cost(name, truth):
     """Smallest rung reaching the target in the engine; wall time of that batched run and its start-up."""
     adapter = ENGINES[name]
     options = {"precision": "double", "linear": "viscel"} if name == "yade" else {}
-    dialect = adapter.dialect(LAW.name, options)
-    startup = startup_seconds(adapter, LAW, dialect, SCENE, options)[SCENE.e_n[0]][0]    # (fastest, spread)
+    startup = startup_seconds(adapter, LAW, SCENE, options)[SCENE.e_n[0]][0]    # (fastest, spread)
     for n in LADDER:
         try:
             frame, failed = execute(engine_runs(adapter, LAW, SCENE, n, options))

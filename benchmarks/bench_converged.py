@@ -21,11 +21,12 @@ import time
 
 import numpy as np
 
-from harness.analyses.cost import relative_errors, truth_of
+from harness.analyses.cost import relative_errors
+from harness.cost_plan import truth_of
 from harness.laws import LAWS, compose
 from harness.scene import Scene
-from harness.solver import reference
-from harness.solver.reference import adaptive_batch, simulate, simulate_adaptive
+from harness.solver import simulate as simulation
+from harness.solver.simulate import adaptive_batch, simulate, simulate_adaptive
 
 SCENE = Scene(e_n=(0.9, 0.5, 0.1), angles_deg=tuple(np.arange(1.0, 90.0, 2.0)))
 
@@ -49,19 +50,19 @@ METHODS = {"brute force": False, "graded Richardson": True, "adaptive": None}
 def run(law, method, tolerance=1e-6):
     """One method of the converged mode; (frame, force evaluations, seconds)."""
     counted = []
-    kernel = reference.run_kernel
+    kernel = simulation.run_kernel
 
     def counting(batch, history_points=0, rows=None):
         out, history, wall = kernel(batch, history_points, rows)
         counted.append(out[:, 6].sum())
         return out, history, wall
-    reference.run_kernel = counting
+    simulation.run_kernel = counting
     try:
         start = time.perf_counter()
         frame, _ = simulate(law, SCENE, converged=True, extrapolate=METHODS[method], tolerance=tolerance)
         seconds = time.perf_counter() - start
     finally:
-        reference.run_kernel = kernel
+        simulation.run_kernel = kernel
     adaptive = frame.message.str.contains("adaptive")
     return frame, float(sum(counted)) + float(frame.steps_per_contact[adaptive].sum()), seconds
 

@@ -13,12 +13,13 @@ import numpy as np
 
 from harness.engines import liggghts
 from harness.laws import LAWS, compose
+from harness.plan import RunSpec
 from harness.scene import Scene
 from harness.solver import codes as C
 from harness.solver.extension import table as extension_table
 from harness.solver.kernel import integrate
-from harness.solver.plan import plan_batch
-from harness.solver.reference import simulate
+from harness.solver.batch import batch_of
+from harness.solver.simulate import simulate
 from harness.solver.threads import THREADS
 
 STEPS = 1000
@@ -42,11 +43,10 @@ def liggghts_seconds(law, scene, batches):
     """LIGGGHTS' wall time over the same batches, and its start-up (the same decks stopped after one step)."""
     total = startup = 0.0
     for batch in batches:
-        max_steps = int(batch.params[:, C.P_MAXSTEPS].max())
         with tempfile.TemporaryDirectory(prefix="harness-bench-") as workdir:
-            total += liggghts.ENGINE.run_batch(law, scene, batch, max_steps, 600, workdir)[1]
+            total += liggghts.ENGINE.run_batch(law, scene, RunSpec.of(batch), 600, workdir)[1]
         with tempfile.TemporaryDirectory(prefix="harness-bench-") as workdir:
-            startup += liggghts.ENGINE.run_batch(law, scene, batch, 1, 600, workdir)[1]
+            startup += liggghts.ENGINE.run_batch(law, scene, RunSpec.of(batch, step_cap=1), 600, workdir)[1]
     return total, startup
 
 
@@ -54,7 +54,7 @@ def main(smoke=False):
     e_n = (0.5,) if smoke else tuple(round(0.1 * i, 1) for i in range(1, 10))
     scene = Scene(e_n=e_n, angles_deg=(10.0, 40.0) if smoke else None, psi1_star=None) if smoke else Scene(e_n=e_n)
     law = compose("hertz-mindlin")
-    batches = [plan_batch(law, scene, e, STEPS) for e in scene.e_n]
+    batches = [batch_of(law, scene, e, STEPS) for e in scene.e_n]
     impacts = sum(len(b.v_n0) for b in batches)
     print(f"hertz-mindlin, {len(batches)} e_n x {impacts // len(batches)} angles, {STEPS} steps per contact")
     rates = {}
@@ -64,7 +64,7 @@ def main(smoke=False):
         print(f"reference, {threads} thread(s): {steps} impact-steps in {seconds:.3f} s = {rates[threads]:.4f} us per "
               f"impact-step")
     if liggghts.ENGINE.available():
-        dialect_batches = [plan_batch(liggghts.dialect(law.name), scene, e, STEPS) for e in scene.e_n]
+        dialect_batches = [batch_of(liggghts.dialect(law.name), scene, e, STEPS) for e in scene.e_n]
         total, startup = liggghts_seconds(law, scene, dialect_batches)
         reference, _ = reference_seconds(dialect_batches, 1)
         print(f"liggghts: {total:.3f} s for the same sweep, of which start-up {startup:.3f} s")

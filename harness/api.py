@@ -5,15 +5,17 @@ import pandas as pd
 
 from .analyses.attribution import attribution
 from .analyses.precision import precision_gap
-from .analyses.sliding import sliding_thresholds, threshold_table
+from .analyses.sliding import threshold_table
 from .comparison import Comparison
 from .engines import ENGINES, EXTERNAL
 from .engines.protocol import Status
 from .errors import UserError
 from .execute import execute, run_all
+from .outputs import arithmetic_of
 from .plan import CONVERGED, compare_plan, reference_runs, target_of
 from .request import Request
-from .solver.reference import simulate
+from .sliding_search import sliding_thresholds
+from .solver.simulate import simulate
 from .two_spheres import with_bodies
 
 HISTORY_POINTS = 400
@@ -49,10 +51,10 @@ def compare(model, engines=None, engine_options=None, **keywords):
     return compare_request(Request.from_keywords(model, engines=engines, engine_options=engine_options, **keywords))
 
 
-def statuses(request):
+def statuses(request, refuse=True):
     """The Status of every external engine for the request: asked for (or every one when none was named), able to run
     the law, to express the scene and to follow its replacements (--with; an engine named in --engines that cannot is
-    refused, one that was not is skipped with the reason)."""
+    refused when `refuse`, as compare does, and otherwise skipped with the reason, as a campaign's variants are)."""
     names = [e for e in (request.engines if request.engines is not None else EXTERNAL) if e != "reference"]
     out = []
     scene = request.scene
@@ -68,7 +70,7 @@ def statuses(request):
             try:
                 options_for(request, name)
             except UserError as exc:
-                if request.engines is not None:
+                if refuse and request.engines is not None:
                     raise
                 unsupported = str(exc)
         if unsupported:
@@ -126,6 +128,7 @@ def compare_request(request, on_frame=None, progress=None, partial=None):
             (double, _), (high, _) = next(checked), next(checked)
             precision = precision_gap(double, high, name, pair[1].options_dict["precision"])
     return Comparison(law, scene, results, overrides=dict(request.overrides), engine_options=request.engine_options,
+                      arithmetic=arithmetic_of(request.engine_options),
                       requested=request.engines, skipped=[(s.name, s.reason) for s in found if not s.available],
                       failures=failures, attribution=attributions, sliding=sliding, precision=precision,
                       histories=histories, tolerances=request.tolerances)

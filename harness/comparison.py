@@ -20,6 +20,7 @@ class Comparison:
     results: pd.DataFrame
     overrides: dict = field(default_factory=dict)
     engine_options: dict = field(default_factory=dict)
+    arithmetic: dict = field(default_factory=dict)       # engine -> the floating-point arithmetic it ran in
     requested: tuple | None = None          # engines asked for by name (None: every engine that supports the law)
     skipped: list = field(default_factory=list)          # (engine, reason)
     failures: list = field(default_factory=list)         # FailedRun
@@ -54,7 +55,8 @@ class Comparison:
 
     @cached_property
     def findings(self):
-        return findings(self.results, self.scene.gravity)
+        from .engines import known_cause
+        return findings(self.results, self.scene.gravity, known_cause)
 
     @cached_property
     def physics(self):

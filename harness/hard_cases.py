@@ -93,7 +93,7 @@ def material_key(scene):
 
 def run_reference(case, name, steps_per_contact=1000, **scene_overrides):
     """Results table of registry law `name` on `case` through the reference, with a 'case' column."""
-    from .solver.reference import simulate
+    from .solver.simulate import simulate
     frame = simulate(case.law(name), case.make_scene(**scene_overrides), steps_per_contact=steps_per_contact)[0]
     return frame.assign(case=case.name)
 

@@ -10,12 +10,16 @@ import pandas as pd
 from .analyses.attribution import METRICS as ATTRIBUTED
 from .analyses.cost import COLUMNS as COST_COLUMNS, METRICS as COST_METRICS
 from .analyses.physics import Tolerances
+from .comparison import Comparison
+from .engines import ENGINES
 from .engines.batches import FailedRun
 from .errors import UserError
 from .files import write_text
+from .laws import compose
 from .reading import read_table
 from .records import COST_FIELDS, RUN_FIELDS, load_record
 from .results import read_csv, write_csv
+from .scene import scene_of_record
 
 RUN, ATTRIBUTION, HISTORIES, FAILURES, PRECISION = ("run.json", "attribution.csv", "histories.csv", "failures.csv",
                                                     "precision.csv")
@@ -39,6 +43,7 @@ def _write_run(out_dir, comparison, partial):
     write_text(os.path.join(out_dir, RUN), json.dumps(
         {"model": comparison.law.name, "overrides": comparison.overrides, "scene": scene_fields,
          "skipped": comparison.skipped, "engine_options": comparison.engine_options,
+         "arithmetic": comparison.arithmetic,
          "requested": comparison.requested, "command": comparison.command, "date": comparison.date,
          "tolerances": comparison.tolerances.as_dict(), "partial": partial}, indent=1))
 
@@ -106,7 +111,6 @@ def kinds(out_dir):
 
 def _scene(out_dir, name, record):
     """The Scene of a run record, or one line saying the record is damaged."""
-    from .scene import scene_of_record
     try:
         return scene_of_record(record["scene"])
     except (TypeError, ValueError) as exc:
@@ -115,7 +119,6 @@ def _scene(out_dir, name, record):
 
 def _law(out_dir, record):
     """The law of a run record (its model and replacements), or one line saying the record is damaged."""
-    from .laws import compose
     try:
         return compose(record["model"], record.get("overrides") or {})
     except UserError as exc:
@@ -124,7 +127,6 @@ def _law(out_dir, record):
 
 def load_comparison(out_dir):
     """The Comparison saved in DIR (its analyses follow from the table again)."""
-    from .comparison import Comparison
     frame = read_csv(os.path.join(out_dir, RESULTS))
     if frame.empty:
         raise UserError(f"{out_dir}/results.csv holds no results")
@@ -148,13 +150,24 @@ def load_comparison(out_dir):
         tolerances = Tolerances.of(run.get("tolerances") or {})
     except UserError as exc:
         raise UserError(f"{out_dir}/{RUN} is damaged or foreign: {exc}") from None
-    return Comparison(law, scene, frame, overrides=run.get("overrides") or {},
-                      engine_options=run.get("engine_options", {}), requested=tuple(requested) if requested else None,
+    engine_options = run.get("engine_options", {})
+    return Comparison(law, scene, frame, overrides=run.get("overrides") or {}, engine_options=engine_options,
+                      arithmetic=run.get("arithmetic") or arithmetic_of(engine_options), requested=tuple(requested) if requested else None,
                       skipped=[tuple(s) for s in run.get("skipped", [])], failures=failures, attribution=attributions,
                       sliding=sliding if not sliding.empty else None,
                       precision=precision.iloc[0].to_dict() if not precision.empty else None, histories=histories,
                       command=run.get("command", ""), date=run.get("date", ""), partial=bool(run.get("partial")),
                       tolerances=tolerances)
+
+
+DOUBLE = "double (IEEE 754 binary64)"
+
+
+def arithmetic_of(engine_options):
+    """The floating-point arithmetic each engine runs in with these options (an engine that can change it says so:
+    `arithmetic`); a comparison records it, and one read from a record that lacks it gets it from here."""
+    return {name: engine.arithmetic(engine_options.get(name, {})) if hasattr(engine, "arithmetic") else DOUBLE
+            for name, engine in ENGINES.items()}
 
 
 def load_cost(out_dir):

@@ -8,17 +8,16 @@ import numpy as np
 import pandas as pd
 
 from .laws import LAWS, compose
+from .figures import ELASTIC, PSI1_GRID
 from .submodels.calibration import hertz_contact_time
 from .submodels.normal.hertz import hertz_peak_overlap
 from .scene import DEFAULT_EN, Scene
 from .analyses.published import published_distances
-from .analyses.sliding import sliding_thresholds, threshold_table
-from .solver.reference import simulate
+from .analyses.sliding import threshold_table
+from .sliding_search import sliding_thresholds
+from .solver.simulate import simulate
 
-PSI1_GRID = tuple(float(x) for x in np.round(np.r_[np.arange(0.05, 0.21, 0.05), np.arange(0.25, 14.0001, 0.25)], 6))
-# the paper's Psi1* axis, from below its first published point (0.15)
 NORMAL_EN = tuple(sorted(set(np.round(np.arange(0.1, 0.951, 0.05), 6)) | set(DEFAULT_EN)))
-ELASTIC = "hertz-mindlin (elastic)"        # e = 1, no dashpots: the elastic companion paper's reference curve
 
 
 def paper_scene(e_n=DEFAULT_EN):

@@ -1,15 +1,54 @@
 """The run plan: what a request asks for, as runs. A run is one batch: one engine running one law in one dialect at
 one e_n over every impact of a scene, at one resolution; its key is a hash of everything that determines its
-result. compare, cost, check and the hard-case tests all execute plans (execute.py)."""
+result; its spec is what an engine is told (time step, step cap, impacts, output cadence), computed once here.
+compare, cost, check and the hard-case tests all execute plans (execute.py)."""
 import hashlib
 import json
 import numbers
 from dataclasses import asdict, dataclass, replace
+from functools import cached_property
 
-from .solver.plan import FixedTimeStep, join, plan_batch
+import numpy as np
+
+from .solver.batch import FixedTimeStep, join, batch_of
 
 CONVERGED = "converged"       # the resolution of the converged mode
 SCHEMA = 1                    # of the results table and of the key: a change makes every key new
+
+
+MIN_CHUNK = 10                # steps between an engine's separation checks: a tenth of a contact, at least this
+
+
+@dataclass(frozen=True)
+class RunSpec:
+    """What an engine runs: every impact (incident velocities at the target e_n), the time step, the step cap and the
+    output cadence (a separation check every `chunk` steps, at most `chunks` of them, which covers the cap)."""
+    e_n: float
+    dt: float
+    steps_per_contact: float
+    step_cap: int
+    theta_deg: np.ndarray
+    v_n0: np.ndarray
+    v_t0: np.ndarray
+    omega0: np.ndarray
+
+    @property
+    def impacts(self):
+        return len(self.v_n0)
+
+    @property
+    def chunk(self):
+        return max(MIN_CHUNK, int(self.steps_per_contact // 10))
+
+    @property
+    def chunks(self):
+        return max(1, self.step_cap // self.chunk + 1)
+
+    @classmethod
+    def of(cls, batch, step_cap=None):
+        """The spec of a planned batch; step_cap: stop every impact after that many steps instead of its own cap."""
+        return cls(batch.e_n, batch.dt, batch.steps_per_contact, batch.step_cap if step_cap is None else step_cap,
+                   batch.theta_deg, batch.v_n0, batch.v_t0, batch.omega0)
 
 
 @dataclass(frozen=True)
@@ -23,6 +62,7 @@ class Run:
     options: tuple = ()         # the engine's options, (key, value) sorted
     observe: bool = False       # an engine also reports contact time, peak force and overlap
     together: tuple = ()        # scenes of the same material and e_n whose impacts join this run's
+    step_cap: int | None = None  # an engine stops every impact after this many steps (a start-up timing), not its own
 
     @property
     def e_n(self):
@@ -35,8 +75,13 @@ class Run:
     def batch(self):
         """The kernel rows of this run (their time step is the engine's too: agreement is at equal dt)."""
         if not self.together:
-            return plan_batch(self.dialect, self.scene, self.e_n, self.resolution)
-        return join([plan_batch(self.dialect, s, self.e_n, self.resolution) for s in (self.scene,) + self.together])
+            return batch_of(self.dialect, self.scene, self.e_n, self.resolution)
+        return join([batch_of(self.dialect, s, self.e_n, self.resolution) for s in (self.scene,) + self.together])
+
+    @cached_property
+    def spec(self):
+        """What the engine is told (RunSpec), computed once from this run's batch."""
+        return RunSpec.of(self.batch(), self.step_cap)
 
     def key(self, engine_version):
         """sha256 of the engine and its version, the dialect's sub-models, the scene, the resolution and options."""
@@ -45,7 +90,7 @@ class Run:
                     "dialect": self.dialect.dialect, "submodels": self.dialect.describe(),
                     "scenes": [scene_identity(s) for s in (self.scene,) + self.together],
                     "resolution": [type(self.resolution).__name__, resolution], "options": list(self.options),
-                    "observe": self.observe}
+                    "observe": self.observe, **({"step_cap": self.step_cap} if self.step_cap is not None else {})}
         return hashlib.sha256(json.dumps(identity, sort_keys=True, default=repr).encode()).hexdigest()[:20]
 
 

@@ -46,6 +46,7 @@ FIELDS = {   # field -> (what it must be, in words; its check)
     "overrides": ("{key: sub-model}", _string_map),
     "skipped": ("a list of [engine, reason]", _pairs),
     "engine_options": ("{engine: {key: value}}", _options),
+    "arithmetic": ("{engine: the arithmetic it ran in}", _string_map),
     "requested": ("a list of engine names or null", _names),
     "command": ("a string", _strings),
     "date": ("a string", _strings),

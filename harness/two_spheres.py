@@ -19,8 +19,7 @@ import numpy as np
 from .bodies import Sphere
 from .errors import UserError
 from .scene import Scene, check_body
-
-BODY_COLUMNS = ("J_n", "J_t", "v1_n", "v1_t", "omega1_after", "v2_n", "v2_t", "omega2_after")
+from .solver.simulate import simulate
 
 
 def effective(projectile, target):
@@ -88,7 +87,6 @@ def collide(law, projectile, target, e_n=0.5, mu=0.1, steps_per_contact=1000):
     results (its v_n1, v_t1, omega1 are the relative motion's; t_contact, f_n_max, overlap_max the contact's) and each
     body's velocities after it (v1_n, v1_t, omega1_after, v2_n, v2_t, omega2_after, the same conventions as the
     inputs) with the impulses J_n, J_t on the projectile."""
-    from .solver.reference import simulate
     refuse_engine_levers(law)
     scene = equivalent_scene(projectile, target, e_n, mu)
     flip = -1.0 if projectile.v_t - target.v_t < 0 else 1.0      # the sweep's v_t is >= 0: mirror x when it is not
@@ -103,7 +101,7 @@ def collide(law, projectile, target, e_n=0.5, mu=0.1, steps_per_contact=1000):
 
 def refuse_engine_levers(law):
     """Two spheres reduce to one wall impact only with slip levers R1, R2 (the torque's may be R_i - alpha/2: its
-    equivalent lever is solver.plan.contact_point_lever) (UserError otherwise)."""
+    equivalent lever is solver.batch.contact_point_lever) (UserError otherwise)."""
     if law.lever != 0.0 or law.slip != "lever":
         raise UserError(f"two spheres reduce to one only with levers R1 and R2; {law.name} in the {law.dialect} "
                         f"dialect has lever {law.describe()['lever']} and slip {law.slip}")

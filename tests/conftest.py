@@ -45,7 +45,7 @@ def assert_head_on_pair_is_wall(pair, wall_form):
     import numpy as np
     from harness.laws.law import replace_submodels
     from harness.request import scene_from
-    from harness.solver.reference import simulate
+    from harness.solver.simulate import simulate
     scene = scene_from(en=(0.3, 0.8), angles=(0.0,), target="sphere", target_radius=0.04)
     a = simulate(pair, scene, steps_per_contact=300)[0]
     b = simulate(replace_submodels(pair, wall_form), scene, steps_per_contact=300)[0]
@@ -115,8 +115,8 @@ def count_kernel_steps(monkeypatch):
     """A function (law, scene, **simulate options) -> (results table, steps the reference kernel took), each step
     one force evaluation: cost counted, not timed."""
     from harness.solver import codes as C
-    from harness.solver import reference
-    kernel = reference.run_kernel
+    from harness.solver import simulate as simulation
+    kernel = simulation.run_kernel
 
     def run(law, scene, **options):
         counted = []
@@ -125,11 +125,11 @@ def count_kernel_steps(monkeypatch):
             out, history, wall = kernel(batch, history_points, rows)
             counted.append(out[:, C.O_STEPS].sum())
             return out, history, wall
-        monkeypatch.setattr(reference, "run_kernel", counting)
+        monkeypatch.setattr(simulation, "run_kernel", counting)
         try:
-            frame = reference.simulate(law, scene, **options)[0]
+            frame = simulation.simulate(law, scene, **options)[0]
         finally:
-            monkeypatch.setattr(reference, "run_kernel", kernel)
+            monkeypatch.setattr(simulation, "run_kernel", kernel)
         return frame, float(sum(counted))
     return run
 

@@ -10,7 +10,7 @@ import oracles
 from harness.laws import compose
 from harness.scene import Scene
 from harness.solver import codes as C
-from harness.solver.reference import adaptive_batch, run_adaptive, simulate
+from harness.solver.simulate import adaptive_batch, run_adaptive, simulate
 
 ADAPTIVE_LAWS = ["linear-spring-dashpot", "hertz-mindlin", "hertz-kuwabara-kono", "stronge", "thornton",
                  "partially-latching-spring"]

@@ -10,7 +10,7 @@ from hypothesis import strategies as st
 from harness.laws import compose
 from harness.scene import Scene
 from harness.solver import codes as C
-from harness.solver.reference import adaptive_batch, run_adaptive, simulate, simulate_extrapolated
+from harness.solver.simulate import adaptive_batch, run_adaptive, simulate, simulate_extrapolated
 
 WALTON_BRAUN_SPRINGS = [("walton-braun", None),
                         ("hertz-mindlin", {"tangential": "walton-braun:2/7", "tangential-damping": "none"}),

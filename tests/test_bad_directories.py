@@ -137,6 +137,7 @@ RUN_FIELDS = {   # run.json field -> values of the wrong type (or no such law, s
               {"angles_deg": [[1]]}, {"speed_is": "sideways"}, {"e_n": [5e-324]}],
     "skipped": [3, "ab", [1, 2], [["liggghts"]]],
     "engine_options": [[1], "x", {"liggghts": "limitForce=on"}, {"liggghts": {"limitForce": True}}],
+    "arithmetic": [[1], "double", {"yade": 3}],
     "requested": ["liggghts", 3, [3]],
     "command": [3, ["harness"]],
     "date": [[2026], 2026],

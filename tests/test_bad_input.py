@@ -227,9 +227,9 @@ def test_rows_with_a_negative_e_n_or_a_non_finite_energy_are_invalid():
     from harness.laws import compose
     from harness.results import impact_frame
     from harness.scene import Scene
-    from harness.solver.plan import plan_batch
+    from harness.solver.batch import batch_of
     scene = Scene(e_n=(0.5,), angles_deg=(10.0, 20.0, 30.0))
-    batch = plan_batch(compose("thornton"), scene, 0.5, 100)
+    batch = batch_of(compose("thornton"), scene, 0.5, 100)
     v_n1 = np.array([-0.88 * batch.v_n0[0], 0.5 * batch.v_n0[1], np.inf])
     frame = impact_frame(scene, batch, model="thornton", dialect="yade", engine="yade", engine_version="x", dt=batch.dt,
                          steps_per_contact=100, v_n1=v_n1, v_t1=batch.v_t0, omega1=np.zeros(3), wall_s=0.0,
@@ -250,9 +250,9 @@ def _rows(engine="reference", angles=(10.0, 20.0, 30.0), mu=0.1, **measured):
     from harness.laws import compose
     from harness.results import impact_frame
     from harness.scene import Scene
-    from harness.solver.plan import plan_batch
+    from harness.solver.batch import batch_of
     scene = Scene(e_n=(0.5,), angles_deg=angles, mu=mu)
-    batch = plan_batch(compose("thornton"), scene, 0.5, 100)
+    batch = batch_of(compose("thornton"), scene, 0.5, 100)
     n = len(angles)
     measured = {k: np.full(n, 1e-5) for k in ("t_contact", "f_n_max", "overlap_max")} | measured
     return impact_frame(scene, batch, model="thornton", dialect=engine, engine=engine, engine_version="x",

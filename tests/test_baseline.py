@@ -7,7 +7,7 @@ import pytest
 from harness import baseline
 from harness.laws import compose
 from harness.results import read_csv, write_csv
-from harness.solver.reference import simulate
+from harness.solver.simulate import simulate
 
 REFERENCE = Path(__file__).resolve().parent.parent / "baselines"
 

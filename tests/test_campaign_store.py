@@ -242,3 +242,18 @@ def test_query_refuses_a_store_that_is_missing_or_empty(tmp_path, capfd):
     assert main(["query", str(tmp_path / "empty"), "SELECT 1"]) == 2
     assert "holds no campaign results" in capfd.readouterr().err
     assert sorted(os.listdir(tmp_path)) == ["empty"]
+
+
+def test_an_interrupt_while_a_fragment_is_written_leaves_no_temporary_file(tmp_path, store, monkeypatch):
+    kept = Store(store)
+    frame = kept.read(kept.files()[0])
+    written = pq.write_table
+
+    def interrupted(table, where, **options):
+        written(table.slice(0, 1), where, **options)      # some bytes are on disk when the interrupt comes
+        raise KeyboardInterrupt
+    monkeypatch.setattr(pq, "write_table", interrupted)
+    before = sorted(os.listdir(store))
+    with pytest.raises(KeyboardInterrupt):
+        kept.put(frame[KEY].iloc[0], frame)
+    assert sorted(os.listdir(store)) == before

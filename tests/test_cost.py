@@ -11,8 +11,9 @@ import pytest
 from conftest import needs
 from scipy.optimize import brentq
 
-from harness.analyses.cost import (ADAPTIVE, ADAPTIVE_RUNGS, EXTRAPOLATED, TOLERANCES, convergence_orders, cost_table,
-                          per_rung, rayleigh_time, recommendations, relative_errors, truth_of)
+from harness.analyses.cost import (ADAPTIVE, ADAPTIVE_RUNGS, EXTRAPOLATED, TOLERANCES, convergence_orders, per_rung,
+                                   rayleigh_time, recommendations, relative_errors)
+from harness.cost_plan import cost_table, truth_of
 from harness.engines import ENGINES
 from harness.laws import compose
 from harness.scene import Scene
@@ -117,7 +118,7 @@ def test_the_papers_tangential_dashpot_is_accurate_if_not_smooth_in_h(dashpot):
     and slides again against a reversed slip the error is not smooth in h (docs/numerics.md), which this bound
     tolerates. Spring first (the paper's default) the spring and a strong dashpot take the force in turns near the
     release at low e, a first-order sliding mode: 4000 steps are at least 2x closer."""
-    from harness.solver.reference import simulate
+    from harness.solver.simulate import simulate
     scene = Scene(e_n=(0.9, 0.5, 0.25), angles_deg=tuple(np.linspace(5.0, 85.0, 12)))
     finer = 2000 if dashpot.endswith(":total") else 4000
     for name in ("hertz-mindlin", "linear-spring-dashpot"):
@@ -236,13 +237,13 @@ def test_cli_writes_cost_csv_and_a_report_that_rebuilds(tmp_path):
 @needs("liggghts")
 def test_an_interrupted_study_keeps_its_rows_and_reports(tmp_path, monkeypatch):
     """Ctrl-C during the engine part: exit 130, cost.csv holds every row measured before, the report rebuilds."""
-    import harness.analyses.cost
+    import harness.cost_plan
     from harness.commands import main
     from harness.views.html import rebuild
 
     def interrupted(*args, **kwargs):
         raise KeyboardInterrupt
-    monkeypatch.setattr(harness.analyses.cost, "truth_of", _truth_then(harness.analyses.cost.truth_of, interrupted))
+    monkeypatch.setattr(harness.cost_plan, "truth_of", _truth_then(harness.cost_plan.truth_of, interrupted))
     out = tmp_path / "c"
     code = main(["cost", "--model", "hertz-mindlin", "--engines", "liggghts", "--en", "0.5", "--angles", "0,40",
                  "--ladder", "20,100", "-o", str(out)])

@@ -37,9 +37,11 @@ def hooks_called_outside_engines():
 
 
 def test_every_hook_harness_asks_an_engine_for_is_declared_on_the_base_class():
-    """A new engine that overrides what differs has every hook a command uses (run_batch included)."""
+    """A new engine that overrides what differs has every hook a command uses (and run_batch, which the benchmarks
+    time engines with)."""
     called = hooks_called_outside_engines()
-    assert {"run", "run_batch", "dialect", "status", "walls", "target_reason", "render"} <= set(called)
+    assert {"run", "dialect", "status", "walls", "target_reason", "render"} <= set(called)
+    assert callable(getattr(Engine, "run_batch", None))
     missing = {name: where for name, where in called.items()
                if not hasattr(Engine, name) and not hasattr(str, name)}     # `engine` is at times an engine's name
     assert not missing, missing
@@ -104,3 +106,38 @@ def test_decks_sharing_one_process_each_get_their_own_step_budget(name):
     frames = [frame for frame, failure in done if failure is None]
     assert len(frames) == 120 and all((frame.status == "ok").all() for frame in frames)
     assert len({round(float(frame.e_n.iat[0]), 12) for frame in frames}) == 1
+
+
+def test_a_run_spec_covers_its_step_cap_in_tenths_of_a_contact():
+    """The spec's cadence: a check every tenth of a contact (at least 10 steps), and enough checks to reach the cap;
+    a start-up run's own cap is part of its key, a plain run's key does not change."""
+    from dataclasses import replace
+    from harness.laws import compose
+    from harness.plan import engine_runs
+    from harness.scene import Scene
+    scene = Scene(e_n=(0.5,), angles_deg=(0.0, 40.0))
+    for steps in (20, 1000, 4567):
+        (run,) = engine_runs(ENGINES["liggghts"], compose("hertz-mindlin"), scene, steps)
+        spec = run.spec
+        assert spec.chunk == max(10, steps // 10) and spec.steps_per_contact == pytest.approx(steps)
+        assert spec.chunks * spec.chunk > spec.step_cap >= (spec.chunks - 1) * spec.chunk
+        assert spec.step_cap > 20 * steps and spec.impacts == 2       # at least 20 contact times (solver/batch.py)
+        capped = replace(run, step_cap=1)
+        assert capped.spec.step_cap == 1 and capped.spec.chunks == 1 and capped.spec.dt == spec.dt
+        assert capped.key("v") != run.key("v") and replace(run).key("v") == run.key("v")
+
+
+@pytest.mark.parametrize("name", [pytest.param(n, marks=[pytest.mark.engine, pytest.mark.skipif(
+    not ENGINES[n].available(), reason=f"{n} is not installed")]) for n in EXTERNAL])
+def test_the_step_cap_of_a_run_reaches_the_engine(name):
+    """Capped at its first check (a tenth of a contact at 1000 steps per contact) no sphere can have left the wall;
+    with the plan's own cap every one does: the engine stepped as far as the spec said."""
+    from dataclasses import replace
+    from harness.laws import compose
+    from harness.plan import engine_runs
+    from harness.scene import Scene
+    engine = ENGINES[name]
+    (run,) = engine_runs(engine, compose("hertz-mindlin"), Scene(e_n=(0.5,), angles_deg=(0.0, 30.0)), 1000)
+    (capped, failure), (full, _) = engine.run([replace(run, step_cap=1), run])
+    assert failure is None and (capped.status == "no-separation").all()
+    assert (full.status == "ok").all()

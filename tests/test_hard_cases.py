@@ -20,7 +20,7 @@ from harness.analyses.invariants import (PARAMETER_METRICS, discontinuities, inv
 from harness.laws import LAWS, compose
 from harness.results import SMALL_STRAIN
 from harness.scene import Scene
-from harness.solver.reference import simulate
+from harness.solver.simulate import simulate
 
 PAPER = Scene(**BASE_SCENE)
 FINE_ANGLES = tuple(float(a) for a in np.round(89.5 - 0.5 * np.arange(179)[::-1], 6))    # 0.5 .. 89.5, h = 0.5 deg

@@ -20,10 +20,11 @@ from harness.engines import lammps, liggghts, yade
 from harness.engines import ENGINES
 from harness.engines.runner import EngineFailure
 from harness.laws import compose
+from harness.plan import RunSpec
 from harness.scene import Scene
 from harness.solver import codes as C
-from harness.solver.plan import plan_batch
-from harness.solver.reference import run_kernel, simulate
+from harness.solver.batch import batch_of
+from harness.solver.simulate import run_kernel, simulate
 
 STEPS = 200
 ROUND_OFF = 1e-8                 # engine vs dialect at equal dt, relative (docs/liggghts-dialect.md, docs/yade-dialect.md: ~1e-15 .. 4e-9)
@@ -64,9 +65,9 @@ def observed_run(engine, name, options, e_n, workdir, observe=True):
         pytest.skip(f"{engine} is not installed")
     law = adapter.dialect(name, options)
     scene = Scene(e_n=(e_n,), angles_deg=ANGLES, omega0=-50.0)
-    batch = plan_batch(law, scene, e_n, STEPS)
-    final, wall, _ = adapter.run_batch(compose(name), scene, batch, int(batch.params[:, C.P_MAXSTEPS].max()), 300,
-                                       str(workdir), options, observe=observe)
+    batch = batch_of(law, scene, e_n, STEPS)
+    final, wall, _ = adapter.run_batch(compose(name), scene, RunSpec.of(batch), 300, str(workdir), options,
+                                       observe=observe)
     return scene, batch, final, wall, simulate(law, scene, steps_per_contact=STEPS)[0]
 
 
@@ -118,8 +119,8 @@ RENDER_CASES = ([(liggghts, name, {}) for name in liggghts.DIALECTS] + [(liggght
 def test_observe_only_adds_lines_to_the_rendered_input(adapter, name, options):
     """observe=False renders what the adapter rendered before (the default); observe=True only inserts lines."""
     scene = Scene(e_n=(0.5,), angles_deg=ANGLES)
-    batch = plan_batch(adapter.dialect(name, options), scene, 0.5, 100)
-    args = (compose(name), scene, batch, 10000, options)
+    batch = batch_of(adapter.dialect(name, options), scene, 0.5, 100)
+    args = (compose(name), scene, RunSpec.of(batch, step_cap=10000), options)
     default, plain, seen = adapter.render_batch(*args), adapter.render_batch(*args, observe=False), \
         adapter.render_batch(*args, observe=True)
     assert plain == default and seen != plain and "observe" not in plain

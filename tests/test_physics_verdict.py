@@ -211,7 +211,7 @@ def test_a_stepping_field_no_stepper_takes_alone_is_switched_with_the_others_and
     from harness.engines import ENGINES
     from harness.laws import compose
     from harness.scene import Scene
-    from harness.solver.reference import simulate
+    from harness.solver.simulate import simulate
 
     dialect, paper = ENGINES["lammps"].dialect("hertz-mindlin", {}), compose("hertz-mindlin")
     scene = Scene(e_n=(0.5,), angles_deg=(20.0, 60.0))

@@ -13,7 +13,7 @@ from harness.digitised import path, points_of, provenance, published_curves_appl
 from harness.laws import compose
 from harness.paper import PSI1_GRID, oblique_curves, paper_scene
 from harness.scene import Scene
-from harness.solver.reference import simulate
+from harness.solver.simulate import simulate
 
 PAPER_LAWS = ("linear-spring-dashpot", "hertz-mindlin")
 QUANTITIES = ("psi2_star", "omega_star", "e_t")

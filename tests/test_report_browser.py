@@ -117,13 +117,13 @@ def test_rebuilding_the_report_simulates_nothing(report, monkeypatch):
     """`harness report DIR` reads the directory only: the kernel and every engine are made to fail, and the
     rebuilt report still holds the same tables and figures."""
     import harness.engines.runner as runner
-    import harness.solver.reference as reference
+    import harness.solver.simulate as simulation
     from harness.views.html import rebuild
 
     def forbidden(*args, **kwargs):
         raise AssertionError("report rebuilding must not simulate")
-    monkeypatch.setattr(reference, "integrate", forbidden)
-    monkeypatch.setattr(reference, "simulate", forbidden)
+    monkeypatch.setattr(simulation, "integrate", forbidden)
+    monkeypatch.setattr(simulation, "simulate", forbidden)
     monkeypatch.setattr(runner.subprocess, "Popen", forbidden)
     before = (report / "report.html").read_text()
     (report / "report.html").unlink()

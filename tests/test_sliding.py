@@ -8,8 +8,9 @@ import pytest
 import oracles
 from harness.laws import compose
 from harness.scene import Scene
-from harness.analyses.sliding import derived_threshold, impulse_deficit, sliding_thresholds
-from harness.solver.reference import simulate
+from harness.analyses.sliding import derived_threshold, impulse_deficit
+from harness.sliding_search import sliding_thresholds
+from harness.solver.simulate import simulate
 
 PAPER_EN = (0.25, 0.5, 0.75, 0.9)
 KAPPA = 2 * 0.7 / 1.7          # 2(1 - nu)/(2 - nu) at nu = 0.3

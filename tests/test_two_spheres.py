@@ -13,7 +13,7 @@ from harness.engines import liggghts
 from harness.errors import UserError
 from harness.laws import compose
 from harness.scene import Scene
-from harness.solver.reference import simulate
+from harness.solver.simulate import simulate
 from harness.two_spheres import Sphere, collide
 
 ELASTIC = compose("hertz-mindlin", {"damping": "none"})

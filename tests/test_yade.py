@@ -12,8 +12,9 @@ from harness.engines import yade
 from harness.engines.runner import EngineFailure
 from harness.execute import execute
 from harness.laws import compose
+from harness.plan import RunSpec
 from harness.scene import Scene
-from harness.solver.plan import plan_batch
+from harness.solver.batch import batch_of
 
 needs_yade = needs("yade")
 needs_float128 = needs("yade", "float128")
@@ -68,8 +69,8 @@ def test_yade_as_a_module_opens_no_listening_socket(tmp_path):
 
 def batch_and_script(scene, e_n=0.5, steps=200):
     law = compose("hertz-mindlin")
-    batch = plan_batch(law, scene, e_n, steps)
-    return law, batch, yade.script(law, scene, e_n, batch.dt, batch.v_n0, batch.v_t0, batch.omega0, steps, 40000)
+    batch = batch_of(law, scene, e_n, steps)
+    return law, batch, yade.script(law, scene, RunSpec.of(batch, step_cap=40000))
 
 
 @needs_yade
@@ -146,15 +147,16 @@ def test_viscel_against_a_wall_uses_half_the_mass():
     from oracles import lsd_notension_e
     g_a = -math.log(0.5) / math.sqrt(math.pi ** 2 + math.log(0.5) ** 2)
     scene = Scene(e_n=(0.5,), angles_deg=(0.0,))
-    batch = plan_batch(yade.dialect("linear-spring-dashpot"), scene, 0.5, 2000)
+    batch = batch_of(yade.dialect("linear-spring-dashpot"), scene, 0.5, 2000)
     with tempfile.TemporaryDirectory() as workdir:
-        final, _, _ = yade.ENGINE.run_batch(compose("linear-spring-dashpot"), scene, batch, 200000, 300, workdir)
+        final, _, _ = yade.ENGINE.run_batch(compose("linear-spring-dashpot"), scene, RunSpec.of(batch, step_cap=200000), 300,
+                                     workdir)
     assert final["v_n1"][0] / scene.speed == pytest.approx(lsd_notension_e(g_a / math.sqrt(2.0)), abs=2e-3)
 
 
 def test_cundall_strack_is_elastic_whatever_e_n():
     """CundallStrack has no damping: its dialect rebounds a normal impact with e = 1 for any target e_n."""
-    from harness.solver.reference import simulate
+    from harness.solver.simulate import simulate
     frame = simulate(yade.dialect("linear-spring-dashpot", {"linear": "cundall-strack"}),
                      Scene(e_n=(0.9, 0.3), angles_deg=(0.0,)), steps_per_contact=400)[0]
     assert frame.e_n.to_list() == pytest.approx([1.0, 1.0], abs=1e-5)
@@ -186,11 +188,11 @@ YADE_LAWS = [("hertz-mindlin", {}), ("linear-spring-dashpot", {}),
 @pytest.mark.parametrize("omega0", [0.0, -50.0])
 def test_engine_agrees_with_its_yade_dialect_at_equal_dt(name, options, e_n, omega0, tmp_path):
     from harness.solver import codes as C
-    from harness.solver.reference import run_kernel
+    from harness.solver.simulate import run_kernel
     scene = Scene(e_n=(e_n,), angles_deg=(0.0, 10.0, 30.0, 60.0, 85.0), omega0=omega0)
-    batch = plan_batch(yade.dialect(name, options), scene, e_n, 200)
+    batch = batch_of(yade.dialect(name, options), scene, e_n, 200)
     out, _, _ = run_kernel(batch)
-    final, _, _ = yade.ENGINE.run_batch(compose(name), scene, batch, 20000, 120, str(tmp_path), options)
+    final, _, _ = yade.ENGINE.run_batch(compose(name), scene, RunSpec.of(batch, step_cap=20000), 120, str(tmp_path), options)
     assert final["separated"].all()
     engine = np.column_stack([final["v_n1"], final["v_t1"], final["omega1"]])
     reference = out[:, [C.O_VZ, C.O_VX, C.O_W]]

@@ -18,7 +18,7 @@ from harness.engines import ENGINES, EXTERNAL
 from harness.laws import LAWS, compose
 from harness.request import scene_from
 from harness.scene import Scene
-from harness.solver.reference import simulate
+from harness.solver.simulate import simulate
 
 COLUMNS = ("v_n1", "v_t1", "omega1", "t_contact", "f_n_max", "overlap_max", "steps_per_contact", "dt")
 SCENE = Scene(e_n=(0.9, 0.5, 0.1), angles_deg=tuple(float(a) for a in np.linspace(0.0, 87.0, 30)))

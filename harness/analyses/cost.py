@@ -1,26 +1,19 @@
-"""What accuracy costs in time: a ladder of steps per contact for the paper law, each engine's dialect and each
-engine, errors of e_n, e_t, Omega*, t_c and F_max against the converged reference of the same dialect."""
+"""What accuracy costs in time, from the cost study's results (harness.cost_plan runs it): errors of e_n, e_t,
+Omega*, t_c and F_max against the converged reference of the same dialect, per rung of each curve; timings, the
+recommended time steps and the orders of convergence."""
 import math
 
 import numpy as np
 import pandas as pd
 
-from ..engines.runner import EngineFailure, scratch
-from ..engines.batches import TIMEOUT_FLOOR_S
-from ..solver.plan import FixedTimeStep, plan_batch
-from ..solver.reference import CONVERGED_START, adaptive_batch, simulate, simulate_adaptive, simulate_extrapolated
-from ..solver.stability import UnstableTimeStep
-
 LADDER = (5, 10, 20, 50, 100, 200, 500, 1000, 5000)
 METRICS = ("e_n", "e_t", "omega_star", "t_contact", "f_n_max")
 TOLERANCES = (1e-2, 1e-3, 1e-4)
-TRUTH_STEPS = {"paper": 2 ** 16, "engine": 2 ** 18}   # the engines' schemes are first order: a finer truth
-TRUTH_SHARPEN = 1e-7             # a paper truth less certain than this is taken from the adaptive integrator ...
-TRUTH_TOLERANCE = 1e-11          # ... at this tolerance
 RAYLEIGH_FRACTION = 0.2
-TIMING_REPEATS = 3               # each timed run and each start-up is timed this often: the fastest, and the spread
-LONG_RUN_S = 5.0                 # a run this long is timed once (the machine's noise is small beside it)
 WITHIN_NOISE = "within noise"    # the timing column of a rung whose net time is not above its spread
+EXTRAPOLATED = "paper, graded Richardson"       # the converged ladder's rungs as a curve of the reference
+ADAPTIVE = "paper, adaptive"                    # the adaptive integrator's tolerances as a curve of the reference
+ADAPTIVE_RUNGS = (1e-4, 1e-5, 1e-6, 1e-7, 1e-8)  # above the truth's own uncertainty (2^16 steps: ~1e-9)
 COLUMNS = ("model", "engine", "dialect", "e_n_target", "rung", "steps_per_contact", "dt", "impacts", "steps",
            "wall_s", "wall_spread_s", "startup_s", "net_wall_s", "timing", "status", "message",
            *(f"err_{m}" for m in METRICS), "err_max")
@@ -50,43 +43,10 @@ def relative_errors(values, truth):
     return out
 
 
-def truth_of(law, scene, cache=None):
-    """Converged reference of one dialect: the finest run and its uncertainty (change from half the steps, an
-    upper bound for first- and second-order schemes alike), per e_n, each naming its truth. Where that leaves the
-    paper scheme uncertain beyond TRUTH_SHARPEN (Walton-Braun's spring at grazing incidence: ~1e-5, order 1.5) and
-    the adaptive integrator covers the law, its run at TRUTH_TOLERANCE instead (uncertainty: the change from 10x
-    that tolerance; tests/test_adaptive_walton_braun.py checks it against the deep graded ladder). With a cache (a
-    campaign store), the two fine runs are taken from it when it holds them, and added to it when not."""
-    steps = TRUTH_STEPS["paper" if law.integrator == "paper" else "engine"]
-    fine, half = (reference(law, scene, n, cache) for n in (steps, steps // 2))
-    uncertainty = uncertainties(half, fine, f"{steps} steps/contact")
-    worst = max(errs["err_max"] for errs in uncertainty.values())
-    if law.integrator == "paper" and worst > TRUTH_SHARPEN and covered(law, scene):
-        fine = simulate_adaptive(law, scene, TRUTH_TOLERANCE)
-        coarse = simulate_adaptive(law, scene, 10 * TRUTH_TOLERANCE)
-        uncertainty = uncertainties(coarse, fine, f"adaptive at tol {TRUTH_TOLERANCE:.0e} ({steps} steps/contact: "
-                                                  f"{worst:.1e})")
-    return fine, uncertainty
-
-
-def reference(law, scene, steps, cache=None):
-    """The reference solver's results of `law` at `steps` per contact (through the plan and the cache, if given)."""
-    if cache is None:
-        return simulate(law, scene, steps_per_contact=steps)[0]
-    from ..execute import execute
-    from ..plan import reference_runs
-    return execute(reference_runs(law, scene, steps, law), cache=cache)[0]
-
-
 def uncertainties(coarse, fine, truth):
     """Per e_n the errors of the coarser run against the truth, and what the truth is."""
     return {e: {**relative_errors(group, fine[fine.e_n_target == e]), "truth": truth}
             for e, group in coarse.groupby("e_n_target", sort=False)}
-
-
-def covered(law, scene):
-    """The adaptive integrator covers every impact of the scene."""
-    return all(adaptive_batch(law, scene, e_n)[1].all() for e_n in scene.e_n)
 
 
 def contact_steps(frame):
@@ -133,135 +93,14 @@ def refused(rows, law_name, engine, dialect, rung, scene, message):
                      "status": "refused", "message": message})
 
 
-def ladder_rungs(ladder, scene):
-    """(label, resolution) pairs: the ladder's steps per contact, then 20% of the Rayleigh time."""
-    return [(str(n), n) for n in ladder] + [("rayleigh", FixedTimeStep(RAYLEIGH_FRACTION * rayleigh_time(scene)))]
+def per_e_n(frame):
+    """{e_n target: its rows} of a results table, in its order."""
+    return {e: g for e, g in frame.groupby("e_n_target", sort=False)}
 
 
-def reference_curve(rows, law, scene, ladder, truth, engine_label="reference", progress=None):
-    """The reference engine running `law` at every rung, each timed TIMING_REPEATS times."""
-    for label, resolution in ladder_rungs(ladder, scene):
-        try:
-            frames = [simulate(law, scene, steps_per_contact=resolution)[0] for _ in range(TIMING_REPEATS)]
-        except UnstableTimeStep as exc:
-            refused(rows, law.name, engine_label, law.dialect, label, scene, str(exc))
-            step(progress, f"{law.dialect} formulas, {label}: refused")
-            continue
-        timings = {e: [float(f[f.e_n_target == e].wall_s.sum()) for f in frames] for e in scene.e_n}
-        measure(rows, law.name, engine_label, law.dialect, label,
-                {e: g for e, g in frames[0].groupby("e_n_target", sort=False)}, truth, timings=timings)
-        step(progress, f"{law.dialect} formulas in the reference, {label}")
-
-
-def step(progress, what):
-    if progress:
-        progress.advance(what)
-
-
-def startup_seconds(adapter, paper_law, dialect, scene, options):
-    """Per e_n: (fastest, spread) of TIMING_REPEATS timings of the same batched run stopped after its first check (a
-    few steps): process start-up, reading the input and building the scene, which a long simulation pays once."""
-    starts = {}
-    for e_n in scene.e_n:
-        batch = plan_batch(dialect, scene, e_n, 1000)
-        walls = []
-        for _ in range(TIMING_REPEATS):
-            try:
-                with scratch(f"{adapter.NAME}-startup") as workdir:
-                    walls.append(adapter.run_batch(paper_law, scene, batch, 1, TIMEOUT_FLOOR_S, workdir, options)[1])
-            except EngineFailure:
-                walls.append(np.nan)
-        starts[e_n] = fastest(walls)
-    return starts
-
-
-def engine_curve(rows, adapter, paper_law, dialect, scene, ladder, truth, options, failures, progress=None):
-    """The engine itself at every rung (one batched run per e_n, timed TIMING_REPEATS times unless it is long);
-    contact time and peak force come from a further, observed run (its per-step output would distort the timing);
-    refused and failed runs keep their message."""
-    startup = startup_seconds(adapter, paper_law, dialect, scene, options)
-    step(progress, f"{adapter.NAME} start-up")
-    for label, resolution in ladder_rungs(ladder, scene):
-        try:
-            frames, failed = sweep(adapter, paper_law, scene, resolution, options)
-        except UnstableTimeStep as exc:
-            refused(rows, paper_law.name, adapter.NAME, dialect.dialect, label, scene, str(exc))
-            step(progress, f"{adapter.NAME}, {label}: refused")
-            continue
-        failures += failed
-        timings = {f.e_n_target.iloc[0]: [float(f.wall_s.sum())] for f in frames}
-        for _ in range(TIMING_REPEATS - 1):
-            if failed or max(w[0] for w in timings.values()) > LONG_RUN_S:
-                break
-            for frame in sweep(adapter, paper_law, scene, resolution, options)[0]:
-                timings[frame.e_n_target.iloc[0]].append(float(frame.wall_s.sum()))
-        if not failed:                  # contact time and peak force from an observed, untimed run
-            observed, failed = sweep(adapter, paper_law, scene, resolution, options, observe=True)
-            failures += failed
-            for frame, seen in zip(frames, observed):
-                for column in ("t_contact", "f_n_max", "overlap_max"):
-                    frame[column] = seen[column].to_numpy()
-        measure(rows, paper_law.name, adapter.NAME, dialect.dialect, label,
-                {f.e_n_target.iloc[0]: f for f in frames}, truth, startup, timings=timings)
-        step(progress, f"{adapter.NAME}, {label}")
-
-
-def sweep(engine, law, scene, resolution, options, observe=False):
-    """The engine's batches at every e_n (one frame each) and its failed runs, through the plan."""
-    from ..execute import execute
-    from ..plan import engine_runs
-    runs = engine_runs(engine, law, scene, resolution, options, observe)
-    for run in runs:
-        run.batch()                        # a time step above the stability limit: refused before any run
-    frames, failures = [], []
-    for run in runs:
-        table, failed = execute([run])
-        frames.append(table)
-        failures += failed
-    return frames, failures
-
-
-EXTRAPOLATED = "paper, graded Richardson"       # the converged ladder's rungs as a curve of the reference
-ADAPTIVE = "paper, adaptive"                    # the adaptive integrator's tolerances as a curve of the reference
-ADAPTIVE_RUNGS = (1e-4, 1e-5, 1e-6, 1e-7, 1e-8)  # above the truth's own uncertainty (2^16 steps: ~1e-9)
-
-
-def converged_curve(rows, law, scene, ladder, truth):
-    """The converged mode's own rungs as a curve: the adaptive integrator's tolerances where it covers the law,
-    else the graded Richardson ladder."""
-    if law.integrator == "paper" and covered(law, scene):
-        adaptive_curve(rows, law, scene, truth)
-    else:
-        extrapolated_curve(rows, law, scene, ladder, truth)
-
-
-def adaptive_curve(rows, law, scene, truth):
-    """The adaptive integrator at each tolerance of ADAPTIVE_RUNGS; its steps per contact are force evaluations."""
-    for tol in ADAPTIVE_RUNGS:
-        frame = simulate_adaptive(law, scene, tol)
-        measure(rows, law.name, "reference", ADAPTIVE, f"tol {tol:.0e}",
-                {e: g for e, g in frame.groupby("e_n_target", sort=False)}, truth,
-                steps_per_impact=float(frame.steps_per_contact.mean()))
-
-
-def extrapolated_curve(rows, law, scene, ladder, truth):
-    """The paper law's converged ladder at each rung n >= 20 of the ladder: R_n from n/2 and n graded steps per
-    contact, its cost that of both runs and of the two uniform runs that place the release."""
-    for n in (n for n in ladder if n >= 20):
-        try:
-            frame = simulate_extrapolated(law, scene, n)
-        except UnstableTimeStep as exc:
-            refused(rows, law.name, "reference", EXTRAPOLATED, str(n), scene, str(exc))
-            continue
-        measure(rows, law.name, "reference", EXTRAPOLATED, str(n),
-                {e: g for e, g in frame.groupby("e_n_target", sort=False)}, truth,
-                steps_per_impact=n // 2 + n + CONVERGED_START // 2 + CONVERGED_START)
-
-
-def converged_point(rows, law, scene, truth):
-    """The paper law in --converged mode: one point of cost and error per e_n."""
-    frame, _ = simulate(law, scene, converged=True)
-    for e_n, group in frame.groupby("e_n_target", sort=False):
+def converged_rows(rows, law, frame, truth):
+    """The paper law in --converged mode (its results table): one point of cost and error per e_n."""
+    for e_n, group in per_e_n(frame).items():
         exact = truth[truth.e_n_target == e_n]
         rows.append({"model": law.name, "engine": "reference", "dialect": law.dialect, "e_n_target": e_n,
                      "rung": "converged", "steps_per_contact": float(group.steps_per_contact.max()),
@@ -282,33 +121,6 @@ class Rows(list):
         super().append(row)
         if self.keep:
             self.keep(pd.DataFrame(self, columns=COLUMNS))
-
-
-def cost_table(law, scene, adapters, ladder=LADDER, keep=None, progress=None, cache=None):
-    """Every curve of the study as one table (COLUMNS); adapters: {name: (adapter, options)} of the engines;
-    `keep(table)` is called with the table so far after every row; progress told of every rung; the truths' runs
-    through `cache` (a campaign store) when given (timed runs never are: a stored run has no time to give)."""
-    rungs = len(ladder_rungs(ladder, scene))
-    if progress:
-        progress.expect(3 + rungs + len(adapters) * (2 + 2 * rungs))
-    warm = scene.__class__(e_n=(0.5,), angles_deg=(10.0,))
-    simulate(law, warm, steps_per_contact=10)                 # compile outside timing: the kernel,
-    simulate(law, warm, converged=True)                       # and the adaptive integrator or graded ladder
-    rows, failures, uncertainty = Rows(keep), [], {}
-    truth, uncertainty["paper"] = truth_of(law, scene, cache)
-    step(progress, "converged reference of the paper law")
-    reference_curve(rows, law, scene, ladder, truth, progress=progress)
-    converged_curve(rows, law, scene, ladder, truth)
-    step(progress, "the converged mode's own rungs")
-    converged_point(rows, law, scene, truth)
-    step(progress, "the converged mode")
-    for name, (adapter, options) in adapters.items():
-        dialect = adapter.dialect(law.name, options)
-        dialect_truth, uncertainty[name] = truth_of(dialect, scene, cache)
-        step(progress, f"converged reference of {name}'s formulas")
-        reference_curve(rows, dialect, scene, ladder, dialect_truth, progress=progress)
-        engine_curve(rows, adapter, law, dialect, scene, ladder, dialect_truth, options, failures, progress)
-    return pd.DataFrame(rows, columns=COLUMNS), failures, uncertainty
 
 
 def per_rung(cost):

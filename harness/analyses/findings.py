@@ -3,7 +3,7 @@ status does not already say, failed runs."""
 import numpy as np
 import pandas as pd
 
-from .invariants import ENERGY_TOLERANCE, cause, invariant_breaks
+from .invariants import ENERGY_TOLERANCE, invariant_breaks
 
 
 def tangential_energy_ratio(frame):
@@ -15,16 +15,20 @@ def tangential_energy_ratio(frame):
     return (after / before.where(before > 0)).astype(float)
 
 
-def _because(row, kind):
+def _because(row, kind, cause):
     known = cause(row.dialect, row.model, kind)
     return f"; known cause: {known}" if known else ""
 
 
-def findings(frame, gravity=0.0):
+def no_cause(dialect, model, kind):
+    return ""
+
+
+def findings(frame, gravity=0.0, cause=no_cause):
     """Engine behaviour worth a user's attention: kinetic energy gained (in all, or in the tangential and
     rotational motion, which friction can only slow), the other invariant breaks of harness.invariants that a row's
     status does not already say (non-finite values, long contact, normal-impact e_n off its target, a tangential
-    force without friction), failed runs."""
+    force without friction), failed runs; cause(dialect, model, kind) -> the documented cause of one, or ''."""
     out = []
     frame = frame.reset_index(drop=True)          # invariant breaks point at rows by label
     frame = frame.assign(kt_ratio=tangential_energy_ratio(frame))
@@ -37,7 +41,7 @@ def findings(frame, gravity=0.0):
                         "detail": f"{len(group)} impacts end with more {what} than they began with; worst ratio "
                                   f"{worst[column]:.6f} at e_n = {worst.e_n_target:g}, angle {worst.theta_deg:g} deg "
                                   f"(v_t1 = {worst.v_t1:.4f} m/s from v_t0 = {worst.v_t0:.4f})"
-                                  + _because(worst, "energy gain")})
+                                  + _because(worst, "energy gain", cause)})
     breaks = invariant_breaks(frame, gravity)
     breaks = breaks[breaks.kind.isin(("non-finite result", "long contact", "e_n off target", "friction at mu = 0",
                                       "Coulomb bound"))
@@ -45,7 +49,7 @@ def findings(frame, gravity=0.0):
     for (engine, dialect, _, kind), group in breaks.groupby(["engine", "dialect", "model", "kind"], sort=False):
         rows = frame.loc[group.row]
         out.append({"engine": engine, "dialect": dialect, "kind": kind,
-                    "detail": _break_detail(kind, group, rows) + _because(rows.iloc[0], kind)})
+                    "detail": _break_detail(kind, group, rows) + _because(rows.iloc[0], kind, cause)})
     failed = frame[frame.status != "ok"]
     for (engine, dialect, status), group in failed.groupby(["engine", "dialect", "status"], sort=False):
         out.append({"engine": engine, "dialect": dialect, "kind": status,

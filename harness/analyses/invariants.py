@@ -185,8 +185,3 @@ def discontinuities(frame, parameter="theta_deg", metrics=CONTINUITY_METRICS, fl
                                np.full(len(sweep), SMOOTH_JUMP_RATIO)))
     return _joined(parts)
 
-
-def cause(dialect, model, kind):
-    """The documented cause of a known break, or '': the engine whose dialect it is knows (Engine.KNOWN_CAUSES)."""
-    from ..engines import ENGINES
-    return next((engine.known_cause(model, kind) for engine in ENGINES.values() if engine.dialect_label == dialect), "")

@@ -4,16 +4,11 @@ import os
 from collections import Counter
 from dataclasses import dataclass, field
 
-from ..engines.batches import max_steps_of
+from ..engines import ENGINES
 from ..engines.runner import sweep_stale
 from ..keys import run_key
 from .spec import tasks
 from .store import Store
-
-# a rough cost model for --dry-run: seconds per engine process start and per sphere-step (measured on this 2-core
-# machine: docs/performance.md)
-STARTUP_S = {"reference": 0.0, "liggghts": 0.5, "yade": 1.2}
-SPHERE_STEP_S = {"reference": 0.6e-6, "liggghts": 0.05e-6, "yade": 2.0e-6}
 
 
 @dataclass
@@ -44,8 +39,8 @@ def estimate_s(run):
     """Rough wall seconds of one task (the dry run's estimate)."""
     batch = run.batch() if run.resolution != "converged" else None
     impacts = len(batch.v_n0) if batch is not None else 1
-    steps = (max_steps_of(batch) if run.engine != "reference" else 1.2 * batch.steps_per_contact) if batch else 5e3
-    return STARTUP_S.get(run.engine, 1.0) + SPHERE_STEP_S.get(run.engine, 1e-6) * impacts * steps
+    steps = (run.spec.step_cap if run.engine != "reference" else 1.2 * batch.steps_per_contact) if batch else 5e3
+    return ENGINES[run.engine].campaign_seconds(impacts, steps)
 
 
 def opened(store):

@@ -4,7 +4,7 @@ import itertools
 import tomllib
 from dataclasses import dataclass, replace
 
-from ..api import statuses
+from ..api import options_for, statuses
 from ..engines import ENGINES
 from ..errors import UserError
 from ..plan import CONVERGED, compare_plan
@@ -93,10 +93,10 @@ def tasks(campaign):
     """(the campaign's tasks as Runs, [(engine, reason)] of engines asked for that cannot run)."""
     runs, skipped = [], {}
     for request in campaign.requests:
-        found = statuses(request)            # an engine without this law is left out of it, not skipped
+        found = statuses(request, refuse=False)      # an engine without this law is left out of it, not skipped
         skipped.update({s.name: s.reason for s in found
                         if not s.available and ENGINES[s.name].supports(request.law.name)})
-        engines = {ENGINES[s.name]: request.engine_options.get(s.name, {}) for s in found if s.available}
+        engines = {ENGINES[s.name]: options_for(request, s.name) for s in found if s.available}
         engine_resolution = 1000 if request.resolution == CONVERGED else request.resolution
         plan = compare_plan(request.law, request.scene, request.resolution, engines, engine_resolution)
         for run in plan:

@@ -8,6 +8,7 @@ import shutil
 import stat
 import sys
 import uuid
+from contextlib import suppress
 
 import numpy as np
 import pandas as pd
@@ -124,8 +125,13 @@ class Store:
 
     def _write(self, name, frame):
         tmp = os.path.join(self.path, f".{name}.{uuid.uuid4().hex}.tmp")      # dot files: no reader sees them
-        pq.write_table(pa.Table.from_pandas(frame, preserve_index=False), tmp)
-        os.replace(tmp, os.path.join(self.path, name))
+        try:
+            pq.write_table(pa.Table.from_pandas(frame, preserve_index=False), tmp)
+            os.replace(tmp, os.path.join(self.path, name))
+        except BaseException:
+            with suppress(FileNotFoundError):      # an interrupt mid-write leaves no half fragment behind
+                os.unlink(tmp)
+            raise
         self.held[name] = frozenset(frame[KEY].unique())
 
     def put(self, key, frame, log_tail=""):

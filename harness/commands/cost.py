@@ -4,9 +4,10 @@ import os
 
 import pandas as pd
 
-from ..analyses.cost import COLUMNS, LADDER, TIMING_REPEATS, convergence_orders, cost_table, recommendations
+from ..analyses.cost import COLUMNS, LADDER, convergence_orders, recommendations
 from ..api import options_for, statuses
 from ..campaign.store import DROP, DROP_HELP, RunCache, Store
+from ..cost_plan import TIMING_REPEATS, cost_table
 from ..engines import ENGINES
 from ..errors import UserError
 from ..files import discard
@@ -14,7 +15,7 @@ from ..lock import exclusive
 from ..outputs import COST, save_cost
 from ..request import Request
 from ..results import write_csv
-from ..solver.plan import MAX_STEPS_PER_CONTACT
+from ..solver.batch import MAX_STEPS_PER_CONTACT
 from ..views.html import rebuild
 from ..views.progress import Progress
 from ..views.terminal import print_cost

@@ -7,7 +7,7 @@ from ..laws import LAWS
 from ..lock import LOCK, exclusive
 from ..paper import figure_set
 from ..results import write_csv
-from ..solver.plan import MAX_STEPS_PER_CONTACT
+from ..solver.batch import MAX_STEPS_PER_CONTACT
 from ..views.paper_html import FILES, NORMAL, OBLIQUE, PUBLISHED, SLIDING, write_paper_report
 from ..views.progress import Progress
 from ..views.terminal import published_summary, text_table

@@ -15,3 +15,9 @@ def get_engine(name):
     if name not in ENGINES:
         raise UserError(f"unknown engine {name!r}; known: {', '.join(ENGINES)}")
     return ENGINES[name]
+
+
+def known_cause(dialect, model, kind):
+    """The documented cause of a finding of `model` in `dialect`, from the engine whose dialect it is
+    (Engine.KNOWN_CAUSES), or ''."""
+    return next((engine.known_cause(model, kind) for engine in ENGINES.values() if engine.dialect_label == dialect), "")

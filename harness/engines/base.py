@@ -8,7 +8,7 @@ from functools import lru_cache
 from ..errors import UserError
 from ..laws import compose
 from ..laws.law import replace_submodels
-from .batches import max_steps_of, run_grouped
+from .batches import run_grouped
 from .executable import banner, chosen, missing, present
 from .protocol import Status, check_options as check_declared
 from .runner import EngineFailure, read_tail
@@ -159,8 +159,9 @@ class Engine:
         return self.STARTUP_S + self.SPHERE_STEP_S * impacts * steps
 
     # --- running it ---------------------------------------------------------------------------------------------
-    def render_batch(self, paper_law, scene, batch, max_steps, options=None, observe=False):
-        """The text of the input that runs one batch (an EngineFailure refuses it, with the reason)."""
+    def render_batch(self, paper_law, scene, spec, options=None, observe=False):
+        """The text of the input that runs one run's spec (harness.plan.RunSpec: its impacts, time step, step cap and
+        output cadence); an EngineFailure refuses it, with the reason."""
         raise NotImplementedError(f"{self.NAME} renders no input")
 
     def run_inputs(self, flavour, count, timeout_s, workdir):
@@ -168,42 +169,39 @@ class Engine:
         EngineFailure that ended it."""
         raise NotImplementedError(f"{self.NAME} runs no input")
 
-    def read_batch(self, scene, batch, directory, observe=False):
-        """A finished batch's final state from `directory`: v_n1, v_t1, omega1 and separated per impact; with
-        `observe` also t_contact, f_n_max and overlap_max."""
+    def read_batch(self, scene, spec, directory, observe=False):
+        """The final state of a finished run's spec from `directory`: v_n1, v_t1, omega1 and separated per impact;
+        with `observe` also t_contact, f_n_max and overlap_max."""
         raise NotImplementedError(f"{self.NAME} writes no output")
 
     def run(self, runs):
-        """Each run of the plan (one batch: a law, an e_n, every impact) as (results frame, failure or None); the
-        runs of one flavour share processes, one per core."""
+        """Each run of the plan (one batch: a law, an e_n, every impact) as (results frame, failure or None), each
+        told what to run by run.spec; the runs of one flavour share processes, one per core."""
         return run_grouped(self.NAME, self.version(), runs, self.INPUT_NAME,
-                           lambda run, batch: self.render_batch(run.law, run.scene, batch, max_steps_of(batch),
-                                                                run.options_dict, run.observe),
+                           lambda run: self.render_batch(run.law, run.scene, run.spec, run.options_dict, run.observe),
                            lambda run: self.flavour(run.options_dict), self.run_inputs,
-                           lambda run, batch, directory: self.read_batch(run.scene, batch, directory, run.observe))
+                           lambda run, directory: self.read_batch(run.scene, run.spec, directory, run.observe))
 
-    def run_batch(self, paper_law, scene, batch, max_steps, timeout_s, workdir, options=None, observe=False):
-        """One batch alone in `workdir`, stopped after max_steps: (final state as read_batch gives it, wall
-        seconds, log tail)."""
+    def run_batch(self, paper_law, scene, spec, timeout_s, workdir, options=None, observe=False):
+        """One run's spec alone in `workdir`: (final state as read_batch gives it, wall seconds, log tail)."""
         directory = os.path.join(workdir, "batch0")
         os.makedirs(directory, exist_ok=True)
         with open(os.path.join(directory, self.INPUT_NAME), "w") as handle:
-            handle.write(self.render_batch(paper_law, scene, batch, max_steps, options, observe))
+            handle.write(self.render_batch(paper_law, scene, spec, options, observe))
         wall, = self.run_inputs(self.flavour(dict(options or {})), 1, timeout_s, workdir)
         log_tail = read_tail(os.path.join(workdir, "engine.log"))
         if isinstance(wall, EngineFailure):
             raise wall
         try:
-            return self.read_batch(scene, batch, directory, observe), wall, log_tail
+            return self.read_batch(scene, spec, directory, observe), wall, log_tail
         except EngineFailure as exc:
             raise EngineFailure(str(exc), exc.log_tail or log_tail) from None
 
     def render(self, run):
         """(file name, text) of the input a run would give the engine (harness render); a refusal of its input
         rules is the user's to fix, so it is a UserError."""
-        batch = run.batch()
         try:
-            text = self.render_batch(run.law, run.scene, batch, max_steps_of(batch), run.options_dict)
+            text = self.render_batch(run.law, run.scene, run.spec, run.options_dict)
         except EngineFailure as exc:
             raise UserError(str(exc)) from None
         return f"{self.NAME}-{run.law.name}-en{run.e_n:g}{self.INPUT_SUFFIX}", text

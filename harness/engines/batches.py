@@ -1,4 +1,5 @@
-"""One run of the plan through an external engine as result rows (a failed batch keeps its log)."""
+"""One run of the plan through an external engine as result rows (a failed batch keeps its log); an engine learns
+what to run from the run's spec (harness.plan.RunSpec)."""
 import os
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
@@ -7,7 +8,6 @@ import numpy as np
 
 from ..results import impact_frame
 from ..solver.threads import THREADS
-from ..solver.codes import P_MAXSTEPS
 from .runner import EngineFailure, read_tail, scratch
 
 TIMEOUT_FLOOR_S = 120.0
@@ -26,98 +26,91 @@ class FailedRun:
 OBSERVED = ("t_contact", "f_n_max", "overlap_max")
 
 
-def timeout_of(batch, max_steps):
-    """A generous deadline for one batch: a floor for start-up plus a rate per sphere-step."""
-    return TIMEOUT_FLOOR_S + stepping_s(batch, max_steps)
+def stepping_s(spec):
+    return SECONDS_PER_ATOM_STEP * spec.impacts * spec.step_cap
 
 
-def stepping_s(batch, max_steps):
-    return SECONDS_PER_ATOM_STEP * len(batch.v_n0) * max_steps
+def identity_of(engine, version, run):
+    spec = run.spec
+    return dict(model=run.law.name, dialect=run.dialect.dialect, engine=engine, engine_version=version, dt=spec.dt,
+                steps_per_contact=spec.steps_per_contact)
 
 
-def max_steps_of(batch):
-    return int(batch.params[:, P_MAXSTEPS].max())
-
-
-def identity_of(engine, version, run, batch):
-    return dict(model=run.law.name, dialect=run.dialect.dialect, engine=engine, engine_version=version, dt=batch.dt,
-                steps_per_contact=batch.steps_per_contact)
-
-
-def failed_rows(engine, version, run, batch, failure):
+def failed_rows(engine, version, run, failure):
     """'failed' rows of a run that produced nothing, carrying its one-line message, and its FailedRun."""
-    nan = np.full(len(batch.v_n0), np.nan)
-    frame = impact_frame(run.scene, batch, **identity_of(engine, version, run, batch), v_n1=nan, v_t1=nan, omega1=nan,
+    spec = run.spec
+    nan = np.full(spec.impacts, np.nan)
+    frame = impact_frame(run.scene, spec, **identity_of(engine, version, run), v_n1=nan, v_t1=nan, omega1=nan,
                          wall_s=np.nan, status="failed", message=str(failure))
-    return frame, FailedRun(engine, batch.e_n, str(failure), failure.log_tail)
+    return frame, FailedRun(engine, spec.e_n, str(failure), failure.log_tail)
 
 
-def result_rows(engine, version, run, batch, final, wall):
+def result_rows(engine, version, run, final, wall):
     """The rows of a run that finished: each impact's rebound, whether it separated, its share of the wall time."""
+    spec = run.spec
     observed = {name: final[name] for name in OBSERVED if run.observe}
-    return impact_frame(run.scene, batch, **identity_of(engine, version, run, batch), v_n1=final["v_n1"],
-                        v_t1=final["v_t1"], omega1=final["omega1"], wall_s=wall / len(batch.v_n0),
+    return impact_frame(run.scene, spec, **identity_of(engine, version, run), v_n1=final["v_n1"],
+                        v_t1=final["v_t1"], omega1=final["omega1"], wall_s=wall / spec.impacts,
                         status=np.where(final["separated"], "ok", "no-separation"), message="", **observed)
 
 
 def run_grouped(engine, version, runs, input_name, render, group_of, run_inputs, read, deadline=None):
     """Each run as (results frame, FailedRun or None). The runs of one group (group_of(run): e.g. the flavour) share
     engine processes, one per core at most, each batch in its own directory batch<k> of the process's temporary
-    directory with its input in `input_name`; the processes run side by side. render(run, batch) -> its input text (an
+    directory with its input in `input_name`; the processes run side by side. render(run) -> its input text (an
     EngineFailure refuses that run alone); run_inputs(group, n, timeout, workdir) runs the n inputs and returns each
     batch's wall seconds (an EngineFailure fails the process: its batches are then run one per process, so that each
-    failure is its own); read(run, batch, directory) -> its final state. The engine's deadline: after its first
-    timeout, its batches not yet finished are skipped with the reason (a hung engine costs one timeout, not one per
-    batch)."""
+    failure is its own); read(run, directory) -> its final state; each learns what it runs from run.spec. The engine's
+    deadline: after its first timeout, its batches not yet finished are skipped with the reason (a hung engine costs
+    one timeout, not one per batch)."""
     out, groups = [None] * len(runs), {}
     deadline = deadline if deadline is not None else []         # the first timeout of this engine, once it happens
     for i, run in enumerate(runs):
-        batch = run.batch()
         try:
-            text = render(run, batch)
+            text = render(run)
         except EngineFailure as exc:
-            out[i] = failed_rows(engine, version, run, batch, exc)
+            out[i] = failed_rows(engine, version, run, exc)
             continue
-        groups.setdefault(group_of(run), []).append((i, run, batch, text))
+        groups.setdefault(group_of(run), []).append((i, run, text))
     shares = [(group, items[k::processes]) for group, items in groups.items()
               for processes in [min(THREADS, len(items))] for k in range(processes)]
 
     def skipped(items):
-        for i, run, batch, _ in items:
-            out[i] = failed_rows(engine, version, run, batch, EngineFailure(
+        for i, run, _ in items:
+            out[i] = failed_rows(engine, version, run, EngineFailure(
                 f"skipped: an earlier {engine} run timed out ({deadline[0]})", deadline[0].log_tail))
 
     def one_process(group, items):
         if deadline:
             return skipped(items)
         with scratch(engine) as workdir:
-            for k, (_, _, _, text) in enumerate(items):
+            for k, (_, _, text) in enumerate(items):
                 os.makedirs(os.path.join(workdir, f"batch{k}"))
                 with open(os.path.join(workdir, f"batch{k}", input_name), "w") as handle:
                     handle.write(text)
-            timeout = TIMEOUT_FLOOR_S + sum(stepping_s(batch, max_steps_of(batch)) for _, _, batch, _ in items)
+            timeout = TIMEOUT_FLOOR_S + sum(stepping_s(run.spec) for _, run, _ in items)
             try:
                 walls = run_inputs(group, len(items), timeout, workdir)
             except EngineFailure as exc:
                 if exc.timed_out:            # every batch of this process shares the timeout; later ones skip
                     deadline.append(exc)
-                    for i, run, batch, _ in items:
-                        out[i] = failed_rows(engine, version, run, batch, exc)
+                    for i, run, _ in items:
+                        out[i] = failed_rows(engine, version, run, exc)
                     return
                 if len(items) > 1:           # one process per batch, so that the failure names its batch
-                    for i, run, _, _ in items:
+                    for i, run, _ in items:
                         out[i] = run_grouped(engine, version, [run], input_name, render, group_of, run_inputs,
                                              read, deadline)[0]
                     return
                 walls = [exc]
-            for k, ((i, run, batch, _), wall) in enumerate(zip(items, walls)):
+            for k, ((i, run, _), wall) in enumerate(zip(items, walls)):
                 try:
                     if isinstance(wall, EngineFailure):
                         raise wall
-                    final = read(run, batch, os.path.join(workdir, f"batch{k}"))
-                    out[i] = (result_rows(engine, version, run, batch, final, wall), None)
+                    final = read(run, os.path.join(workdir, f"batch{k}"))
+                    out[i] = (result_rows(engine, version, run, final, wall), None)
                 except EngineFailure as exc:        # every failure carries the log of the process that ran it
-                    out[i] = failed_rows(engine, version, run, batch, EngineFailure(
+                    out[i] = failed_rows(engine, version, run, EngineFailure(
                         str(exc), exc.log_tail or read_tail(os.path.join(workdir, "engine.log"))))
     if len(shares) == 1:
         one_process(*shares[0])

@@ -7,7 +7,7 @@ from numba import njit
 from ..submodels.tangential.state import N_TSTATE, T_HELD, T_MARGIN, T_STEP
 from ..submodels.tangential.viscous import friction as viscous_friction
 from . import codes as C
-from .compiles import LEAPFROG, PAPER, VELOCITY_VERLET, VERLET_PAIR
+from .switches import LEAPFROG, PAPER, VELOCITY_VERLET, VERLET_PAIR
 from .dispatch import TANGENTIAL_NONE, TANGENTIAL_VISCOUS, tangential_after_cap, tangential_stiffness
 from .spring import cap, spring_force
 from .state import S_ALPHA, S_FEL, S_FS, S_FT, S_NOLD, S_U, S_VX, S_VZ, S_W

@@ -18,8 +18,8 @@ from ..submodels.stepping import GEOMETRIES, INTEGRATORS, STEPPERS
 from ..submodels.tangential.state import N_TSTATE, T_HELD, T_MARGIN
 from ..submodels.tangential.viscous import friction as viscous_friction
 from . import codes as C
-from .compiled import announce_compiling
-from .compiles import LEAPFROG, LEAPFROG_PAIR, LEAPFROG_SPHERE, PAPER, VELOCITY_VERLET, VERLET_PAIR
+from .compile_notice import announce_compiling
+from .switches import LEAPFROG, LEAPFROG_PAIR, LEAPFROG_SPHERE, PAPER, VELOCITY_VERLET, VERLET_PAIR
 from .dispatch import N_NORMAL, TANGENTIAL_NONE, TANGENTIAL_VISCOUS, tangential_stiffness
 from .events import locate_release, split_at_event
 from .mesh import PEAK_POINTS, graded_step, parabola_peak, polynomial_peak
@@ -38,7 +38,7 @@ CONE_BAND = 1e-9          # relative: a tangential force this close to mu F_n co
 @njit(cache=True, nogil=True)
 def integrate_rows(first, last, params, ints, out, history, stride, ext, work):
     """Integrate rows first..last-1 of `params`/`ints`, each with its scheme's step (among the steppers this copy of
-    the solver compiles: compiles.py) and, for the paper scheme, its located events, release and first touch; fill
+    the solver compiles: switches.py) and, for the paper scheme, its located events, release and first touch; fill
     `out` and, if stride > 0, `history`. `work`: a row of WORK floats per row, the states and samples it steps
     through."""
     n_hist = history.shape[1]
@@ -201,7 +201,7 @@ def law_kernels(ints):
 
 
 def stepper_of(integrator, geometry):
-    """The stepper (compiles.STEPPERS) of a batch of the integrator and geometry codes given."""
+    """The stepper (switches.STEPPERS) of a batch of the integrator and geometry codes given."""
     names = ({k.code: k.name for k in INTEGRATORS}[integrator], {k.code: k.name for k in GEOMETRIES}[geometry])
     return STEPPERS[names][0]
 

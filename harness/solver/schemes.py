@@ -31,14 +31,6 @@ def damping_power(alpha, power):
 
 
 @compiled
-def dashpot_potential(c0, power, alpha):
-    """D(alpha) = c0 alpha^(p+1)/(p+1): dD/dt = c(alpha) alpha_dot, so the dashpot impulse depends on positions only."""
-    if alpha <= 0.0 or c0 == 0.0:
-        return 0.0
-    return c0 * alpha * damping_power(alpha, power) / (power + 1.0)
-
-
-@compiled
 def drift(alpha, rate0, c_alpha, h):
     """Linearised implicit midpoint for alpha' = (u_half - D(alpha))/m, u frozen: D(mid) = D(alpha_n) + c_n (x - alpha)/2
     gives x = alpha + h rate0 / (1 + h c_n/(2m)); c_alpha = h c_n/(2m). Unconditionally stable, O(h^3) locally."""

@@ -1,5 +1,5 @@
 """Compile only what a batch needs: a copy of the solver package under its own name that compiles only the batch's
-stepper (its compiles.py) and, for a batch of one law, whose dispatch module holds only that law's normal and
+stepper (its switches.py) and, for a batch of one law, whose dispatch module holds only that law's normal and
 tangential kernels, so numba types none of the others (docs/performance.md#first-use-compiling-the-kernels)."""
 import importlib
 import os
@@ -13,7 +13,7 @@ from numba.core import config
 from ..files import write_text
 from ..submodels.generate import source
 from ..submodels.registry import code_of, kernels
-from .compiles import STEPPERS
+from .switches import STEPPERS
 
 SOLVER = os.path.dirname(os.path.abspath(__file__))
 _LOADING = threading.Lock()
@@ -25,9 +25,9 @@ COMPILED_ALONE = ("mindlin-deresiewicz", "walton-braun")   # tangential kernels 
 
 
 def specialised(module, stepper, normal=None, tangential=None):
-    """`module` (kernel or adaptive) of the solver specialised to one stepper (compiles.STEPPERS) and, given a
+    """`module` (kernel or adaptive) of the solver specialised to one stepper (switches.STEPPERS) and, given a
     normal kernel, to it and either its tangential kernel (one of COMPILED_ALONE) or all the cheap ones: the package
-    `harness.solver_<stepper>[_n<normal>[_t<tangential>]]`, a copy of the solver's modules with its own compiles.py
+    `harness.solver_<stepper>[_n<normal>[_t<tangential>]]`, a copy of the solver's modules with its own switches.py
     and dispatch.py, written under numba's cache directory (named by the compiled sources). numba names a cache by
     its source file, so the copy is what keeps the specialised functions' caches apart from the general ones'. None
     where the cache directory cannot be written (the general kernels run then)."""
@@ -43,13 +43,13 @@ def specialised(module, stepper, normal=None, tangential=None):
 
 
 def generated(stepper, kept_normal, kept_tangential):
-    """The modules a specialised copy writes in place of the solver's: compiles.py, dispatch.py, and extension.py,
+    """The modules a specialised copy writes in place of the solver's: switches.py, dispatch.py, and extension.py,
     which re-exports the solver's own (its empty slot is compiled when imported: once is enough)."""
     flags = "".join(f"{name} = {name == stepper}\n" for name in STEPPERS) + f"STEPPERS = {STEPPERS!r}\n"
     extension = ('"""The solver\'s extension table and calls."""\n'
                  "from ..solver.extension import BELOW, FORCE, KINK, RESIDUAL, SIGNATURE, SLOPE, call, missing, table  "
                  "# noqa: F401\n")
-    return {"compiles.py": flags, "dispatch.py": source(kept_normal, kept_tangential), "extension.py": extension}
+    return {"switches.py": flags, "dispatch.py": source(kept_normal, kept_tangential), "extension.py": extension}
 
 
 def load(label, generate, module):

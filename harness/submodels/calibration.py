@@ -109,11 +109,6 @@ def kuwabara_kono_y(e, end):
     return _invert(lambda y: _normalised_restitution(lambda x: 1.5 * math.sqrt(x), y, end), e, 1e-8, 20.0)
 
 
-def kuwabara_kono_restitution(y, end):
-    """e(y) of the normalised Kuwabara-Kono impact (the function kuwabara_kono_y inverts)."""
-    return _normalised_restitution(lambda x: 1.5 * math.sqrt(x), y, end)
-
-
 def thornton_restitution(r):
     """Thornton (1997) e(r), r = V_y/V <= 1 (docs/laws.md)."""
     if r >= 1.0:

@@ -45,7 +45,7 @@ GEOMETRIES = (
              True),
 )
 
-STEPPERS = {      # (integrator, geometry) -> the stepper that computes it (solver/compiles.py) and its Coulomb rules
+STEPPERS = {      # (integrator, geometry) -> the stepper that computes it (solver/switches.py) and its Coulomb rules
     ("paper", "wall"): ("PAPER", ("spring",)),
     ("velocity-verlet", "wall"): ("VELOCITY_VERLET", ("spring", "total")),
     ("leapfrog", "wall"): ("LEAPFROG", ("spring", "total")),

@@ -10,6 +10,12 @@ from dataclasses import replace
 import pandas as pd
 from scipy.integrate import quad
 
+from ..engines import ENGINES
+from ..execute import run_all
+from ..laws import compose
+from ..plan import engine_runs, reference_runs
+from ..solver.batch import FixedTimeStep
+from ..two_spheres import with_bodies
 from .chung_ooi_cases import cases, published_e
 
 LAW = "hertz-mindlin"
@@ -54,7 +60,6 @@ def row(case, engine, quantity, value, expected=math.nan, scale=math.nan, tolera
 
 def damping_of(engine, case):
     """The words for what sets the rebound e_n in `engine`'s dialect of the law (its damping calibration)."""
-    from ..engines import ENGINES
     label = ENGINES[engine].dialect(LAW, {}, "wall" if case.target is None else "sphere").describe()["damping"]
     return DAMPING.get(label, f"its damping ({label})")
 
@@ -171,7 +176,6 @@ def checks(case, engine, table):
 
 def applicable(case, engine):
     """Why `engine` cannot run `case`, or '' when it can."""
-    from ..engines import ENGINES
     status = ENGINES[engine].status(LAW)
     if not status.available:
         return status.reason
@@ -186,10 +190,6 @@ def applicable(case, engine):
 
 def plan(case, engine):
     """The run of one case on one engine, at the case's own fixed time step."""
-    from ..engines import ENGINES
-    from ..laws import compose
-    from ..plan import engine_runs, reference_runs
-    from ..solver.plan import FixedTimeStep
     law, scene, dt = compose(LAW), case.effective_scene, FixedTimeStep(case.time_step)
     runs = (reference_runs(law, scene, dt) if engine == "reference" else
             engine_runs(ENGINES[engine], law, scene, dt, observe=case.test in (1, 2)))
@@ -198,7 +198,6 @@ def plan(case, engine):
 
 def outcome(case, frame, failure):
     """(results table, None) of a finished run (of two spheres, with each body's velocities), or (None, failure)."""
-    from ..two_spheres import with_bodies
     if failure is not None:
         return None, failure
     table = frame.reset_index(drop=True)
@@ -207,7 +206,6 @@ def outcome(case, frame, failure):
 
 def results(case, engine):
     """(results table, None) of one case on one engine, or (None, the failure) when the engine failed."""
-    from ..execute import run_all
     (frame, failure), = run_all([plan(case, engine)])
     return outcome(case, frame, failure)
 
@@ -215,7 +213,6 @@ def results(case, engine):
 def run_suite(engines=("reference",), progress=None):
     """Every test on every engine: the table of COLUMNS, a row per quantity (one per case an engine cannot run). The
     runs are executed together, so that an engine's share its processes."""
-    from ..execute import run_all
     pairs = [(case, engine) for case in cases() for engine in engines]
     reasons = [applicable(case, engine) for case, engine in pairs]
     jobs = [i for i, reason in enumerate(reasons) if not reason]

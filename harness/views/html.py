@@ -5,17 +5,21 @@ import os
 import numpy as np
 import pandas as pd
 
+from ..analyses.physics import CHECK_WORDS, Tolerances
+from ..analyses.published import published_distances
+from ..analyses.verdict import verdict
+from ..digitised import points_of, published_curves_apply
 from ..files import write_text
 from ..kinematics import CONVENTIONS
+from ..outputs import kinds, load_comparison, load_cost
 from ..render import environment
 from ..version import __version__
-from ..analyses.verdict import verdict
-from ..analyses.published import published_distances
-from ..digitised import published_curves_apply
 from . import style
+from .cost_html import cost_section
 from .drawing import draw_all
+from .paper_axes import (ANGLE_LABELS, PAPER_PANELS, PSI1_RANGE, draw_published, draw_rigid_body, in_window,
+                         set_paper_axes)
 from .pieces import figure_svg, number, records, si
-from ..analyses.physics import CHECK_WORDS, Tolerances
 
 
 def engines_ran(frame):
@@ -47,9 +51,6 @@ def series_figure(frame, title, x, ys, thresholds=None, published=None):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    from ..digitised import points_of
-    from .paper_axes import (ANGLE_LABELS, PANELS, PSI1_RANGE, draw_published, draw_rigid_body, in_window,
-                             set_paper_axes)
     paper = x == "psi1_star"
     beyond = {}
     if paper:
@@ -70,7 +71,7 @@ def series_figure(frame, title, x, ys, thresholds=None, published=None):
                 points = points_of(published, ys[0], e_n)
                 if not points.empty:
                     draw_published(ax, points, "tab:red", "published (TCC13, digitised)")
-            set_paper_axes(ax, ys[0], dict((c, label) for c, label, _ in PANELS)[ys[0]], int(beyond.get(e_n, 0)))
+            set_paper_axes(ax, ys[0], dict((c, label) for c, label, _ in PAPER_PANELS)[ys[0]], int(beyond.get(e_n, 0)))
             threshold = (thresholds or {}).get(e_n)
             if threshold is not None and np.isfinite(threshold):
                 ax.axvline(threshold, color="0.4", ls=":", lw=1, label=f"slides throughout (Psi1* >= {threshold:.3f})")
@@ -131,7 +132,6 @@ def hertz_ratios(normal, contact, speed):
 def rebuild(out_dir):
     """Write DIR/report.html from the files in DIR alone (a comparison, a cost study or both); returns its path.
     The report is always built from the saved data, so `harness report DIR` simulates nothing."""
-    from ..outputs import kinds, load_comparison, load_cost
     has_compare, has_cost = kinds(out_dir)
     return write_report(out_dir, load_comparison(out_dir) if has_compare else None,
                         load_cost(out_dir) if has_cost else None)
@@ -140,7 +140,6 @@ def rebuild(out_dir):
 def write_report(out_dir, comparison=None, cost=None):
     """Render DIR/report.html (self-contained) from a Comparison, a cost study (table, truth uncertainty, its run
     record) or both; returns its path."""
-    from .cost_html import cost_section
     env = environment(autoescape=True)
     cost_part = cost_section(*cost) if cost is not None else None
     files = sorted(name for name in os.listdir(out_dir) if name.endswith((".csv", ".json")))
@@ -149,16 +148,6 @@ def write_report(out_dir, comparison=None, cost=None):
                "title": comparison.law.name if comparison is not None else cost_part["model"]}
     html = env.get_template("report.html.j2").render(**context)
     return write_text(os.path.join(out_dir, "report.html"), html)
-
-
-def arithmetic(engine_options):
-    """The floating-point arithmetic each engine ran in: an engine that can change it says so (`arithmetic`)."""
-    from ..engines import ENGINES
-    return {name: engine.arithmetic(engine_options.get(name, {})) if hasattr(engine, "arithmetic") else DOUBLE
-            for name, engine in ENGINES.items()}
-
-
-DOUBLE = "double (IEEE 754 binary64)"
 
 
 def sliding_lines(sliding):
@@ -214,7 +203,7 @@ def compare_context(comparison, files=()):
                 verdict=record, command=comparison.command, date=comparison.date, files=files,
                 partial=comparison.partial,
                 summary=records(summary), skipped=comparison.skipped, rows=len(frame),
-                ran=engines_ran(frame), facts=records(run_facts(frame, arithmetic(comparison.engine_options))),
+                ran=engines_ran(frame), facts=records(run_facts(frame, comparison.arithmetic)),
                 agreement=records(comparison.agreement), physics=records(checks), deviation=records(comparison.deviation), cross=cross,
                 findings=records(comparison.findings), failures=comparison.failures, precision=records(precision),
                 ratios=ratios, sliding=records(sliding), published=records(distances),

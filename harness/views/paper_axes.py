@@ -4,7 +4,7 @@ import numpy as np
 
 PSI1_RANGE = (0.0, 14.0)                 # the paper's Psi1* axis
 RIGID_ONSET = 7.0                        # a rigid sphere slides throughout from Psi1* = 7
-PANELS = (   # (column, axis label, y range as the paper draws it)
+PAPER_PANELS = (   # (column, axis label, y range as the paper draws it)
     ("psi2_star", "rebound slip Psi2*", (-5.0, 8.0)),
     ("omega_star", "rebound spin Omega*", (-6.0, 0.5)),
     ("e_t", "tangential restitution e_t", (-0.6, 1.05)),
@@ -58,7 +58,7 @@ def set_paper_axes(ax, column, label, beyond_x=0):
     ax.set_xlim(*PSI1_RANGE)
     ax.set_xlabel(X_LABEL)
     ax.set_ylabel(label)
-    lo, hi = dict((c, r) for c, _, r in PANELS)[column]
+    lo, hi = dict((c, r) for c, _, r in PAPER_PANELS)[column]
     x, y = drawn_points(ax)
     shown = np.isfinite(x) & np.isfinite(y) & (x >= PSI1_RANGE[0]) & (x <= PSI1_RANGE[1])
     x, y = x[shown], y[shown]

@@ -9,11 +9,11 @@ from ..kinematics import CONVENTIONS
 from ..laws import LAWS
 from ..analyses.published import GOAL
 from ..digitised import points_of, provenance
-from ..paper import ELASTIC, PSI1_GRID
+from ..figures import ELASTIC, PSI1_GRID
 from ..render import environment
 from ..version import __version__
 from .drawing import draw_all
-from .paper_axes import PANELS, draw_published, draw_rigid_body, set_paper_axes
+from .paper_axes import PAPER_PANELS, draw_published, draw_rigid_body, set_paper_axes
 from .pieces import figure_svg, records
 
 OBLIQUE, NORMAL, SLIDING, PUBLISHED = "paper.csv", "paper-normal.csv", "paper-sliding.csv", "paper-published.csv"
@@ -33,8 +33,8 @@ def law_figure(oblique, sliding, name):
     rows = oblique[oblique.model == name]
     elastic = oblique[oblique.model == ELASTIC].sort_values("psi1_star")
     thresholds = dict(zip(sliding[sliding.model == name].e_n_target, sliding[sliding.model == name].simulated))
-    fig, axes = plt.subplots(1, len(PANELS), figsize=(4.2 * len(PANELS), 3.8), constrained_layout=True)
-    for ax, (column, label, _) in zip(axes, PANELS):
+    fig, axes = plt.subplots(1, len(PAPER_PANELS), figsize=(4.2 * len(PAPER_PANELS), 3.8), constrained_layout=True)
+    for ax, (column, label, _) in zip(axes, PAPER_PANELS):
         published = False
         for colour, (e_n, group) in zip(COLOURS, rows.groupby("e_n_target", sort=True)):
             group = group.sort_values("psi1_star")

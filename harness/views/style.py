@@ -3,10 +3,9 @@ own), the same in every figure; an engine's own run wide and pale under the thin
 reference, so both stay visible."""
 from itertools import cycle
 
-from ..engines import ENGINES
+from ..figures import engine_styles
 
-COLOURS = {name: engine.COLOUR for name, engine in ENGINES.items() if engine.COLOUR}
-DASHES = {engine.dialect_label: engine.DASHES for engine in ENGINES.values() if engine.DASHES}
+COLOURS, DASHES, _ = engine_styles()
 _spare_colours = cycle(["tab:red", "tab:brown", "tab:pink", "tab:olive", "tab:cyan"])
 _spare_dashes = cycle([(0, (5, 1, 1, 1)), (0, (1, 2))])
 
@@ -36,8 +35,7 @@ STYLE_WORDS = {"-": "solid", "--": "dashed", ":": "dotted", "-.": "dash-dotted"}
 
 def dialect_styles():
     """'dashed: liggghts' formulas; dotted: yade's; ...' for each engine's dialect line style (the report's legend)."""
-    words = [f"{STYLE_WORDS.get(engine.DASHES, 'own style')}: {name}'s formulas"
-             for name, engine in ENGINES.items() if engine.DASHES and name != "reference"]
+    words = [f"{STYLE_WORDS.get(style, 'own style')}: {name}'s formulas" for name, style in engine_styles()[2]]
     return "; ".join(words)
 
 

@@ -1,5 +1,8 @@
 """The terminal view: fixed-width tables and what compare, check, cost and paper print."""
+from ..analyses.cost import (METRICS, RAYLEIGH_FRACTION, WITHIN_NOISE, convergence_orders, per_rung, rayleigh_time,
+                              recommendations)
 from ..analyses.physics import CHECK_WORDS, Tolerances
+from ..analyses.published import GOAL, meets_goal
 
 
 def summary_lines(frame):
@@ -180,8 +183,6 @@ def print_comparison(comparison, written):
 
 def print_cost(table, uncertainty, law, scene, ladder, skipped, failures):
     """The cost study's tables: errors and times per rung, recommended time steps, orders of convergence."""
-    from ..analyses.cost import (METRICS, RAYLEIGH_FRACTION, WITHIN_NOISE, convergence_orders, per_rung,
-                                 rayleigh_time, recommendations)
     t_r = rayleigh_time(scene)
     print(f"{law.name}: accuracy against cost, {len(scene.e_n)} e_n x {len(scene.impacts(scene.e_n[0])[0])} "
           f"impacts; ladder {', '.join(map(str, ladder))} steps per contact, plus {RAYLEIGH_FRACTION:.0%} of the "
@@ -220,7 +221,6 @@ def print_cost(table, uncertainty, law, scene, ladder, skipped, failures):
 
 def published_summary(published):
     """The distances from the paper's published points (analyses/published.py) as a table, and the goal's verdict."""
-    from ..analyses.published import GOAL, meets_goal
     table = text_table(published, ["model", "e_n_target", "quantity", "points", "rms", "worst", "psi1_star_at_worst",
                                    "published_at_worst", "reference_at_worst"],
                        {"rms": "{:.3f}", "worst": "{:.3f}", "psi1_star_at_worst": "{:.2f}",

@@ -69,7 +69,7 @@ def pair_material(contact):
     return {"E": 2.0 * (1.0 - nu * nu) * contact.E_star, "nu": nu}
 
 
-def pair_deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, options=None, observe=False):
+def pair_deck(law, scene, spec, options=None, observe=False):
     """The batched deck of two-sphere impacts: pair k is atoms 2k-1 (the projectile, above) and 2k (its target, at
     rest, frozen when fixed), touching, their relative velocity the impact's; omega0 is the equivalent spin, so the
     projectile's own is (R* omega0 - R2 omega2)/R1. hertz/material gets each type's E and nu and the pair's mixing
@@ -79,40 +79,37 @@ def pair_deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_st
     spacing = 3.0 * (r1 + r2)
     pairs = [{"x": i * spacing, "vx": float(vt), "vz": -float(vn),
               "omega1": (r_star * float(w) - r2 * target.omega) / r1}
-             for i, (vn, vt, w) in enumerate(zip(v_n0, v_t0, omega0))]
-    values = settings(law, scene, e_n, options)
+             for i, (vn, vt, w) in enumerate(zip(spec.v_n0, spec.v_t0, spec.omega0))]
+    values = settings(law, scene, spec.e_n, options)
     normal_args = values.pop("normal_args")          # hooke: k_n, c_n/m; hertz/material: E, coefficient, nu
     k_n, coefficient = normal_args[0], normal_args[1]
     materials = [(1, 1, {"E": projectile.E, "nu": projectile.nu}), (2, 2, {"E": target.E, "nu": target.nu}),
                  (1, 2, pair_material(scene.contact))]
-    chunk = max(10, int(steps_per_contact // 10))
     big = max(r1, r2)
-    return render(TEMPLATES, "pair.in.j2", harness_version=__version__, law=law.name, mu=scene.mu, e_n=e_n,
+    return render(TEMPLATES, "pair.in.j2", harness_version=__version__, law=law.name, mu=scene.mu, e_n=spec.e_n,
                   pairs=pairs, coefficients=materials, coefficient=coefficient, x_lo=-2.0 * big,
                   x_hi=len(pairs) * spacing, box_half=2.0 * big, z_lo=-2.0 * r2, z_hi=2.0 * (r1 + r2) + 2.0 * r1,
-                  skin=0.5 * min(r1, r2), dt=dt, centres=r1 + r2, r1=r1, r2=r2, rho1=projectile.rho, rho2=target.rho,
-                  omega2=target.omega, fixed=target.fixed, chunk=chunk, max_chunks=max(1, max_steps // chunk + 1),
+                  skin=0.5 * min(r1, r2), dt=spec.dt, centres=r1 + r2, r1=r1, r2=r2, rho1=projectile.rho,
+                  rho2=target.rho, omega2=target.omega, fixed=target.fixed, chunk=spec.chunk, max_chunks=spec.chunks,
                   normal=values["normal"], damping=values["damping"], tangential=values["tangential"],
                   x_gamma_t=values["x_gamma_t"], k_n=k_n, k_t=values["k_t"], observe=bool(observe))
 
 
-def deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, options=None, observe=False):
-    """Render the batched deck (validated numbers and fixed words only; see harness.render); `observe` adds the
-    per-step contact dump (OBSERVE_DUMP)."""
+def deck(law, scene, spec, options=None, observe=False):
+    """Render the batched deck of a run's spec (harness.plan.RunSpec; validated numbers and fixed words only, see
+    harness.render); `observe` adds the per-step contact dump (OBSERVE_DUMP)."""
     if scene.spheres:
-        return pair_deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, options, observe)
+        return pair_deck(law, scene, spec, options, observe)
     if scene.wall not in walls(law.name, split_submodels(options)[0]):
         raise EngineFailure(f"LAMMPS' {law.name} decks use a wall of the sphere's own material")
     radius = scene.radius
     spacing = 4.0 * radius
     atoms = [{"x": i * spacing, "vx": float(vt), "vz": -float(vn), "omegay": float(w)}
-             for i, (vn, vt, w) in enumerate(zip(v_n0, v_t0, omega0))]
-    chunk = max(10, int(steps_per_contact // 10))
-    return render(TEMPLATES, "batch.in.j2", harness_version=__version__, law=law.name, mu=scene.mu, e_n=e_n,
+             for i, (vn, vt, w) in enumerate(zip(spec.v_n0, spec.v_t0, spec.omega0))]
+    return render(TEMPLATES, "batch.in.j2", harness_version=__version__, law=law.name, mu=scene.mu, e_n=spec.e_n,
                   atoms=atoms, x_lo=-2.0 * radius, x_hi=len(atoms) * spacing, box_half=2.0 * radius, z_lo=-radius,
-                  z_hi=4.0 * radius, skin=0.5 * radius, dt=dt, radius=radius, rho=scene.rho, chunk=chunk,
-                  max_chunks=max(1, max_steps // chunk + 1), observe=bool(observe),
-                  **settings(law, scene, e_n, options))
+                  z_hi=4.0 * radius, skin=0.5 * radius, dt=spec.dt, radius=radius, rho=scene.rho, chunk=spec.chunk,
+                  max_chunks=spec.chunks, observe=bool(observe), **settings(law, scene, spec.e_n, options))
 
 
 def run_inputs(_, count, timeout_s, workdir):
@@ -127,30 +124,29 @@ def run_inputs(_, count, timeout_s, workdir):
     return [done.wall_s / count] * count
 
 
-def read_batch(scene, batch, directory, observe=False):
-    """Rebound velocities and separation of one batch run in `directory` (and what observe mode saw)."""
+def read_batch(scene, spec, directory, observe=False):
+    """Rebound velocities and separation of one run's spec (harness.plan.RunSpec) run in `directory` (and what
+    observe mode saw)."""
     if scene.spheres:
-        final = pair_rebound(read_final(os.path.join(directory, "final.dump"), 2 * len(batch.v_n0), "LAMMPS", 6),
+        final = pair_rebound(read_final(os.path.join(directory, "final.dump"), 2 * spec.impacts, "LAMMPS", 6),
                              scene, "LAMMPS")
         if observe:
             projectile, target = scene.spheres
-            final.update(read_observed_pairs(os.path.join(directory, OBSERVE_DUMP), len(batch.v_n0),
-                                             projectile.radius + target.radius, batch.dt, "LAMMPS"))
+            final.update(read_observed_pairs(os.path.join(directory, OBSERVE_DUMP), spec.impacts,
+                                             projectile.radius + target.radius, spec.dt, "LAMMPS"))
         return final
-    return read_outputs(directory, batch, scene.radius, observe)
+    return read_outputs(directory, spec, scene.radius, observe)
 
 
-def read_outputs(directory, batch, radius, observe):
+def read_outputs(directory, spec, radius, observe):
     """Rebound velocities and separation from the final dump in `directory`; with `observe` also t_contact, f_n_max
     and overlap_max from the observe dump."""
-    final = rebound(read_final(os.path.join(directory, "final.dump"), len(batch.v_n0), "LAMMPS"), radius, "LAMMPS")
+    final = rebound(read_final(os.path.join(directory, "final.dump"), spec.impacts, "LAMMPS"), radius, "LAMMPS")
     if observe:
-        final.update(read_observed(os.path.join(directory, OBSERVE_DUMP), len(batch.v_n0), radius, batch.dt,
-                                   "LAMMPS"))
+        final.update(read_observed(os.path.join(directory, OBSERVE_DUMP), spec.impacts, radius, spec.dt, "LAMMPS"))
     return final
 
 
-def render_batch(paper_law, scene, batch, max_steps, options=None, observe=False):
-    """The deck text for one batch (for `harness render` and the runs)."""
-    return deck(paper_law, scene, batch.e_n, batch.dt, batch.v_n0, batch.v_t0, batch.omega0,
-                batch.steps_per_contact, max_steps, options, observe)
+def render_batch(paper_law, scene, spec, options=None, observe=False):
+    """The deck text of one run's spec (harness.plan.RunSpec; for `harness render` and the runs)."""
+    return deck(paper_law, scene, spec, options, observe)

@@ -91,12 +91,12 @@ def wall_material(scene, model):
     return [(RIGID_E, 0.0)] if scene.wall == "rigid" else [(scene.wall_E, scene.wall_nu)]
 
 
-def pair_deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, observe=False):
+def pair_deck(law, scene, spec, observe=False):
     """The batched deck of two-sphere impacts: pair k is atoms 2k-1 (the projectile, above) and 2k (its target, at
     rest, frozen when fixed), touching, their relative velocity the impact's, each of its own material; omega0 is the
     equivalent spin,
     so the projectile's own is (R* omega0 - R2 omega2)/R1."""
-    model, tangential, _, properties, restitution = settings(law, scene, e_n, {})
+    model, tangential, _, properties, restitution = settings(law, scene, spec.e_n, {})
     if any(style not in ("scalar", "peratomtypepair") for _, style, _ in properties):
         raise EngineFailure(f"LIGGGHTS' pair decks take no per-type property of {model}")
     projectile, target = scene.spheres
@@ -104,24 +104,24 @@ def pair_deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_st
     spacing = 3.0 * (r1 + r2)
     pairs = [{"x": i * spacing, "vx": float(vt), "vz": -float(vn),
               "omega1": (r_star * float(w) - r2 * target.omega) / r1}
-             for i, (vn, vt, w) in enumerate(zip(v_n0, v_t0, omega0))]
-    chunk = max(10, int(steps_per_contact // 10))
+             for i, (vn, vt, w) in enumerate(zip(spec.v_n0, spec.v_t0, spec.omega0))]
     big = max(r1, r2)
     text = render(TEMPLATES, "pair.in.j2", harness_version=__version__, law=law.name, model=model, e_n=restitution,
                   E1=projectile.E, E2=target.E, nu1=projectile.nu, nu2=target.nu, pairs=pairs, properties=properties,
                   x_lo=-2.0 * big, x_hi=len(pairs) * spacing, box_half=2.0 * big, z_lo=-2.0 * r2,
                   z_hi=2.0 * (r1 + r2) + 2.0 * r1, skin=0.5 * min(r1, r2), mu=scene.mu, tangential=tangential,
-                  dt=dt, centres=r1 + r2, r1=r1, r2=r2, rho1=projectile.rho, rho2=target.rho, omega2=target.omega,
-                  fixed=target.fixed,
-                  chunk=chunk, max_chunks=max(1, max_steps // chunk + 1), observe=bool(observe))
+                  dt=spec.dt, centres=r1 + r2, r1=r1, r2=r2, rho1=projectile.rho, rho2=target.rho,
+                  omega2=target.omega, fixed=target.fixed, chunk=spec.chunk, max_chunks=spec.chunks,
+                  observe=bool(observe))
     return Deck(text, model, 2 * len(pairs))
 
 
-def deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, options=None, observe=False):
-    """Render the batched deck (validated numbers and fixed words only; see harness.render); `observe` adds the
-    per-step contact dump (OBSERVE_DUMP)."""
+def deck(law, scene, spec, options=None, observe=False):
+    """Render the batched deck of a run's spec (harness.plan.RunSpec; validated numbers and fixed words only, see
+    harness.render); `observe` adds the per-step contact dump (OBSERVE_DUMP)."""
     if scene.spheres:
-        return pair_deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, observe)
+        return pair_deck(law, scene, spec, observe)
+    e_n = spec.e_n
     model, tangential, options, properties, restitution = settings(law, scene, e_n, options)
     if not MIN_RESTITUTION < restitution <= 1.0:
         raise EngineFailure(f"LIGGGHTS accepts coefficientRestitution in (0.05, 1] only; e_n = {e_n:g} was not run")
@@ -131,14 +131,13 @@ def deck(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, 
     radius = scene.radius
     spacing = 4.0 * radius
     atoms = [{"x": i * spacing, "vx": float(vt), "vz": -float(vn), "omegay": float(w)}
-             for i, (vn, vt, w) in enumerate(zip(v_n0, v_t0, omega0))]
-    chunk = max(10, int(steps_per_contact // 10))
+             for i, (vn, vt, w) in enumerate(zip(spec.v_n0, spec.v_t0, spec.omega0))]
     text = render(TEMPLATES, "batch.in.j2", harness_version=__version__, law=law.name, model=model, e_n=restitution,
                   types=1 + len(walls), E=[scene.E] + [w[0] for w in walls], nu=[scene.nu] + [w[1] for w in walls],
                   atoms=atoms, x_lo=-2.0 * radius, x_hi=len(atoms) * spacing, box_half=2.0 * radius,
                   z_lo=-radius, z_hi=4.0 * radius, skin=0.5 * radius, mu=scene.mu,
-                  properties=properties, tangential=tangential, options=options, dt=dt, radius=radius,
-                  rho=scene.rho, chunk=chunk, max_chunks=max(1, max_steps // chunk + 1), observe=bool(observe))
+                  properties=properties, tangential=tangential, options=options, dt=spec.dt, radius=radius,
+                  rho=scene.rho, chunk=spec.chunk, max_chunks=spec.chunks, observe=bool(observe))
     return Deck(text, model, len(atoms))
 
 
@@ -182,24 +181,22 @@ def final_state(state, radius, log_tail=""):
     return rebound(state, radius, "LIGGGHTS", log_tail)
 
 
-def read_batch(scene, batch, directory, observe=False):
-    """The final state of one batch run in `directory` (and what observe mode saw)."""
+def read_batch(scene, spec, directory, observe=False):
+    """The final state of one run's spec (harness.plan.RunSpec) run in `directory` (and what observe mode saw)."""
     if scene.spheres:
-        final = pair_rebound(read_final(os.path.join(directory, "final.dump"), 2 * len(batch.v_n0), "LIGGGHTS", 6),
+        final = pair_rebound(read_final(os.path.join(directory, "final.dump"), 2 * spec.impacts, "LIGGGHTS", 6),
                              scene, "LIGGGHTS")
         if observe:
             projectile, target = scene.spheres
-            final.update(read_observed_pairs(os.path.join(directory, OBSERVE_DUMP), len(batch.v_n0),
-                                             projectile.radius + target.radius, batch.dt, "LIGGGHTS"))
+            final.update(read_observed_pairs(os.path.join(directory, OBSERVE_DUMP), spec.impacts,
+                                             projectile.radius + target.radius, spec.dt, "LIGGGHTS"))
         return final
-    final = final_state(read_dump(os.path.join(directory, "final.dump"), len(batch.v_n0)), scene.radius)
+    final = final_state(read_dump(os.path.join(directory, "final.dump"), spec.impacts), scene.radius)
     if observe:
-        final.update(read_observation(os.path.join(directory, OBSERVE_DUMP), len(batch.v_n0), scene.radius,
-                                      batch.dt))
+        final.update(read_observation(os.path.join(directory, OBSERVE_DUMP), spec.impacts, scene.radius, spec.dt))
     return final
 
 
-def render_batch(paper_law, scene, batch, max_steps, options=None, observe=False):
-    """The deck text for one batch, as run_batch would run it (for `harness render`)."""
-    return deck(paper_law, scene, batch.e_n, batch.dt, batch.v_n0, batch.v_t0, batch.omega0,
-                batch.steps_per_contact, max_steps, options, observe).text
+def render_batch(paper_law, scene, spec, options=None, observe=False):
+    """The deck text of one run's spec (harness.plan.RunSpec), as Engine.run_batch would run it."""
+    return deck(paper_law, scene, spec, options, observe).text

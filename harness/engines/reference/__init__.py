@@ -40,7 +40,7 @@ class Reference(Engine):
     def run(self, runs):
         """(results frame, None) of each run: `simulate` of its dialect at its resolution."""
         from ...plan import CONVERGED
-        from ...solver.reference import simulate
+        from ...solver.simulate import simulate
         out = []
         for run in runs:
             converged = run.resolution == CONVERGED

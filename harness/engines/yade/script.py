@@ -27,18 +27,18 @@ def viscel_contact_time(law, scene, e_n):
     return math.sqrt((math.pi ** 2 + math.log(e_n) ** 2) * 0.5 * scene.contact.mass / k)
 
 
-def script(law, scene, e_n, dt, v_n0, v_t0, omega0, steps_per_contact, max_steps, linear="viscel", observe=False):
-    """Render the batched script (validated numbers and fixed words only; see harness.render); `observe` adds the
-    per-step PyRunner that writes OBSERVE_FILE."""
+def script(law, scene, spec, linear="viscel", observe=False):
+    """Render the batched script of a run's spec (harness.plan.RunSpec; validated numbers and fixed words only, see
+    harness.render); `observe` adds the per-step PyRunner that writes OBSERVE_FILE."""
     import math
+    e_n, v_n0, v_t0, omega0 = spec.e_n, spec.v_n0, spec.v_t0, spec.omega0
     radius = scene.radius
     spheres = [{"x": i * 4.0 * radius, "vx": float(vt), "vz": -float(vn), "omegay": float(w)}
                for i, (vn, vt, w) in enumerate(zip(v_n0, v_t0, omega0))]
-    chunk = max(10, int(steps_per_contact // 10))
     common = dict(harness_version=__version__, law=law.name, law2=COUNTERPARTS[law.name], e_n=e_n, rho=scene.rho,
                   friction_angle=math.atan(scene.mu), radius=radius, height=radius, spheres=spheres,
-                  ig2="Ig2_Wall_Sphere_ScGeom", hertzian=True, dt=dt, chunk=chunk,
-                  max_chunks=max(1, max_steps // chunk + 1), observe=bool(observe), other=None, target=None)
+                  ig2="Ig2_Wall_Sphere_ScGeom", hertzian=True, dt=spec.dt, chunk=spec.chunk,
+                  max_chunks=spec.chunks, observe=bool(observe), other=None, target=None)
     if scene.spheres:
         return pair_script(scene, e_n, v_n0, v_t0, omega0, common)
     if scene.wall != "same":
@@ -148,16 +148,16 @@ def run_inputs(precision, count, timeout_s, workdir):
     return [w if isinstance(w, EngineFailure) else w + startup for w in walls]
 
 
-def read_batch(scene, batch, directory, observe=False):
-    """The final state of one batch run in `directory` (and what observe mode saw)."""
-    n = len(batch.v_n0)
+def read_batch(scene, spec, directory, observe=False):
+    """The final state of one run's spec (harness.plan.RunSpec) run in `directory` (and what observe mode saw)."""
+    n = spec.impacts
     if scene.spheres:
         rows = read_result(os.path.join(directory, "result.txt"), n, columns=PAIR_COLUMNS)
         final = pair_rebound(rows.reshape(2 * n, 5), scene, "YADE")
     else:
         final = final_of(read_result(os.path.join(directory, "result.txt"), n))
     if observe:
-        final.update(read_observation(os.path.join(directory, OBSERVE_FILE), len(batch.v_n0), batch.dt))
+        final.update(read_observation(os.path.join(directory, OBSERVE_FILE), n, spec.dt))
     return final
 
 
@@ -179,7 +179,6 @@ def read_observation(path, n_spheres, dt):
     return {"t_contact": (last - first + 1) * dt, "f_n_max": force, "overlap_max": overlap}
 
 
-def render_batch(paper_law, scene, batch, max_steps, options=None, observe=False):
-    """The script text for one batch, as run_batch would run it (for `harness render`)."""
-    return script(paper_law, scene, batch.e_n, batch.dt, batch.v_n0, batch.v_t0, batch.omega0,
-                  batch.steps_per_contact, max_steps, dict(options or {}).get("linear", "viscel"), observe)
+def render_batch(paper_law, scene, spec, options=None, observe=False):
+    """The script text of one run's spec (harness.plan.RunSpec), as Engine.run_batch would run it."""
+    return script(paper_law, scene, spec, dict(options or {}).get("linear", "viscel"), observe)

@@ -1,4 +1,4 @@
-"""Plan: turn (law, scene, e_n) into kernel rows, switching on only the effects the scene calls for."""
+"""A batch: (law, scene, e_n) as kernel rows, switching on only the effects the scene calls for."""
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -37,6 +37,11 @@ class Batch:
     steps_per_contact: float
     tangential_active: np.ndarray
 
+    @property
+    def step_cap(self):
+        """The most steps any of its impacts may take (the largest of the rows' caps)."""
+        return int(self.params[:, C.P_MAXSTEPS].max())
+
 
 def join(batches):
     """One batch holding the impacts of several batches of one material and one dt (one engine run)."""
@@ -74,7 +79,7 @@ def contact_point_lever(scene):
     return 0.5 * contact.mass * contact.radius * spread
 
 
-def plan_batch(law, scene, e_n, steps_per_contact, check_stability=True, every_effect=False, bounded=True):
+def batch_of(law, scene, e_n, steps_per_contact, check_stability=True, every_effect=False, bounded=True):
     """Kernel rows for every impact of the scene at target e_n; dt = (contact-time estimate at V) / steps, or the
     given FixedTimeStep; a dt above the stability limit is refused (harness.stability) unless the rows are for the
     adaptive integrator, which chooses its own steps. every_effect: the tangential model on every row whether the

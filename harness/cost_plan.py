@@ -1,0 +1,185 @@
+"""The cost study's runs (`harness cost`): each dialect's converged truth, then per curve a ladder of runs at each
+resolution, timed; the engines' start-up runs; the converged mode's own rungs. Each rung's results go to
+analyses/cost.py as soon as they are run, which turns them into cost rows."""
+from dataclasses import replace
+
+import pandas as pd
+
+from .analyses.cost import (ADAPTIVE, ADAPTIVE_RUNGS, COLUMNS, EXTRAPOLATED, LADDER, RAYLEIGH_FRACTION, Rows,
+                            converged_rows, fastest, measure, per_e_n, rayleigh_time, refused, uncertainties)
+from .execute import execute
+from .plan import engine_runs, reference_runs
+from .solver.batch import FixedTimeStep
+from .solver.simulate import CONVERGED_START, adaptive_batch, simulate, simulate_adaptive, simulate_extrapolated
+from .solver.stability import UnstableTimeStep
+
+TRUTH_STEPS = {"paper": 2 ** 16, "engine": 2 ** 18}   # the engines' schemes are first order: a finer truth
+TRUTH_SHARPEN = 1e-7             # a paper truth less certain than this is taken from the adaptive integrator ...
+TRUTH_TOLERANCE = 1e-11          # ... at this tolerance
+TIMING_REPEATS = 3               # each timed run and each start-up is timed this often: the fastest, and the spread
+LONG_RUN_S = 5.0                 # a run this long is timed once (the machine's noise is small beside it)
+STARTUP_STEPS = 1                # a start-up run's step cap: stopped after its first separation check
+STARTUP_RESOLUTION = 1000        # steps per contact of the start-up runs (their first check: a tenth of a contact)
+
+
+def truth_of(law, scene, cache=None):
+    """Converged reference of one dialect: the finest run and its uncertainty (change from half the steps, an
+    upper bound for first- and second-order schemes alike), per e_n, each naming its truth. Where that leaves the
+    paper scheme uncertain beyond TRUTH_SHARPEN (Walton-Braun's spring at grazing incidence: ~1e-5, order 1.5) and
+    the adaptive integrator covers the law, its run at TRUTH_TOLERANCE instead (uncertainty: the change from 10x
+    that tolerance; tests/test_adaptive_walton_braun.py checks it against the deep graded ladder). With a cache (a
+    campaign store), the two fine runs are taken from it when it holds them, and added to it when not."""
+    steps = TRUTH_STEPS["paper" if law.integrator == "paper" else "engine"]
+    fine, half = (reference(law, scene, n, cache) for n in (steps, steps // 2))
+    uncertainty = uncertainties(half, fine, f"{steps} steps/contact")
+    worst = max(errs["err_max"] for errs in uncertainty.values())
+    if law.integrator == "paper" and worst > TRUTH_SHARPEN and covered(law, scene):
+        fine = simulate_adaptive(law, scene, TRUTH_TOLERANCE)
+        coarse = simulate_adaptive(law, scene, 10 * TRUTH_TOLERANCE)
+        uncertainty = uncertainties(coarse, fine, f"adaptive at tol {TRUTH_TOLERANCE:.0e} ({steps} steps/contact: "
+                                                  f"{worst:.1e})")
+    return fine, uncertainty
+
+
+def reference(law, scene, resolution, cache=None):
+    """The reference solver's results of `law` at `resolution`, through the plan (and the cache, if given)."""
+    return execute(reference_runs(law, scene, resolution, law), cache=cache)[0]
+
+
+def covered(law, scene):
+    """The adaptive integrator covers every impact of the scene."""
+    return all(adaptive_batch(law, scene, e_n)[1].all() for e_n in scene.e_n)
+
+
+def ladder_rungs(ladder, scene):
+    """(label, resolution) pairs: the ladder's steps per contact, then 20% of the Rayleigh time."""
+    return [(str(n), n) for n in ladder] + [("rayleigh", FixedTimeStep(RAYLEIGH_FRACTION * rayleigh_time(scene)))]
+
+
+def reference_curve(rows, law, scene, ladder, truth, engine_label="reference", progress=None):
+    """The reference engine running `law` at every rung, each timed TIMING_REPEATS times."""
+    for label, resolution in ladder_rungs(ladder, scene):
+        try:
+            frames = [reference(law, scene, resolution) for _ in range(TIMING_REPEATS)]
+        except UnstableTimeStep as exc:
+            refused(rows, law.name, engine_label, law.dialect, label, scene, str(exc))
+            step(progress, f"{law.dialect} formulas, {label}: refused")
+            continue
+        timings = {e: [float(f[f.e_n_target == e].wall_s.sum()) for f in frames] for e in scene.e_n}
+        measure(rows, law.name, engine_label, law.dialect, label, per_e_n(frames[0]), truth, timings=timings)
+        step(progress, f"{law.dialect} formulas in the reference, {label}")
+
+
+def step(progress, what):
+    if progress:
+        progress.advance(what)
+
+
+def startup_seconds(engine, law, scene, options):
+    """Per e_n: (fastest, spread) of TIMING_REPEATS timings of the same batched run stopped after its first check (a
+    few steps): process start-up, reading the input and building the scene, which a long simulation pays once."""
+    runs = [replace(run, step_cap=STARTUP_STEPS) for run in engine_runs(engine, law, scene, STARTUP_RESOLUTION,
+                                                                          options)]
+    return {run.e_n: fastest([float(execute([run])[0].wall_s.sum(min_count=1)) for _ in range(TIMING_REPEATS)])
+            for run in runs}
+
+
+def engine_curve(rows, engine, law, dialect, scene, ladder, truth, options, failures, progress=None):
+    """The engine itself at every rung (one batched run per e_n, timed TIMING_REPEATS times unless it is long);
+    contact time and peak force come from a further, observed run (its per-step output would distort the timing);
+    refused and failed runs keep their message."""
+    startup = startup_seconds(engine, law, scene, options)
+    step(progress, f"{engine.NAME} start-up")
+    for label, resolution in ladder_rungs(ladder, scene):
+        try:
+            frames, failed = sweep(engine, law, scene, resolution, options)
+        except UnstableTimeStep as exc:
+            refused(rows, law.name, engine.NAME, dialect.dialect, label, scene, str(exc))
+            step(progress, f"{engine.NAME}, {label}: refused")
+            continue
+        failures += failed
+        timings = {f.e_n_target.iloc[0]: [float(f.wall_s.sum())] for f in frames}
+        for _ in range(TIMING_REPEATS - 1):
+            if failed or max(w[0] for w in timings.values()) > LONG_RUN_S:
+                break
+            for frame in sweep(engine, law, scene, resolution, options)[0]:
+                timings[frame.e_n_target.iloc[0]].append(float(frame.wall_s.sum()))
+        if not failed:                  # contact time and peak force from an observed, untimed run
+            observed, failed = sweep(engine, law, scene, resolution, options, observe=True)
+            failures += failed
+            for frame, seen in zip(frames, observed):
+                for column in ("t_contact", "f_n_max", "overlap_max"):
+                    frame[column] = seen[column].to_numpy()
+        measure(rows, law.name, engine.NAME, dialect.dialect, label, {f.e_n_target.iloc[0]: f for f in frames}, truth,
+                startup, timings=timings)
+        step(progress, f"{engine.NAME}, {label}")
+
+
+def sweep(engine, law, scene, resolution, options, observe=False):
+    """The engine's runs at every e_n (one frame each) and its failed runs."""
+    runs = engine_runs(engine, law, scene, resolution, options, observe)
+    for run in runs:
+        run.spec                           # a time step above the stability limit: refused before any run
+    frames, failures = [], []
+    for run in runs:
+        table, failed = execute([run])
+        frames.append(table)
+        failures += failed
+    return frames, failures
+
+
+def converged_curve(rows, law, scene, ladder, truth):
+    """The converged mode's own rungs as a curve: the adaptive integrator's tolerances where it covers the law,
+    else the graded Richardson ladder."""
+    if law.integrator == "paper" and covered(law, scene):
+        adaptive_curve(rows, law, scene, truth)
+    else:
+        extrapolated_curve(rows, law, scene, ladder, truth)
+
+
+def adaptive_curve(rows, law, scene, truth):
+    """The adaptive integrator at each tolerance of ADAPTIVE_RUNGS; its steps per contact are force evaluations."""
+    for tol in ADAPTIVE_RUNGS:
+        frame = simulate_adaptive(law, scene, tol)
+        measure(rows, law.name, "reference", ADAPTIVE, f"tol {tol:.0e}", per_e_n(frame), truth,
+                steps_per_impact=float(frame.steps_per_contact.mean()))
+
+
+def extrapolated_curve(rows, law, scene, ladder, truth):
+    """The paper law's converged ladder at each rung n >= 20 of the ladder: R_n from n/2 and n graded steps per
+    contact, its cost that of both runs and of the two uniform runs that place the release."""
+    for n in (n for n in ladder if n >= 20):
+        try:
+            frame = simulate_extrapolated(law, scene, n)
+        except UnstableTimeStep as exc:
+            refused(rows, law.name, "reference", EXTRAPOLATED, str(n), scene, str(exc))
+            continue
+        measure(rows, law.name, "reference", EXTRAPOLATED, str(n), per_e_n(frame), truth,
+                steps_per_impact=n // 2 + n + CONVERGED_START // 2 + CONVERGED_START)
+
+
+def cost_table(law, scene, engines, ladder=LADDER, keep=None, progress=None, cache=None):
+    """Every curve of the study as one table (COLUMNS); engines: {name: (engine module, options)}; `keep(table)` is
+    called with the table so far after every row; progress told of every rung; the truths' runs through `cache` (a
+    campaign store) when given (timed runs never are: a stored run has no time to give)."""
+    rungs = len(ladder_rungs(ladder, scene))
+    if progress:
+        progress.expect(3 + rungs + len(engines) * (2 + 2 * rungs))
+    warm = scene.__class__(e_n=(0.5,), angles_deg=(10.0,))
+    simulate(law, warm, steps_per_contact=10)                 # compile outside timing: the kernel,
+    simulate(law, warm, converged=True)                       # and the adaptive integrator or graded ladder
+    rows, failures, uncertainty = Rows(keep), [], {}
+    truth, uncertainty["paper"] = truth_of(law, scene, cache)
+    step(progress, "converged reference of the paper law")
+    reference_curve(rows, law, scene, ladder, truth, progress=progress)
+    converged_curve(rows, law, scene, ladder, truth)
+    step(progress, "the converged mode's own rungs")
+    converged_rows(rows, law, simulate(law, scene, converged=True)[0], truth)
+    step(progress, "the converged mode")
+    for name, (engine, options) in engines.items():
+        dialect = engine.dialect(law.name, options)
+        dialect_truth, uncertainty[name] = truth_of(dialect, scene, cache)
+        step(progress, f"converged reference of {name}'s formulas")
+        reference_curve(rows, dialect, scene, ladder, dialect_truth, progress=progress)
+        engine_curve(rows, engine, law, dialect, scene, ladder, dialect_truth, options, failures, progress)
+    return pd.DataFrame(rows, columns=COLUMNS), failures, uncertainty
