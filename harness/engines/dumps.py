@@ -1,5 +1,7 @@
 """The dumps of the LAMMPS family (LIGGGHTS, LAMMPS): the final `id z vx vz omegay` per sphere, read whole or
 refused, and the observe dump of `id z fz` of every sphere in contact at every step."""
+import os
+
 import numpy as np
 
 from .runner import EngineFailure
@@ -141,3 +143,14 @@ def read_observed(path, n_atoms, radius, dt, engine):
     np.maximum.at(force, atom, fz)
     np.maximum.at(overlap, atom, radius - z)
     return {"t_contact": (last - first + 1) * dt, "f_n_max": force, "overlap_max": overlap}
+
+
+def read_pair_batch(directory, scene, spec, observe, engine, observe_dump):
+    """The equivalent impacts' rebounds of a two-sphere run in `directory` from its `final.dump` (id x z vx vz
+    omegay, two atoms per impact) and, observed, contact time, peak force and overlap from `observe_dump`."""
+    final = pair_rebound(read_final(os.path.join(directory, "final.dump"), 2 * spec.impacts, engine, 6), scene, engine)
+    if observe:
+        projectile, target = scene.spheres
+        final.update(read_observed_pairs(os.path.join(directory, observe_dump), spec.impacts,
+                                         projectile.radius + target.radius, spec.dt, engine))
+    return final

@@ -8,7 +8,7 @@ from pathlib import Path
 from ...render import render
 from ...version import __version__
 from ..base import split_submodels
-from ..dumps import pair_rebound, read_final, read_observed, read_observed_pairs, rebound
+from ..dumps import read_final, read_observed, read_pair_batch, rebound
 from ..executable import chosen
 from ..runner import EngineFailure, run_engine
 from .dialect import dialect, walls, words
@@ -128,13 +128,7 @@ def read_batch(scene, spec, directory, observe=False):
     """Rebound velocities and separation of one run's spec (harness.plan.RunSpec) run in `directory` (and what
     observe mode saw)."""
     if scene.spheres:
-        final = pair_rebound(read_final(os.path.join(directory, "final.dump"), 2 * spec.impacts, "LAMMPS", 6),
-                             scene, "LAMMPS")
-        if observe:
-            projectile, target = scene.spheres
-            final.update(read_observed_pairs(os.path.join(directory, OBSERVE_DUMP), spec.impacts,
-                                             projectile.radius + target.radius, spec.dt, "LAMMPS"))
-        return final
+        return read_pair_batch(directory, scene, spec, observe, "LAMMPS", OBSERVE_DUMP)
     return read_outputs(directory, spec, scene.radius, observe)
 
 

@@ -7,7 +7,7 @@ from pathlib import Path
 
 from ...version import __version__
 from ...render import render
-from ..dumps import pair_rebound, read_final, read_observed, read_observed_pairs, rebound
+from ..dumps import read_final, read_observed, read_pair_batch, rebound
 from ..executable import chosen
 from ..runner import EngineFailure, run_engine
 from .dialect import COUNTERPARTS
@@ -184,13 +184,7 @@ def final_state(state, radius, log_tail=""):
 def read_batch(scene, spec, directory, observe=False):
     """The final state of one run's spec (harness.plan.RunSpec) run in `directory` (and what observe mode saw)."""
     if scene.spheres:
-        final = pair_rebound(read_final(os.path.join(directory, "final.dump"), 2 * spec.impacts, "LIGGGHTS", 6),
-                             scene, "LIGGGHTS")
-        if observe:
-            projectile, target = scene.spheres
-            final.update(read_observed_pairs(os.path.join(directory, OBSERVE_DUMP), spec.impacts,
-                                             projectile.radius + target.radius, spec.dt, "LIGGGHTS"))
-        return final
+        return read_pair_batch(directory, scene, spec, observe, "LIGGGHTS", OBSERVE_DUMP)
     final = final_state(read_dump(os.path.join(directory, "final.dump"), spec.impacts), scene.radius)
     if observe:
         final.update(read_observation(os.path.join(directory, OBSERVE_DUMP), spec.impacts, scene.radius, spec.dt))
