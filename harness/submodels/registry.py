@@ -163,6 +163,7 @@ DAMPING_MODELS = {cls.name: cls for cls in (NoDamping, LinearDashpot, TsujiDashp
 INTEGRATORS = {s.name: s for s in stepping.INTEGRATORS}          # stepping sub-models: the codes the steppers take
 COULOMB_RULES = {s.name: s for s in stepping.COULOMB_RULES}
 GEOMETRIES = {s.name: s for s in stepping.GEOMETRIES}
+TOUCHES = {s.name: s for s in stepping.TOUCHES}
 
 EXTENSION_SLOTS = 4         # normal kernels registered at run time, beyond the generated dispatch
 EXTENSIONS = []             # their Kernels, in registration order
