@@ -296,3 +296,15 @@ def test_touch_overlap_is_refused_where_the_stepper_has_no_such_rule():
     with pytest.raises(UserError, match="applies touch rule gap, not overlap"):
         compose("linear-spring-dashpot", {"touch": "overlap"})
 
+
+def test_contact_radius_spring_applies_k_a_and_resets_to_the_displacement_of_k_alone():
+    """F = -k a xi after the increment; a capped force F leaves xi = -F/k, so with no further slip the next step
+    gives a F (the contact radius once more)."""
+    from harness.submodels.registry import code_of, python_point
+    code = code_of("tangential", "contact-radius-spring")
+    spring, after_cap = (python_point("tangential", code, point) for point in ("spring", "after_cap"))
+    st = np.zeros(8)
+    k, a = 3.0e5, 2.0e-3
+    assert math.isclose(spring(0.0, 1e-6, a, a, a, k, 0.1, 0.0, 0.0, st, None, False), -k * a * 1e-6)
+    after_cap(-0.25, k, a, st)
+    assert math.isclose(spring(0.0, 0.0, a, a, a, k, 0.1, 0.0, 0.0, st, None, False), -0.25 * a)
