@@ -4,6 +4,7 @@ next step scales the capped force by a once more (docs/laws.md#tangential-laws).
 from ...errors import UserError
 from ...jit import compiled
 from ..base import TangentialModel
+from .linear import stiffness  # noqa: F401  (k: the constant p1, what the tangential dashpot's c_t = g sqrt(k) takes)
 from .ratio import parse_ratio, ratio_label, ratio_value
 from .state import T_AUX1
 
@@ -29,12 +30,6 @@ class ContactRadiusSpring(TangentialModel):
         if self.coefficient == "mindlin":
             return 8.0 * contact.G_star
         return ratio_value(self.coefficient, contact) * k_n
-
-
-@compiled
-def stiffness(p1, a):
-    """k: the coefficient p1 (what the tangential dashpot's c_t = g sqrt(k) takes)."""
-    return p1
 
 
 @compiled
