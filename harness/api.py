@@ -129,6 +129,7 @@ def compare_request(request, on_frame=None, progress=None, partial=None):
             precision = precision_gap(double, high, name, pair[1].options_dict["precision"])
     return Comparison(law, scene, results, overrides=dict(request.overrides), engine_options=request.engine_options,
                       arithmetic=arithmetic_of(request.engine_options),
+                      builds={e.NAME: {**e.build(), "note": e.dialect_note()} for e in engines},
                       requested=request.engines, skipped=[(s.name, s.reason) for s in found if not s.available],
                       failures=failures, attribution=attributions, sliding=sliding, precision=precision,
                       histories=histories, tolerances=request.tolerances)

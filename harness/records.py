@@ -47,6 +47,8 @@ FIELDS = {   # field -> (what it must be, in words; its check)
     "skipped": ("a list of [engine, reason]", _pairs),
     "engine_options": ("{engine: {key: value}}", _options),
     "arithmetic": ("{engine: the arithmetic it ran in}", _string_map),
+    "builds": ("{engine: {version, binary, sha256, origin, note}}",
+               lambda v: isinstance(v, dict) and all(isinstance(b, dict) and _string_map(b) for b in v.values())),
     "requested": ("a list of engine names or null", _names),
     "command": ("a string", _strings),
     "date": ("a string", _strings),

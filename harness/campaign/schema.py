@@ -80,6 +80,15 @@ class Text:
         return value
 
 
+class EngineName(Text):
+    """An engine's name, or one of its builds: `lammps@2023.8.2`, `lammps@all`, `lammps@/path/to/lmp`."""
+
+    def __call__(self, value, where):
+        code = value.partition("@")[0] if isinstance(value, str) else value
+        super().__call__(code, where)
+        return value
+
+
 class Boolean:
     """true or false."""
     expected = "true or false"
@@ -167,7 +176,7 @@ FILE = Table({
     "variants": ListOf(Table({"law": Text(), "with": TableOf(Text(), expected="a table of KEY = \"VALUE\"")},
                              required=("law",), expected='a table with law = "..." and with = {KEY = "VALUE"}'),
                        "an array of tables: [[variants]] with law = ... and with = {KEY = VALUE}"),
-    "engines": ListOf(Text(ENGINES), f"an array of engine names ({', '.join(ENGINES)})"),
+    "engines": ListOf(EngineName(ENGINES), f"an array of engine names ({', '.join(ENGINES)}, or ENGINE@VERSION)"),
     "engine_options": TableOf(TableOf(Text(), expected='a table of KEY = "VALUE"'), keys=ENGINES,
                               expected="a table of engines"),
     "e_n": NUMBERS, "angles": NUMBERS, "psi": NUMBERS, "vt": NUMBERS, "speeds": NUMBERS, "normal_speeds": NUMBERS,

@@ -17,11 +17,11 @@ import pyarrow.parquet as pq
 
 from ..errors import UserError
 from ..keys import run_key
-from ..results import COLUMNS
+from ..results import COLUMNS, TEXT
 from .fragments import KEY, LOG_TAIL, Damaged, is_fragment, keys_of
 from .reading import kind_of
 
-STRINGS = ("model", "dialect", "engine", "engine_version", "status", "message", KEY, LOG_TAIL)
+STRINGS = TEXT + (KEY, LOG_TAIL)
 DROP = "--drop-damaged"
 DROP_HELP = "remove the store's damaged fragments (named when found) so that their tasks rerun"
 

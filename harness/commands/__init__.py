@@ -6,7 +6,7 @@ import signal
 import sys
 import time
 
-from ..errors import UserError
+from ..errors import EngineMissing, UserError
 from ..version import __version__
 from .options import EXIT_CODES, EXIT_ENGINE, EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_USAGE, Parser
 from .stopping import Stopped, stop_behind, stop_on_signals
@@ -24,14 +24,14 @@ def describe(sub, name, summary, example, exit_codes=EXIT_CODES):
 
 def build_parser():
     from ..engines import EXTERNAL
-    from . import benchmark, campaign, check, compare, cost, models, paper, query, render, report, run
+    from . import benchmark, campaign, check, compare, cost, engines, models, paper, query, render, report, run
     parser = Parser(prog="harness", formatter_class=argparse.RawDescriptionHelpFormatter,
                     description="Cross-validate DEM contact force models against the literature (Thornton, Cummins "
                                 f"& Cleary 2013) and against the engines {', '.join(EXTERNAL)}.",
                     epilog=f"example:\n  harness compare --model hertz-mindlin\n\n{EXIT_CODES}")
     parser.add_argument("--version", action="version", version=f"harness {__version__}")
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND", parser_class=Parser)
-    for module in (models, run, compare, cost, paper, benchmark, render, report, check, campaign, query):
+    for module in (models, engines, run, compare, cost, paper, benchmark, render, report, check, campaign, query):
         module.add(sub, describe)
     return parser
 
@@ -106,6 +106,9 @@ def main(argv=None):
         return args.func(args)
     except KeyboardInterrupt as exc:
         return interrupted(exc, args, since)
+    except EngineMissing as exc:
+        print(f"harness: error: {exc}", file=sys.stderr)
+        return EXIT_ENGINE
     except UserError as exc:
         if stop_behind(exc):
             return interrupted(stop_behind(exc), args, since)

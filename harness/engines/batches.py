@@ -8,7 +8,7 @@ import numpy as np
 
 from ..results import impact_frame
 from ..solver.threads import THREADS
-from .runner import EngineFailure, read_tail, scratch
+from .runner import EngineFailure, read_tail, run_engine, scratch
 
 TIMEOUT_FLOOR_S = 120.0
 SECONDS_PER_ATOM_STEP = 2e-6        # generous: 30x what LIGGGHTS needs here
@@ -30,31 +30,33 @@ def stepping_s(spec):
     return SECONDS_PER_ATOM_STEP * spec.impacts * spec.step_cap
 
 
-def identity_of(engine, version, run):
+def identity_of(engine, build, run):
+    """The identity columns of a run's rows: its law and dialect, the engine build that ran it (Engine.build)."""
     spec = run.spec
-    return dict(model=run.law.name, dialect=run.dialect.dialect, engine=engine, engine_version=version, dt=spec.dt,
+    return dict(model=run.law.name, dialect=run.dialect.dialect, engine=engine, engine_version=build["version"],
+                engine_binary=build["binary"], engine_sha256=build["sha256"], dt=spec.dt,
                 steps_per_contact=spec.steps_per_contact)
 
 
-def failed_rows(engine, version, run, failure):
+def failed_rows(engine, build, run, failure):
     """'failed' rows of a run that produced nothing, carrying its one-line message, and its FailedRun."""
     spec = run.spec
     nan = np.full(spec.impacts, np.nan)
-    frame = impact_frame(run.scene, spec, **identity_of(engine, version, run), v_n1=nan, v_t1=nan, omega1=nan,
+    frame = impact_frame(run.scene, spec, **identity_of(engine, build, run), v_n1=nan, v_t1=nan, omega1=nan,
                          wall_s=np.nan, status="failed", message=str(failure))
     return frame, FailedRun(engine, spec.e_n, str(failure), failure.log_tail)
 
 
-def result_rows(engine, version, run, final, wall):
+def result_rows(engine, build, run, final, wall):
     """The rows of a run that finished: each impact's rebound, whether it separated, its share of the wall time."""
     spec = run.spec
     observed = {name: final[name] for name in OBSERVED if run.observe}
-    return impact_frame(run.scene, spec, **identity_of(engine, version, run), v_n1=final["v_n1"],
+    return impact_frame(run.scene, spec, **identity_of(engine, build, run), v_n1=final["v_n1"],
                         v_t1=final["v_t1"], omega1=final["omega1"], wall_s=wall / spec.impacts,
                         status=np.where(final["separated"], "ok", "no-separation"), message="", **observed)
 
 
-def run_grouped(engine, version, runs, input_name, render, group_of, run_inputs, read, deadline=None):
+def run_grouped(engine, build, runs, input_name, render, group_of, run_inputs, read, deadline=None):
     """Each run as (results frame, FailedRun or None). The runs of one group (group_of(run): e.g. the flavour) share
     engine processes, one per core at most, each batch in its own directory batch<k> of the process's temporary
     directory with its input in `input_name`; the processes run side by side. render(run) -> its input text (an
@@ -69,7 +71,7 @@ def run_grouped(engine, version, runs, input_name, render, group_of, run_inputs,
         try:
             text = render(run)
         except EngineFailure as exc:
-            out[i] = failed_rows(engine, version, run, exc)
+            out[i] = failed_rows(engine, build, run, exc)
             continue
         groups.setdefault(group_of(run), []).append((i, run, text))
     shares = [(group, items[k::processes]) for group, items in groups.items()
@@ -77,7 +79,7 @@ def run_grouped(engine, version, runs, input_name, render, group_of, run_inputs,
 
     def skipped(items):
         for i, run, _ in items:
-            out[i] = failed_rows(engine, version, run, EngineFailure(
+            out[i] = failed_rows(engine, build, run, EngineFailure(
                 f"skipped: an earlier {engine} run timed out ({deadline[0]})", deadline[0].log_tail))
 
     def one_process(group, items):
@@ -95,11 +97,11 @@ def run_grouped(engine, version, runs, input_name, render, group_of, run_inputs,
                 if exc.timed_out:            # every batch of this process shares the timeout; later ones skip
                     deadline.append(exc)
                     for i, run, _ in items:
-                        out[i] = failed_rows(engine, version, run, exc)
+                        out[i] = failed_rows(engine, build, run, exc)
                     return
                 if len(items) > 1:           # one process per batch, so that the failure names its batch
                     for i, run, _ in items:
-                        out[i] = run_grouped(engine, version, [run], input_name, render, group_of, run_inputs,
+                        out[i] = run_grouped(engine, build, [run], input_name, render, group_of, run_inputs,
                                              read, deadline)[0]
                     return
                 walls = [exc]
@@ -108,9 +110,9 @@ def run_grouped(engine, version, runs, input_name, render, group_of, run_inputs,
                     if isinstance(wall, EngineFailure):
                         raise wall
                     final = read(run, os.path.join(workdir, f"batch{k}"))
-                    out[i] = (result_rows(engine, version, run, final, wall), None)
+                    out[i] = (result_rows(engine, build, run, final, wall), None)
                 except EngineFailure as exc:        # every failure carries the log of the process that ran it
-                    out[i] = failed_rows(engine, version, run, EngineFailure(
+                    out[i] = failed_rows(engine, build, run, EngineFailure(
                         str(exc), exc.log_tail or read_tail(os.path.join(workdir, "engine.log"))))
     if len(shares) == 1:
         one_process(*shares[0])
@@ -119,3 +121,16 @@ def run_grouped(engine, version, runs, input_name, render, group_of, run_inputs,
             for future in [pool.submit(one_process, group, items) for group, items in shares]:
                 future.result()
     return out
+
+
+def in_one_process(argv, input_name, count, timeout_s, workdir, env=None):
+    """The inputs batch<k>/input_name (k < count) of workdir in one process of an engine that reads `-in in.driver`
+    (argv): one start-up, `clear` between them, each writing into its own directory; each batch's share of the
+    wall seconds."""
+    lines = []
+    for k in range(count):
+        lines += [f"shell cd batch{k}", f"include {input_name}", "clear", "shell cd .."]
+    with open(os.path.join(workdir, "in.driver"), "w") as handle:
+        handle.write("\n".join(lines) + "\n")
+    done = run_engine(argv[:1] + ["-in", "in.driver"] + argv[1:], workdir, timeout_s, env=env)
+    return [done.wall_s / count] * count

@@ -39,7 +39,8 @@ def run_facts(frame, arithmetic):
                      "dt min [s]": group.dt.min(), "dt max [s]": group.dt.max(), "impacts": len(group),
                      "not ok": int((group.status != "ok").sum()),
                      "wall time [s]": float(group.wall_s.sum()),
-                     "wall per impact [s]": float(group.wall_s.mean())})
+                     "wall per impact [s]": float(group.wall_s.mean()),
+                     "binary": str(group.engine_binary.iloc[0]), "sha256": str(group.engine_sha256.iloc[0])[:16]})
     return pd.DataFrame(rows)
 
 
@@ -207,4 +208,6 @@ def compare_context(comparison, files=()):
                 agreement=records(comparison.agreement), physics=records(checks), deviation=records(comparison.deviation), cross=cross,
                 findings=records(comparison.findings), failures=comparison.failures, precision=records(precision),
                 ratios=ratios, sliding=records(sliding), published=records(distances),
-                attributions=[(name, records(table)) for name, table in comparison.attribution.items()])
+                attributions=[(name, records(table)) for name, table in comparison.attribution.items()],
+                versions=records(comparison.versions) if not comparison.versions.empty else None,
+                notes=[(engine, b["note"]) for engine, b in comparison.builds.items() if b.get("note")])

@@ -35,7 +35,7 @@ def print_summary(record, comparison, written):
     formulas, its largest deviations from the paper law in physical units, then the findings not said yet, skipped
     engines and failed runs (with their log tails), then where the files are."""
     engines = record["engines"]
-    names = [f"{e['engine']} {e['version']}" for e in engines]
+    names = [e["engine"] if "@" in e["engine"] else f"{e['engine']} {e['version']}" for e in engines]
     ran = " and ".join(filter(None, [", ".join(names[:-1]), names[-1]])) if names else "no engine"
     print(f"{record['model']}: the paper law against {ran}; {len(record['e_n'])} e_n x "
           f"{record['impacts'] // max(len(record['e_n']), 1)} impacts")
@@ -56,8 +56,12 @@ def print_summary(record, comparison, written):
         print("largest deviation from the paper law (relative to the incident speed V; the spin as R omega1/V):")
         for e in engines:
             for d in e["deviation"]:
-                print(f"  {e['engine']:10s} {d['metric']:7s} {d['difference']:+11.4g} {d['unit']:6s} "
+                print(f"  {e['engine']:{max(10, len(e['engine']))}s} {d['metric']:7s} {d['difference']:+11.4g} {d['unit']:6s} "
                       f"{d['relative']:+8.2%} of {d['relative_to']:4s} at e_n {d['e_n_target']:g}, {d['theta_deg']:g} deg")
+    print_versions(comparison.versions)
+    for engine, build in comparison.builds.items():
+        if build.get("note"):
+            print(wrapped(f"note: {engine}: {build['note']}"))
     for finding in told_once(record):
         print(wrapped(f"finding: {finding['engine']} ({finding['dialect']}): {finding['kind']}: {finding['detail']}"))
     for skipped in record["skipped"]:
@@ -65,6 +69,23 @@ def print_summary(record, comparison, written):
     for failure in comparison.failures:
         print(f"{failure.engine} failed at e_n = {failure.e_n:g}: {failure.message}\n{failure.log_tail}")
     print(f"wrote {' and '.join(written)} (every table: --verbose, the CSVs and the report)")
+
+
+def print_versions(versions):
+    """Between consecutive builds of an engine, one line each: the metrics that moved, the largest change of each,
+    and the ingredients that alone move them most."""
+    if versions.empty:
+        return
+    print("between versions (engine runs, same scene and dt):")
+    for (engine, a, b), rows in versions.groupby(["engine", "from_version", "to_version"], sort=False):
+        if not rows.metric.iloc[0]:
+            print(f"  {engine} {a} -> {b}: {rows.attributed_to.iloc[0]}")
+            continue
+        moved = ", ".join(f"{r.metric} {r.change:+.3g} (e_n {r.e_n_target:g}, {r.theta_deg:g} deg)"
+                          for r in rows.itertuples())
+        causes = sorted({r.attributed_to.split(" (")[0] for r in rows.itertuples() if r.attributed_to})
+        print(wrapped(f"  {engine} {a} -> {b}: {moved}; ingredients that differ: {rows.ingredients_differing.iloc[0]};"
+                      f" moving them most: {', '.join(causes) or 'no single ingredient'}", indent=6))
 
 
 def physics_phrase(physics):
@@ -80,7 +101,8 @@ def physics_phrase(physics):
             + (f"; attributed to {', '.join(causes)}" if causes else ""))
 
 
-FOLDED = {"Coulomb bound": "coulomb", "e_n off target": "e_n", "energy gain": "energy",
+FOLDED = {"Coulomb bound": "coulomb", "Coulomb bound from below": "coulomb", "e_n off target": "e_n",
+          "energy gain": "energy",
           "tangential energy gain": "energy"}     # finding kind -> the physics check that says it
 
 

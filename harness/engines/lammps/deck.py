@@ -9,9 +9,9 @@ from ...render import render
 from ...version import __version__
 from ..base import split_submodels
 from ..dumps import read_final, read_observed, read_pair_batch, rebound
-from ..executable import chosen
-from ..runner import EngineFailure, run_engine
-from .dialect import dialect, walls, words
+from ..batches import in_one_process
+from ..runner import EngineFailure
+from .dialect import HISTORY_STYLES, dialect, numbers, walls, words
 
 TEMPLATES = Path(__file__).resolve().parent / "templates"
 INPUT = "in.harness"
@@ -19,20 +19,18 @@ OBSERVE_DUMP = "observe.dump"   # observe mode: `id z fz` of every sphere in con
 BINARY_VARIABLE = "HARNESS_LAMMPS"      # path of another lmp binary (a custom build, or a test's fake)
 
 
-def binary():
-    return chosen(BINARY_VARIABLE, "lmp")
-
-
-def settings(law, scene, e_n, options=None):
+def settings(law, scene, e_n, options=None, version=None):
     """The words and coefficients that make LAMMPS compute the dialect of `law` at e_n, as the template's values.
     granular: LAMMPS' damping coefficient is e itself for tsuji, c/m for mass_velocity and c/(m sqrt R) for
     viscoelastic; x_gamma_t = c_t/c_n, a constant for each counterpart (Mindlin's k_t and the Tsuji dashpot both grow
     as alpha^1/2 and alpha^1/4). history: k_n (4/3 E* for hertz/history), k_t (8 G*), gamma_n = c_n/m (c_n/(m sqrt R)
     for hertz/history), gamma_t = c_t/m, and dampflag 1 where there is a tangential dashpot. A sub-model among the
-    options (a mapped `--with`) replaces that of the dialect, and the numbers follow it."""
+    options (a mapped `--with`) replaces that of the dialect, and the numbers follow it; the dialect is LAMMPS
+    `version`'s (the older styles' numbers are the same in every release: dialect.numbers)."""
     options, submodels = split_submodels(options)
-    style, normal, damping, tangential = words(law.name, options)
-    own = dialect(law.name, options, "sphere" if scene.spheres else "wall")
+    style, normal, damping, tangential = words(law.name, options, version)
+    own = numbers(law.name) if style in HISTORY_STYLES.values() else \
+        dialect(law.name, options, "sphere" if scene.spheres else "wall", version)
     if submodels:
         from ...laws.law import replace_submodels
         own = replace_submodels(own, submodels)
@@ -54,7 +52,8 @@ def settings(law, scene, e_n, options=None):
         values.update(normal_args=[stiffness.values[0], dashpot.c0 / c.mass], k_t=k_t,
                       x_gamma_t=c_t * math.sqrt(k_t) / dashpot.c0 if dashpot.c0 else 0.0)
     else:
-        coefficient = {"tsuji": e_n, "viscoelastic": dashpot.c0 / (c.mass * math.sqrt(c.radius))}[damping]
+        coefficient = {"tsuji": e_n, "coeff_restitution": e_n,
+                       "viscoelastic": dashpot.c0 / (c.mass * math.sqrt(c.radius))}[damping]
         values.update(normal_args=[scene.E, coefficient, scene.nu],
                       x_gamma_t=c_t * math.sqrt(8.0 * k_t * math.sqrt(c.radius)) / dashpot.c0 if c_t else 0.0)
     return values
@@ -69,7 +68,7 @@ def pair_material(contact):
     return {"E": 2.0 * (1.0 - nu * nu) * contact.E_star, "nu": nu}
 
 
-def pair_deck(law, scene, spec, options=None, observe=False):
+def pair_deck(law, scene, spec, options=None, observe=False, version=None):
     """The batched deck of two-sphere impacts: pair k is atoms 2k-1 (the projectile, above) and 2k (its target, at
     rest, frozen when fixed), touching, their relative velocity the impact's; omega0 is the equivalent spin, so the
     projectile's own is (R* omega0 - R2 omega2)/R1. hertz/material gets each type's E and nu and the pair's mixing
@@ -80,7 +79,7 @@ def pair_deck(law, scene, spec, options=None, observe=False):
     pairs = [{"x": i * spacing, "vx": float(vt), "vz": -float(vn),
               "omega1": (r_star * float(w) - r2 * target.omega) / r1}
              for i, (vn, vt, w) in enumerate(zip(spec.v_n0, spec.v_t0, spec.omega0))]
-    values = settings(law, scene, spec.e_n, options)
+    values = settings(law, scene, spec.e_n, options, version)
     normal_args = values.pop("normal_args")          # hooke: k_n, c_n/m; hertz/material: E, coefficient, nu
     k_n, coefficient = normal_args[0], normal_args[1]
     materials = [(1, 1, {"E": projectile.E, "nu": projectile.nu}), (2, 2, {"E": target.E, "nu": target.nu}),
@@ -95,11 +94,11 @@ def pair_deck(law, scene, spec, options=None, observe=False):
                   x_gamma_t=values["x_gamma_t"], k_n=k_n, k_t=values["k_t"], observe=bool(observe))
 
 
-def deck(law, scene, spec, options=None, observe=False):
+def deck(law, scene, spec, options=None, observe=False, version=None):
     """Render the batched deck of a run's spec (harness.plan.RunSpec; validated numbers and fixed words only, see
-    harness.render); `observe` adds the per-step contact dump (OBSERVE_DUMP)."""
+    harness.render) for LAMMPS `version`; `observe` adds the per-step contact dump (OBSERVE_DUMP)."""
     if scene.spheres:
-        return pair_deck(law, scene, spec, options, observe)
+        return pair_deck(law, scene, spec, options, observe, version)
     if scene.wall not in walls(law.name, split_submodels(options)[0]):
         raise EngineFailure(f"LAMMPS' {law.name} decks use a wall of the sphere's own material")
     radius = scene.radius
@@ -109,19 +108,12 @@ def deck(law, scene, spec, options=None, observe=False):
     return render(TEMPLATES, "batch.in.j2", harness_version=__version__, law=law.name, mu=scene.mu, e_n=spec.e_n,
                   atoms=atoms, x_lo=-2.0 * radius, x_hi=len(atoms) * spacing, box_half=2.0 * radius, z_lo=-radius,
                   z_hi=4.0 * radius, skin=0.5 * radius, dt=spec.dt, radius=radius, rho=scene.rho, chunk=spec.chunk,
-                  max_chunks=spec.chunks, observe=bool(observe), **settings(law, scene, spec.e_n, options))
+                  max_chunks=spec.chunks, observe=bool(observe), **settings(law, scene, spec.e_n, options, version))
 
 
-def run_inputs(_, count, timeout_s, workdir):
-    """The decks batch<k>/in.harness in one LAMMPS process (one start-up; `clear` between them, each writing into its
-    own directory): each batch's share of the wall seconds."""
-    lines = []
-    for k in range(count):
-        lines += [f"shell cd batch{k}", f"include {INPUT}", "clear", "shell cd .."]
-    with open(os.path.join(workdir, "in.driver"), "w") as handle:
-        handle.write("\n".join(lines) + "\n")
-    done = run_engine([binary(), "-in", "in.driver", "-log", "none", "-echo", "none", "-nocite"], workdir, timeout_s)
-    return [done.wall_s / count] * count
+def run_inputs(lmp, count, timeout_s, workdir):
+    """The decks batch<k>/in.harness in one process of the LAMMPS executable `lmp` (batches.in_one_process)."""
+    return in_one_process([lmp, "-log", "none", "-echo", "none", "-nocite"], INPUT, count, timeout_s, workdir)
 
 
 def read_batch(scene, spec, directory, observe=False):
@@ -141,6 +133,7 @@ def read_outputs(directory, spec, radius, observe):
     return final
 
 
-def render_batch(paper_law, scene, spec, options=None, observe=False):
-    """The deck text of one run's spec (harness.plan.RunSpec; for `harness render` and the runs)."""
-    return deck(paper_law, scene, spec, options, observe)
+def render_batch(paper_law, scene, spec, options=None, observe=False, version=None):
+    """The deck text of one run's spec (harness.plan.RunSpec; for `harness render` and the runs) for LAMMPS
+    `version`."""
+    return deck(paper_law, scene, spec, options, observe, version)

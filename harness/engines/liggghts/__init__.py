@@ -13,6 +13,7 @@ STEPPING = ("hertz-mindlin", "linear-spring-dashpot")
 class Liggghts(Engine):
     NAME = "liggghts"
     EXECUTABLE = PACKAGE = "liggghts"
+    VERIFIED = ("3.8.0",)       # Debian 12's, the release its dialects were read from and checked on
     VARIABLE = BINARY_VARIABLE
     OPTIONS, COUNTERPARTS, DIALECTS, PAIR_DIALECTS = OPTIONS, COUNTERPARTS, DIALECTS, PAIR_DIALECTS
     WITH = {("tangential-damping", "none"): {"tangential_damping": "off"},
@@ -34,8 +35,11 @@ class Liggghts(Engine):
     }
     COLOUR, DASHES = "tab:orange", "--"
     STARTUP_S, SPHERE_STEP_S = 0.5, 0.05e-6
-    render_batch, run_inputs = staticmethod(render_batch), staticmethod(run_inputs)
+    render_batch = staticmethod(render_batch)
     read_batch = staticmethod(read_batch)
+
+    def run_inputs(self, flavour, count, timeout_s, workdir):
+        return run_inputs(self.binary(), count, timeout_s, workdir)
 
     def read_version(self, text):
         """'3.8.0' from the banner the binary prints."""

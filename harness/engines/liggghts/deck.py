@@ -9,6 +9,7 @@ from ...version import __version__
 from ...render import render
 from ..dumps import read_final, read_observed, read_pair_batch, rebound
 from ..executable import chosen
+from ..batches import in_one_process
 from ..runner import EngineFailure, run_engine
 from .dialect import COUNTERPARTS
 
@@ -163,17 +164,10 @@ def run_deck(text, n_atoms, timeout_s, workdir):
         raise EngineFailure(str(exc), exc.log_tail or done.log_tail) from None
 
 
-def run_inputs(_, count, timeout_s, workdir):
-    """The decks batch<k>/in.harness in one LIGGGHTS process (one start-up; `clear` between them, each writing into
-    its own directory): each batch's share of the wall seconds."""
-    lines = []
-    for k in range(count):
-        lines += [f"shell cd batch{k}", "include in.harness", "clear", "shell cd .."]
-    with open(os.path.join(workdir, "in.driver"), "w") as handle:
-        handle.write("\n".join(lines) + "\n")
-    done = run_engine([binary(), "-in", "in.driver", "-log", "none", "-echo", "none"], workdir, timeout_s,
-                      env={**os.environ, "OMP_NUM_THREADS": "1"})
-    return [done.wall_s / count] * count
+def run_inputs(liggghts, count, timeout_s, workdir):
+    """The decks batch<k>/in.harness in one process of the LIGGGHTS executable (batches.in_one_process)."""
+    return in_one_process([liggghts, "-log", "none", "-echo", "none"], "in.harness", count, timeout_s, workdir,
+                          env={**os.environ, "OMP_NUM_THREADS": "1"})
 
 
 def final_state(state, radius, log_tail=""):

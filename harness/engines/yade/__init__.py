@@ -1,7 +1,12 @@
 """YADE 2023.02a as an engine (docs/engines.md): one batched script per (law, e_n), run as a Python module without the
 yade launcher; its dialects are in dialect.py, its input and output in script.py, its interpreter and flavours in
 flavours.py. It also checks its own arithmetic (precision.py)."""
+import os
+import shutil
+
+from ...errors import UserError
 from ..base import Engine
+from ..builds import sha256
 from .dialect import COUNTERPARTS, DIALECTS, OPTIONS, PAIR_DIALECTS, check_options, dialect
 from .flavours import (ARITHMETIC, FLAVOURS, PYTHON_VARIABLE, available, environment, flavour_path, missing_reason,
                        python, version)
@@ -16,6 +21,7 @@ class Yade(Engine):
     NAME = "yade"
     INPUT_SUFFIX, INPUT_NAME = ".py", "harness_yade.py"
     EXECUTABLE, VARIABLE = "/usr/bin/python3.11", PYTHON_VARIABLE
+    VERIFIED = ("2023.02a",)    # Debian 12's, the release its dialects were read from and checked on
     OPTIONS, COUNTERPARTS, DIALECTS, PAIR_DIALECTS = OPTIONS, COUNTERPARTS, DIALECTS, PAIR_DIALECTS
     KNOWN_CAUSES = {
         ("hertz-mindlin", "e_n off target"): "Thornton 2013 App. B fit degrades above e_n 0.95 (docs/laws.md)",
@@ -40,6 +46,20 @@ class Yade(Engine):
 
     def version(self):
         return version()
+
+    def build(self):
+        """Debian's YADE: its version, and the library that holds its contact laws (libpkg_dem.so) with its hash."""
+        library = os.path.join(os.path.dirname(flavour_path("double")), "libpkg_dem.so")
+        return {"version": self.version(), "binary": library, "sha256": sha256(library),
+                "origin": f"Debian package yade, a module of {python()}"}
+
+    def prefix_binary(self, prefix):
+        return None                     # one build: Debian's
+
+    def at(self, binary, origin):
+        if os.path.realpath(binary) != os.path.realpath(shutil.which(self.binary()) or self.binary()):
+            raise UserError("YADE runs as a module of Debian's python3.11; another build is not supported yet")
+        return super().at(binary, origin)
 
     def flavour(self, options):
         """The flavour (precision) that runs: double unless the options ask for another."""

@@ -38,3 +38,11 @@ def force_rescale(f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, scratch, m
     if a < a_old:
         f_s *= a / a_old
     return f_s - 8.0 * p1 * a * dd
+
+
+class MindlinPairCoefficient(MindlinWallCoefficient):
+    """k_t = 8 G* a, the contact's own G* (the paper's mixing), in the same four forms as the wall coefficient's."""
+    name = "mindlin-pair-coefficient"
+
+    def parameter(self, contact, k_n):
+        return contact.G_star                           # the kernel's k_t = 8 p1 a
