@@ -51,7 +51,8 @@ class Tolerances:
     def describe(self):
         """The tolerances in words, as every view prints them."""
         return (f"rebound velocities within {100 * self.velocity:.3g}% of V, e_n within {self.e_n:.3g}, "
-                f"|J_t| <= mu J_n within {100 * self.coulomb:.3g}%, energy gain at most {self.energy:.3g} KE0")
+                f"|J_t| <= mu J_n (= where the paper law slides) within {100 * self.coulomb:.3g}%, energy gain at "
+                f"most {self.energy:.3g} KE0")
 
     def as_dict(self):
         return asdict(self)
