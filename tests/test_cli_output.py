@@ -43,7 +43,8 @@ def test_quiet_prints_the_verdict_line_alone(tmp_path, capsys):
 
 
 @needs_liggghts
-def test_summary_is_short_and_verbose_has_every_table(tmp_path, capsys):
+def test_summary_is_short_and_verbose_has_every_table(tmp_path, capsys, monkeypatch):
+    monkeypatch.setenv("COLUMNS", "120")        # a terminal 120 wide (pytest-xdist's workers say 80)
     main(["compare", "--model", "hertz-mindlin", *SMALL, "-o", str(tmp_path / "a")])
     short = capsys.readouterr().out.splitlines()
     main(["compare", "--model", "hertz-mindlin", *SMALL, "-o", str(tmp_path / "b"), "--verbose"])

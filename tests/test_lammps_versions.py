@@ -68,6 +68,21 @@ def test_an_unchecked_release_gets_the_nearest_dialect_and_says_so():
     assert old["normal"] != new["normal"] and lammps.ingredients("2024.1.1")["wall-moduli"] == "pair"
 
 
+def test_the_2023_ingredients_hold_from_2023_8_2_and_only_where_they_act():
+    """gap 0 no contact and the classic spring k a xi from 2023.8.2 on; the numbers the classic styles' deck gives are
+    the same in every release."""
+    from harness.scene import Scene as WallScene
+    before, after = (lammps.dialect("linear-spring-dashpot", {"style": "history"}, "wall", v) for v in
+                     ("2022.6.23.4", "2023.8.2.3"))
+    assert (before.touch, after.touch) == ("gap", "overlap")
+    assert before.tangential.name == "linear" and after.tangential.name == "contact-radius-spring"
+    assert lammps.dialect("hertz-mindlin", {}, "wall", "2025.7.22.4").touch == "overlap"
+    scene = WallScene(e_n=(0.6,), angles_deg=(30.0,), psi1_star=None)
+    assert all(lammps.settings(compose(name), scene, 0.6, {"style": "history"}, "2021.9.29.2")
+               == lammps.settings(compose(name), scene, 0.6, {"style": "history"}, "2025.7.22.4")
+               for name in lammps.HISTORY_STYLES)
+
+
 def test_coeff_restitution_is_refused_before_2024_8_29_in_one_line():
     with pytest.raises(UserError, match="LAMMPS 2023.8.2.3 has no damping coeff_restitution"):
         lammps.dialect("hertz-mindlin", {"damping": "coeff_restitution"}, "wall", "2023.8.2.3")
@@ -80,10 +95,8 @@ def test_coeff_restitution_is_refused_before_2024_8_29_in_one_line():
 @pytest.mark.parametrize("name,options", WALL_CASES)
 def test_each_release_agrees_with_its_dialect_against_a_wall(release, name, options, use):
     """Every law and form x 3 e_n x 6 angles, with and without spin: the release's binary within 1e-6 of its
-    release's dialect. Not yet in the dialect from 2023.8.2: gap 0 is no contact (no setup force; granular hooke
-    1.7e-3) and the classic styles' tangential spring scaled by the contact radius (0.17 to 0.24)."""
-    if release >= "2023" and (name == "linear-spring-dashpot" or options.get("style") == "history"):
-        pytest.xfail("touch at gap 0 and the classic styles' spring changed in 2023.8.2 (docs/lammps-dialect.md)")
+    release's dialect (from 2023.8.2 gap 0 is no contact and the classic styles' spring is k a xi: without them
+    granular hooke missed by 1.7e-3 and the classic styles by 0.17 to 0.24)."""
     use(release)
     for omega0 in (0.0, -20.0):
         scene = Scene(e_n=(0.3, 0.6, 0.9), angles_deg=ANGLES, psi1_star=None, omega0=omega0)

@@ -40,14 +40,15 @@ def rows(scene, batch, engine, dialect, v_n1, v_t1, omega1, status="ok"):
                         status=status, message="", t_contact=1e-5, f_n_max=1.0, overlap_max=1e-6)
 
 
-def made_up(change=None, scene=None, e_n=E_N, status="ok"):
-    """The paper law's rows and an engine 'fake' whose rows are the paper law's, changed by change(v) at 80 deg."""
+def made_up(change=None, scene=None, e_n=E_N, status="ok", at=80.0):
+    """The paper law's rows and an engine 'fake' whose rows are the paper law's, changed by change(v) at `at` deg
+    (80: sliding throughout, where any change of v_t1 or e_n also moves |J_t| off mu J_n; 10: rolling)."""
     scene = scene or Scene(e_n=(e_n,), angles_deg=ANGLES, mu=MU)
     batch, v_n1, v_t1, omega1 = rigid_body(scene, e_n)
     paper = rows(scene, batch, "reference", "paper", v_n1, v_t1, omega1)
     engine = {"v_n1": v_n1.copy(), "v_t1": v_t1.copy(), "omega1": omega1.copy()}
     if change:
-        change(engine, batch, np.flatnonzero(batch.theta_deg == 80.0)[0])
+        change(engine, batch, np.flatnonzero(batch.theta_deg == at)[0])
     return scene, pd.concat([paper, rows(scene, batch, "fake", "fake", **engine, status=status)], ignore_index=True)
 
 
@@ -59,8 +60,9 @@ def faster_slide(v, b, i):                # v_t1 2% of V above the paper law's
     v["v_t1"][i] += 0.02 * speed_of(b, i)
 
 
-def livelier(v, b, i):                    # e_n 0.015 above, at 80 deg: 0.26% of V in v_n1
+def livelier(v, b, i):                    # e_n 0.015 above, at 80 deg: 0.26% of V in v_n1, still sliding (J_t = mu J_n)
     v["v_n1"][i] += 0.015 * b.v_n0[i]
+    v["v_t1"][i] -= MU * 0.015 * b.v_n0[i]
 
 
 def over_friction(v, b, i):               # |J_t| = 1.005 mu J_n: v_t1 1.3e-4 V below
@@ -78,24 +80,35 @@ def physics(frame, tolerances=Tolerances(), attribution=None):
     return engine_physics(frame, "fake", tolerances, attribution)
 
 
+def test_the_coulomb_bound_holds_from_below_where_the_paper_law_slides_throughout():
+    """v_t1 2% of V faster at 80 deg, where the rigid sphere slides throughout: the engine takes less tangential
+    impulse than mu J_n (by 0.02 V / (mu (1 + e) V_n) = 0.136 of it), and the check says so from below."""
+    _, frame = made_up(faster_slide)
+    coulomb = next(c for c in physics(frame)["checks"] if c["check"] == "coulomb")
+    v_n0 = 5.0 * np.cos(np.radians(80.0))
+    assert not coulomb["passed"] and coulomb["theta_deg"] == 80.0
+    assert coulomb["worst"] == pytest.approx(0.02 * 5.0 / (MU * (1.0 + E_N) * v_n0), rel=1e-9)
+    assert "where the paper law slides throughout" in coulomb["text"]
+
+
 def test_the_paper_law_itself_reproduces_it():
     _, frame = made_up()
     result = physics(frame)
     assert result["state"] == REPRODUCES and result["impacts"] == 3 and all(c["passed"] for c in result["checks"])
 
 
-@pytest.mark.parametrize("change, scene, check, relaxed", [
-    (faster_slide, None, "velocity", {"velocity": 0.03}),
-    (livelier, None, "e_n", {"e_n": 0.02}),
-    (over_friction, None, "coulomb", {"coulomb": 0.01}),
-    (energy_gain, FRICTIONLESS_ELASTIC, "energy", {"energy": 1e-3}),
+@pytest.mark.parametrize("change, scene, at, check, relaxed", [
+    (faster_slide, None, 10.0, "velocity", {"velocity": 0.03}),
+    (livelier, None, 80.0, "e_n", {"e_n": 0.02}),
+    (over_friction, None, 80.0, "coulomb", {"coulomb": 0.01}),
+    (energy_gain, FRICTIONLESS_ELASTIC, 80.0, "energy", {"energy": 1e-3}),
 ])
-def test_each_tolerance_broken_alone_is_the_one_reported(change, scene, check, relaxed):
-    _, frame = made_up(change, scene, e_n=1.0 if scene else E_N)
+def test_each_tolerance_broken_alone_is_the_one_reported(change, scene, at, check, relaxed):
+    _, frame = made_up(change, scene, e_n=1.0 if scene else E_N, at=at)
     result = physics(frame)
     assert result["state"] == DEVIATES and result["failing"] == [check]
     (failed,) = [c for c in result["checks"] if not c["passed"]]
-    assert failed["theta_deg"] == 80.0 and failed["failing"] == 1 and failed["worst"] > failed["tolerance"]
+    assert failed["theta_deg"] == at and failed["failing"] == 1 and failed["worst"] > failed["tolerance"]
     assert physics(frame, Tolerances.of(relaxed))["state"] == REPRODUCES        # the user's tolerance decides
 
 
@@ -111,7 +124,7 @@ def test_the_worst_case_is_measured_in_the_checks_own_units():
 
 
 def test_the_cause_is_the_ingredient_that_moves_the_quantity_towards_the_paper_law():
-    _, frame = made_up(faster_slide)             # the engine's v_t1 is above the paper law's: towards is negative
+    _, frame = made_up(faster_slide, at=10.0)    # the engine's v_t1 is above the paper law's: towards is negative
     attribution = pd.DataFrame([
         {"ingredient": "damping", "dialect": "a", "target": "b", "d_v_t1": +0.5},     # away, although larger
         {"ingredient": "integrator", "dialect": "leapfrog", "target": "paper", "d_v_t1": -0.3},
@@ -166,7 +179,7 @@ def test_findings_wrap_between_words_and_keep_every_number(capsys, monkeypatch):
               "omega0 0 rad/s); known cause: its formulas in the reference do the same; its velocity-Verlet step")
     record = {"model": "m", "engines": [], "e_n": [0.25], "impacts": 1, "skipped": [], "tolerances": {},
               "findings": [{"engine": "liggghts", "dialect": "liggghts", "kind": "Coulomb bound", "detail": detail}]}
-    print_summary(record, SimpleNamespace(failures=[]), ["x"])
+    print_summary(record, SimpleNamespace(failures=[], versions=pd.DataFrame(), builds={}), ["x"])
     lines = capsys.readouterr().out.splitlines()[1:-1]
     assert all(len(line) <= 80 and not line.endswith("...") for line in lines)
     assert " ".join(line.strip() for line in lines) == f"finding: liggghts (liggghts): Coulomb bound: {detail}"

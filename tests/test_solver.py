@@ -261,3 +261,50 @@ def test_hysteresis_dialects_leave_their_latched_dent_at_low_e_n(engine):
     t_c = math.sqrt(c.mass / k1) * (math.pi / 2.0 * (1.0 + e) + (1.0 - e * e) / e)
     assert row.t_contact == pytest.approx(t_c, rel=5e-3)        # the exit time inherits e_n's 3e-3 at 1000 steps
     assert row.e_n == pytest.approx(e, rel=1e-2)
+
+
+VERLET = {"integrator": "velocity-verlet", "coulomb": "total", "end": "tension"}
+
+
+def test_touch_overlap_starts_force_free_and_changes_nothing_where_the_force_at_zero_overlap_is_zero():
+    """touch 'overlap' (velocity Verlet on a wall): no force before the first step, so the first step drifts at V
+    and its force is k_n h V + c_n V (theory of the step); 'gap' kicks first with the dashpot's c_n V. The Hertz laws'
+    force and dashpots vanish at alpha = 0, so there the two rules give the same bits."""
+    from harness.solver.simulate import run_kernel
+    scene = Scene(e_n=(0.6,), angles_deg=(0.0, 30.0), psi1_star=None)
+    first = {}
+    for touch in ("gap", "overlap"):
+        law = compose("linear-spring-dashpot", {**VERLET, "touch": touch})
+        batch = batch_of(law, scene, 0.6, 100)
+        _, history, _ = run_kernel(batch, history_points=400)
+        first[touch] = history[:, 0, 2]
+        p = batch.params.T
+        v, h = -p[C.P_VZ0], p[C.P_DT]
+        expected = p[C.P_N1] * h * v + p[C.P_DAMP_C0] * v
+    assert np.allclose(first["overlap"], expected, rtol=1e-12, atol=0)
+    assert (np.abs(first["gap"] / expected - 1.0) > 1e-6).all()
+    for name in ("hertz-mindlin", "hertz-kuwabara-kono"):
+        gap, overlap = (simulate(compose(name, {**VERLET, "touch": t}), Scene(e_n=(0.3, 0.9), angles_deg=(0.0, 40.0),
+                                                                                omega0=-20.0, psi1_star=None), 200)[0]
+                        for t in ("gap", "overlap"))
+        for column in ("v_n1", "v_t1", "omega1"):
+            assert (gap[column].to_numpy() == overlap[column].to_numpy()).all(), (name, column)
+
+
+def test_touch_overlap_is_refused_where_the_stepper_has_no_such_rule():
+    from harness.errors import UserError
+    with pytest.raises(UserError, match="applies touch rule gap, not overlap"):
+        compose("linear-spring-dashpot", {"touch": "overlap"})
+
+
+def test_contact_radius_spring_applies_k_a_and_resets_to_the_displacement_of_k_alone():
+    """F = -k a xi after the increment; a capped force F leaves xi = -F/k, so with no further slip the next step
+    gives a F (the contact radius once more)."""
+    from harness.submodels.registry import code_of, python_point
+    code = code_of("tangential", "contact-radius-spring")
+    spring, after_cap = (python_point("tangential", code, point) for point in ("spring", "after_cap"))
+    st = np.zeros(8)
+    k, a = 3.0e5, 2.0e-3
+    assert math.isclose(spring(0.0, 1e-6, a, a, a, k, 0.1, 0.0, 0.0, st, None, False), -k * a * 1e-6)
+    after_cap(-0.25, k, a, st)
+    assert math.isclose(spring(0.0, 0.0, a, a, a, k, 0.1, 0.0, 0.0, st, None, False), -0.25 * a)

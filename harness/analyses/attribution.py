@@ -11,7 +11,7 @@ from .invariants import coulomb_ratio
 
 METRICS = ("e_n", "e_t", "omega_star", "psi2_star", "v_n1", "v_t1", "omega1", "coulomb_ratio", "ke_ratio")
 FIELDS = {key: key.replace("-", "_") for key in SUBMODEL_KEYS}
-STEPPING = ("integrator", "coulomb", "geometry")    # switched together where no stepper takes one without the others
+STEPPING = ("integrator", "coulomb", "geometry", "touch")    # switched together where no stepper takes one without the others
 NOTES = {   # what switching an ingredient carries with it, beyond its name
     "integrator": "the scheme's conventions go with it: tangential dashpot after the Coulomb test without a second "
                   "cap, release at the step rather than inside it; the velocity-Verlet dialects also their force at "

@@ -51,7 +51,8 @@ class Tolerances:
     def describe(self):
         """The tolerances in words, as every view prints them."""
         return (f"rebound velocities within {100 * self.velocity:.3g}% of V, e_n within {self.e_n:.3g}, "
-                f"|J_t| <= mu J_n within {100 * self.coulomb:.3g}%, energy gain at most {self.energy:.3g} KE0")
+                f"|J_t| <= mu J_n (= where the paper law slides) within {100 * self.coulomb:.3g}%, energy gain at "
+                f"most {self.energy:.3g} KE0")
 
     def as_dict(self):
         return asdict(self)
@@ -133,18 +134,29 @@ def e_n_check(pairs, tolerance):
 
 
 def coulomb_check(pairs, tolerance, gravity=0.0):
-    """|J_t| / (mu J_n) - 1, where mu > 0; the invariants' round-off allowance at tiny mu (1e-6 V) added."""
+    """Coulomb's bound both ways: |J_t| / (mu J_n) - 1 where mu > 0, and, where the paper law slides throughout
+    (its |J_t| = mu J_n within the tolerance, without gravity), 1 - |J_t| / (mu J_n) too; the invariants' round-off
+    allowance at tiny mu (1e-6 V) added."""
     j_t, mu_j_n = coulomb_impulses(pairs, gravity)
     speed = np.hypot(pairs.v_n0, pairs.v_t0).to_numpy(dtype=float)
     with np.errstate(divide="ignore", invalid="ignore"):
-        excess = np.where(mu_j_n > 0, j_t / mu_j_n - 1.0, np.nan)
+        ratio = np.where(mu_j_n > 0, j_t / mu_j_n, np.nan)
+        paper = (np.abs(pairs.v_t1_paper - pairs.v_t0) / (pairs.mu * (pairs.v_n0 + pairs.v_n1_paper))).to_numpy()
+        slides = (np.abs(paper - 1.0) <= tolerance) & (gravity == 0.0)
+        excess = np.where(slides, np.abs(ratio - 1.0), ratio - 1.0)
         allowance = np.where(mu_j_n > 0, FRICTIONLESS_TOLERANCE * speed / mu_j_n, 0.0)
 
     def describe(i):
-        return (f"tangential impulse {j_t[i] / mu_j_n[i]:.4g} x mu J_n ({excess[i]:+.3g} beyond Coulomb's bound) "
+        if ratio[i] < 1.0:
+            return (f"tangential impulse {ratio[i]:.4g} x mu J_n where the paper law slides throughout "
+                    f"({1.0 - ratio[i]:.3g} below Coulomb's bound) at {_at(_where(pairs, i))}")
+        return (f"tangential impulse {ratio[i]:.4g} x mu J_n ({excess[i]:+.3g} beyond Coulomb's bound) "
                 f"at {_at(_where(pairs, i))}")
-    return _check("coulomb", excess, tolerance, pairs, describe, allowance,
-                  brief=lambda i: f"|J_t| {j_t[i] / mu_j_n[i]:.4g} mu J_n")
+    record = _check("coulomb", excess, tolerance, pairs, describe, allowance,
+                    brief=lambda i: f"|J_t| {ratio[i]:.4g} mu J_n")
+    if "row" in record:
+        record["towards"] = 1.0 if ratio[record["row"]] < 1.0 else -1.0     # the ratio's way to the paper law
+    return record
 
 
 def energy_check(pairs, tolerance):
@@ -193,11 +205,12 @@ def engine_physics(frame, engine, tolerances=Tolerances(), attribution=None, gra
     for check in checks:
         if not check["passed"]:
             metric = check.get("metric", check["check"])
-            towards = -1.0 if metric in ("coulomb", "energy") else float(np.sign(
+            towards = check.pop("towards", -1.0) if metric in ("coulomb", "energy") else float(np.sign(
                 pairs.loc[check["row"], metric + "_paper"] - pairs.loc[check["row"], metric]))
             check["cause"], check["ingredient"] = ingredient(attribution, metric, towards)
     for check in checks:
         check.pop("row", None)
+        check.pop("towards", None)
     failing = sorted((c for c in checks if not c["passed"]), key=lambda c: -c["worst"] / max(c["tolerance"], 1e-300))
     return {"state": DEVIATES if failing else REPRODUCES, "impacts": len(pairs), "checks": checks,
             "failing": [c["check"] for c in failing], "reason": "; ".join(c["text"] for c in failing)}

@@ -93,7 +93,8 @@ class Engine:
     def build(self):
         """What ran: {version, binary, sha256 of its executable file, origin} (the record of every result)."""
         path = shutil.which(self.binary()) or self.binary()
-        return {"version": self.version(), "binary": os.path.abspath(path), "sha256": sha256(self.executable_file()),
+        return {"version": self.version(), "binary": os.path.abspath(path) if path else "",
+                "sha256": sha256(self.executable_file()),
                 "origin": self.origin or self.default_origin()}
 
     def dialect_note(self):

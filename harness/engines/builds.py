@@ -31,10 +31,12 @@ def _digest(path, size, mtime_ns):
 
 def sha256(path):
     """SHA-256 of the file a binary path resolves to ('' when there is none), read once per file version."""
-    real = os.path.realpath(path)
+    real = os.path.realpath(path) if path else ""
     try:
         stat = os.stat(real)
     except OSError:
+        return ""
+    if not os.path.isfile(real):
         return ""
     return _digest(real, stat.st_size, stat.st_mtime_ns)
 

@@ -10,8 +10,9 @@ from ..submodels.damping.tsuji import TsujiDashpot
 from ..submodels.normal.hertz import Hertz
 from ..submodels.normal.linear import LinearSpring
 from ..submodels.registry import (COULOMB_RULES, DAMPING_MODELS, ENGINE_NORMAL_MODELS, ENGINE_TANGENTIAL_MODELS,
-                                  GEOMETRIES, INTEGRATORS, NORMAL_MODELS, TANGENTIAL_MODELS, kernel_code, kernel_of)
-from ..submodels.stepping import STEPPERS
+                                  GEOMETRIES, INTEGRATORS, NORMAL_MODELS, TANGENTIAL_MODELS, TOUCHES, kernel_code,
+                                  kernel_of)
+from ..submodels.stepping import STEPPERS, TOUCH_STEPPERS
 from ..submodels.tangential_damping import TangentialDashpot
 
 END_RULES = ("tension", "no-tension")
@@ -19,7 +20,7 @@ SLIPS = ("lever", "noratch", "noratch-sphere", "noratch-pair")
 TORQUES = ("lever", "contact-point")
 LEVERS = ("0", "0.25", "0.5", "1")
 SUBMODEL_KEYS = ("normal", "damping", "end", "tangential", "tangential-damping", "integrator", "coulomb", "geometry",
-                 "lever", "slip", "torque")
+                 "lever", "slip", "torque", "touch")
 
 
 @dataclass(frozen=True)
@@ -40,6 +41,7 @@ class Law:
                                          # with two spheres' R1 + R2 ('noratch-pair')
     torque: str = "lever"                # torque lever: the slip's ('lever'), or each body's R_i - d/2 ('contact-point',
                                          # Verlet schemes)
+    touch: str = "gap"                   # contact from gap 0 (force at first touch) or from overlap > 0 (none)
     summary: str = ""
     dialect: str = "paper"               # whose formulas these are: the paper's, or an engine's
 
@@ -51,7 +53,7 @@ class Law:
                 "integrator": self.integrator, "coulomb": self.coulomb, "geometry": self.geometry,
                 "lever": {0.0: "R", 0.25: "R - d/4", 0.5: "R - d/2", 1.0: "R - d"}.get(self.lever,
                                                                                      f"R - {self.lever:g} d"),
-                "slip": self.slip, "torque": self.torque}
+                "slip": self.slip, "torque": self.torque, "touch": self.touch}
 
     @property
     def provisional(self):
@@ -118,6 +120,8 @@ def replace_submodels(law, overrides, dialect=None):
             changes["slip"] = _choice(key, spec, SLIPS)
         elif key == "torque":
             changes["torque"] = _choice(key, spec, TORQUES)
+        elif key == "touch":
+            changes["touch"] = _choice(key, spec, tuple(TOUCHES))
         else:
             raise UserError(f"unknown sub-model {key!r}; known: {', '.join(SUBMODEL_KEYS)}")
     law = replace(law, **changes) if changes else law
@@ -141,8 +145,8 @@ def check_composition(law):
 
 
 def check_stepping(law):
-    """Reject an (integrator, geometry) pair no stepper computes, a Coulomb rule its stepper does not apply, and a
-    stand-in sphere without a normal model that gives its radius."""
+    """Reject an (integrator, geometry) pair no stepper computes, a Coulomb rule or touch rule its stepper does not
+    apply, and a stand-in sphere without a normal model that gives its radius."""
     stepper = STEPPERS.get((law.integrator, law.geometry))
     if stepper is None:
         known = ", ".join(f"{i} with {g}" for i, g in STEPPERS)
@@ -150,6 +154,10 @@ def check_stepping(law):
     if law.coulomb not in stepper[1]:
         raise UserError(f"the {law.integrator} stepper with geometry {law.geometry} applies Coulomb rule "
                         f"{' or '.join(stepper[1])}, not {law.coulomb}")
+    touches = TOUCH_STEPPERS.get((law.integrator, law.geometry), ("gap",))
+    if law.touch not in touches:
+        raise UserError(f"the {law.integrator} stepper with geometry {law.geometry} applies touch rule "
+                        f"{' or '.join(touches)}, not {law.touch}")
     if law.geometry == "stand-in-sphere" and not hasattr(law.normal, "stand_in_radius"):
         raise UserError(f"geometry stand-in-sphere needs a normal model with a stand-in radius, not {law.normal.name}")
 

@@ -5,7 +5,7 @@ import numpy as np
 
 from ..errors import UserError
 
-from ..submodels.registry import COULOMB_RULES, GEOMETRIES, INTEGRATORS, check_parameters, kernel_code
+from ..submodels.registry import COULOMB_RULES, GEOMETRIES, INTEGRATORS, TOUCHES, check_parameters, kernel_code
 from ..submodels.tangential_damping import CONE_CODES
 from . import codes as C
 from .dispatch import TANGENTIAL_NONE
@@ -148,4 +148,5 @@ def batch_of(law, scene, e_n, steps_per_contact, check_stability=True, every_eff
     ints[:, C.I_INTEGRATOR] = INTEGRATORS[law.integrator].code
     ints[:, C.I_COULOMB] = COULOMB_RULES[law.coulomb].code
     ints[:, C.I_GEOMETRY] = GEOMETRIES[law.geometry].code
+    ints[:, C.I_TOUCH] = TOUCHES[law.touch].code
     return Batch(params, ints, e_n, v_n0, v_t0, omega0, theta, dt, steps_per_contact, tangential)

@@ -2,7 +2,7 @@
 codes are the registry's: solver/dispatch.py; the stepping codes submodels/stepping.py's)."""
 from ..submodels.stepping import (COULOMB_SPRING, COULOMB_TOTAL, GEOMETRY_PAIR, GEOMETRY_PAIR_VECTOR,  # noqa: F401
                                   GEOMETRY_STAND_IN_SPHERE, GEOMETRY_WALL, INTEGRATOR_LEAPFROG, INTEGRATOR_PAPER,
-                                  INTEGRATOR_VELOCITY_VERLET)
+                                  INTEGRATOR_VELOCITY_VERLET, TOUCH_GAP, TOUCH_OVERLAP)
 
 # end-of-contact rule
 END_ALPHA = 0              # tension allowed, contact ends when alpha returns to 0
@@ -31,8 +31,8 @@ P_TCONE = 30                                 # the paper scheme's Coulomb test w
 N_PARAMS = 31
 
 # per-impact integer slots
-I_NORMAL, I_END, I_TANGENTIAL, I_INTEGRATOR, I_COULOMB, I_GEOMETRY = 0, 1, 2, 3, 4, 5
-N_INTS = 6
+I_NORMAL, I_END, I_TANGENTIAL, I_INTEGRATOR, I_COULOMB, I_GEOMETRY, I_TOUCH = 0, 1, 2, 3, 4, 5, 6
+N_INTS = 7
 
 # outputs
 O_VZ, O_VX, O_W, O_TC, O_FMAX, O_AMAX, O_STEPS, O_STATUS = 0, 1, 2, 3, 4, 5, 6, 7

@@ -21,6 +21,7 @@ from ..submodels.tangential import mindlin_deresiewicz as tangential_mindlin_der
 from ..submodels.tangential import walton_braun as tangential_walton_braun
 from ..submodels.tangential import viscous as tangential_viscous
 from ..submodels.tangential import mindlin_wall_coefficient as tangential_mindlin_wall_coefficient
+from ..submodels.tangential import contact_radius_spring as tangential_contact_radius_spring
 from .extension import BELOW, FORCE, KINK, RESIDUAL, SLOPE, call
 
 N_NORMAL = 8
@@ -46,9 +47,10 @@ TANGENTIAL_VISCOUS_LINEAR = 7
 TANGENTIAL_VISCOUS_MINDLIN = 8
 TANGENTIAL_MINDLIN_TOTAL_RESCALE = 9
 TANGENTIAL_MINDLIN_FORCE_RESCALE = 10
-TANGENTIAL_VISCOUS = np.array([False, False, False, False, False, False, False, True, True, False, False], dtype=np.bool_)
-TANGENTIAL_IMPLICIT = np.array([False, False, False, False, False, False, True, False, False, False, False], dtype=np.bool_)
-TANGENTIAL_LOG_RATE = np.array([0, 0, 0, 1, 2, 0, 0, 0, 0, 0, 0], dtype=np.int64)
+TANGENTIAL_CONTACT_RADIUS_SPRING = 11
+TANGENTIAL_VISCOUS = np.array([False, False, False, False, False, False, False, True, True, False, False, False], dtype=np.bool_)
+TANGENTIAL_IMPLICIT = np.array([False, False, False, False, False, False, True, False, False, False, False, False], dtype=np.bool_)
+TANGENTIAL_LOG_RATE = np.array([0, 0, 0, 1, 2, 0, 0, 0, 0, 0, 0, 0], dtype=np.int64)
 TANGENTIAL_ANY_IMPLICIT = True   # numba drops the implicit stepper where False
 
 
@@ -154,6 +156,8 @@ def tangential_stiffness(code, p1, a):
         return tangential_mindlin_wall_coefficient.stiffness(p1, a)
     if code == 10:
         return tangential_mindlin_wall_coefficient.stiffness(p1, a)
+    if code == 11:
+        return tangential_contact_radius_spring.stiffness(p1, a)
     return math.nan
 
 
@@ -175,6 +179,8 @@ def tangential_spring(code, f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, 
         return tangential_mindlin_wall_coefficient.total_rescale(f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, scratch, midpoint)
     if code == 10:
         return tangential_mindlin_wall_coefficient.force_rescale(f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, scratch, midpoint)
+    if code == 11:
+        return tangential_contact_radius_spring.spring(f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, scratch, midpoint)
     return math.nan
 
 
@@ -185,6 +191,9 @@ def tangential_after_cap(code, f_s, p1, a, st):
         return
     if code == 9:
         tangential_mindlin_wall_coefficient.total_after_cap(f_s, p1, a, st)
+        return
+    if code == 11:
+        tangential_contact_radius_spring.after_cap(f_s, p1, a, st)
         return
     return
 

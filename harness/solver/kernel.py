@@ -61,12 +61,13 @@ def integrate_rows(first, last, params, ints, out, history, stride, ext, work):
         s[S_U] = -p[C.P_MASS] * p[C.P_VZ0]
         reset_history(row_ints[C.I_NORMAL], s)
         s[S_Z] = p[C.P_RADIUS]                        # stand-in sphere: centre at R above its apex
-        if p[C.P_DAMP_POWER] == 0.0:
+        touch_gap = row_ints[C.I_TOUCH] == C.TOUCH_GAP        # else gap 0 is no contact: no force at first touch
+        if p[C.P_DAMP_POWER] == 0.0 and touch_gap:
             s[S_FN] = -p[C.P_DAMP_C0] * p[C.P_VZ0]   # a constant dashpot acts from first touch
             s[S_C] = p[C.P_DAMP_C0]
         # the spring starts at 0, inside the Coulomb cone (strictly: a slide starting in the first step is an event)
         st[T_MARGIN] = st[T_HELD] = -p[C.P_MU] * abs(s[S_FN]) - 1e-300
-        setup = scheme == C.INTEGRATOR_VELOCITY_VERLET and geometry == C.GEOMETRY_WALL
+        setup = scheme == C.INTEGRATOR_VELOCITY_VERLET and geometry == C.GEOMETRY_WALL and touch_gap
         if VELOCITY_VERLET and setup and row_ints[C.I_TANGENTIAL] != TANGENTIAL_NONE:
             # the setup force at first touch (gap 0 counts as contact): the tangential dashpot alone; the Coulomb
             # rule 'total' drops it when it exceeds mu |F_n|, its spring being empty

@@ -23,6 +23,7 @@ from .normal.thornton import Thornton
 from .normal.walton_braun import WaltonBraun
 from .normal.cundall_strack import CundallStrackSpring
 from .normal.luding_incremental import LudingIncremental
+from .tangential.contact_radius_spring import ContactRadiusSpring
 from .tangential.mindlin_wall_coefficient import MindlinPairCoefficient, MindlinWallCoefficient
 from .tangential.linear import LinearTangential
 from .tangential.mindlin import Mindlin
@@ -150,6 +151,8 @@ TANGENTIAL_KERNELS = (
                       spring="total_rescale", after_cap="total_after_cap"),
     tangential_kernel("mindlin:force-rescale", "mindlin_wall_coefficient", stiffness="stiffness",
                       spring="force_rescale"),
+    tangential_kernel("contact-radius-spring", "contact_radius_spring", stiffness="stiffness", spring="spring",
+                      after_cap="after_cap"),
 )
 
 # sub-models by the name --with takes; engine dialects' own sub-models are listed apart (engines name them)
@@ -158,11 +161,13 @@ ENGINE_NORMAL_MODELS = {cls.name: cls for cls in (LudingPeak, ThorntonNing, Cund
                                                    HertzWallModulus)}
 TANGENTIAL_MODELS = {cls.name: cls for cls in (LinearTangential, Mindlin, MindlinDeresiewicz, WaltonBraunTangential,
                                                ViscousTangential)}
-ENGINE_TANGENTIAL_MODELS = {cls.name: cls for cls in (MindlinWallCoefficient, MindlinPairCoefficient)}
+ENGINE_TANGENTIAL_MODELS = {cls.name: cls for cls in (MindlinWallCoefficient, MindlinPairCoefficient,
+                                                       ContactRadiusSpring)}
 DAMPING_MODELS = {cls.name: cls for cls in (NoDamping, LinearDashpot, TsujiDashpot, KuwabaraKonoDashpot)}
 INTEGRATORS = {s.name: s for s in stepping.INTEGRATORS}          # stepping sub-models: the codes the steppers take
 COULOMB_RULES = {s.name: s for s in stepping.COULOMB_RULES}
 GEOMETRIES = {s.name: s for s in stepping.GEOMETRIES}
+TOUCHES = {s.name: s for s in stepping.TOUCHES}
 
 EXTENSION_SLOTS = 4         # normal kernels registered at run time, beyond the generated dispatch
 EXTENSIONS = []             # their Kernels, in registration order

@@ -1,6 +1,7 @@
 """The stepping sub-models of a law, each by name with the code the compiled steppers dispatch on: the integrator
-(time stepping), the Coulomb rule (what the friction cap bounds) and the geometry (what moves and how the normal and
-the shear history follow); which (integrator, geometry) pairs a stepper implements (docs/design.md)."""
+(time stepping), the Coulomb rule (what the friction cap bounds), the geometry (what moves and how the normal and
+the shear history follow) and the touch rule (whether a sphere placed at gap 0 is in contact); which (integrator,
+geometry) pairs a stepper implements (docs/design.md)."""
 from dataclasses import dataclass
 
 
@@ -18,6 +19,7 @@ class Stepping:
 INTEGRATOR_PAPER, INTEGRATOR_VELOCITY_VERLET, INTEGRATOR_LEAPFROG = 0, 1, 2
 COULOMB_SPRING, COULOMB_TOTAL = 0, 1
 GEOMETRY_WALL, GEOMETRY_STAND_IN_SPHERE, GEOMETRY_PAIR, GEOMETRY_PAIR_VECTOR = 0, 1, 2, 3
+TOUCH_GAP, TOUCH_OVERLAP = 0, 1
 
 INTEGRATORS = (
     Stepping("integrator", "paper", INTEGRATOR_PAPER,
@@ -44,6 +46,13 @@ GEOMETRIES = (
              "two spheres in their relative motion, the normal turning; the shear vector turned with the normal",
              True),
 )
+TOUCHES = (
+    Stepping("touch", "gap", TOUCH_GAP,
+             "contact from gap 0: a sphere placed touching feels the force of zero overlap before its first step (a "
+             "constant normal dashpot's -c_n v_n; the velocity-Verlet wall's tangential dashpot, -c_t V_s)"),
+    Stepping("touch", "overlap", TOUCH_OVERLAP,
+             "contact from overlap > 0: no force before the first step; the first kick is force-free"),
+)
 
 STEPPERS = {      # (integrator, geometry) -> the stepper that computes it (solver/switches.py) and its Coulomb rules
     ("paper", "wall"): ("PAPER", ("spring",)),
@@ -53,3 +62,4 @@ STEPPERS = {      # (integrator, geometry) -> the stepper that computes it (solv
     ("velocity-verlet", "pair"): ("VERLET_PAIR", ("spring", "total")),
     ("leapfrog", "pair-vector"): ("LEAPFROG_PAIR", ("spring",)),
 }
+TOUCH_STEPPERS = {("velocity-verlet", "wall"): ("gap", "overlap")}     # the others apply 'gap' only

@@ -34,13 +34,13 @@ def run_facts(frame, arithmetic):
     rows = []
     for (engine, dialect), group in frame.groupby(["engine", "dialect"], sort=False):
         rows.append({"engine": engine, "dialect": dialect, "version": str(group.engine_version.iloc[0]),
-                     "binary": str(group.engine_binary.iloc[0]), "sha256": str(group.engine_sha256.iloc[0])[:16],
                      "arithmetic": arithmetic.get(engine, "double"),
                      "steps per contact": ", ".join(f"{n:.4g}" for n in group.steps_per_contact.unique()),
                      "dt min [s]": group.dt.min(), "dt max [s]": group.dt.max(), "impacts": len(group),
                      "not ok": int((group.status != "ok").sum()),
                      "wall time [s]": float(group.wall_s.sum()),
-                     "wall per impact [s]": float(group.wall_s.mean())})
+                     "wall per impact [s]": float(group.wall_s.mean()),
+                     "binary": str(group.engine_binary.iloc[0]), "sha256": str(group.engine_sha256.iloc[0])[:16]})
     return pd.DataFrame(rows)
 
 

@@ -101,7 +101,8 @@ def physics_phrase(physics):
             + (f"; attributed to {', '.join(causes)}" if causes else ""))
 
 
-FOLDED = {"Coulomb bound": "coulomb", "e_n off target": "e_n", "energy gain": "energy",
+FOLDED = {"Coulomb bound": "coulomb", "Coulomb bound from below": "coulomb", "e_n off target": "e_n",
+          "energy gain": "energy",
           "tangential energy gain": "energy"}     # finding kind -> the physics check that says it
 
 

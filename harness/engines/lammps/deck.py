@@ -11,7 +11,7 @@ from ..base import split_submodels
 from ..dumps import read_final, read_observed, read_pair_batch, rebound
 from ..batches import in_one_process
 from ..runner import EngineFailure
-from .dialect import dialect, walls, words
+from .dialect import HISTORY_STYLES, dialect, numbers, walls, words
 
 TEMPLATES = Path(__file__).resolve().parent / "templates"
 INPUT = "in.harness"
@@ -26,10 +26,11 @@ def settings(law, scene, e_n, options=None, version=None):
     as alpha^1/2 and alpha^1/4). history: k_n (4/3 E* for hertz/history), k_t (8 G*), gamma_n = c_n/m (c_n/(m sqrt R)
     for hertz/history), gamma_t = c_t/m, and dampflag 1 where there is a tangential dashpot. A sub-model among the
     options (a mapped `--with`) replaces that of the dialect, and the numbers follow it; the dialect is LAMMPS
-    `version`'s."""
+    `version`'s (the older styles' numbers are the same in every release: dialect.numbers)."""
     options, submodels = split_submodels(options)
     style, normal, damping, tangential = words(law.name, options, version)
-    own = dialect(law.name, options, "sphere" if scene.spheres else "wall", version)
+    own = numbers(law.name) if style in HISTORY_STYLES.values() else \
+        dialect(law.name, options, "sphere" if scene.spheres else "wall", version)
     if submodels:
         from ...laws.law import replace_submodels
         own = replace_submodels(own, submodels)

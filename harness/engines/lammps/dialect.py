@@ -28,6 +28,14 @@ INGREDIENTS = {              # ingredient -> ((first, last release it holds for,
     "wall-moduli": (((2021, 9, 29, 2), (2022, 6, 23, 4), "wall"), ((2023, 8, 2, 3), None, "pair")),
     # `damping coeff_restitution` (gran_sub_mod_damping.cpp, GranSubModDampingCoeffRestitution): absent, then there
     "coeff_restitution": (((2021, 9, 29, 2), (2023, 8, 2, 3), False), ((2024, 8, 29, 3), None, True)),
+    # a sphere at gap 0 against a wall: in contact (fix_wall_gran.cpp, contact while rsq <= R^2), then not
+    # (gran_sub_mod_normal.cpp, GranSubModNormal::touch, rsq < radsum^2)
+    "touch": (((2021, 9, 29, 2), (2022, 6, 23, 4), "gap"), ((2023, 8, 2, 3), None, "overlap")),
+    # the hooke/history and hertz/history styles' tangential spring: kt xi (hertz: kt a xi) reset to the capped
+    # force's (fix_wall_gran.cpp, hooke_history/hertz_history), then kt a xi for both, reset to xi = -F/kt
+    # (granular_model.cpp, define_classic_model; gran_sub_mod_tangential.cpp, linear_history_classic and
+    # mindlin_classic)
+    "classic-spring": (((2021, 9, 29, 2), (2022, 6, 23, 4), "own"), ((2023, 8, 2, 3), None, "contact-radius")),
 }
 DAMPING = {"tsuji": "tsuji:polynomial", "coeff_restitution": "tsuji:tension"}   # A(e) polynomial; sqrt5 beta
 COMMON = {"end": "tension", "integrator": "velocity-verlet", "coulomb": "total", "lever": "0"}
@@ -46,6 +54,10 @@ PAIR_DIALECTS = {            # pair granular between two spheres: the pair's own
 HISTORY_DIALECTS = {         # the older styles take harness' own k_n, E* and G* (no mixing of their own)
     "linear-spring-dashpot": {**COMMON},
     "hertz-kuwabara-kono": {**COMMON, "tangential": "mindlin:total", "tangential-damping": "none"},
+}
+CONTACT_RADIUS_SPRINGS = {   # the same numbers through the classic styles' spring from 2023.8.2: k a xi, k the deck's kt
+    "linear-spring-dashpot": "contact-radius-spring:kappa",
+    "hertz-kuwabara-kono": "contact-radius-spring:mindlin",
 }
 
 
@@ -87,12 +99,13 @@ def walls(law_name, options=None):
 
 
 def dialect(law_name, options=None, target="wall", version=None):
-    """The law as LAMMPS computes it through fix wall/gran and fix nve/sphere: LIGGGHTS' velocity Verlet steps
-    (forces from the half-step velocities, contact from gap 0, no clipping of the normal force), lever R, the Coulomb
-    cap on spring plus dashpot (Coulomb rule `total`); the granular style's own wall moduli E_w = E/(2(1 - nu)) and
-    K = E/4 (2 - nu)(1 + nu) and its Mindlin forms; the older styles with the numbers harness gives them. Against a
-    sphere (target 'sphere', pair granular): E* and G* mixed as the paper does, `mindlin` on the total displacement,
-    slip from the full radii and torque from R_i - d/2, contact from overlap > 0."""
+    """The law as LAMMPS `version` computes it through fix wall/gran and fix nve/sphere: LIGGGHTS' velocity Verlet
+    steps (forces from the half-step velocities, no clipping of the normal force), lever R, the Coulomb cap on spring
+    plus dashpot (Coulomb rule `total`), contact from gap 0 or from overlap > 0 (`touch`, by release); the granular
+    style's wall moduli and Mindlin forms (by release); the older styles with the numbers harness gives them and
+    their spring by release. Against a sphere (target 'sphere', pair granular): E* and G* mixed as the paper does,
+    `mindlin` on the total displacement, slip from the full radii and torque from R_i - d/2, contact from overlap >
+    0."""
     from ...laws import compose
     from ...laws.law import replace_submodels
     options = check_options(law_name, options, version)
@@ -100,9 +113,12 @@ def dialect(law_name, options=None, target="wall", version=None):
         if options:
             raise UserError(f"LAMMPS' pair inputs take no option, got {', '.join(options)}")
         return replace_submodels(compose(law_name), PAIR_DIALECTS[law_name], "lammps")
+    touch = {"touch": holds(INGREDIENTS["touch"], version)}
     if options.get("style", "granular") == "history":
-        return replace_submodels(compose(law_name), HISTORY_DIALECTS[law_name], "lammps")
-    overrides = dict(DIALECTS[law_name])
+        spring = {} if holds(INGREDIENTS["classic-spring"], version) == "own" else \
+            {"tangential": CONTACT_RADIUS_SPRINGS[law_name]}
+        return replace_submodels(compose(law_name), {**HISTORY_DIALECTS[law_name], **spring, **touch}, "lammps")
+    overrides = {**DIALECTS[law_name], **touch}
     if GRANULAR[law_name][0] == "hertz/material":
         form = MINDLIN_FORMS[options.get("tangential", "mindlin")]
         if holds(INGREDIENTS["wall-moduli"], version) == "wall":
@@ -112,6 +128,14 @@ def dialect(law_name, options=None, target="wall", version=None):
     if "damping" in options:
         overrides["damping"] = DAMPING[options["damping"]]
     return replace_submodels(compose(law_name), overrides, "lammps")
+
+
+def numbers(law_name):
+    """The composition whose numbers a wall deck gives the older hooke/history and hertz/history styles (k_n, k_t,
+    gamma_n, gamma_t): the same in every release, which differ in what they compute with them."""
+    from ...laws import compose
+    from ...laws.law import replace_submodels
+    return replace_submodels(compose(law_name), HISTORY_DIALECTS[law_name], "lammps")
 
 
 def ingredients(version):

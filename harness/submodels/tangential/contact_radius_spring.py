@@ -1,0 +1,45 @@
+"""A spring whose coefficient k is applied at the contact radius a = sqrt(R alpha): F = -k a xi on the total
+tangential displacement xi; after the Coulomb cap xi = -F/k, the displacement of the spring k alone, so that the
+next step scales the capped force by a once more (docs/laws.md#tangential-laws)."""
+from ...errors import UserError
+from ...jit import compiled
+from ..base import TangentialModel
+from .linear import stiffness  # noqa: F401  (k: the constant p1, what the tangential dashpot's c_t = g sqrt(k) takes)
+from .ratio import parse_ratio, ratio_label, ratio_value
+from .state import T_AUX1
+
+NAME = "contact-radius-spring"
+
+
+class ContactRadiusSpring(TangentialModel):
+    """F = -k a xi, reset after the cap to xi = -F/k; k = 8 G* ('mindlin') or a ratio of k_n ('kappa', '2/7', a
+    number: the linear spring's k_t). The tangential dashpot and the stability limit take k itself."""
+    name, kernel, constant_stiffness = NAME, NAME, True
+
+    def __init__(self, coefficient="kappa"):
+        self.coefficient = "mindlin" if coefficient == "mindlin" else parse_ratio(coefficient)
+        if self.coefficient == "nu":
+            raise UserError("the contact-radius spring takes 'mindlin', 'kappa' or a ratio of k_n, not 'nu'")
+
+    def label(self):
+        if self.coefficient == "mindlin":
+            return f"{self.name}(k=8G*)"
+        return f"{self.name}(k={ratio_label(self.coefficient)} k_n)"
+
+    def parameter(self, contact, k_n):
+        if self.coefficient == "mindlin":
+            return 8.0 * contact.G_star
+        return ratio_value(self.coefficient, contact) * k_n
+
+
+@compiled
+def spring(f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, scratch, midpoint):
+    """xi + dd; F = -k a xi."""
+    st[T_AUX1] += dd
+    return -p1 * a * st[T_AUX1]
+
+
+@compiled
+def after_cap(f_s, p1, a, st):
+    """xi = -F/k for a capped force F (not -F/(k a))."""
+    st[T_AUX1] = -f_s / p1 if p1 > 0.0 else 0.0
