@@ -87,8 +87,8 @@ def with_ratio(alternative, engine, law_name, scene, steps, label, target="wall"
         options = {**alternative.options, TANGENTIAL_DAMPING: f"{ratio:.6f}"}
         rows = rows_at(engine.dialect(law_name, options, target), scene, alternative.inputs, steps, label)
         return worst_velocity(paper, rows)
-    found = minimize_scalar(worst, bounds=RATIO_RANGE, method="bounded", options={"xatol": 1e-4})
-    options = {**alternative.options, TANGENTIAL_DAMPING: f"{found.x:.6f}"}
+    best = minimize_scalar(worst, bounds=RATIO_RANGE, method="bounded", options={"xatol": 1e-4})
+    options = {**alternative.options, TANGENTIAL_DAMPING: f"{best.x:.6f}"}
     dialect = engine.dialect(law_name, options, target)
     return Alternative(options, dialect, alternative.inputs, rows_at(dialect, scene, alternative.inputs, steps, label),
                        paper)

@@ -56,12 +56,12 @@ def calibrate(engine, law, scene, steps=1000, tolerances=None, timestep_toleranc
     given = as_given(default_dialect, scene, steps, GIVEN)
     tried, scores = [], []
     for options, dialect in alternatives(engine, law.name, target):
-        found = evaluate(options, dialect, scene, steps, CALIBRATED, paper)
-        if found.rows is None:
+        evaluated = evaluate(options, dialect, scene, steps, CALIBRATED, paper)
+        if evaluated.rows is None:
             continue
-        tuned = ([with_ratio(found, engine, law.name, scene, steps, CALIBRATED)]
+        tuned = ([with_ratio(evaluated, engine, law.name, scene, steps, CALIBRATED)]
                  if takes_ratio(engine, law.name, options) else [])
-        for alternative in [found] + tuned:
+        for alternative in [evaluated] + tuned:
             tried_one(alternative, paper, tolerances, scene, tried, scores)
     best = min(range(len(tried)), key=lambda i: (scores[i]["score"], i))
 
