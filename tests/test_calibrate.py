@@ -133,3 +133,15 @@ def test_a_file_that_is_not_a_calibration_is_refused(tmp_path, capfd):
     (tmp_path / "x.json").write_text(json.dumps({"model": "hertz-mindlin"}))
     assert main(["render", "--calibration", str(tmp_path / "x.json"), "-o", str(tmp_path / "o")]) == 2
     assert "is not a calibration (missing engine" in capfd.readouterr().err
+
+
+@needs("liggghts")
+def test_from_python_the_calibration_is_data(tmp_path):
+    import harness
+    c = harness.calibrate("hertz-mindlin", "liggghts", en=[0.5], angles=[10, 40])
+    assert list(c.inputs.e_n_target) == [0.5] and 0.0 < c.inputs.input_e.iloc[0] <= 1.0
+    assert {"formulas, e as given", "formulas, calibrated", "engine, calibrated"} == set(c.stages.stage)
+    with pytest.raises(TypeError):
+        harness.calibrate("hertz-mindlin", 3, en=[0.5])
+    with pytest.raises(ValueError):
+        harness.calibrate("hertz-mindlin", "liggghts", en=[0.5], timestep_tolerance=5)
