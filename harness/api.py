@@ -7,7 +7,8 @@ from .analyses.attribution import attribution
 from .analyses.precision import precision_gap
 from .analyses.sliding import threshold_table
 from .comparison import Comparison
-from .engines import ENGINES, EXTERNAL
+from .calibration.calibrate import calibrate as run_calibration
+from .engines import ENGINES, EXTERNAL, get_engine
 from .engines.protocol import Status
 from .errors import UserError
 from .execute import execute, run_all
@@ -49,6 +50,37 @@ def compare(model, engines=None, engine_options=None, **keywords):
     .reproduces and .ok, e.g. compare("hertz-mindlin", engines=["liggghts"], en=[0.5], angles=[10, 30],
     tolerances={"velocity": 0.02})."""
     return compare_request(Request.from_keywords(model, engines=engines, engine_options=engine_options, **keywords))
+
+
+def calibrate(model, engine, tolerances=None, timestep_tolerance=1e-2, **keywords):
+    """The engine inputs that make `engine` compute `model` nearest the paper law on a scene, confirmed by running
+    the engine, and the time step that buys `timestep_tolerance`: a harness.calibration.calibrate.Calibration, e.g.
+    calibrate("hertz-mindlin", "lammps", en=[0.25, 0.5], angles=[10, 30, 60])."""
+    request = Request.from_keywords(model, engines=[engine], **keywords)
+    return calibrate_request(request, get_engine(request.engines[0]), tolerances, timestep_tolerance)
+
+
+def calibrate_request(request, engine, tolerances=None, timestep_tolerance=1e-2):
+    """calibrate() of a validated request: one line for what a calibration cannot take."""
+    scene = request.scene
+    if scene.psi1_star is not None:
+        raise UserError("calibrate sweeps impact angles or tangential speeds (--angles, --vt), not --psi: an "
+                        "engine given another e would see other impacts at the same Psi1*")
+    if scene.spheres:
+        raise UserError("calibrate runs against a wall; two spheres (--target sphere) are not calibrated yet")
+    if not isinstance(request.resolution, (int, float)) or isinstance(request.resolution, bool):
+        raise UserError("calibrate takes --steps-per-contact (an engine has no converged mode and --dt would "
+                        "change with the input e), not --dt or --converged")
+    if not engine.supports(request.law.name):
+        raise UserError(f"{engine.NAME} has no counterpart of {request.law.name}")
+    check_timestep_tolerance(timestep_tolerance)
+    return run_calibration(engine, request.law, scene, int(request.resolution), tolerances or request.tolerances,
+                           timestep_tolerance)
+
+
+def check_timestep_tolerance(value):
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not 1e-6 <= value <= 0.5:
+        raise UserError(f"the time-step tolerance must be a number in [1e-6, 0.5], got {value!r}")
 
 
 def statuses(request, refuse=True):

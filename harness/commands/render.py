@@ -2,6 +2,7 @@
 import os
 
 from ..api import options_for
+from ..calibration.files import read, rendered
 from ..engines import EXTERNAL, get_engine
 from ..errors import UserError
 from ..files import write_text
@@ -15,8 +16,10 @@ EXAMPLE = "harness render --model hertz-mindlin --engine liggghts --en 0.5 -o de
 
 def add(sub, describe):
     p = describe(sub, "render", "write an engine's input deck/script for the scene without running it", EXAMPLE)
-    p.add_argument("--model", required=True, help="law name (see `harness models`)")
-    p.add_argument("--engine", required=True, help=f"the engine whose input to write ({', '.join(EXTERNAL)})")
+    p.add_argument("--model", help="law name (see `harness models`)")
+    p.add_argument("--engine", help=f"the engine whose input to write ({', '.join(EXTERNAL)})")
+    p.add_argument("--calibration", metavar="FILE", help="a calibration.json of `harness calibrate`: its engine's "
+                                                         "inputs at the calibrated values (no other option needed)")
     p.add_argument("--engine-option", dest="engine_options", type=engine_option, action="append", default=[],
                    metavar="ENGINE:KEY=VALUE", help="an engine's option (see `harness compare --help`)")
     add_scene_options(p)
@@ -26,6 +29,10 @@ def add(sub, describe):
 
 
 def main(args):
+    if args.calibration:
+        return from_calibration(args)
+    if not (args.model and args.engine):
+        raise UserError("render needs --model and --engine, or --calibration FILE")
     engine = get_engine(args.engine)
     request = Request.from_keywords(args.model, engines=[args.engine], engine_options=args.engine_options,
                                     **keywords(args))
@@ -34,11 +41,27 @@ def main(args):
     check_output_directory(args.output)
     texts = [engine.render(run) for run in engine_runs(engine, request.law, request.scene, request.resolution,
                                                        options_for(request, args.engine))]
-    check_entries(args.output, [name for name, _ in texts])      # every input checked before any is written
+    return write_inputs(args, texts, args.engine)
+
+
+def write_inputs(args, texts, engine):
+    """Write each (name, text) into -o DIR, every entry checked before any is written."""
+    check_entries(args.output, [name for name, _ in texts])
     os.makedirs(args.output, exist_ok=True)
     for name, text in texts:
         write_text(os.path.join(args.output, name), text)
     if not args.quiet:
         print("\n".join(os.path.join(args.output, name) for name, _ in texts))
-    print(f"wrote {len(texts)} {args.engine} input(s) to {args.output}")
+    print(f"wrote {len(texts)} {engine} input(s) to {args.output}")
     return EXIT_OK
+
+
+def from_calibration(args):
+    """The engine's inputs at the values a calibration found (harness.calibration.files.rendered)."""
+    if args.model or args.engine:
+        raise UserError("--calibration takes its law and engine from the file: give neither --model nor --engine")
+    record = read(args.calibration)
+    engine = get_engine(str(record["engine"]))
+    check_output_directory(args.output)
+    texts = rendered(record, engine)
+    return write_inputs(args, texts, engine.code)

@@ -253,3 +253,45 @@ def published_summary(published):
                                      f"{GOAL['worst']}, RMS <= {GOAL['rms']})")
     return (f"distance from the paper's published points (e_t's x10):\n{table}\n"
             f"largest: RMS {published.rms.max():.3f}, worst {published.worst.max():.3f}; {verdict}")
+
+
+def print_calibration(calibration):
+    """What a person reads after calibrate (about 20 lines): the inputs to type per target e_n, the deviation from the
+    paper law before and after, what the engine run confirmed, what remains and why, and the time-step advice."""
+    c, scene = calibration, calibration.scene
+    print(f"calibrate {c.law.name} for {c.engine} {c.version}: e_n {', '.join(f'{e:g}' for e in scene.e_n)} x "
+          f"{len(c.frame[c.frame.dialect == 'paper']) // max(len(scene.e_n), 1)} impacts, {c.steps} steps per contact")
+    print(wrapped(f"options: {c.chosen.label} (nearest the paper law of {len(c.alternatives)} choices)"
+                  + "".join(f"; not in this build: {name}" for name, _ in c.refused if "exists from" in _)))
+    for row in c.inputs.itertuples():
+        if row.input_e != row.input_e:          # NaN: no input reaches it
+            print(wrapped(f"  e_n {row.e_n_target:g}: no input reaches it ({row.note})", indent=4))
+        else:
+            print(f"  e_n {row.e_n_target:g}: give it e = {row.input_e:.6g} (its normal impact: e_n "
+                  f"{row.normal_e_n:.6g})")
+    print("worst deviation from the paper law over the sweep (v and R omega as fractions of V):")
+    for quantity, rows in c.stages.groupby("quantity", sort=False):
+        steps = "  ->  ".join(f"{r.stage}: {r.worst:.3g}" for r in rows.itertuples())
+        print(wrapped(f"  {quantity:15s} {steps}", indent=6))
+    if c.agreement is not None:
+        print(f"the engine with these inputs agrees with its formulas to {c.agreement:.1e} of V")
+    elif c.skipped:
+        print(wrapped(f"the engine did not run: {c.skipped}"))
+    final = c.physics.get("engine, calibrated") or c.physics.get("formulas, calibrated")
+    if final and final["state"] == "deviates":
+        causes = [f"{check['short']} ({check['ingredient'] or 'no single ingredient'})"
+                  for check in final["checks"] if not check["passed"]]
+        print(wrapped("what no input fixes: " + "; ".join(causes)))
+    advice = c.advice
+    rule = f"the 20%-of-Rayleigh rule (dt {advice.rule_dt:.3g} s) errs by {advice.rule_errors['err_max']:.2g}"
+    if advice.steps is None:
+        print(wrapped(f"time step: no rung up to {int(advice.ladder.steps_per_contact.max())} steps per contact "
+                      f"holds {advice.tolerance:g} on every quantity; {rule}"))
+    else:
+        confirmed = c.confirmed
+        said = ("" if confirmed is None else
+                f"; the engine there errs by {confirmed['err_max']:.2g} ({'holds' if confirmed['meets'] else 'FAILS'})")
+        print(wrapped(f"time step for {advice.tolerance:g}: {advice.steps} steps per contact, dt {advice.dt:.3g} s = "
+                      f"{advice.fraction_of_rayleigh:.3g} of the Rayleigh time{said}; {rule}"))
+    for failure in c.failures:
+        print(f"{failure.engine} failed at e_n = {failure.e_n:g}: {failure.message}\n{failure.log_tail}")

@@ -1,0 +1,159 @@
+"""A calibration of one engine for one law on one scene: its alternatives on the reference (each option choice with
+its restitution inputs), the one nearest the paper law, the engine run with it (and at the advised time step) to
+confirm, what no input can fix and why (attribution), and how the calibrated input moves with e_n, speed and radius."""
+from dataclasses import dataclass, field, replace
+
+import numpy as np
+import pandas as pd
+
+from ..analyses.attribution import attribution
+from ..analyses.calibration import score, stage_table
+from ..analyses.cost import relative_errors
+from ..analyses.physics import IMPACT, Tolerances, engine_physics
+from ..execute import execute
+from ..plan import engine_runs
+from ..solver.simulate import simulate
+from .alternatives import alternatives, as_given, evaluate, refused, rows_at, takes_ratio, with_ratio
+from .restitution import restitution_input
+from .timestep import FINE, advise
+
+GIVEN, CALIBRATED, RUN = "formulas, e as given", "formulas, calibrated", "engine, calibrated"
+SPEEDS, RADII = (0.5, 1.0, 2.0), (0.5, 1.0, 2.0)       # the scene's speed and radius times these: the variation
+
+
+@dataclass
+class Calibration:
+    """Everything `harness calibrate` reports, data first (views draw it)."""
+    engine: str
+    law: object
+    scene: object
+    steps: int
+    tolerances: Tolerances
+    timestep_tolerance: float
+    frame: pd.DataFrame                 # paper law, the stages of the chosen alternative, the engine run
+    alternatives: pd.DataFrame          # one row per option choice: its score before and after
+    chosen: object                      # the Alternative chosen
+    inputs: pd.DataFrame                # per target e_n: the input e, the e_n it gives, or why none does
+    stages: pd.DataFrame                # per stage and quantity: worst and RMS deviation from the paper law
+    physics: dict                       # stage -> physics verdict
+    attribution: pd.DataFrame           # what remains: the calibrated formulas against the paper law
+    agreement: float | None             # the engine run against its calibrated formulas (max |diff| / V)
+    advice: object                      # calibration.timestep.Advice
+    confirmed: dict | None              # the engine at the advised step against the formulas at a vanishing step
+    variation: pd.DataFrame             # the input e against e_n, speed and radius
+    refused: list = field(default_factory=list)      # (option=value, why this build refuses it)
+    failures: list = field(default_factory=list)
+    skipped: str = ""                   # why the engine did not run, when it did not
+    version: str = ""                   # of the engine build calibrated
+
+
+def calibrate(engine, law, scene, steps=1000, tolerances=None, timestep_tolerance=1e-2, run_engine=True):
+    """Calibrate `engine` (an Engine) for `law` on `scene` (angles or tangential speeds; one e_n per target)."""
+    tolerances = Tolerances.of(tolerances)
+    paper = simulate(law, scene, steps_per_contact=steps)[0]
+    target = "sphere" if scene.spheres else "wall"
+    default_options, default_dialect = alternatives(engine, law.name, target)[0]
+    given = as_given(default_dialect, scene, steps, GIVEN)
+    tried, scores = [], []
+    for options, dialect in alternatives(engine, law.name, target):
+        evaluated = evaluate(options, dialect, scene, steps, CALIBRATED, paper)
+        if evaluated.rows is None:
+            continue
+        tuned = ([with_ratio(evaluated, engine, law.name, scene, steps, CALIBRATED)]
+                 if takes_ratio(engine, law.name, options) else [])
+        for alternative in [evaluated] + tuned:
+            tried_one(alternative, paper, tolerances, scene, tried, scores)
+    best = min(range(len(tried)), key=lambda i: (scores[i]["score"], i))
+
+    chosen = tried[best]
+    table = pd.DataFrame([{"options": s["options"], "targets reached": s["targets reached"],
+                           "failed checks": s["score"][1], "worst check / tolerance": s["score"][2],
+                           "worst velocity / tolerance": s["score"][3], "chosen": i == best}
+                          for i, s in enumerate(scores)])
+    frame = pd.concat([paper, given, chosen.rows], ignore_index=True)
+    remaining = attribution(law, chosen.dialect, scene, lambda l, s: simulate(l, s, steps_per_contact=steps)[0])
+    advice = advise(chosen.dialect, scene, chosen.inputs, timestep_tolerance)
+    failures, agreement, confirmed, skipped = [], None, None, ""
+    status = engine.status(law.name, chosen.options)
+    if run_engine and status.available:
+        ran, failures = run_at_inputs(engine, law, scene, chosen, steps)
+        if not ran.empty:
+            frame = pd.concat([frame, ran], ignore_index=True)
+            agreement = max_difference(ran, chosen.rows)
+        if advice.steps is not None:
+            confirmed = confirm(engine, law, scene, chosen, advice, failures)
+    elif run_engine:
+        skipped = status.reason
+    stages = [GIVEN, CALIBRATED] + ([RUN] if (frame.engine == RUN).any() else [])
+    physics = {s: engine_physics(frame, s, tolerances, remaining if s != GIVEN else None, scene.gravity)
+               for s in stages}
+    return Calibration(engine.NAME, law, scene, steps, tolerances, timestep_tolerance, frame, table, chosen,
+                       inputs_table(chosen), stage_table(frame, stages, scene.gravity), physics, remaining,
+                       agreement, advice, confirmed, variation(chosen.dialect, scene, steps),
+                       refused(engine, law.name, target), failures, skipped,
+                       engine.version() if status.available else "")
+
+
+def tried_one(alternative, paper, tolerances, scene, tried, scores):
+    """Score one alternative against the paper law (analyses.calibration.score) and keep it."""
+    frame = pd.concat([paper, alternative.rows], ignore_index=True)
+    reached = len(alternative.reachable)
+    scores.append({"options": alternative.label, "targets reached": reached,
+                   "score": (-reached,) + score(frame, CALIBRATED, tolerances, scene.gravity)})
+    tried.append(alternative)
+
+
+def inputs_table(alternative):
+    return pd.DataFrame([{"e_n_target": i.target, "input_e": i.value, "normal_e_n": i.achieved,
+                          "note": i.reason} for i in alternative.inputs])
+
+
+def run_at_inputs(engine, law, scene, alternative, steps, observe=False, label=RUN):
+    """The engine's rows with the chosen options at each target's input e, labelled as the target (engine and
+    dialect `label`), and its failed runs."""
+    runs = [run for i in alternative.reachable
+            for run in engine_runs(engine, law, replace(scene, e_n=(i.value,)), steps, alternative.options, observe)]
+    frame, failures = execute(runs)
+    if frame.empty:
+        return frame, failures
+    targets = {i.value: i.target for i in alternative.reachable}
+    frame = frame.assign(e_n_target=frame.e_n_target.map(lambda e: targets.get(e, e)), engine=label, dialect=label)
+    return frame, failures
+
+
+def max_difference(engine_rows, formula_rows):
+    """max over v_n1, v_t1, R omega1 of |engine - its formulas| / V at the same impacts and inputs (NaN if none)."""
+    pairs = engine_rows.merge(formula_rows, on=IMPACT, suffixes=("", "_f"))
+    if pairs.empty:
+        return float("nan")
+    speed = np.hypot(pairs.v_n0, pairs.v_t0)
+    diffs = [(pairs[m] - pairs[m + "_f"]).abs() * (pairs.radius if m == "omega1" else 1.0) / speed
+             for m in ("v_n1", "v_t1", "omega1")]
+    return float(np.nanmax(np.vstack(diffs)))
+
+
+def confirm(engine, law, scene, alternative, advice, failures):
+    """The engine at the advised steps per contact (observed: contact time and peak force) against its formulas
+    at a vanishing step: the errors, and whether each meets the tolerance."""
+    ran, failed = run_at_inputs(engine, law, scene, alternative, advice.steps, observe=True)
+    failures += failed
+    if ran.empty:
+        return None
+    truth = rows_at(alternative.dialect, scene, alternative.inputs, FINE, RUN)
+    ran = ran.sort_values(["e_n_target", "theta_deg"]).reset_index(drop=True)
+    truth = truth.sort_values(["e_n_target", "theta_deg"]).reset_index(drop=True)
+    errors = relative_errors(ran, truth)
+    return {"steps_per_contact": advice.steps, **errors, "meets": bool(errors["err_max"] <= advice.tolerance)}
+
+
+def variation(dialect, scene, steps):
+    """The input e for each target e_n at the scene's speed and radius times 0.5, 1 and 2 (the formulas alone)."""
+    rows = []
+    for speed in SPEEDS:
+        for radius in RADII:
+            varied = replace(scene, speed=scene.speed * speed, radius=scene.radius * radius)
+            for target in scene.e_n:
+                needed = restitution_input(dialect, varied, target, steps)
+                rows.append({"speed_m_s": varied.speed, "radius_m": varied.radius, "e_n_target": target,
+                             "input_e": needed.value, "note": needed.reason})
+    return pd.DataFrame(rows)

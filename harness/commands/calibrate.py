@@ -1,0 +1,51 @@
+"""`harness calibrate`: the engine inputs that make an engine compute the paper law as nearly as it can on a scene,
+confirmed by running the engine; the time step a tolerance needs; tables, the engine's inputs and report.html."""
+import os
+
+from ..api import calibrate_request, check_timestep_tolerance
+from ..calibration.files import RECORD, TABLES, rendered, save
+from ..engines import EXTERNAL, get_engine
+from ..files import write_text
+from ..request import Request
+from ..views.calibration_html import write_calibration_report
+from ..views.terminal import print_calibration
+from .options import (EXIT_ENGINE, EXIT_OK, add_output_options, add_scene_options, check_entries,
+                      check_output_directory, keywords, number)
+
+EXAMPLE = "harness calibrate --model hertz-mindlin --engine lammps --en 0.25,0.5,0.9 --angles 0:80:10 -o calibrated/"
+
+
+def add(sub, describe):
+    p = describe(sub, "calibrate", "the engine inputs that bring an engine nearest the paper law on a scene, and the "
+                 "time step a tolerance needs", EXAMPLE)
+    p.add_argument("--model", required=True, help="law name (see `harness models`)")
+    p.add_argument("--engine", required=True, help=f"the engine to calibrate ({', '.join(EXTERNAL)}, or a build "
+                                                    "ENGINE@VERSION)")
+    add_scene_options(p)
+    p.add_argument("--tolerance", dest="tolerances", action="append", default=[], metavar="NAME=VALUE",
+                   help="a tolerance of the physics verdict before and after (as compare's)")
+    p.add_argument("--timestep-tolerance", type=number, default=1e-2, metavar="X",
+                   help="the time-step advice: largest relative error on e_n, e_t, Omega*, contact time and peak "
+                        "force against the engine's own formulas at a vanishing step (default 0.01)")
+    p.add_argument("-o", "--output", default="calibrated", metavar="DIR", help="output directory (default %(default)s)")
+    add_output_options(p)
+    p.set_defaults(func=main)
+
+
+def main(args):
+    request = Request.from_keywords(args.model, engines=[args.engine], tolerances=args.tolerances, **keywords(args))
+    engine = get_engine(request.engines[0])
+    check_timestep_tolerance(args.timestep_tolerance)
+    check_output_directory(args.output)
+    check_entries(args.output, [RECORD, "report.html"] + [f"{name}.csv" for name in TABLES])
+    calibration = calibrate_request(request, engine, timestep_tolerance=args.timestep_tolerance)
+    os.makedirs(args.output, exist_ok=True)
+    texts = rendered(save(calibration, args.output), engine)
+    record_path = os.path.join(args.output, RECORD)
+    for name, text in texts:
+        write_text(os.path.join(args.output, name), text)
+    report = write_calibration_report(calibration, args.output, [name for name, _ in texts])
+    if not args.quiet:
+        print_calibration(calibration)
+    print(f"calibrate: wrote {record_path}, the tables, {len(texts)} {engine.code} input(s) and {report}")
+    return EXIT_ENGINE if calibration.skipped or calibration.failures else EXIT_OK

@@ -1,0 +1,87 @@
+"""The calibration report: a verdict box (before and after, per stage), the paper law's figures with the engine's
+formulas as given, calibrated and the engine run with the calibrated inputs, the inputs to type, the time-step
+ladder, how the input moves with the scene, and links to calibration.json, the CSVs and the engine's inputs."""
+import datetime
+import os
+
+import numpy as np
+
+from ..files import write_text
+from ..render import environment
+from ..version import __version__
+from .pieces import figure_svg, records
+
+STAGE_STYLES = {"paper": ("black", "-", "paper law"), "formulas, e as given": ("tab:red", ":", None),
+                "formulas, calibrated": ("tab:blue", "--", None), "engine, calibrated": ("tab:blue", "-", None)}
+
+
+def paper_figure(frame, column, label):
+    """`column` against Psi1* per stage, one panel per target e_n."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    targets = sorted(frame.e_n_target.unique())
+    fig, axes = plt.subplots(1, len(targets), figsize=(3.6 * len(targets), 3.2), constrained_layout=True,
+                             squeeze=False)
+    for ax, target in zip(axes[0], targets):
+        rows = frame[(frame.e_n_target == target) & (frame.psi1_star > 0)]
+        for stage, (colour, dashes, name) in STAGE_STYLES.items():
+            data = rows[rows.dialect == stage].sort_values("psi1_star")
+            if not data.empty:
+                ax.plot(data.psi1_star, data[column], color=colour, ls=dashes, lw=2.2 if stage.startswith("engine")
+                        else 1.3, alpha=0.6 if stage.startswith("engine") else 1.0, label=name or stage)
+        ax.set(xlabel="Psi1*", ylabel=label, title=f"e_n {target:g}")
+        ax.grid(alpha=0.3)
+    axes[0][0].legend(fontsize=7)
+    svg = figure_svg(fig)
+    plt.close(fig)
+    return svg
+
+
+def variation_figure(variation):
+    """The input e against the target e_n, one line per (speed, radius) of the scene's times 0.5, 1 and 2."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(6, 4), constrained_layout=True)
+    for (speed, radius), rows in variation.groupby(["speed_m_s", "radius_m"], sort=False):
+        ax.plot(rows.e_n_target, rows.input_e.astype(float), marker="o", ms=3, label=f"{speed:g} m/s, R {radius:g} m")
+    lims = [0, 1]
+    ax.plot(lims, lims, color="0.6", lw=0.8, ls=":", label="input = target")
+    ax.set(xlabel="target e_n", ylabel="e to give the engine", title="calibrated input against the scene")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7)
+    svg = figure_svg(fig)
+    plt.close(fig)
+    return svg
+
+
+def verdict_rows(calibration):
+    """Per stage: its physics verdict and worst case of each failed check."""
+    rows = []
+    for stage, physics in calibration.physics.items():
+        failed = [c for c in physics["checks"] if not c["passed"]]
+        rows.append({"stage": stage, "state": physics["state"], "impacts": physics["impacts"],
+                     "what fails (worst case)": "; ".join(c["short"] for c in failed) or "nothing",
+                     "ingredient": "; ".join(filter(None, (c.get("ingredient") for c in failed)))})
+    import pandas as pd
+    return pd.DataFrame(rows)
+
+
+def write_calibration_report(calibration, out_dir, inputs):
+    """Write DIR/report.html of a calibration; its path."""
+    c = calibration
+    advice = c.advice
+    env = environment(autoescape=True)
+    page = env.get_template("calibration.html.j2").render(
+        c=c, version=__version__, date=datetime.datetime.now().isoformat(timespec="minutes"),
+        verdict=records(verdict_rows(c)), stages=records(c.stages), inputs=records(c.inputs),
+        alternatives=records(c.alternatives), attribution=records(c.attribution), refused=c.refused,
+        ladder=records(advice.ladder), variation=records(c.variation), files=inputs,
+        figures=[("e_t against Psi1*", paper_figure(c.frame, "e_t", "e_t")),
+                 ("Omega* against Psi1*", paper_figure(c.frame, "omega_star", "Omega*"))],
+        variation_figure=variation_figure(c.variation) if np.isfinite(c.variation.input_e.astype(float)).any()
+        else None, advice=advice, confirmed=c.confirmed)
+    path = os.path.join(out_dir, "report.html")
+    write_text(path, page)
+    return path
