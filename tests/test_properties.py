@@ -20,7 +20,7 @@ LAWS_WITHOUT_KNOWN_GAIN = [name for name in LAWS if name != "stronge"]
 
 @settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(law=st.sampled_from(LAWS_WITHOUT_KNOWN_GAIN), e=st.floats(0.05, 1.0), angle=st.floats(0.0, 89.5),
-       mu=st.floats(0.0, 2.0), omega=st.floats(-500.0, 500.0), log_E=st.floats(6.0, 12.0),
+       mu=st.one_of(st.just(0.0), st.floats(1e-6, 2.0)), omega=st.floats(-500.0, 500.0), log_E=st.floats(6.0, 12.0),
        log_radius=st.floats(-5.0, -1.0), nu=st.floats(0.0, 0.49))
 def test_impacts_separate_finite_and_without_energy_gain(law, e, angle, mu, omega, log_E, log_radius, nu):
     scene = Scene(e_n=(e,), angles_deg=(angle,), mu=mu, omega0=omega, E=10.0 ** log_E, radius=10.0 ** log_radius,

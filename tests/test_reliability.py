@@ -398,6 +398,13 @@ def test_a_real_liggghts_run_ends_with_harness(tmp_path, signum, code):
     assert os.listdir(scratch) == []
 
 
+def catches_sigint(pid):
+    """Whether process `pid` has a handler of its own for SIGINT (bit 2 of SigCgt in /proc/PID/status)."""
+    with open(f"/proc/{pid}/status") as handle:
+        mask = next(line.split()[1] for line in handle if line.startswith("SigCgt:"))
+    return bool(int(mask, 16) & (1 << (signal.SIGINT - 1)))
+
+
 def test_ctrl_c_inside_the_compiled_kernel_stops_at_once_and_says_nothing_was_written(tmp_path):
     """A run of ~2e8 impact-steps (tens of seconds): interrupted a second into its kernel, harness ends within a few
     seconds instead of when the compiled loop returns, and does not claim results it never wrote."""
@@ -406,6 +413,10 @@ def test_ctrl_c_inside_the_compiled_kernel_stops_at_once_and_says_nothing_was_wr
                              "--angles", "0:89:0.5", "--steps-per-contact", "1000000", "-o", str(out)],
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                             preexec_fn=interruptible)
+    deadline = time.time() + 60
+    while not catches_sigint(proc.pid):   # Python's own handler installed (a busy machine may take seconds to get there)
+        assert time.time() < deadline and proc.poll() is None
+        time.sleep(0.05)
     time.sleep(4.0)                       # start-up and the cached kernel's load, then well inside the loop
     assert proc.poll() is None
     stopped = time.perf_counter()
@@ -433,7 +444,7 @@ def test_ctrl_c_while_the_measurements_beside_the_engines_run_exits_at_once(tmp_
     stopped = time.perf_counter()
     proc.send_signal(signal.SIGINT)
     _, err = proc.communicate(timeout=30)
-    assert time.perf_counter() - stopped < 5.0 and proc.returncode == 130, err
+    assert time.perf_counter() - stopped < 10.0 and proc.returncode == 130, err      # seconds, not the minute
 
 
 # --- an interrupt at a rename ----------------------------------------------------------------------------------------
