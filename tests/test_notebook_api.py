@@ -171,3 +171,22 @@ def test_plot_refuses_a_column_the_table_lacks():
         harness.plot(frame, "no_such_column")
     with pytest.raises(ValueError, match="psi1_star"):
         harness.plot(frame, "ke_ratio", x="psi1_star")
+
+
+@needs("liggghts")
+@needs("lammps")
+def test_the_user_guide_python_example_runs_as_shown(tmp_path, monkeypatch):
+    """Every Python block of docs/user-guide.md's "Python" section, run as shown (in a scratch directory), writes
+    what it says it writes."""
+    import pathlib
+    import re
+    guide = (pathlib.Path(__file__).parents[1] / "docs" / "user-guide.md").read_text()
+    section = guide[guide.index("## Python\n"):]
+    section = section[:section.index("\n## ", 1)] if "\n## " in section[1:] else section
+    blocks = re.findall(r"```python\n(.*?)```", section, re.S)
+    assert blocks
+    monkeypatch.chdir(tmp_path)
+    for block in blocks:
+        exec(compile(block, "docs/user-guide.md", "exec"), {})
+    assert (tmp_path / "compare-out" / "report.html").is_file() and (tmp_path / "psi2_star.pdf").is_file()
+    assert (tmp_path / "campaign-store").is_dir()

@@ -48,8 +48,8 @@ class Calibration:
 
     def __repr__(self):
         states = ", ".join(f"{stage}: {p['state']}" for stage, p in self.physics.items())
-        return (f"<Calibration of {self.law.name} for {self.engine}: {self.chosen.label}; advised steps per contact "
-                f"{self.advice.steps}\n {states}" + (f"\n skipped: {self.skipped}" if self.skipped else "")
+        return (f"<Calibration of {self.law.name} for {self.engine}: advised steps per contact {self.advice.steps}"
+                f"\n chosen {self.chosen.label}\n {states}" + (f"\n skipped: {self.skipped}" if self.skipped else "")
                 + "\n .inputs .stages .physics .advice .confirmed .variation>")
 
 
