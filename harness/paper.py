@@ -82,7 +82,8 @@ def checked(laws, steps_per_contact, shown=None):
     laws = tuple(LAWS) if laws is None else tuple(laws)
     unknown = [n for n in laws if n not in LAWS]
     if unknown or not laws:
-        raise UserError(f"unknown law(s) {', '.join(unknown) or shown!r}; known: {', '.join(LAWS)}")
+        given = ", ".join(unknown) or repr(list(laws) if shown is None else shown)
+        raise UserError(f"unknown law(s) {given}; known: {', '.join(LAWS)}")
     if steps_per_contact < 100:
         raise UserError(f"--steps-per-contact must be >= 100 for the paper's figures, got {steps_per_contact}")
     if steps_per_contact > MAX_STEPS_PER_CONTACT:

@@ -155,6 +155,7 @@ BAD_VALUES = [
     ("paper", (), dict(steps_per_contact=10), "steps-per-contact"),
     ("benchmark", (), dict(suite="other"), "suite"),
     ("benchmark", (), dict(engines=["nonsense"]), "nonsense"),
+    ("benchmark", (), dict(engines=[]), "unknown engine(s) []"), ("paper", (), dict(laws=[]), "unknown law(s) []"),
 ]
 
 

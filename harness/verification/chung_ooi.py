@@ -261,5 +261,6 @@ def known_engines(engines, shown=None):
     engines = tuple(ENGINES) if engines is None else tuple(engines)
     unknown = [n for n in engines if n not in ENGINES]
     if unknown or not engines:
-        raise UserError(f"unknown engine(s) {', '.join(unknown) or shown!r}; known: {', '.join(ENGINES)}")
+        given = ", ".join(unknown) or repr(list(engines) if shown is None else shown)
+        raise UserError(f"unknown engine(s) {given}; known: {', '.join(ENGINES)}")
     return engines
