@@ -9,7 +9,8 @@ from .analyses.cost import (ADAPTIVE, ADAPTIVE_RUNGS, COLUMNS, EXTRAPOLATED, LAD
                             converged_rows, fastest, measure, per_e_n, rayleigh_time, refused, uncertainties)
 from .execute import execute
 from .plan import engine_runs, reference_runs
-from .solver.batch import FixedTimeStep
+from .errors import UserError
+from .solver.batch import MAX_STEPS_PER_CONTACT, FixedTimeStep
 from .solver.simulate import CONVERGED_START, adaptive_batch, simulate, simulate_adaptive, simulate_extrapolated
 from .solver.stability import UnstableTimeStep
 
@@ -183,3 +184,25 @@ def cost_table(law, scene, engines, ladder=LADDER, keep=None, progress=None, cac
         reference_curve(rows, dialect, scene, ladder, dialect_truth, progress=progress)
         engine_curve(rows, engine, law, dialect, scene, ladder, dialect_truth, options, failures, progress)
     return pd.DataFrame(rows, columns=COLUMNS), failures, uncertainty
+
+
+MAX_RUNGS = 30                              # each rung runs every curve at every e_n, timed up to 3 times
+MAX_LADDER_STEPS = 2 * MAX_STEPS_PER_CONTACT    # the rungs together: two runs at the finest resolution allowed
+
+
+def check_ladder(rungs, shown=None):
+    """The ladder's rungs (whole steps per contact) if >= 1, ascending, no repeats; at most MAX_RUNGS rungs, each at
+    most MAX_STEPS_PER_CONTACT (every resolution's bound) and MAX_LADDER_STEPS together, so that the study ends."""
+    shown = shown if shown is not None else ",".join(map(str, rungs))
+    if not rungs or min(rungs) < 1 or list(rungs) != sorted(set(rungs)):
+        raise UserError(f"--ladder needs ascending whole numbers >= 1 without repeats, got {shown!r}")
+    if len(rungs) > MAX_RUNGS:
+        raise UserError(f"--ladder may have at most {MAX_RUNGS} rungs (each runs every curve at every e_n, timed up "
+                        f"to {TIMING_REPEATS} times), got {len(rungs)}")
+    if rungs[-1] > MAX_STEPS_PER_CONTACT:
+        raise UserError(f"--ladder rungs must be at most {MAX_STEPS_PER_CONTACT:.0e} steps per contact (the bound of "
+                        f"every resolution), got {rungs[-1]}")
+    if sum(rungs) > MAX_LADDER_STEPS:
+        raise UserError(f"--ladder rungs may add up to at most {MAX_LADDER_STEPS:.0e} steps per contact (the work of "
+                        f"two runs at the finest resolution allowed), got {sum(rungs):.3g}")
+    return tuple(rungs)

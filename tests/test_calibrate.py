@@ -141,6 +141,7 @@ def test_from_python_the_calibration_is_data(tmp_path):
     c = harness.calibrate("hertz-mindlin", "liggghts", en=[0.5], angles=[10, 40])
     assert list(c.inputs.e_n_target) == [0.5] and 0.0 < c.inputs.input_e.iloc[0] <= 1.0
     assert {"formulas, e as given", "formulas, calibrated", "engine, calibrated"} == set(c.stages.stage)
+    assert len(repr(c)) < 600 and repr(c).count("\n") <= 4 and "liggghts" in repr(c)
     with pytest.raises(TypeError):
         harness.calibrate("hertz-mindlin", 3, en=[0.5])
     with pytest.raises(ValueError):

@@ -4,10 +4,9 @@ import os
 import sys
 
 from ..engines import ENGINES
-from ..errors import UserError
 from ..lock import exclusive
 from ..results import write_csv
-from ..verification.chung_ooi import LAW, run_suite, verdict
+from ..verification.chung_ooi import LAW, known_engines, run_suite, verdict
 from ..views.chung_ooi_html import CSV, summary, write_chung_ooi_report
 from ..views.progress import Progress
 from ..views.terminal import text_table
@@ -52,10 +51,8 @@ def exit_code(ok, checked, could_not_run):
 def main(args):
     """chung-ooi.csv and chung-ooi.html in DIR; the exit code of EXIT_CODES."""
     named = args.engines is not None
-    engines = tuple(ENGINES) if not named else tuple(n.strip() for n in args.engines.split(",") if n.strip())
-    unknown = [n for n in engines if n not in ENGINES]
-    if unknown or not engines:
-        raise UserError(f"unknown engine(s) {', '.join(unknown) or args.engines!r}; known: {', '.join(ENGINES)}")
+    engines = known_engines(None if not named else tuple(n.strip() for n in args.engines.split(",") if n.strip()),
+                            args.engines)
     check_output_directory(args.output)
     with Progress("benchmark chung-ooi", quiet=args.quiet or args.json) as progress:
         table = run_suite(engines, progress=progress)

@@ -5,17 +5,15 @@ import os
 import pandas as pd
 
 from ..analyses.cost import COLUMNS, LADDER, convergence_orders, recommendations
-from ..api import options_for, statuses
+from ..api import able_engines
 from ..campaign.store import DROP, DROP_HELP, RunCache, Store
-from ..cost_plan import TIMING_REPEATS, cost_table
-from ..engines import ENGINES
+from ..cost_plan import check_ladder, cost_table
 from ..errors import UserError
 from ..files import discard
 from ..lock import exclusive
 from ..outputs import COST, save_cost
 from ..request import Request
 from ..results import write_csv
-from ..solver.batch import MAX_STEPS_PER_CONTACT
 from ..views.html import rebuild
 from ..views.progress import Progress
 from ..views.terminal import print_cost
@@ -41,31 +39,15 @@ def add(sub, describe):
     p.set_defaults(func=main)
 
 
-MAX_RUNGS = 30                              # each rung runs every curve at every e_n, timed up to 3 times
-MAX_LADDER_STEPS = 2 * MAX_STEPS_PER_CONTACT    # the rungs together: two runs at the finest resolution allowed
-
-
 def ladder_from_text(text):
-    """--ladder '5,10,20': whole steps per contact >= 1, ascending, no repeats; at most MAX_RUNGS rungs, each at most
-    MAX_STEPS_PER_CONTACT (every resolution's bound) and MAX_LADDER_STEPS together, so that the study ends."""
+    """--ladder '5,10,20' as whole steps per contact, checked (harness.cost_plan.check_ladder)."""
     if text is None:
         return LADDER
     try:
         rungs = tuple(int(part) for part in text.split(",") if part.strip())
     except ValueError:
         raise UserError(f"--ladder takes whole numbers of steps per contact, e.g. 5,10,100; got {text!r}") from None
-    if not rungs or min(rungs) < 1 or list(rungs) != sorted(set(rungs)):
-        raise UserError(f"--ladder needs ascending whole numbers >= 1 without repeats, got {text!r}")
-    if len(rungs) > MAX_RUNGS:
-        raise UserError(f"--ladder may have at most {MAX_RUNGS} rungs (each runs every curve at every e_n, timed up "
-                        f"to {TIMING_REPEATS} times), got {len(rungs)}")
-    if rungs[-1] > MAX_STEPS_PER_CONTACT:
-        raise UserError(f"--ladder rungs must be at most {MAX_STEPS_PER_CONTACT:.0e} steps per contact (the bound of "
-                        f"every resolution), got {rungs[-1]}")
-    if sum(rungs) > MAX_LADDER_STEPS:
-        raise UserError(f"--ladder rungs may add up to at most {MAX_LADDER_STEPS:.0e} steps per contact (the work of "
-                        f"two runs at the finest resolution allowed), got {sum(rungs):.3g}")
-    return rungs
+    return check_ladder(rungs, text)
 
 
 def main(args):
@@ -74,11 +56,7 @@ def main(args):
     law, scene, ladder = request.law, request.scene, ladder_from_text(args.ladder)
     check_results_directory(args.output)
     check_store(args.store)
-    found = statuses(request)
-    adapters = {s.name: (ENGINES[s.name], options_for(request, s.name)) for s in found if s.available}
-    for name, (adapter, options) in adapters.items():
-        adapter.dialect(law.name, options)                    # bad options: exit 2 before anything runs
-    skipped = [(s.name, s.reason) for s in found if not s.available]
+    adapters, skipped = able_engines(request)                # bad options: exit 2 before anything runs
     overrides = dict(request.overrides)
     cache = RunCache(Store(args.store, drop_damaged=args.drop_damaged)) if args.store else None
     with exclusive(args.output):

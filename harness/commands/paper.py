@@ -2,12 +2,9 @@
 import os
 import sys
 
-from ..errors import UserError
-from ..laws import LAWS
 from ..lock import LOCK, exclusive
-from ..paper import figure_set
+from ..paper import checked, figure_set
 from ..results import write_csv
-from ..solver.batch import MAX_STEPS_PER_CONTACT
 from ..views.paper_html import FILES, NORMAL, OBLIQUE, PUBLISHED, SLIDING, write_paper_report
 from ..views.progress import Progress
 from ..views.terminal import published_summary, text_table
@@ -29,15 +26,8 @@ def add(sub, describe):
 def main(args):
     """The paper's figure set: paper.csv, paper-normal.csv, paper-sliding.csv, paper-published.csv and paper.html
     in DIR."""
-    laws = tuple(LAWS) if args.laws is None else tuple(n.strip() for n in args.laws.split(",") if n.strip())
-    unknown = [n for n in laws if n not in LAWS]
-    if unknown or not laws:
-        raise UserError(f"unknown law(s) {', '.join(unknown) or args.laws!r}; known: {', '.join(LAWS)}")
-    if args.steps_per_contact < 100:
-        raise UserError(f"--steps-per-contact must be >= 100 for the paper's figures, got {args.steps_per_contact}")
-    if args.steps_per_contact > MAX_STEPS_PER_CONTACT:
-        raise UserError(f"--steps-per-contact must be at most {MAX_STEPS_PER_CONTACT:.0e} (the bound of every "
-                        f"resolution), got {args.steps_per_contact}")
+    laws = None if args.laws is None else tuple(n.strip() for n in args.laws.split(",") if n.strip())
+    laws = checked(laws, args.steps_per_contact, args.laws)
     check_output_directory(args.output)
     check_entries(args.output, FILES + (LOCK,))
     with Progress("paper", quiet=args.quiet) as progress:

@@ -45,12 +45,22 @@ def run_facts(frame, arithmetic):
 
 
 def series_figure(frame, title, x, ys, thresholds=None, published=None):
-    """One panel per e_n; one curve per (engine, dialect) and y column, in the colours and line styles of
-    views.style. Against Psi1* the paper's axes and ranges, the rigid body's curve, where known the
-    sliding-throughout threshold of the paper law (dotted) and, with `published` (the law's name, where the paper's
-    published curves apply to the scene: digitised.published_curves_apply), the paper's points."""
+    """series_plot as inline SVG."""
     import matplotlib
     matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig = series_plot(frame, title, x, ys, thresholds, published)
+    svg = figure_svg(fig)
+    plt.close(fig)
+    return svg
+
+
+def series_plot(frame, title, x, ys, thresholds=None, published=None):
+    """A matplotlib Figure: one panel per e_n; one curve per (engine, dialect) and y column, in the colours and line
+    styles of views.style. Against Psi1* the paper's axes and ranges, the rigid body's curve, where known the
+    sliding-throughout threshold of the paper law (dotted) and, with `published` (the law's name, where the paper's
+    published curves apply to the scene: digitised.published_curves_apply), the paper's points. Drawn with pyplot's
+    backend as it is (a notebook's stays)."""
     import matplotlib.pyplot as plt
     paper = x == "psi1_star"
     beyond = {}
@@ -84,9 +94,7 @@ def series_figure(frame, title, x, ys, thresholds=None, published=None):
             ax.set_ylabel("")
     axes[0][-1].legend(fontsize=6.5)
     fig.suptitle(title)
-    svg = figure_svg(fig)
-    plt.close(fig)
-    return svg
+    return fig
 
 
 PANELS = (   # (title, x column, y columns)
