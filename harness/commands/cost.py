@@ -103,6 +103,6 @@ def main(args):
         return code
     if not args.quiet:
         print_cost(table, uncertainty, law, scene, ladder, skipped, failures, verbose=args.verbose)
-    print(f"wrote {os.path.join(args.output, COST)} and {report}" + ("" if args.verbose or args.quiet else
-                                                                      " (every table: --verbose)"))
+    print(f"wrote {COST} and {os.path.basename(report)} in {args.output}" + (
+        "" if args.verbose or args.quiet else " (every table: --verbose)"))
     return code

@@ -241,13 +241,14 @@ def verdict_table(table):
     found = verdict(table)
     if found.empty:
         return "  (no curve ran)"
+    finest = max((int(r) for r in table.rung.dropna() if str(r).isdigit()), default=0)
     shown = found.assign(**{"s/impact-step": [f"{v:.3g}" if v == v else NOT_RESOLVED
                                                 for v in found["s/impact-step"]]})
     for column in ("steps/contact for 1%", "steps/contact for 0.1%"):
-        shown[column] = [f"{v:.0f}" if v == v else "beyond ladder" for v in shown[column]]
+        shown[column] = [f"{v:.0f}" if v == v else f">{finest}" for v in shown[column]]
     for column in ("s/impact for 1%", "x paper for 1%", "s/impact for 0.1%", "x paper for 0.1%", "20% T_R error"):
         shown[column] = [f"{v:.3g}" if v == v else "-" for v in shown[column]]
-    names = {"engine": "curve", "s/impact-step": "s/impact-step", "steps/contact for 1%": "1%: steps/contact",
+    names = {"engine": "curve", "s/impact-step": "s/impact-step", "steps/contact for 1%": "1%: steps",
              "s/impact for 1%": "s/impact", "x paper for 1%": "x paper", "steps/contact for 0.1%": "0.1%: steps",
              "s/impact for 0.1%": "s/impact ", "x paper for 0.1%": "x paper ", "20% T_R error": "20% T_R error"}
     shown = shown.rename(columns=names)
