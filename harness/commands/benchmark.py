@@ -1,5 +1,4 @@
 """`harness benchmark chung-ooi`: Chung & Ooi (2011)'s eight tests on the reference and the engines; a CSV and a page."""
-import json
 import os
 import sys
 
@@ -10,6 +9,7 @@ from ..verification.chung_ooi import LAW, known_engines, run_suite, verdict
 from ..views.chung_ooi_html import CSV, summary, write_chung_ooi_report
 from ..views.progress import Progress
 from ..views.terminal import text_table
+from ..views import strict_json
 from .options import EXIT_DISAGREE, EXIT_ENGINE, EXIT_OK, add_output_options, check_output_directory
 
 EXAMPLE = "harness benchmark chung-ooi --engines reference,liggghts -o chung-ooi/"
@@ -64,7 +64,7 @@ def main(args):
     failed = sorted(set(table[table.quantity == "failed"].engine))
     code = exit_code(ok, checked, missing + failed)
     if args.json:
-        print(json.dumps({"ok": ok, "exit_code": code, "passed": passed, "failed": checked - passed,
+        print(strict_json.dumps({"ok": ok, "exit_code": code, "passed": passed, "failed": checked - passed,
                           "checked": checked, "could_not_run": missing + failed,
                           "engines": summary(table).to_dict("records"), "csv": os.path.join(args.output, CSV),
                           "report": path}, indent=1, default=str))

@@ -1,6 +1,5 @@
 """`harness campaign FILE`: a matrix of comparisons from a TOML file, run in-process or on Dask into a
 content-addressed Parquet store that a rerun resumes; `--dry-run` says what it would run and what is cached."""
-import json
 import os
 import sys
 import tempfile
@@ -17,6 +16,7 @@ from ..files import refuse_unless_regular
 from ..lock import exclusive
 from ..views.campaign_html import write_campaign_report
 from ..views.progress import Progress
+from ..views import strict_json
 from .options import EXIT_ENGINE, EXIT_OK, add_output_options, check_output_directory
 
 
@@ -123,7 +123,7 @@ def report(args, summary, page, dry=False):
     """Print the summary (or one JSON object); exit 3 when a task failed or an engine asked for was skipped."""
     code = EXIT_ENGINE if summary.failed or summary.skipped else EXIT_OK
     if args.json:
-        print(json.dumps({**summary.as_dict(), "store": args.output, "report": page, "dry_run": dry,
+        print(strict_json.dumps({**summary.as_dict(), "store": args.output, "report": page, "dry_run": dry,
                           "exit_code": code}, indent=1))
         return code
     if not args.quiet:

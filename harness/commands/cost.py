@@ -1,10 +1,9 @@
 """`harness cost`: the accuracy-against-cost ladder; its tables, DIR/cost.csv and the report."""
-import json
 import os
 
 import pandas as pd
 
-from ..analyses.cost import COLUMNS, LADDER, convergence_orders, recommendations
+from ..analyses.cost import COLUMNS, LADDER, convergence_orders, recommendations, step_times, verdict
 from ..api import able_engines
 from ..campaign.store import DROP, DROP_HELP, RunCache, Store
 from ..cost_plan import check_ladder, cost_table
@@ -17,6 +16,7 @@ from ..results import write_csv
 from ..views.html import rebuild
 from ..views.progress import Progress
 from ..views.terminal import print_cost
+from ..views import strict_json
 from .options import (EXIT_ENGINE, EXIT_OK, add_engine_options, add_output_options, add_scene_options,
                       check_results_directory, check_store, keywords)
 
@@ -35,7 +35,7 @@ def add(sub, describe):
     p.add_argument("--store", metavar="STORE", help="a campaign store: the converged truths' runs are taken from it "
                                                     "or added to it (timed runs never are)")
     p.add_argument(DROP, action="store_true", help=DROP_HELP)
-    add_output_options(p, json=True)
+    add_output_options(p, json=True, verbose=True)
     p.set_defaults(func=main)
 
 
@@ -71,13 +71,16 @@ def main(args):
     asked = set(request.engines or ()) - {"reference"}
     code = EXIT_ENGINE if failures or asked & {name for name, _ in skipped} else EXIT_OK
     if args.json:
-        print(json.dumps({"model": law.name, "exit_code": code, "recommendations": recommendations(table).to_dict(
-            "records"), "orders": convergence_orders(table).to_dict("records"), "skipped": skipped,
+        print(strict_json.dumps({
+            "model": law.name, "exit_code": code, "verdict": verdict(table).to_dict("records"),
+            "step_times": step_times(table).to_dict("records"),
+            "recommendations": recommendations(table).to_dict("records"),
+            "orders": convergence_orders(table).to_dict("records"), "skipped": skipped,
             "failed": [{"engine": f.engine, "e_n": f.e_n, "message": f.message} for f in failures],
             "files": {"cost": os.path.join(args.output, COST), "report": report}}, indent=1, default=str))
         return code
     if not args.quiet:
-        print_cost(table, uncertainty, law, scene, ladder, skipped, failures)
-        print()
-    print(f"wrote {os.path.join(args.output, COST)} and {report}")
+        print_cost(table, uncertainty, law, scene, ladder, skipped, failures, verbose=args.verbose)
+    print(f"wrote {COST} and {os.path.basename(report)} in {args.output}" + (
+        "" if args.verbose or args.quiet else " (every table: --verbose)"))
     return code
