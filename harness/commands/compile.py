@@ -20,7 +20,7 @@ def main(args):
     from ..warm_up import compile_laws
     laws = tuple(get_law(name.strip()).name for name in args.laws.split(",")) if args.laws else tuple(LAWS)
     start = time.perf_counter()
-    with Progress("compile", quiet=args.quiet) as progress:
+    with Progress("compile", quiet=args.quiet, compiling=lambda: 0.0) as progress:    # every step compiles
         seconds = compile_laws(laws, progress)
     print(f"compiled {len(laws)} law(s) in {time.perf_counter() - start:.0f} s ({sum(seconds.values()):.0f} s "
           f"compiling; nothing left to compile where that is 0) into {cache_base()}")

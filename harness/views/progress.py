@@ -54,7 +54,7 @@ class Progress:
         if self.total <= self.done:
             return "about 0 s left"
         seconds = max(elapsed - compiled, 0.0) / self.done * (self.total - self.done)
-        return f"about {seconds:.0f} s left"
+        return f"about {seconds:.0f} s left" + (", more if a later step compiles" if compiled >= 1.0 else "")
 
     def close(self):
         if self.live is not None:
