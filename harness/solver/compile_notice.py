@@ -11,7 +11,7 @@ from ..compiling import add, first_clock
 
 LOG = logging.getLogger("harness")
 _announced = set()
-TYPICAL_COMPILE_S = (10, 40)    # one integrator of one law, measured on 2 to 4 cores (docs/performance.md)
+TYPICAL_COMPILE_S = (5, 15)     # one integrator of one law: quiet, and 2 cores shared by 4 jobs (docs/performance.md)
 
 
 def announce_compiling(dispatcher, what):
@@ -25,8 +25,8 @@ def announce_compiling(dispatcher, what):
     if not cached:
         _announced.add(what)
         low, high = TYPICAL_COMPILE_S
-        LOG.info("compiling %s for this machine (first use only, typically %d to %d s; later runs load it from "
-                 "numba's cache; `harness compile` compiles every law ahead of time)", what, low, high)
+        LOG.info("compiling %s for this machine (first use only, typically %d to %d s a law; later runs load it "
+                 "from numba's cache; `harness compile` compiles every law ahead of time)", what, low, high)
 
 
 class CompileClock(event.Listener):
