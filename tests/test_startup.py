@@ -42,10 +42,10 @@ def test_help_version_and_a_refused_option_import_no_library_of_the_physics(argv
 
 @pytest.mark.parametrize("argv", [["models"], ["engines"], ["run", "--model", "nosuch", "-o", "r.csv"]])
 def test_listing_and_an_unknown_law_load_neither_the_solver_nor_plotting(argv, tmp_path):
-    """The laws are compiled functions (numba is imported), but nothing plans, simulates or draws."""
+    """The laws are compiled functions (numba is imported), but nothing plans, simulates, tabulates or draws."""
     code, modules = imported(argv, tmp_path)
     assert code == (2 if "nosuch" in argv else 0)
-    assert not [m for m in modules if m.split(".")[0] in ("matplotlib", "dask")], modules
+    assert not [m for m in modules if m.split(".")[0] in ("pandas", "matplotlib", "dask")], modules
     assert not [m for m in modules if m in ("harness.plan", "harness.solver.batch", "harness.api")], modules
 
 
