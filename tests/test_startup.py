@@ -49,6 +49,16 @@ def test_listing_and_an_unknown_law_load_neither_the_solver_nor_plotting(argv, t
     assert not [m for m in modules if m in ("harness.plan", "harness.solver.batch", "harness.api")], modules
 
 
+def test_every_command_is_listed_and_its_module_builds_it():
+    """The full parser (every module's parser) holds exactly the commands listed, each with its own options."""
+    from harness.commands import COMMANDS, build_parser
+    full = build_parser()
+    commands = next(a for a in full._actions if a.dest == "command").choices
+    assert list(commands) == list(COMMANDS)
+    assert all(any(a.option_strings == ["-h", "--help"] for a in commands[name]._actions) for name in COMMANDS)
+    assert build_parser({"run"}).parse_args(["run", "--model", "thornton", "-o", "r.csv"]).model == "thornton"
+
+
 def cache_directory(env):
     """numba's cache directory as harness sets it, in a fresh interpreter with `env`."""
     code = "import harness.jit, numba; print(numba.config.CACHE_DIR)"

@@ -65,10 +65,12 @@ def build_parser(chosen=None):
     parser.add_argument("--version", action="version", version=f"harness {__version__}")
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND", parser_class=Parser)
     full = {module for name, (module, _) in COMMANDS.items() if chosen is None or name in chosen}
+    loaded = set()
     for name, (module, summary) in COMMANDS.items():
         if module not in full:
             sub.add_parser(name, help=summary, add_help=False)
-        elif name == next(n for n, (m, _) in COMMANDS.items() if m == module):
+        elif module not in loaded:          # a module adds every command it holds (check.py: check and baseline)
+            loaded.add(module)
             importlib.import_module(f"{__name__}.{module}").add(sub, describe)
     return parser
 
