@@ -27,8 +27,7 @@ EXIT_CODES = """exit codes:
 
 
 def add(sub, describe):
-    p = describe(sub, "benchmark", "a published verification suite (Chung & Ooi 2011's eight tests) on the reference "
-                                   "and the engines: every quantity against its closed form", EXAMPLE, EXIT_CODES)
+    p = describe(sub, "benchmark", EXAMPLE, EXIT_CODES)
     p.add_argument("suite", choices=SUITES, help="the suite: chung-ooi")
     p.add_argument("--engines", default=None, metavar="LIST",
                    help=f"comma-separated engines of {', '.join(ENGINES)} (default: every one; those missing are "

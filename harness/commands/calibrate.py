@@ -16,8 +16,7 @@ EXAMPLE = "harness calibrate --model hertz-mindlin --engine lammps --en 0.25,0.5
 
 
 def add(sub, describe):
-    p = describe(sub, "calibrate", "the engine inputs that bring an engine nearest the paper law on a scene, and the "
-                 "time step a tolerance needs", EXAMPLE)
+    p = describe(sub, "calibrate", EXAMPLE)
     p.add_argument("--model", required=True, help="law name (see `harness models`)")
     p.add_argument("--engine", required=True, help=f"the engine to calibrate ({', '.join(EXTERNAL)}, or a build "
                                                     "ENGINE@VERSION)")

@@ -21,8 +21,7 @@ from .options import EXIT_ENGINE, EXIT_OK, add_output_options, check_output_dire
 
 
 def add(sub, describe):
-    p = describe(sub, "campaign", "run a matrix of comparisons from a TOML file into a Parquet store that resumes",
-                 "harness campaign examples/campaign.toml -o campaign-store --executor dask")
+    p = describe(sub, "campaign", "harness campaign examples/campaign.toml -o campaign-store --executor dask")
     p.add_argument("file", metavar="FILE", help="the campaign (TOML; examples/campaign.toml)")
     p.add_argument("-o", "--output", default="campaign-store", metavar="STORE",
                    help="the store directory (default %(default)s); its report is STORE.html")

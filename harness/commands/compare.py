@@ -28,8 +28,7 @@ EXAMPLE = "harness compare --model hertz-mindlin --engines liggghts --en 0.5 --r
 
 
 def add(sub, describe):
-    p = describe(sub, "compare", "the paper law against each engine and its dialect; tables, results.csv, report.html",
-                 EXAMPLE)
+    p = describe(sub, "compare", EXAMPLE)
     p.add_argument("--model", required=True, help="law name (see `harness models`)")
     add_engine_options(p)
     add_scene_options(p)

@@ -24,8 +24,7 @@ EXAMPLE = "harness cost --model hertz-mindlin --en 0.9,0.3 --angles 0:80:20 -o c
 
 
 def add(sub, describe):
-    p = describe(sub, "cost", "accuracy against time: a ladder of steps per contact for the paper law, each engine's "
-                              "dialect and each engine; cost.csv and the report", EXAMPLE)
+    p = describe(sub, "cost", EXAMPLE)
     p.add_argument("--model", required=True, help="law name (see `harness models`)")
     add_engine_options(p)
     add_scene_options(p, resolution=False)

@@ -14,8 +14,7 @@ EXAMPLE = "harness paper -o paper/"
 
 
 def add(sub, describe):
-    p = describe(sub, "paper", "the paper's figure set: Psi2*, Omega*, e_t against Psi1* per law at its e_n, contact "
-                               "duration and peak force against e_n, where each law slides throughout", EXAMPLE)
+    p = describe(sub, "paper", EXAMPLE)
     p.add_argument("--laws", default=None, metavar="LIST", help="comma-separated laws (default: every law)")
     p.add_argument("--steps-per-contact", type=int, default=2000, metavar="N", help="resolution (default 2000)")
     p.add_argument("-o", "--output", default="harness-paper", metavar="DIR", help="output directory (default %(default)s)")

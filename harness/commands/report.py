@@ -4,8 +4,7 @@ from .options import EXIT_OK, add_output_options
 
 
 def add(sub, describe):
-    p = describe(sub, "report", "rebuild DIR/report.html from a compare or cost directory, simulating nothing",
-                 "harness report harness-out")
+    p = describe(sub, "report", "harness report harness-out")
     p.add_argument("directory", metavar="DIR")
     add_output_options(p)
     p.set_defaults(func=main)
