@@ -5,6 +5,7 @@ From Python, the commands with the command line's option names as keywords (docs
 `calibrate`, `cost`, `paper`, `benchmark` and `campaign`; `columns` describes every results column with its unit;
 `plot` draws a results table as the paper's figures."""
 
+import importlib as _importlib
 import sys as _sys
 import types as _types
 
@@ -38,6 +39,10 @@ class _Harness(_types.ModuleType):
         if name in _COMMANDS and isinstance(value, _types.ModuleType):
             return
         super().__setattr__(name, value)
+
+    def __reduce__(self):
+        """Pickled by name, as any module (Dask's workers pickle what refers to the package)."""
+        return _importlib.import_module, (self.__name__,)
 
 
 _sys.modules[__name__].__class__ = _Harness

@@ -95,11 +95,11 @@ def timing_cells(cost):
 
 def verdict_cells(cost):
     """The verdict box's rows (analyses.cost.verdict), a time not resolved said as such."""
-    found = verdict(cost)
-    if found.empty:
+    verdicts = verdict(cost)
+    if verdicts.empty:
         return None
-    found["s/impact-step"] = [number(v) if v == v else NOT_RESOLVED for v in found["s/impact-step"]]
-    return records(found.drop(columns=["timing"]))
+    verdicts["s/impact-step"] = [number(v) if v == v else NOT_RESOLVED for v in verdicts["s/impact-step"]]
+    return records(verdicts.drop(columns=["timing"]))
 
 
 def cost_section(cost, uncertainty, run):

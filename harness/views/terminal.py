@@ -238,12 +238,12 @@ def print_cost(table, uncertainty, law, scene, ladder, skipped, failures, verbos
 
 def verdict_table(table):
     """The verdict (analyses.cost.verdict) as a fixed-width table of at most 120 columns."""
-    found = verdict(table)
-    if found.empty:
+    verdicts = verdict(table)
+    if verdicts.empty:
         return "  (no curve ran)"
     finest = max((int(r) for r in table.rung.dropna() if str(r).isdigit()), default=0)
-    shown = found.assign(**{"s/impact-step": [f"{v:.3g}" if v == v else NOT_RESOLVED
-                                                for v in found["s/impact-step"]]})
+    shown = verdicts.assign(**{"s/impact-step": [f"{v:.3g}" if v == v else NOT_RESOLVED
+                                                for v in verdicts["s/impact-step"]]})
     for column in ("steps/contact for 1%", "steps/contact for 0.1%"):
         shown[column] = [f"{v:.0f}" if v == v else f">{finest}" for v in shown[column]]
     for column in ("s/impact for 1%", "x paper for 1%", "s/impact for 0.1%", "x paper for 0.1%", "20% T_R error"):
