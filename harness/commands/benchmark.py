@@ -5,13 +5,15 @@ import sys
 
 from ..engines import ENGINES
 from ..errors import UserError
-from ..lock import exclusive
+from ..lock import LOCK, exclusive
 from ..results import write_csv
 from ..verification.chung_ooi import LAW, run_suite, verdict
-from ..views.chung_ooi_html import CSV, summary, write_chung_ooi_report
+from ..views.chung_ooi_html import CSV, PAGE, summary, write_chung_ooi_report
 from ..views.progress import Progress
 from ..views.terminal import text_table
-from .options import EXIT_DISAGREE, EXIT_ENGINE, EXIT_OK, add_output_options, check_output_directory
+from ..views.figure_files import FIGURES
+from .options import (EXIT_DISAGREE, EXIT_ENGINE, EXIT_OK, add_output_options, check_entries,
+                      check_output_directory)
 
 EXAMPLE = "harness benchmark chung-ooi --engines reference,liggghts -o chung-ooi/"
 SUITES = ("chung-ooi",)
@@ -57,6 +59,7 @@ def main(args):
     if unknown or not engines:
         raise UserError(f"unknown engine(s) {', '.join(unknown) or args.engines!r}; known: {', '.join(ENGINES)}")
     check_output_directory(args.output)
+    check_entries(args.output, (CSV, PAGE, LOCK), (FIGURES,))
     with Progress("benchmark chung-ooi", quiet=args.quiet or args.json) as progress:
         table = run_suite(engines, progress=progress)
     with exclusive(args.output):

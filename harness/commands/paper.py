@@ -11,6 +11,7 @@ from ..solver.batch import MAX_STEPS_PER_CONTACT
 from ..views.paper_html import FILES, NORMAL, OBLIQUE, PUBLISHED, SLIDING, write_paper_report
 from ..views.progress import Progress
 from ..views.terminal import published_summary, text_table
+from ..views.figure_files import FIGURES
 from .options import EXIT_OK, add_output_options, check_entries, check_output_directory
 
 EXAMPLE = "harness paper -o paper/"
@@ -39,7 +40,7 @@ def main(args):
         raise UserError(f"--steps-per-contact must be at most {MAX_STEPS_PER_CONTACT:.0e} (the bound of every "
                         f"resolution), got {args.steps_per_contact}")
     check_output_directory(args.output)
-    check_entries(args.output, FILES + (LOCK,))
+    check_entries(args.output, FILES + (LOCK,), (FIGURES,))
     with Progress("paper", quiet=args.quiet) as progress:
         oblique, normal, sliding, published = figure_set(laws, args.steps_per_contact, progress=progress)
     with exclusive(args.output):

@@ -67,14 +67,14 @@ def cost_figure(cost, x_column, x_label, metrics):
 def cost_section(cost, uncertainty, run):
     """Figures and tables of the cost section, from the cost table, the truth's uncertainty and the study's record."""
     model = run["model"]
-    titles, calls = zip(
-        (f"{model}: worst-metric error against wall time (start-up excluded)",
+    titles, names, calls = zip(
+        (f"{model}: worst-metric error against wall time (start-up excluded)", f"{model}-worst-error-vs-wall-time",
          (cost_figure, (cost, "net_wall_s", "wall time [s]", ("max",)))),
-        (f"{model}: error of each metric against wall time (start-up excluded)",
+        (f"{model}: error of each metric against wall time (start-up excluded)", f"{model}-errors-vs-wall-time",
          (cost_figure, (cost, "net_wall_s", "wall time [s]", METRICS))),
         (f"{model}: error of each metric against steps per contact (the adaptive curve: force evaluations)",
-         (cost_figure, (cost, "n", "steps or evaluations/contact", METRICS))))
-    figures = list(zip(titles, draw_all(list(calls))))
+         f"{model}-errors-vs-steps-per-contact", (cost_figure, (cost, "n", "steps or evaluations/contact", METRICS))))
+    figures = list(zip(titles, draw_all(list(calls)), names))
     refused = cost[cost.status == "refused"].drop_duplicates(["engine", "dialect", "rung"])
     return {"figures": figures, "recommendations": records(recommendations(cost)),
             "orders": records(convergence_orders(cost)),
