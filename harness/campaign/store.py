@@ -46,7 +46,7 @@ def tidy(frame, key, log_tail="", scene=None):
     """A task's rows in the store's schema: every results column (floats as float64, words as strings), its key,
     the log tail of a failed task, and the columns SCENE of its scene (blank when not given)."""
     out = frame.reindex(columns=list(COLUMNS)).assign(**{KEY: key, LOG_TAIL: log_tail})
-    out = out.assign(**{column: np.nan for column in SCENE}).assign(**scene_columns(scene))
+    out = out.assign(material="", wall="", target="", speed=np.nan).assign(**scene_columns(scene))
     for column in out.columns:
         if column in STRINGS:
             out[column] = out[column].fillna("").astype(str)

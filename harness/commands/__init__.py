@@ -24,8 +24,8 @@ def describe(sub, name, summary, example, exit_codes=EXIT_CODES):
 
 def build_parser():
     from ..engines import EXTERNAL
-    from . import (benchmark, calibrate, campaign, check, compare, cost, engines, models, paper, query, render, report,
-                   run)
+    from . import (benchmark, calibrate, campaign, check, cite, compare, cost, engines, models, paper, query, render,
+                   report, run)
     parser = Parser(prog="harness", formatter_class=argparse.RawDescriptionHelpFormatter,
                     description="Cross-validate DEM contact force models against the literature (Thornton, Cummins "
                                 f"& Cleary 2013) and against the engines {', '.join(EXTERNAL)}.",
@@ -33,7 +33,7 @@ def build_parser():
     parser.add_argument("--version", action="version", version=f"harness {__version__}")
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND", parser_class=Parser)
     for module in (models, engines, run, compare, calibrate, cost, paper, benchmark, render, report, check, campaign,
-                   query):
+                   query, cite):
         module.add(sub, describe)
     return parser
 

@@ -9,6 +9,7 @@ import numpy as np
 import pandas as pd
 
 from ..analyses.agreement import AGREEMENT_TOLERANCE, agreement
+from ..citation import doc_link
 from ..files import write_text
 from .drawing import draw_all
 from .figure_files import filed
@@ -174,7 +175,8 @@ def write_campaign_report(table, path, name, sweeps=(), store=""):
     agree = agreement_table(table) if not table.empty else pd.DataFrame()
     parts = [f"<h1>Campaign {html.escape(name)}</h1>",
              f"<p>{len(table)} rows, {table.task_key.nunique()} tasks; laws: {', '.join(sorted(table.model.unique()))}; "
-             f"engines: {', '.join(sorted(table.engine.unique()))}; {failed.task_key.nunique()} failed tasks.</p>",
+             f"engines: {', '.join(sorted(table.engine.unique()))}; {failed.task_key.nunique()} failed tasks "
+             f"(what each part shows: {doc_link('campaigns.md')}).</p>",
              "<p>Swept: " + (", ".join(html.escape(s.label) for s in sweeps) or "no scene parameter") + ".</p>",
              *sweep_sections(sweeps, os.path.dirname(os.path.abspath(path)), figures_folder(path), store),
              "<h2>Agreement of each engine with its formulas (worst relative difference, tolerance "
