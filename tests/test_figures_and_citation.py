@@ -13,6 +13,7 @@ import pandas as pd
 import pytest
 
 import harness
+from conftest import needs
 from harness.citation import DOCS_URL, PROJECT_URL
 from harness.commands import main
 from harness.version import RELEASED
@@ -163,3 +164,47 @@ def test_citation_cff_names_this_version_date_and_address():
     assert top["date-released"] == RELEASED
     assert top["url"] == PROJECT_URL
     assert os.path.basename(PROJECT_URL) == "harness"
+
+
+@pytest.mark.parametrize("extra, words", [
+    ({"walls": ["steel"]}, "walls[0] is a string ('steel'); expected one of same, rigid"),
+    ({"mus": 0.1}, "mus is a float (0.1); expected an array of numbers"),
+    ({"targets": [1]}, "targets[0] is an integer (1); expected one of wall, sphere"),
+    ({"radii": [0.01], "materials": [{"radius": 0.02, "E": 1e9, "nu": 0.3, "rho": 2500, "mu": 0.3}]},
+     "give radius in materials or radii, not both"),
+])
+def test_a_scene_list_of_the_wrong_kind_is_one_line(extra, words):
+    from harness.campaign.spec import from_dict
+    from harness.errors import UserError
+    with pytest.raises(UserError) as caught:
+        from_dict({"laws": ["hertz-mindlin"], **extra})
+    assert words in str(caught.value) and "\n" not in str(caught.value)
+
+
+def test_each_scene_list_reaches_the_requests():
+    from harness.campaign.spec import from_dict
+    campaign = from_dict({"laws": ["hertz-mindlin"], "mus": [0.1, 0.4], "radii": [0.005, 0.01], "walls": ["rigid"]})
+    assert sorted((r.scene.mu, r.scene.radius, r.scene.wall) for r in campaign.requests) == [
+        (0.1, 0.005, "rigid"), (0.1, 0.01, "rigid"), (0.4, 0.005, "rigid"), (0.4, 0.01, "rigid")]
+
+
+@needs("liggghts")
+def test_the_deviations_view_is_the_pages_pandas_pairing(tmp_path):
+    """The view `deviations` (DuckDB) gives per mu the worst |e_t(LIGGGHTS) - e_t(paper law)| that the page's own
+    pairing of the rows in pandas (deviation_maps) gives."""
+    from harness.campaign.driver import run_campaign
+    from harness.campaign.executors import InProcess
+    from harness.campaign.query import query
+    from harness.campaign.spec import from_dict
+    from harness.campaign.store import Store
+    from harness.views.campaign_html import deviation_maps
+    store = tmp_path / "store"
+    for mu in (0.1, 0.3):
+        run_campaign(from_dict({"laws": ["hertz-mindlin"], "engines": ["reference", "liggghts"], "e_n": [0.5],
+                                "angles": [30.0, 60.0], "mus": [mu], "steps_per_contact": [200]}), store, InProcess())
+    worst = query(Store(store, create=False), "SELECT mu, max(d_e_t) AS worst FROM deviations GROUP BY mu")
+    table = Store(store, create=False).table()
+    assert len(worst) == 2
+    for row in worst.itertuples():
+        grid = deviation_maps(table[table.mu == row.mu])[("liggghts", "hertz-mindlin")]
+        assert row.worst == pytest.approx(float(grid.max().max()), rel=1e-12) and row.worst > 0
