@@ -3,14 +3,16 @@ import os
 import sys
 
 from ..engines import ENGINES
-from ..lock import exclusive
+from ..lock import LOCK, exclusive
 from ..results import write_csv
 from ..verification.chung_ooi import LAW, known_engines, run_suite, verdict
-from ..views.chung_ooi_html import CSV, summary, write_chung_ooi_report
+from ..views.chung_ooi_html import CSV, PAGE, summary, write_chung_ooi_report
+from ..views.figure_files import FIGURES
 from ..views.progress import Progress
 from ..views.terminal import text_table
 from ..views import strict_json
-from .options import EXIT_DISAGREE, EXIT_ENGINE, EXIT_OK, add_output_options, check_output_directory
+from .options import (EXIT_DISAGREE, EXIT_ENGINE, EXIT_OK, add_output_options, check_entries,
+                      check_output_directory)
 
 EXAMPLE = "harness benchmark chung-ooi --engines reference,liggghts -o chung-ooi/"
 SUITES = ("chung-ooi",)
@@ -53,6 +55,7 @@ def main(args):
     engines = known_engines(None if not named else tuple(n.strip() for n in args.engines.split(",") if n.strip()),
                             args.engines)
     check_output_directory(args.output)
+    check_entries(args.output, (CSV, PAGE, LOCK), (FIGURES,))
     with Progress("benchmark chung-ooi", quiet=args.quiet or args.json) as progress:
         table = run_suite(engines, progress=progress)
     with exclusive(args.output):

@@ -11,13 +11,14 @@ from ..campaign.limits import max_workers
 from ..campaign.slurm import forget_credentials, preflight, shell_safe, slurm_cluster, slurm_options
 from ..campaign.spec import load
 from ..campaign.store import DROP, DROP_HELP, Store
+from ..campaign.sweeps import sweeps
 from ..errors import UserError
 from ..files import refuse_unless_regular
 from ..lock import exclusive
-from ..views.campaign_html import write_campaign_report
+from ..views.campaign_html import figures_folder, write_campaign_report
 from ..views.progress import Progress
 from ..views import strict_json
-from .options import EXIT_ENGINE, EXIT_OK, add_output_options, check_output_directory
+from .options import EXIT_ENGINE, EXIT_OK, add_output_options, check_entries, check_output_directory
 
 
 def add(sub, describe):
@@ -67,7 +68,8 @@ def main(args):
                 store = Store(args.output)              # again, now that this process is its only writer
                 where = where or executor(args.executor, args.workers, slurm=slurm, shared=args.output)
                 summary = run_campaign(campaign, store, where, args.no_cache, progress)
-                page = write_campaign_report(store.table(), report_path, campaign.name)
+                table = store.table()
+                page = write_campaign_report(table, report_path, campaign.name, sweeps(store, table), args.output)
         finally:
             if where is not None:
                 where.close()
@@ -94,12 +96,14 @@ def refuse_contradictions(args):
 
 def check_store_path(path):
     """The store directory and its report: writable, no empty path component (`/scratch/$USER/store` with USER
-    unset), the report a new path or a regular file; returns the report's path."""
+    unset), the report a new path or a regular file, its figures' folder a new path or a directory; returns the
+    report's path."""
     check_output_directory(path)
     if "//" in path.rstrip("/"):
         raise UserError(f"store path {path} has an empty component (an unset variable?)")
     report_path = path.rstrip("/") + ".html"
     refuse_unless_regular(report_path)
+    check_entries(os.path.dirname(os.path.abspath(report_path)), (), (figures_folder(report_path),))
     return report_path
 
 

@@ -254,12 +254,14 @@ def check_entries(directory, files=(), directories=()):
 
 def check_results_directory(directory):
     """A compare's or cost study's -o DIR: a directory whose entries (the tables, run records and report that
-    `compare`, `cost` and `report` write or read, the lock, the partial runs) may all be written."""
+    `compare`, `cost` and `report` write or read, the lock, the partial runs, the figures' folder) may all be
+    written."""
     from ..lock import LOCK
     from ..outputs import DIRECTORY_FILES
     from ..partial import PARTIAL
+    from ..views.figure_files import FIGURES
     check_output_directory(directory)
-    check_entries(directory, DIRECTORY_FILES + (LOCK,), (PARTIAL,))
+    check_entries(directory, DIRECTORY_FILES + (LOCK,), (PARTIAL, FIGURES))
 
 
 def writable(directory, path):

@@ -8,6 +8,7 @@ from ..results import write_csv
 from ..views.paper_html import FILES, NORMAL, OBLIQUE, PUBLISHED, SLIDING, write_paper_report
 from ..views.progress import Progress
 from ..views.terminal import published_summary, text_table
+from ..views.figure_files import FIGURES
 from .options import EXIT_OK, add_output_options, check_entries, check_output_directory
 
 EXAMPLE = "harness paper -o paper/"
@@ -28,7 +29,7 @@ def main(args):
     laws = None if args.laws is None else tuple(n.strip() for n in args.laws.split(",") if n.strip())
     laws = checked(laws, args.steps_per_contact, args.laws)
     check_output_directory(args.output)
-    check_entries(args.output, FILES + (LOCK,))
+    check_entries(args.output, FILES + (LOCK,), (FIGURES,))
     with Progress("paper", quiet=args.quiet) as progress:
         oblique, normal, sliding, published = figure_set(laws, args.steps_per_contact, progress=progress)
     with exclusive(args.output):

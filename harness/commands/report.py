@@ -1,6 +1,8 @@
 """`harness report DIR`: rebuild DIR/report.html from the files of a compare or cost directory, simulating nothing."""
+from ..outputs import REPORT
+from ..views.figure_files import FIGURES
 from ..views.html import rebuild
-from .options import EXIT_OK, add_output_options
+from .options import EXIT_OK, add_output_options, check_entries
 
 
 def add(sub, describe):
@@ -11,5 +13,6 @@ def add(sub, describe):
 
 
 def main(args):
+    check_entries(args.directory, (REPORT,), (FIGURES,))
     print(f"wrote {rebuild(args.directory)}")
     return EXIT_OK

@@ -105,14 +105,15 @@ def verdict_cells(cost):
 def cost_section(cost, uncertainty, run):
     """Figures and tables of the cost section, from the cost table, the truth's uncertainty and the study's record."""
     model = run["model"]
-    titles, calls = zip(
+    titles, names, calls = zip(
         (f"{model}: worst-metric error against time per impact (impact-steps x the curve's resolved time per "
-         f"impact-step)", (cost_figure, (cost, "s_per_impact", "time per impact [s]", ("max",)))),
-        (f"{model}: error of each metric against time per impact",
+         f"impact-step)", f"{model}-worst-error-vs-time-per-impact",
+         (cost_figure, (cost, "s_per_impact", "time per impact [s]", ("max",)))),
+        (f"{model}: error of each metric against time per impact", f"{model}-errors-vs-time-per-impact",
          (cost_figure, (cost, "s_per_impact", "time per impact [s]", METRICS))),
         (f"{model}: error of each metric against steps per contact (the adaptive curve: force evaluations)",
-         (cost_figure, (cost, "n", "steps or evaluations/contact", METRICS))))
-    figures = list(zip(titles, draw_all(list(calls))))
+         f"{model}-errors-vs-steps-per-contact", (cost_figure, (cost, "n", "steps or evaluations/contact", METRICS))))
+    figures = list(zip(titles, draw_all(list(calls)), names))
     refused = cost[cost.status == "refused"].drop_duplicates(["engine", "dialect", "rung"])
     times = step_times(cost)
     return {"figures": figures, "recommendations": records(recommendations(cost)),
