@@ -1,16 +1,48 @@
 """harness: cross-validation of DEM contact force models (Thornton, Cummins & Cleary 2013).
 
-`harness.run(model, **keywords)` returns the reference solver's results table; `harness.compare(model, **keywords)`
-returns a Comparison; `harness.calibrate(model, engine, **keywords)` a Calibration; the keywords are the command
-line's option names (docs/user-guide.md)."""
+From Python, the commands with the command line's option names as keywords (docs/user-guide.md, "Python"):
+`run` (the reference solver's results table), `compare` (a Comparison: verdicts, tables, .report(dir), .plot(column)),
+`calibrate`, `cost`, `paper`, `benchmark` and `campaign`; `columns` describes every results column with its unit;
+`plot` draws a results table as the paper's figures."""
+
+import importlib as _importlib
+import sys as _sys
+import types as _types
 
 from .version import __version__
-__all__ = ["run", "compare", "calibrate", "__version__"]
+
+_COMMANDS = ("run", "compare", "calibrate", "cost", "paper", "benchmark", "campaign", "plot")
+__all__ = [*_COMMANDS, "columns", "__version__"]
 
 
 def __getattr__(name):
-    """run and compare, imported on first use (the solver compiles its kernels then, not on `import harness`)."""
-    if name in ("run", "compare", "calibrate"):
-        from . import api
-        return getattr(api, name)
+    """The commands and `columns`, imported on first use: `import harness` loads neither numba nor pandas."""
+    if name in _COMMANDS:
+        from . import notebook
+        return getattr(notebook, name)
+    if name == "columns":
+        from .descriptions import columns
+        return columns()
     raise AttributeError(f"module 'harness' has no attribute {name!r}")
+
+
+def __dir__():
+    """What tab completion offers: the public API beside what is loaded."""
+    return sorted(set(globals()) | set(__all__))
+
+
+class _Harness(_types.ModuleType):
+    """The package, whose commands stay functions when their namesake subpackages are imported (harness.campaign,
+    harness.paper: reached as modules through sys.modules and `from harness.campaign import ...`)."""
+
+    def __setattr__(self, name, value):
+        if name in _COMMANDS and isinstance(value, _types.ModuleType):
+            return
+        super().__setattr__(name, value)
+
+    def __reduce__(self):
+        """Pickled by name, as any module (Dask's workers pickle what refers to the package)."""
+        return _importlib.import_module, (self.__name__,)
+
+
+_sys.modules[__name__].__class__ = _Harness

@@ -1,4 +1,5 @@
-"""The Python API: `run` and `compare` with the CLI's option names as keywords (docs/user-guide.md)."""
+"""What the commands and the Python API (harness.notebook) share: run, compare and calibrate a validated request,
+and which engines can take it."""
 from dataclasses import replace
 
 import pandas as pd
@@ -8,25 +9,17 @@ from .analyses.precision import precision_gap
 from .analyses.sliding import threshold_table
 from .comparison import Comparison
 from .calibration.calibrate import calibrate as run_calibration
-from .engines import ENGINES, EXTERNAL, get_engine
+from .engines import ENGINES, EXTERNAL
 from .engines.protocol import Status
 from .errors import UserError
 from .execute import execute, run_all
 from .outputs import arithmetic_of
 from .plan import CONVERGED, compare_plan, reference_runs, target_of
-from .request import Request
 from .sliding_search import sliding_thresholds
 from .solver.simulate import simulate
 from .two_spheres import with_bodies
 
 HISTORY_POINTS = 400
-
-
-def run(model, **keywords):
-    """The reference solver's results table (pandas) of `model` over a scene, e.g.
-    run("hertz-mindlin", en=[0.5], angles=[10, 30], steps_per_contact=2000)."""
-    request = Request.from_keywords(model, **keywords)
-    return run_request(request)
 
 
 def run_request(request, on_frame=None, progress=None):
@@ -42,22 +35,6 @@ def run_request(request, on_frame=None, progress=None):
             progress.advance(f"e_n {frame.e_n_target.iloc[0]:g}")
     table, _ = execute(runs, done)
     return with_bodies(table, request.scene) if request.scene.spheres else table
-
-
-def compare(model, engines=None, engine_options=None, **keywords):
-    """The paper law, each engine's dialect and each engine on one scene: a Comparison with .results, .agreement,
-    .deviation, .cross, .attribution, .findings, .sliding, .physics (per engine: does it reproduce the paper law),
-    .reproduces and .ok, e.g. compare("hertz-mindlin", engines=["liggghts"], en=[0.5], angles=[10, 30],
-    tolerances={"velocity": 0.02})."""
-    return compare_request(Request.from_keywords(model, engines=engines, engine_options=engine_options, **keywords))
-
-
-def calibrate(model, engine, tolerances=None, timestep_tolerance=1e-2, **keywords):
-    """The engine inputs that make `engine` compute `model` nearest the paper law on a scene, confirmed by running
-    the engine, and the time step that buys `timestep_tolerance`: a harness.calibration.calibrate.Calibration, e.g.
-    calibrate("hertz-mindlin", "lammps", en=[0.25, 0.5], angles=[10, 30, 60])."""
-    request = Request.from_keywords(model, engines=[engine], **keywords)
-    return calibrate_request(request, get_engine(request.engines[0]), tolerances, timestep_tolerance)
 
 
 def calibrate_request(request, engine, tolerances=None, timestep_tolerance=1e-2):
@@ -109,6 +86,16 @@ def statuses(request, refuse=True):
             status = Status(name, False, unsupported)
         out.append(status)
     return out
+
+
+def able_engines(request):
+    """({name: (engine, its options)} of the engines that can take the request, [(name, why not)] of the others);
+    an engine's options are checked here (bad ones refused before anything runs)."""
+    found = statuses(request)
+    able = {s.name: (ENGINES[s.name], options_for(request, s.name)) for s in found if s.available}
+    for engine, options in able.values():
+        engine.dialect(request.law.name, options)
+    return able, [(s.name, s.reason) for s in found if not s.available]
 
 
 def options_for(request, name):

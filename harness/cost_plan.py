@@ -1,15 +1,19 @@
 """The cost study's runs (`harness cost`): each dialect's converged truth, then per curve a ladder of runs at each
 resolution, timed; the engines' start-up runs; the converged mode's own rungs. Each rung's results go to
 analyses/cost.py as soon as they are run, which turns them into cost rows."""
+import math
 from dataclasses import replace
 
+import numpy as np
 import pandas as pd
 
-from .analyses.cost import (ADAPTIVE, ADAPTIVE_RUNGS, COLUMNS, EXTRAPOLATED, LADDER, RAYLEIGH_FRACTION, Rows,
-                            converged_rows, fastest, measure, per_e_n, rayleigh_time, refused, uncertainties)
+from .analyses.cost import (ADAPTIVE, ADAPTIVE_RUNGS, COLUMNS, EXTRAPOLATED, LADDER, MIN_NET_S, RAYLEIGH_FRACTION,
+                            RESOLVE_RATIO, Rows, converged_rows, fastest, measure, per_e_n, priced, rayleigh_time,
+                            refused, resolved, step_time_row, uncertainties)
 from .execute import execute
 from .plan import engine_runs, reference_runs
-from .solver.batch import FixedTimeStep
+from .errors import UserError
+from .solver.batch import MAX_STEPS_PER_CONTACT, FixedTimeStep
 from .solver.simulate import CONVERGED_START, adaptive_batch, simulate, simulate_adaptive, simulate_extrapolated
 from .solver.stability import UnstableTimeStep
 
@@ -20,6 +24,11 @@ TIMING_REPEATS = 3               # each timed run and each start-up is timed thi
 LONG_RUN_S = 5.0                 # a run this long is timed once (the machine's noise is small beside it)
 STARTUP_STEPS = 1                # a start-up run's step cap: stopped after its first separation check
 STARTUP_RESOLUTION = 1000        # steps per contact of the start-up runs (their first check: a tenth of a contact)
+TIMING_STEPS = 200               # a curve's time per impact-step is timed at its rung nearest this many steps/contact,
+FIRST_IMPACTS = 256              # on copies of the scene's impacts of its first e_n: at least this many at first,
+GROWTH = 16                      # this many times more while the net time is not resolved (or as many as it needs),
+MAX_TIMING_IMPACTS = 4096        # up to this many impacts (an engine's start-up grows with them), then finer rungs,
+MAX_TIMING_ROUNDS = 5            # in at most this many rounds
 
 
 def truth_of(law, scene, cache=None):
@@ -128,13 +137,96 @@ def sweep(engine, law, scene, resolution, options, observe=False):
     return frames, failures
 
 
+def copies(scene, e_n, count):
+    """The scene at one e_n with its impacts repeated `count` times (the same impacts, independent of each other)."""
+    field = next(f for f in ("angles_deg", "psi1_star", "v_t") if getattr(scene, f) is not None)
+    return replace(scene, e_n=(e_n,), **{field: tuple(getattr(scene, field)) * count})
+
+
+def timing_rung(rows, engine, dialect, e_n):
+    """The curve's rung (a row) nearest TIMING_STEPS steps (or evaluations) per contact that ran, at `e_n`."""
+    ran = [r for r in rows if r["engine"] == engine and r["dialect"] == dialect and r["e_n_target"] == e_n
+           and r.get("status") == "ok" and r["rung"] != "rayleigh" and r.get("steps", 0) > 0]
+    return min(ran, key=lambda r: abs(math.log(r["steps_per_contact"] / TIMING_STEPS)), default=None)
+
+
+def step_time(rows, law_name, engine, dialect, scene, timed, progress=None, finer=True):
+    """A curve's time per impact-step: its rung nearest TIMING_STEPS on copies of the scene's impacts of one e_n,
+    FIRST_IMPACTS at first, while the net time (wall less start-up, each the fastest of at least two timings) is not
+    resolved GROWTH times more impacts (or what the last net time says is needed) up to MAX_TIMING_IMPACTS, then (if
+    `finer`: a start-up grows with the impacts) as many times more steps per contact, in at most MAX_TIMING_ROUNDS;
+    a row saying 'not resolved' where it never is. timed(scene, rung label) -> (wall timings, start-up timings)."""
+    e_n = scene.e_n[0]
+    rung = timing_rung(rows, engine, dialect, e_n)
+    if rung is None:
+        return
+    per_copy = len(scene.impacts(e_n)[0])
+    count, scale, tried = max(1, math.ceil(FIRST_IMPACTS / per_copy)), 1, []
+    while True:
+        label = rung["rung"] if scale == 1 else str(int(rung["rung"]) * scale)
+        walls, starts = timed(copies(scene, e_n, count), label)
+        wall, start = fastest(walls), (fastest(starts) if starts else (0.0, 0.0))
+        net, noise = wall[0] - start[0], float(np.nansum([wall[1], start[1]]))
+        tried.append(f"{count * per_copy} at {label}")
+        if resolved(net, noise) or len(tried) >= MAX_TIMING_ROUNDS or not np.isfinite(net):
+            break
+        need = min(max(math.ceil(max(MIN_NET_S, RESOLVE_RATIO * noise) * 1.5 / net) if net > noise else GROWTH, 2),
+                   GROWTH)
+        if count * per_copy < MAX_TIMING_IMPACTS:
+            count = min(count * need, max(1, MAX_TIMING_IMPACTS // per_copy))
+        elif finer and int(rung["rung"]) * scale * need <= MAX_STEPS_PER_CONTACT:
+            scale *= need
+        else:
+            break
+    timed_rung = {"rung": label, "steps_per_contact": rung["steps_per_contact"] * scale, "dt": rung["dt"] / scale}
+    rows.append(step_time_row(law_name, engine, dialect, e_n, timed_rung, count, count * per_copy,
+                              count * rung["steps"] * scale, wall, start, "; ".join(tried)))
+    step(progress, f"{engine} ({dialect}): time per impact-step")
+
+
+def repeated(once, least=2):
+    """TIMING_REPEATS timings of `once()` (seconds), no fewer than `least`, fewer when one takes LONG_RUN_S."""
+    walls = []
+    for _ in range(TIMING_REPEATS):
+        walls.append(once())
+        if not np.isfinite(walls[-1]) or (walls[-1] > LONG_RUN_S and len(walls) >= least):
+            break
+    return walls
+
+
+def reference_timer(law):
+    """timed(scene, rung) of the reference solver running `law` at a rung of steps per contact (no start-up)."""
+    return lambda scene, rung: (repeated(lambda: float(reference(law, scene, int(rung)).wall_s.sum())), [])
+
+
+def converged_timer(law, adaptive):
+    """timed(scene, rung) of the converged mode's rungs: the adaptive integrator at 'tol X' or the graded ladder."""
+    def once(scene, rung):
+        frame = simulate_adaptive(law, scene, float(rung[4:])) if adaptive else simulate_extrapolated(law, scene,
+                                                                                                      int(rung))
+        return float(frame.wall_s.sum())
+    return lambda scene, rung: (repeated(lambda: once(scene, rung)), [])
+
+
+def engine_timer(engine, law, options):
+    """timed(scene, rung) of an engine: its batched run at the rung and the same run stopped after its first check."""
+    def timed(scene, rung):
+        run = engine_runs(engine, law, scene, int(rung), options)[0]
+        def once(run):
+            table, failed = execute([run])
+            return np.nan if failed else float(table.wall_s.sum(min_count=1))
+        return repeated(lambda: once(run)), repeated(lambda: once(replace(run, step_cap=STARTUP_STEPS)))
+    return timed
+
+
 def converged_curve(rows, law, scene, ladder, truth):
     """The converged mode's own rungs as a curve: the adaptive integrator's tolerances where it covers the law,
-    else the graded Richardson ladder."""
+    else the graded Richardson ladder; True for the adaptive integrator."""
     if law.integrator == "paper" and covered(law, scene):
         adaptive_curve(rows, law, scene, truth)
-    else:
-        extrapolated_curve(rows, law, scene, ladder, truth)
+        return True
+    extrapolated_curve(rows, law, scene, ladder, truth)
+    return False
 
 
 def adaptive_curve(rows, law, scene, truth):
@@ -164,7 +256,7 @@ def cost_table(law, scene, engines, ladder=LADDER, keep=None, progress=None, cac
     campaign store) when given (timed runs never are: a stored run has no time to give)."""
     rungs = len(ladder_rungs(ladder, scene))
     if progress:
-        progress.expect(3 + rungs + len(engines) * (2 + 2 * rungs))
+        progress.expect(5 + rungs + len(engines) * (4 + 2 * rungs))
     warm = scene.__class__(e_n=(0.5,), angles_deg=(10.0,))
     simulate(law, warm, steps_per_contact=10)                 # compile outside timing: the kernel,
     simulate(law, warm, converged=True)                       # and the adaptive integrator or graded ladder
@@ -172,8 +264,11 @@ def cost_table(law, scene, engines, ladder=LADDER, keep=None, progress=None, cac
     truth, uncertainty["paper"] = truth_of(law, scene, cache)
     step(progress, "converged reference of the paper law")
     reference_curve(rows, law, scene, ladder, truth, progress=progress)
-    converged_curve(rows, law, scene, ladder, truth)
+    step_time(rows, law.name, "reference", law.dialect, scene, reference_timer(law), progress)
+    adaptive = converged_curve(rows, law, scene, ladder, truth)
     step(progress, "the converged mode's own rungs")
+    step_time(rows, law.name, "reference", ADAPTIVE if adaptive else EXTRAPOLATED, scene,
+              converged_timer(law, adaptive), progress, finer=not adaptive)
     converged_rows(rows, law, simulate(law, scene, converged=True)[0], truth)
     step(progress, "the converged mode")
     for name, (engine, options) in engines.items():
@@ -181,5 +276,29 @@ def cost_table(law, scene, engines, ladder=LADDER, keep=None, progress=None, cac
         dialect_truth, uncertainty[name] = truth_of(dialect, scene, cache)
         step(progress, f"converged reference of {name}'s formulas")
         reference_curve(rows, dialect, scene, ladder, dialect_truth, progress=progress)
+        step_time(rows, law.name, "reference", dialect.dialect, scene, reference_timer(dialect), progress)
         engine_curve(rows, engine, law, dialect, scene, ladder, dialect_truth, options, failures, progress)
-    return pd.DataFrame(rows, columns=COLUMNS), failures, uncertainty
+        step_time(rows, law.name, engine.NAME, dialect.dialect, scene, engine_timer(engine, law, options), progress)
+    return priced(pd.DataFrame(rows, columns=COLUMNS)), failures, uncertainty
+
+
+MAX_RUNGS = 30                              # each rung runs every curve at every e_n, timed up to 3 times
+MAX_LADDER_STEPS = 2 * MAX_STEPS_PER_CONTACT    # the rungs together: two runs at the finest resolution allowed
+
+
+def check_ladder(rungs, shown=None):
+    """The ladder's rungs (whole steps per contact) if >= 1, ascending, no repeats; at most MAX_RUNGS rungs, each at
+    most MAX_STEPS_PER_CONTACT (every resolution's bound) and MAX_LADDER_STEPS together, so that the study ends."""
+    shown = shown if shown is not None else ",".join(map(str, rungs))
+    if not rungs or min(rungs) < 1 or list(rungs) != sorted(set(rungs)):
+        raise UserError(f"--ladder needs ascending whole numbers >= 1 without repeats, got {shown!r}")
+    if len(rungs) > MAX_RUNGS:
+        raise UserError(f"--ladder may have at most {MAX_RUNGS} rungs (each runs every curve at every e_n, timed up "
+                        f"to {TIMING_REPEATS} times), got {len(rungs)}")
+    if rungs[-1] > MAX_STEPS_PER_CONTACT:
+        raise UserError(f"--ladder rungs must be at most {MAX_STEPS_PER_CONTACT:.0e} steps per contact (the bound of "
+                        f"every resolution), got {rungs[-1]}")
+    if sum(rungs) > MAX_LADDER_STEPS:
+        raise UserError(f"--ladder rungs may add up to at most {MAX_LADDER_STEPS:.0e} steps per contact (the work of "
+                        f"two runs at the finest resolution allowed), got {sum(rungs):.3g}")
+    return tuple(rungs)

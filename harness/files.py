@@ -48,13 +48,22 @@ def discard(path):
 def write_text(path, text):
     """Write `text` to `path` atomically, with the permissions a plain open() would give; only a new path or a
     regular file is written."""
+    return _write(path, text, {"mode": "w", "encoding": "utf-8", "newline": ""})
+
+
+def write_bytes(path, data):
+    """Write `data` (bytes) to `path` as write_text writes text."""
+    return _write(path, data, {"mode": "wb"})
+
+
+def _write(path, data, how):
     path = os.fspath(path)
     refuse_unless_regular(path)
     directory = os.path.dirname(os.path.abspath(path))
     fd, tmp = tempfile.mkstemp(prefix=f".{os.path.basename(path)}-", suffix=".tmp", dir=directory)
     try:
-        with os.fdopen(fd, "w", encoding="utf-8", newline="") as handle:
-            handle.write(text)
+        with os.fdopen(fd, **how) as handle:
+            handle.write(data)
         umask = os.umask(0)
         os.umask(umask)
         os.chmod(tmp, 0o666 & ~umask)

@@ -5,6 +5,7 @@ from collections.abc import Mapping
 from functools import partial
 from numbers import Integral, Real
 
+import os
 import sys
 
 import numpy as np
@@ -61,6 +62,25 @@ def as_whole(name, value, optional=False):
     if not isinstance(value, Integral) or isinstance(value, (bool, np.bool_)):
         _refuse(name, "a whole number (int)" + (" or None" if optional else ""), value)
     return int(value)
+
+
+def as_wholes(name, value, optional=False):
+    """A list, tuple or 1-d array of whole numbers as a tuple of ints; None where `optional`."""
+    if value is None and optional:
+        return None
+    if not isinstance(value, SEQUENCES) or (isinstance(value, np.ndarray) and value.ndim != 1) or not all(
+            isinstance(v, Integral) and not isinstance(v, (bool, np.bool_)) for v in value):
+        _refuse(name, "a list of whole numbers" + (" or None" if optional else ""), value)
+    return tuple(int(v) for v in value)
+
+
+def as_path(name, value, optional=False):
+    """A file or directory path (a string or os.PathLike) as a string; None where `optional`."""
+    if value is None and optional:
+        return None
+    if not isinstance(value, (str, os.PathLike)):
+        _refuse(name, "a path (a string or pathlib.Path)" + (" or None" if optional else ""), value)
+    return os.fspath(value)
 
 
 def as_flag(name, value):

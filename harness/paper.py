@@ -15,7 +15,9 @@ from .scene import DEFAULT_EN, Scene
 from .analyses.published import published_distances
 from .analyses.sliding import threshold_table
 from .sliding_search import sliding_thresholds
+from .solver.batch import MAX_STEPS_PER_CONTACT
 from .solver.simulate import simulate
+from .errors import UserError
 
 NORMAL_EN = tuple(sorted(set(np.round(np.arange(0.1, 0.951, 0.05), 6)) | set(DEFAULT_EN)))
 
@@ -72,3 +74,19 @@ def figure_set(laws=tuple(LAWS), steps_per_contact=2000, progress=None):
         if progress:
             progress.advance(f"sliding threshold of {name}")
     return oblique, normal, pd.concat(sliding, ignore_index=True), published_distances(oblique)
+
+
+def checked(laws, steps_per_contact, shown=None):
+    """The laws of the figure set (None: every law), each known, and a resolution of 100 to MAX_STEPS_PER_CONTACT
+    steps per contact (coarser draws the paper's figures visibly wrong)."""
+    laws = tuple(LAWS) if laws is None else tuple(laws)
+    unknown = [n for n in laws if n not in LAWS]
+    if unknown or not laws:
+        given = ", ".join(unknown) or repr(list(laws) if shown is None else shown)
+        raise UserError(f"unknown law(s) {given}; known: {', '.join(LAWS)}")
+    if steps_per_contact < 100:
+        raise UserError(f"--steps-per-contact must be >= 100 for the paper's figures, got {steps_per_contact}")
+    if steps_per_contact > MAX_STEPS_PER_CONTACT:
+        raise UserError(f"--steps-per-contact must be at most {MAX_STEPS_PER_CONTACT:.0e} (the bound of every "
+                        f"resolution), got {steps_per_contact}")
+    return laws

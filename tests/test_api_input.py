@@ -39,7 +39,7 @@ WRONG_TYPES = [   # (keywords, the keyword the message must name)
     (dict(engine_options=3), "engine_options"), (dict(engine_options=[("liggghts", "limitForce")]), "engine_options"),
     (dict(tolerances="velocity=0.02"), "tolerances"), (dict(tolerances=3), "tolerances"),
     (dict(tolerances=[3]), "tolerances"), (dict(tolerances={"velocity": "0.02"}), "tolerances"),
-    (dict(bogus=1), "bogus"),
+    (dict(bogus=1), "bogus"), (dict(overrides={"end": "tension"}), "overrides"),
 ]
 COMPARE_ONLY = ("engines", "engine_options", "tolerances")
 
@@ -78,7 +78,6 @@ WRONG_VALUES = [   # right types, values refused with the bound or the contradic
     (dict(engines=["liggghts", "liggghts"]), "--engines"),
     (dict(engines=["reference"], engine_options={"reference": {"foo": "bar"}}), "reference option"),
     (dict(engines=["yade"], engine_options={"liggghts": {"limitForce": "on"}}), "liggghts"),
-    (dict(with_={"end": "tension"}, overrides={"end": "tension"}), "with_ or overrides"),
 ]
 
 

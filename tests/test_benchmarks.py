@@ -22,6 +22,7 @@ SMOKES = {
     "bench_engine_batch.py": (["liggghts"], r"RATIO separate/batched: [\d.]+x \(identical results: True\)", True),
     "bench_campaign.py": ([], r"cached rerun\s+[\d.]+ s\s+ran 0 of \d+", True),
     "bench_calibrate.py": (["liggghts"], r"RATIO calibrate/compare \(medians\): [\d.]+", True),
+    "bench_startup.py": ([], r"--help\s+[\d.]+ /\s+[\d.]+\s+[\d.]+ /\s+[\d.]+", False),
     "bench_commands.py": ([], r"compare --model hertz-mindlin\s+[\d.]+ /\s+[\d.]+\s+[\d.]+ /\s+[\d.]+\s+1", True),
 }
 

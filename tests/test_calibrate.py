@@ -53,8 +53,8 @@ def test_lammps_tsuji_given_the_calibrated_e_returns_the_target_in_the_engine(tm
     if record["version"].startswith(("2021", "2022", "2023")):
         assert "not in this build: damping=coeff_restitution" in said
     assert sorted(os.listdir(out)) == sorted(
-        ["alternatives.csv", "attribution.csv", "calibration.json", "inputs.csv", "report.html", "results.csv",
-         "stages.csv", "timestep.csv", "variation.csv"] +
+        ["alternatives.csv", "attribution.csv", "calibration.json", "figures", "inputs.csv", "report.html",
+         "results.csv", "stages.csv", "timestep.csv", "variation.csv"] +
         [f"lammps-hertz-mindlin-en{e:g}-calibrated.in" for e in (0.3, 0.6, 0.95)])
     tried = pd.read_csv(out / "alternatives.csv").set_index("options")
     tuned = [o for o in tried.index if o.startswith("with:tangential-damping=")]       # LAMMPS' x_gamma_t, searched
@@ -141,6 +141,7 @@ def test_from_python_the_calibration_is_data(tmp_path):
     c = harness.calibrate("hertz-mindlin", "liggghts", en=[0.5], angles=[10, 40])
     assert list(c.inputs.e_n_target) == [0.5] and 0.0 < c.inputs.input_e.iloc[0] <= 1.0
     assert {"formulas, e as given", "formulas, calibrated", "engine, calibrated"} == set(c.stages.stage)
+    assert len(repr(c)) < 600 and repr(c).count("\n") <= 4 and "liggghts" in repr(c)
     with pytest.raises(TypeError):
         harness.calibrate("hertz-mindlin", 3, en=[0.5])
     with pytest.raises(ValueError):

@@ -64,11 +64,11 @@ def test_an_engine_that_disagrees_with_its_formulas_exits_1(tmp_path, capsys, mo
 
 
 def test_an_internal_error_exits_4_with_its_traceback(tmp_path, capsys, monkeypatch):
-    import harness.commands.run as run_command
+    import harness.api as api            # `harness run` imports run_request from it when it runs
 
     def broken(request, **keywords):
         raise ZeroDivisionError("a bug")
-    monkeypatch.setattr(run_command, "run_request", broken)
+    monkeypatch.setattr(api, "run_request", broken)
     code = main(["run", "--model", "thornton", *SMALL, "-o", str(tmp_path / "r.csv")])
     err = capsys.readouterr().err
     assert code == 4 and "ZeroDivisionError: a bug" in err and "internal error" in err.splitlines()[-1]

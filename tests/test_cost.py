@@ -1,8 +1,10 @@
 """`harness cost`: errors against the converged reference, orders of convergence, recommendations, refusals, the
 engines' curves against their dialects, and the CLI and report."""
+import json
 import math
 import subprocess
 import sys
+from html.parser import HTMLParser
 from pathlib import Path
 
 import numpy as np
@@ -194,8 +196,9 @@ def test_engine_curve_is_its_dialects_curve():
     table, failures, _ = cost_table(compose("linear-spring-dashpot"), scene, {"liggghts": (LIGGGHTS, {})},
                                     ladder=(20, 50, 100, 200, 500))
     assert failures == []
-    engine = table[table.engine == "liggghts"].set_index("rung")
-    dialect = table[(table.engine == "reference") & (table.dialect == "liggghts")].set_index("rung")
+    ran = table[table.rung != "per impact-step"]                  # the timing runs have no errors
+    engine = ran[ran.engine == "liggghts"].set_index("rung")
+    dialect = ran[(ran.engine == "reference") & (ran.dialect == "liggghts")].set_index("rung")
     for metric in ("err_e_n", "err_e_t", "err_omega_star", "err_t_contact"):
         assert np.allclose(engine[metric], dialect.loc[engine.index, metric], rtol=0, atol=1e-6), metric
     n = engine.steps_per_contact            # observed peak: the largest per-step sample, below the parabola's
@@ -218,7 +221,7 @@ def test_bad_ladder_is_one_line_and_exit_2(tmp_path, ladder):
 def test_cli_writes_cost_csv_and_a_report_that_rebuilds(tmp_path):
     out = tmp_path / "c"
     proc = run_cli("cost", "--model", "thornton", "--engines", "liggghts", "--en", "0.5", "--angles", "0,40",
-                   "--ladder", "20,100", "-o", str(out))
+                   "--ladder", "20,100", "-o", str(out), "--verbose")
     assert proc.returncode == 0, proc.stderr
     assert "recommended time step" in proc.stdout and "order of convergence" in proc.stdout
     table = pd.read_csv(out / "cost.csv", dtype={"rung": str})
@@ -249,8 +252,8 @@ def test_an_interrupted_study_keeps_its_rows_and_reports(tmp_path, monkeypatch):
                  "--ladder", "20,100", "-o", str(out)])
     assert code == 130
     table = pd.read_csv(out / "cost.csv", dtype={"rung": str})
-    assert set(table.rung) == {"20", "100", "rayleigh", "converged"}     # the paper's dashpot: the ladder's rungs
-    assert set(table.dialect) == {"paper", EXTRAPOLATED}                 # start at 20 and 100 too
+    assert set(table.rung) == {"20", "100", "rayleigh", "converged", "per impact-step"}   # the paper's dashpot:
+    assert set(table.dialect) == {"paper", EXTRAPOLATED}                 # the ladder's rungs start at 20 and 100 too
     assert set(table.engine) == {"reference"}
     assert "what accuracy costs in time" in Path(rebuild(str(out))).read_text()
 
@@ -262,3 +265,111 @@ def _truth_then(truth_of, then):
         calls.append(1)
         return truth_of(*args, **kwargs) if len(calls) == 1 else then()
     return wrapped
+
+
+def strict_json(text):
+    """json.loads that refuses NaN and infinities (RFC 8259)."""
+    def refuse(constant):
+        raise ValueError(f"not strict JSON: {constant}")
+    return json.loads(text, parse_constant=refuse)
+
+
+class Page(HTMLParser):
+    """The report's tags checked to close in order (void elements aside), and its text and links collected."""
+    VOID = {"meta", "br", "img", "hr", "input", "link", "col", "area", "base", "wbr", "source", "path", "rect",
+            "circle", "line", "polyline", "polygon", "use", "stop", "ellipse"}
+
+    def __init__(self):
+        super().__init__()
+        self.stack, self.text, self.links, self.errors = [], [], [], []
+
+    def handle_starttag(self, tag, attrs):
+        if tag == "a":
+            self.links.append(dict(attrs).get("href"))
+        if tag not in self.VOID:
+            self.stack.append(tag)
+
+    def handle_startendtag(self, tag, attrs):
+        pass
+
+    def handle_endtag(self, tag):
+        if tag in self.VOID:
+            return
+        if not self.stack or self.stack[-1] != tag:
+            self.errors.append(f"</{tag}> closes {self.stack[-1:] or 'nothing'}")
+            return
+        self.stack.pop()
+
+    def handle_data(self, data):
+        self.text.append(data)
+
+
+@pytest.fixture(scope="module")
+def all_engines_cost(tmp_path_factory):
+    """One cost study with every installed engine on a small scene: its stdout (default and --json) and directory."""
+    out = tmp_path_factory.mktemp("cost") / "c"
+    proc = run_cli("cost", "--model", "hertz-mindlin", "--en", "0.5", "--angles", "10,40", "--ladder", "20,100,500",
+                   "-o", str(out))
+    as_json = run_cli("cost", "--model", "hertz-mindlin", "--en", "0.5", "--angles", "10,40", "--ladder", "20,100",
+                      "--engines", "liggghts", "--json", "-o", str(out.parent / "j"))
+    return proc, as_json, out
+
+
+@needs("liggghts")
+@needs("yade")
+@needs("lammps")
+def test_cost_answers_per_engine_within_40_by_120(all_engines_cost):
+    """Default printout: at most 40 lines of 120 columns; every engine that ran has a time per impact-step in cost.csv
+    (a positive number marked resolved, or an explicit 'not resolved'), in the printout and on the page; the page
+    closes every tag, links its CSVs and marks the 20%-of-Rayleigh rule."""
+    proc, _, out = all_engines_cost
+    assert proc.returncode == 0, proc.stderr
+    lines = proc.stdout.splitlines()
+    assert len(lines) <= 40 and max(map(len, lines)) <= 120, (len(lines), max(map(len, lines)))
+    table = pd.read_csv(out / "cost.csv", dtype={"rung": str})
+    timing = table[table.rung == "per impact-step"].set_index(["engine", "dialect"])
+    engines = set(table.engine) - {"reference"}
+    assert engines == {"liggghts", "yade", "lammps"}
+    for engine in engines:
+        row = timing.loc[(engine, engine)]
+        assert row.timing in ("resolved", "not resolved")
+        if row.timing == "resolved":             # net time above 3x its noise and 0.2 s, per impact-step positive
+            assert row.net_wall_s >= 0.2 and 0 < row.s_per_impact_step < 1e-3
+            assert np.isfinite(table[(table.engine == engine) & table.rung.str.fullmatch(r"\d+")].s_per_impact).all()
+        else:
+            assert np.isnan(row.s_per_impact_step) and "not resolved" in proc.stdout
+        assert any(line.strip().startswith(engine) for line in lines), engine
+    page = Page()
+    page.feed((out / "report.html").read_text())
+    assert page.errors == [] and page.stack == []
+    text = " ".join(page.text)
+    assert {"cost.csv", "cost-truth.csv"} <= set(page.links)
+    assert "20% T_R" in text and "20% of the Rayleigh time" in text
+    verdict = text[text.index("What accuracy costs per impact"):text.index("Files:")]
+    for engine in engines:
+        assert engine in verdict
+
+
+@needs("liggghts")
+def test_cost_json_is_strict_and_has_the_verdict(all_engines_cost):
+    """`cost --json` parses without NaN or Infinity (null instead) and names each curve's time per impact-step."""
+    _, as_json, _ = all_engines_cost
+    assert as_json.returncode == 0, as_json.stderr
+    found = strict_json(as_json.stdout)
+    assert {row["engine"] for row in found["verdict"]} == {"paper scheme", "liggghts"}
+    assert all(row["timing"] in ("resolved", "not resolved") for row in found["step_times"])
+    assert any(value is None for row in found["recommendations"] for value in row.values())   # was NaN
+
+
+@needs("liggghts")
+def test_compare_json_is_strict(tmp_path):
+    proc = run_cli("compare", "--model", "hertz-mindlin", "--engines", "liggghts", "--en", "0.5", "--angles", "0,40",
+                   "--json", "-o", str(tmp_path / "c"))
+    assert proc.returncode in (0, 1), proc.stderr
+    strict_json(proc.stdout)
+
+
+def test_strict_json_writes_null_for_nan_and_infinity():
+    from harness.views.strict_json import dumps
+    assert strict_json(dumps({"a": float("nan"), "b": [np.inf, np.float64(-np.inf), np.int64(3)]})) == \
+        {"a": None, "b": [None, None, 3]}

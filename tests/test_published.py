@@ -174,7 +174,7 @@ def test_compare_report_overlays_only_where_the_paper_applies():
         comparison = harness.compare("hertz-mindlin", engines=[], en=[0.5], angles=[20, 40, 60], mu=mu,
                                      steps_per_contact=200)
         context = compare_context(comparison)
-        assert sum(svg_ids(svg, "published-points") for _, svg in context["figures"]) == expected, mu
+        assert sum(svg_ids(svg, "published-points") for _, svg, _ in context["figures"]) == expected, mu
         distances = context["published"]
         assert (distances is not None) == bool(expected)
         if distances:

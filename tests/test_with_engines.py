@@ -4,7 +4,7 @@ refused with the reason (named in --engines) or skipped with it (not named)."""
 import pytest
 
 from conftest import agreement, needs
-from harness.api import compare
+from harness import compare
 from harness.commands import main
 from harness.engines import ENGINES
 from harness.errors import UserError

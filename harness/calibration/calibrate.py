@@ -21,9 +21,9 @@ GIVEN, CALIBRATED, RUN = "formulas, e as given", "formulas, calibrated", "engine
 SPEEDS, RADII = (0.5, 1.0, 2.0), (0.5, 1.0, 2.0)       # the scene's speed and radius times these: the variation
 
 
-@dataclass
+@dataclass(repr=False)
 class Calibration:
-    """Everything `harness calibrate` reports, data first (views draw it)."""
+    """Everything `harness calibrate` reports, data first (views draw it); its repr is a few lines."""
     engine: str
     law: object
     scene: object
@@ -45,6 +45,12 @@ class Calibration:
     failures: list = field(default_factory=list)
     skipped: str = ""                   # why the engine did not run, when it did not
     version: str = ""                   # of the engine build calibrated
+
+    def __repr__(self):
+        states = ", ".join(f"{stage}: {p['state']}" for stage, p in self.physics.items())
+        return (f"<Calibration of {self.law.name} for {self.engine}: advised steps per contact {self.advice.steps}"
+                f"\n chosen {self.chosen.label}\n {states}" + (f"\n skipped: {self.skipped}" if self.skipped else "")
+                + "\n .inputs .stages .physics .advice .confirmed .variation>")
 
 
 def calibrate(engine, law, scene, steps=1000, tolerances=None, timestep_tolerance=1e-2, run_engine=True):

@@ -81,7 +81,7 @@ def run_campaign(campaign, store, executor, no_cache=False, progress=None):
 
     def on_done(i, frame, log_tail):
         key, run = todo[i]
-        store.put(key, frame, log_tail)
+        store.put(key, frame, log_tail, run.scene)
         if (frame.status == "failed").any():
             summary.failed += 1
         if progress:

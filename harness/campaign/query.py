@@ -15,9 +15,19 @@ import pyarrow.parquet as pq
 
 from ..errors import UserError
 from .fragments import KEY
+from .store import SCENE
 from .limits import MAX_QUERY_BYTES, MAX_QUERY_S, MAX_RESULT_BYTES, MAX_ROWS, QUERY_GROWTH_MB, QUERY_MEMORY_MB
 
 VIEW = "results"
+DEVIATIONS = "deviations"
+SAME_SCENE = ("model", "e_n_target", "theta_deg", "mu", "radius", "E", "nu", "rho", "omega0", "steps_per_contact",
+              "v_n0", "v_t0", "material", "wall", "target", "speed")
+DEVIATION_SQL = (   # each engine's own-formula row against the paper law's on the same impact
+    f"CREATE VIEW {DEVIATIONS} AS SELECT e.engine, " + ", ".join(f"e.{c}" for c in SAME_SCENE) + ", "
+    "abs(e.e_n - p.e_n) AS d_e_n, abs(e.e_t - p.e_t) AS d_e_t, abs(e.omega_star - p.omega_star) AS d_omega_star "
+    f"FROM {VIEW} e JOIN {VIEW} p ON " + " AND ".join(f"e.{c} IS NOT DISTINCT FROM p.{c}" for c in SAME_SCENE)
+    + " WHERE p.engine = 'reference' AND p.dialect = 'paper' AND p.status = 'ok' AND e.engine <> 'reference' "
+    "AND e.dialect = e.engine AND e.status = 'ok'")
 LOCKED = {"enable_external_access": False, "autoinstall_known_extensions": False,
           "autoload_known_extensions": False, "python_enable_replacements": False,
           "memory_limit": f"{QUERY_MEMORY_MB}MB", "threads": 1}
@@ -48,7 +58,8 @@ def first_line(exc):
 
 
 def connection(store):
-    """An in-memory DuckDB connection, locked down, whose view `results` is the store with each task once."""
+    """An in-memory DuckDB connection, locked down, whose view `results` is the store with each task once and whose
+    view `deviations` pairs each engine's row (its own formulas) with the paper law's on the same impact."""
     import duckdb
     copies = {name: keys for name, keys in store.copies().items() if keys}
     if not copies:
@@ -72,7 +83,10 @@ def connection(store):
                                                      filesystem=local))
         db.register(f"store_keys_{i}", pa.table({KEY: sorted(copies[name])}))
         parts.append(f"SELECT * FROM store_partial_{i} WHERE {KEY} IN (SELECT {KEY} FROM store_keys_{i})")
-    db.execute(f"CREATE VIEW {VIEW} AS " + " UNION ALL BY NAME ".join(parts))
+    missing = "".join(f", NULL::{'DOUBLE' if c == 'speed' else 'VARCHAR'} AS {c}" for c in SCENE
+                      if c not in schema.names)          # a store written before its rows held their scene's columns
+    db.execute(f"CREATE VIEW {VIEW} AS SELECT *{missing} FROM (" + " UNION ALL BY NAME ".join(parts) + ")")
+    db.execute(DEVIATION_SQL)
     return db
 
 

@@ -6,6 +6,8 @@ import math
 
 from ..engines import ENGINES
 from ..errors import UserError
+from ..request import TARGETS
+from ..scene import WALLS
 from .limits import MAX_LIST
 
 
@@ -180,7 +182,9 @@ FILE = Table({
     "engine_options": TableOf(TableOf(Text(), expected='a table of KEY = "VALUE"'), keys=ENGINES,
                               expected="a table of engines"),
     "e_n": NUMBERS, "angles": NUMBERS, "psi": NUMBERS, "vt": NUMBERS, "speeds": NUMBERS, "normal_speeds": NUMBERS,
-    "spins": NUMBERS, "dt": NUMBERS,
+    "spins": NUMBERS, "dt": NUMBERS, "mus": NUMBERS, "radii": NUMBERS,
+    "walls": ListOf(Text(WALLS), f"an array of walls ({', '.join(WALLS)})"),
+    "targets": ListOf(Text(TARGETS), f"an array of targets ({', '.join(TARGETS)})"),
     "materials": ListOf(MATERIAL, "an array of preset names or tables, e.g. [\"tcc13\", {radius = 0.01, E = 1e9, "
                                   "nu = 0.3, rho = 2500, mu = 0.3}]"),
     "steps_per_contact": ListOf(Whole(), "an array of whole numbers >= 1, e.g. [1000]"),

@@ -14,12 +14,14 @@ from .limits import MAX_FILE_BYTES, MAX_TASKS
 from .reading import read_regular
 from .schema import validated
 
+SCENE_LISTS = (("mus", "mu"), ("radii", "radius"), ("walls", "wall"), ("targets", "target"))   # file key, keyword
 BLOCK = 20000                     # reference impacts per task: a few seconds of kernel time at 1000 steps/contact
 
 
 @dataclass(frozen=True)
 class Campaign:
-    """The matrix: one Request per (law variant, material, speed, spin, resolution), every e_n and angle in each."""
+    """The matrix: one Request per (law variant, material, mu, radius, wall, target, speed, spin, resolution), every
+    e_n and angle in each."""
     name: str
     requests: tuple
     engines: tuple                # asked for by name, in the file's order
@@ -53,6 +55,11 @@ def from_dict(data, name="campaign"):
     if len(sweeps) > 1:
         raise UserError(f"campaign {name}: give one of angles, psi, vt")
     materials = [m if isinstance(m, dict) else {"material": m} for m in data.get("materials", ["tcc13"])]
+    for key, field in SCENE_LISTS[:2]:
+        if key in data and any(field in m for m in materials):
+            raise UserError(f"campaign {name}: give {field} in materials or {key}, not both")
+    scenes = [dict(pairs) for pairs in itertools.product(
+        *([(field, v) for v in data[key]] for key, field in SCENE_LISTS if key in data))]
     speeds = ([("speed", v) for v in data.get("speeds", [])]
               + [("normal_speed", v) for v in data.get("normal_speeds", [])]) or [None]
     resolutions = ([dict(steps_per_contact=n) for n in data.get("steps_per_contact", [])]
@@ -62,16 +69,16 @@ def from_dict(data, name="campaign"):
     block = data.get("block", BLOCK)
     impacts = len(next(iter(sweeps.values()), DEFAULT_ANGLES))
     external = sum(engine != "reference" for engine in set(engines))
-    bound = (len(variants) * len(materials) * len(speeds) * len(spins) * len(resolutions) * len(e_n)
+    bound = (len(variants) * len(materials) * len(scenes) * len(speeds) * len(spins) * len(resolutions) * len(e_n)
              * ((1 + external) * -(-impacts // block) + external))
     if bound > MAX_TASKS:
-        raise UserError(f"campaign {name}: up to {bound} tasks (law variants x materials x speeds x spins x "
-                        f"resolutions x e_n x runs per engine); at most {MAX_TASKS} are taken: split the campaign")
+        raise UserError(f"campaign {name}: up to {bound} tasks (law variants x materials x mu x radii x walls x "
+                        f"targets x speeds x spins x resolutions x e_n x runs per engine); at most {MAX_TASKS} are taken: split the campaign")
     options = {engine: dict(o) for engine, o in data.get("engine_options", {}).items()}
     requests = []
-    for (law, overrides), material, speed, spin, resolution in itertools.product(
-            variants, materials, speeds, spins, resolutions):
-        keywords = {**material, **sweeps, "en": e_n, "omega0": spin, **resolution}
+    for (law, overrides), material, scene, speed, spin, resolution in itertools.product(
+            variants, materials, scenes, speeds, spins, resolutions):
+        keywords = {**material, **scene, **sweeps, "en": e_n, "omega0": spin, **resolution}
         if speed is not None:
             keywords[speed[0]] = speed[1]
         requests.append(Request.from_keywords(law, engines=list(engines), engine_options=options, with_=overrides,

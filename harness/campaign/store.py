@@ -21,7 +21,9 @@ from ..results import COLUMNS, TEXT
 from .fragments import KEY, LOG_TAIL, Damaged, is_fragment, keys_of
 from .reading import kind_of
 
-STRINGS = TEXT + (KEY, LOG_TAIL)
+SCENE = ("material", "wall", "target", "speed")   # what a task's scene adds to its rows (the swept parameters
+#                                                 the results columns leave out)
+STRINGS = TEXT + (KEY, LOG_TAIL, "material", "wall", "target")
 DROP = "--drop-damaged"
 DROP_HELP = "remove the store's damaged fragments (named when found) so that their tasks rerun"
 
@@ -30,10 +32,21 @@ class DamagedStore(UserError):
     """A store with a fragment that cannot be read: which one and why, and how to drop it."""
 
 
-def tidy(frame, key, log_tail=""):
+def scene_columns(scene):
+    """The columns SCENE of a task's scene: the preset its material starts from (a table's values are in radius,
+    E, nu, rho, mu), its wall, its target (wall or sphere) and its impact speed as given [m/s] (resultant, or
+    normal with normal_speeds)."""
+    if scene is None:
+        return {}
+    return {"material": scene.material, "wall": scene.wall, "target": "sphere" if scene.spheres else "wall",
+            "speed": scene.speed}
+
+
+def tidy(frame, key, log_tail="", scene=None):
     """A task's rows in the store's schema: every results column (floats as float64, words as strings), its key,
-    and the log tail of a failed task."""
+    the log tail of a failed task, and the columns SCENE of its scene (blank when not given)."""
     out = frame.reindex(columns=list(COLUMNS)).assign(**{KEY: key, LOG_TAIL: log_tail})
+    out = out.assign(material="", wall="", target="", speed=np.nan).assign(**scene_columns(scene))
     for column in out.columns:
         if column in STRINGS:
             out[column] = out[column].fillna("").astype(str)
@@ -134,10 +147,11 @@ class Store:
             raise
         self.held[name] = frozenset(frame[KEY].unique())
 
-    def put(self, key, frame, log_tail=""):
-        """Store one task's rows (status 'failed' rows with the log tail for a task that failed)."""
+    def put(self, key, frame, log_tail="", scene=None):
+        """Store one task's rows (status 'failed' rows with the log tail for a task that failed), with its scene's
+        columns."""
         failed = (frame.status == "failed").any()
-        self._write(f"{'failed' if failed else 'part'}-{key}.parquet", tidy(frame, key, log_tail))
+        self._write(f"{'failed' if failed else 'part'}-{key}.parquet", tidy(frame, key, log_tail, scene))
         if not failed:
             self._remove(f"failed-{key}.parquet")
 
@@ -186,11 +200,11 @@ class Store:
         for name in sorted(self.held, key=rank):
             if key in self.held[name] and not name.startswith("failed-"):
                 rows = self.read(name, filters=[(KEY, "==", key)])
-                return rows.drop(columns=[KEY, LOG_TAIL]).reset_index(drop=True)
+                return rows.drop(columns=[KEY, LOG_TAIL, *SCENE], errors="ignore").reset_index(drop=True)
         return None
 
     def put_run(self, run, frame):
-        self.put(run_key(run), frame)
+        self.put(run_key(run), frame, scene=run.scene)
 
     def table(self):
         """The whole store as one table, each task's rows once."""

@@ -14,27 +14,65 @@ from .stopping import Stopped, stop_behind, stop_on_signals
 EXIT_CLOSED_OUTPUT = 128 + signal.SIGPIPE
 
 
-def describe(sub, name, summary, example, exit_codes=EXIT_CODES):
+COMMANDS = {   # name -> (its module, its summary): the parser lists every command but imports the chosen one's alone
+    "models": ("models", "the laws, their sub-models and the engines that support each"),
+    "engines": ("engines", "every engine and build found here (pick one with --engines ENGINE@VERSION)"),
+    "run": ("run", "simulate one law over a scene with the reference solver, write a results CSV"),
+    "compare": ("compare", "the paper law against each engine and its dialect; tables, results.csv, report.html"),
+    "calibrate": ("calibrate", "the engine inputs that bring an engine nearest the paper law on a scene, and the time "
+                               "step a tolerance needs"),
+    "cost": ("cost", "accuracy against time: a ladder of steps per contact for the paper law, each engine's dialect "
+                     "and each engine; cost.csv and the report"),
+    "paper": ("paper", "the paper's figure set: Psi2*, Omega*, e_t against Psi1* per law at its e_n, contact duration "
+                       "and peak force against e_n, where each law slides throughout"),
+    "benchmark": ("benchmark", "a published verification suite (Chung & Ooi 2011's eight tests) on the reference and "
+                               "the engines: every quantity against its closed form"),
+    "compile": ("compile", "compile every kernel the commands use into the numba cache now, so that no first run "
+                           "waits for it"),
+    "render": ("render", "write an engine's input deck/script for the scene without running it"),
+    "report": ("report", "rebuild DIR/report.html from a compare or cost directory, simulating nothing"),
+    "check": ("check", "recompute the baseline matrix; exit 1 listing every metric outside tolerance"),
+    "baseline": ("check", "rewrite the committed baseline matrix on purpose"),
+    "campaign": ("campaign", "run a matrix of comparisons from a TOML file into a Parquet store that resumes"),
+    "query": ("query", "one read-only SQL query over a campaign store (DuckDB; the store is the view `results`)"),
+    "cite": ("cite", "print BibTeX for harness, the paper it follows and the benchmark it runs"),
+}
+
+
+def describe(sub, name, example, exit_codes=EXIT_CODES):
     """A sub-command whose --help carries its summary, an example and its exit codes (the common ones unless a
     command gives its own)."""
+    summary = COMMANDS[name][1]
     return sub.add_parser(name, help=summary, description=summary[0].upper() + summary[1:] + ".",
                           epilog=f"example:\n  {example}\n\n{exit_codes}",
                           formatter_class=argparse.RawDescriptionHelpFormatter)
 
 
-def build_parser():
+def chosen_command(argv):
+    """The command a command line names: its first word that is not an option (harness' own options take no
+    value), or None."""
+    return next((word for word in argv if not word.startswith("-")), None)
+
+
+def build_parser(chosen=None):
+    """The parser: the commands in `chosen` (None: every one) built in full from their modules, the others by name
+    and summary alone, so that `harness --help`, `--version` and a typo import no command's dependencies."""
+    import importlib
     from ..engines import EXTERNAL
-    from . import (benchmark, calibrate, campaign, check, compare, cost, engines, models, paper, query, render, report,
-                   run)
     parser = Parser(prog="harness", formatter_class=argparse.RawDescriptionHelpFormatter,
                     description="Cross-validate DEM contact force models against the literature (Thornton, Cummins "
                                 f"& Cleary 2013) and against the engines {', '.join(EXTERNAL)}.",
                     epilog=f"example:\n  harness compare --model hertz-mindlin\n\n{EXIT_CODES}")
     parser.add_argument("--version", action="version", version=f"harness {__version__}")
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND", parser_class=Parser)
-    for module in (models, engines, run, compare, calibrate, cost, paper, benchmark, render, report, check, campaign,
-                   query):
-        module.add(sub, describe)
+    full = {module for name, (module, _) in COMMANDS.items() if chosen is None or name in chosen}
+    loaded = set()
+    for name, (module, summary) in COMMANDS.items():
+        if module not in full:
+            sub.add_parser(name, help=summary, add_help=False)
+        elif module not in loaded:          # a module adds every command it holds (check.py: check and baseline)
+            loaded.add(module)
+            importlib.import_module(f"{__name__}.{module}").add(sub, describe)
     return parser
 
 
@@ -98,12 +136,13 @@ def interrupted(stop, args, since):
 def main(argv=None):
     """Parse, run one command, return its exit code; a user's mistake is one line and 2, Ctrl-C is 130, a closed
     output ends it quietly with 141 (128 + SIGPIPE, as a shell reports a Unix tool stopped by its closed pipe)."""
-    from ..engines.runner import sweep_stale
     args, since = None, time.time() - 1.0
     restore_signals = stop_on_signals()
     try:
+        argv = sys.argv[1:] if argv is None else argv
+        args = build_parser({chosen_command(argv)}).parse_args(argv)
+        from ..engines.runner import sweep_stale
         sweep_stale()
-        args = build_parser().parse_args(argv)
         show_log(quiet=getattr(args, "quiet", False))
         return args.func(args)
     except KeyboardInterrupt as exc:

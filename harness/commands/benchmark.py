@@ -1,17 +1,18 @@
 """`harness benchmark chung-ooi`: Chung & Ooi (2011)'s eight tests on the reference and the engines; a CSV and a page."""
-import json
 import os
 import sys
 
 from ..engines import ENGINES
-from ..errors import UserError
-from ..lock import exclusive
+from ..lock import LOCK, exclusive
 from ..results import write_csv
-from ..verification.chung_ooi import LAW, run_suite, verdict
-from ..views.chung_ooi_html import CSV, summary, write_chung_ooi_report
+from ..verification.chung_ooi import LAW, known_engines, run_suite, verdict
+from ..views.chung_ooi_html import CSV, PAGE, summary, write_chung_ooi_report
+from ..views.figure_files import FIGURES
 from ..views.progress import Progress
 from ..views.terminal import text_table
-from .options import EXIT_DISAGREE, EXIT_ENGINE, EXIT_OK, add_output_options, check_output_directory
+from ..views import strict_json
+from .options import (EXIT_DISAGREE, EXIT_ENGINE, EXIT_OK, add_output_options, check_entries,
+                      check_output_directory)
 
 EXAMPLE = "harness benchmark chung-ooi --engines reference,liggghts -o chung-ooi/"
 SUITES = ("chung-ooi",)
@@ -28,8 +29,7 @@ EXIT_CODES = """exit codes:
 
 
 def add(sub, describe):
-    p = describe(sub, "benchmark", "a published verification suite (Chung & Ooi 2011's eight tests) on the reference "
-                                   "and the engines: every quantity against its closed form", EXAMPLE, EXIT_CODES)
+    p = describe(sub, "benchmark", EXAMPLE, EXIT_CODES)
     p.add_argument("suite", choices=SUITES, help="the suite: chung-ooi")
     p.add_argument("--engines", default=None, metavar="LIST",
                    help=f"comma-separated engines of {', '.join(ENGINES)} (default: every one; those missing are "
@@ -52,11 +52,10 @@ def exit_code(ok, checked, could_not_run):
 def main(args):
     """chung-ooi.csv and chung-ooi.html in DIR; the exit code of EXIT_CODES."""
     named = args.engines is not None
-    engines = tuple(ENGINES) if not named else tuple(n.strip() for n in args.engines.split(",") if n.strip())
-    unknown = [n for n in engines if n not in ENGINES]
-    if unknown or not engines:
-        raise UserError(f"unknown engine(s) {', '.join(unknown) or args.engines!r}; known: {', '.join(ENGINES)}")
+    engines = known_engines(None if not named else tuple(n.strip() for n in args.engines.split(",") if n.strip()),
+                            args.engines)
     check_output_directory(args.output)
+    check_entries(args.output, (CSV, PAGE, LOCK), (FIGURES,))
     with Progress("benchmark chung-ooi", quiet=args.quiet or args.json) as progress:
         table = run_suite(engines, progress=progress)
     with exclusive(args.output):
@@ -67,7 +66,7 @@ def main(args):
     failed = sorted(set(table[table.quantity == "failed"].engine))
     code = exit_code(ok, checked, missing + failed)
     if args.json:
-        print(json.dumps({"ok": ok, "exit_code": code, "passed": passed, "failed": checked - passed,
+        print(strict_json.dumps({"ok": ok, "exit_code": code, "passed": passed, "failed": checked - passed,
                           "checked": checked, "could_not_run": missing + failed,
                           "engines": summary(table).to_dict("records"), "csv": os.path.join(args.output, CSV),
                           "report": path}, indent=1, default=str))

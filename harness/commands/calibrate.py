@@ -9,6 +9,7 @@ from ..files import write_text
 from ..request import Request
 from ..views.calibration_html import write_calibration_report
 from ..views.terminal import print_calibration
+from ..views.figure_files import FIGURES
 from .options import (EXIT_ENGINE, EXIT_OK, add_output_options, add_scene_options, check_entries,
                       check_output_directory, keywords, number)
 
@@ -16,8 +17,7 @@ EXAMPLE = "harness calibrate --model hertz-mindlin --engine lammps --en 0.25,0.5
 
 
 def add(sub, describe):
-    p = describe(sub, "calibrate", "the engine inputs that bring an engine nearest the paper law on a scene, and the "
-                 "time step a tolerance needs", EXAMPLE)
+    p = describe(sub, "calibrate", EXAMPLE)
     p.add_argument("--model", required=True, help="law name (see `harness models`)")
     p.add_argument("--engine", required=True, help=f"the engine to calibrate ({', '.join(EXTERNAL)}, or a build "
                                                     "ENGINE@VERSION)")
@@ -37,7 +37,7 @@ def main(args):
     engine = get_engine(request.engines[0])
     check_timestep_tolerance(args.timestep_tolerance)
     check_output_directory(args.output)
-    check_entries(args.output, [RECORD, "report.html"] + [f"{name}.csv" for name in TABLES])
+    check_entries(args.output, [RECORD, "report.html"] + [f"{name}.csv" for name in TABLES], (FIGURES,))
     calibration = calibrate_request(request, engine, timestep_tolerance=args.timestep_tolerance)
     os.makedirs(args.output, exist_ok=True)
     texts = rendered(save(calibration, args.output), engine)

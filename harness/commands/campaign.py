@@ -1,6 +1,5 @@
 """`harness campaign FILE`: a matrix of comparisons from a TOML file, run in-process or on Dask into a
 content-addressed Parquet store that a rerun resumes; `--dry-run` says what it would run and what is cached."""
-import json
 import os
 import sys
 import tempfile
@@ -12,17 +11,18 @@ from ..campaign.limits import max_workers
 from ..campaign.slurm import forget_credentials, preflight, shell_safe, slurm_cluster, slurm_options
 from ..campaign.spec import load
 from ..campaign.store import DROP, DROP_HELP, Store
+from ..campaign.sweeps import sweeps
 from ..errors import UserError
 from ..files import refuse_unless_regular
 from ..lock import exclusive
-from ..views.campaign_html import write_campaign_report
+from ..views.campaign_html import figures_folder, write_campaign_report
 from ..views.progress import Progress
-from .options import EXIT_ENGINE, EXIT_OK, add_output_options, check_output_directory
+from ..views import strict_json
+from .options import EXIT_ENGINE, EXIT_OK, add_output_options, check_entries, check_output_directory
 
 
 def add(sub, describe):
-    p = describe(sub, "campaign", "run a matrix of comparisons from a TOML file into a Parquet store that resumes",
-                 "harness campaign examples/campaign.toml -o campaign-store --executor dask")
+    p = describe(sub, "campaign", "harness campaign examples/campaign.toml -o campaign-store --executor dask")
     p.add_argument("file", metavar="FILE", help="the campaign (TOML; examples/campaign.toml)")
     p.add_argument("-o", "--output", default="campaign-store", metavar="STORE",
                    help="the store directory (default %(default)s); its report is STORE.html")
@@ -68,7 +68,8 @@ def main(args):
                 store = Store(args.output)              # again, now that this process is its only writer
                 where = where or executor(args.executor, args.workers, slurm=slurm, shared=args.output)
                 summary = run_campaign(campaign, store, where, args.no_cache, progress)
-                page = write_campaign_report(store.table(), report_path, campaign.name)
+                table = store.table()
+                page = write_campaign_report(table, report_path, campaign.name, sweeps(store, table), args.output)
         finally:
             if where is not None:
                 where.close()
@@ -95,12 +96,14 @@ def refuse_contradictions(args):
 
 def check_store_path(path):
     """The store directory and its report: writable, no empty path component (`/scratch/$USER/store` with USER
-    unset), the report a new path or a regular file; returns the report's path."""
+    unset), the report a new path or a regular file, its figures' folder a new path or a directory; returns the
+    report's path."""
     check_output_directory(path)
     if "//" in path.rstrip("/"):
         raise UserError(f"store path {path} has an empty component (an unset variable?)")
     report_path = path.rstrip("/") + ".html"
     refuse_unless_regular(report_path)
+    check_entries(os.path.dirname(os.path.abspath(report_path)), (), (figures_folder(report_path),))
     return report_path
 
 
@@ -123,7 +126,7 @@ def report(args, summary, page, dry=False):
     """Print the summary (or one JSON object); exit 3 when a task failed or an engine asked for was skipped."""
     code = EXIT_ENGINE if summary.failed or summary.skipped else EXIT_OK
     if args.json:
-        print(json.dumps({**summary.as_dict(), "store": args.output, "report": page, "dry_run": dry,
+        print(strict_json.dumps({**summary.as_dict(), "store": args.output, "report": page, "dry_run": dry,
                           "exit_code": code}, indent=1))
         return code
     if not args.quiet:

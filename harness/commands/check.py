@@ -1,5 +1,4 @@
 """`harness check` and `harness baseline --update`: the regression check against the committed baseline."""
-import json
 
 from ..baseline import DEFAULT_BASELINE, check, update
 from ..request import engines_asked
@@ -7,6 +6,7 @@ from ..campaign.store import DROP, DROP_HELP, RunCache, Store
 from ..errors import UserError
 from ..views.progress import Progress
 from ..views.terminal import text_table, wrapped
+from ..views import strict_json
 from .options import EXIT_DISAGREE, EXIT_OK, add_output_options, engines_from
 
 PIN_HELP = ("engine builds to run instead of the defaults, e.g. lammps@2023.8.2 (`harness engines` lists them); a "
@@ -14,8 +14,7 @@ PIN_HELP = ("engine builds to run instead of the defaults, e.g. lammps@2023.8.2 
 
 
 def add(sub, describe):
-    p = describe(sub, "check", "recompute the baseline matrix; exit 1 listing every metric outside tolerance",
-                 "harness check")
+    p = describe(sub, "check", "harness check")
     p.add_argument("--baseline", default=DEFAULT_BASELINE, metavar="DIR",
                    help="baseline directory (default: the committed one, shipped with harness)")
     p.add_argument("--store", metavar="STORE", help="a campaign store: runs it holds (computed by this very code: "
@@ -24,8 +23,7 @@ def add(sub, describe):
     p.add_argument("--engines", default=None, metavar="LIST", help=PIN_HELP)
     add_output_options(p, json=True)
     p.set_defaults(func=main)
-    p = describe(sub, "baseline", "rewrite the committed baseline matrix on purpose",
-                 "harness baseline --update --baseline baselines")
+    p = describe(sub, "baseline", "harness baseline --update --baseline baselines")
     p.add_argument("--update", action="store_true", help="required: rewriting expectations is deliberate")
     p.add_argument("--baseline", default=DEFAULT_BASELINE, metavar="DIR", help="baseline directory")
     p.add_argument("--engines", default=None, metavar="LIST", help="engine builds to run instead of the defaults")
@@ -57,7 +55,7 @@ def main(args):
         failures, skipped, releases = check(args.baseline, progress=progress, cache=cache, engines=engines)
     code = EXIT_OK if failures.empty else EXIT_DISAGREE
     if args.json:
-        print(json.dumps({"ok": failures.empty, "exit_code": code, "baseline": args.baseline, "skipped": skipped,
+        print(strict_json.dumps({"ok": failures.empty, "exit_code": code, "baseline": args.baseline, "skipped": skipped,
                           "releases": releases, "outside_tolerance": failures.to_dict("records")}, indent=1,
                          default=str))
         return code

@@ -1,6 +1,5 @@
 """`harness compare`: the paper law, each engine's dialect and each engine on one scene; tables, CSVs, report."""
 import datetime
-import json
 import os
 import shlex
 import sys
@@ -21,6 +20,7 @@ from ..results import write_csv
 from ..views.html import rebuild
 from ..views.progress import Progress
 from ..views.terminal import print_comparison, print_summary, verdict_line
+from ..views import strict_json
 from .options import (EXIT_DISAGREE, EXIT_ENGINE, EXIT_OK, add_engine_options, add_output_options,
                       add_scene_options, check_results_directory, check_store, keywords)
 
@@ -28,8 +28,7 @@ EXAMPLE = "harness compare --model hertz-mindlin --engines liggghts --en 0.5 --r
 
 
 def add(sub, describe):
-    p = describe(sub, "compare", "the paper law against each engine and its dialect; tables, results.csv, report.html",
-                 EXAMPLE)
+    p = describe(sub, "compare", EXAMPLE)
     p.add_argument("--model", required=True, help="law name (see `harness models`)")
     add_engine_options(p)
     add_scene_options(p)
@@ -87,7 +86,7 @@ def main(args):
     reference_only = request.engines is not None and set(request.engines) == {"reference"}
     code = exit_code(record, reference_only, args.require)
     if args.json:
-        print(json.dumps({**record, "exit_code": code, "files": {"results": results_path, "report": report}},
+        print(strict_json.dumps({**record, "exit_code": code, "files": {"results": results_path, "report": report}},
                          indent=1, default=str))
         return code
     if args.verbose:

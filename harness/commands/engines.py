@@ -7,8 +7,7 @@ from .options import EXIT_OK
 
 
 def add(sub, describe):
-    p = describe(sub, "engines", "every engine and build found here (pick one with --engines ENGINE@VERSION)",
-                 "harness engines --json")
+    p = describe(sub, "engines", "harness engines --json")
     p.add_argument("--json", action="store_true", help="one machine-readable list")
     p.set_defaults(func=main)
 

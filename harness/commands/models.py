@@ -8,7 +8,7 @@ from .options import EXIT_OK
 
 
 def add(sub, describe):
-    p = describe(sub, "models", "the laws, their sub-models and the engines that support each", "harness models --json")
+    p = describe(sub, "models", "harness models --json")
     p.add_argument("--json", action="store_true", help="one machine-readable list")
     p.set_defaults(func=main)
 

@@ -8,7 +8,6 @@ import sys
 
 from ..errors import UserError
 from ..files import refuse_unless_regular
-from ..scene import DEFAULT_EN
 
 EXIT_OK, EXIT_DISAGREE, EXIT_USAGE, EXIT_ENGINE, EXIT_INTERNAL, EXIT_INTERRUPTED = 0, 1, 2, 3, 4, 130
 EXIT_CODES = """exit codes:
@@ -104,6 +103,7 @@ def engine_option(text):
 def add_scene_options(parser, resolution=True):
     """Options that describe the scene, the law's sub-models, the engines' options and (unless the command sets its
     own) the time step."""
+    from ..scene import DEFAULT_EN          # numpy's: when a command with a scene is parsed, not for `harness --help`
     g = parser.add_argument_group("scene")
     g.add_argument("--en", type=number_list, default=DEFAULT_EN, metavar="LIST",
                    help="target normal restitution coefficients, e.g. 0.9,0.5,0.1 (default: the paper's "
@@ -254,12 +254,14 @@ def check_entries(directory, files=(), directories=()):
 
 def check_results_directory(directory):
     """A compare's or cost study's -o DIR: a directory whose entries (the tables, run records and report that
-    `compare`, `cost` and `report` write or read, the lock, the partial runs) may all be written."""
+    `compare`, `cost` and `report` write or read, the lock, the partial runs, the figures' folder) may all be
+    written."""
     from ..lock import LOCK
     from ..outputs import DIRECTORY_FILES
     from ..partial import PARTIAL
+    from ..views.figure_files import FIGURES
     check_output_directory(directory)
-    check_entries(directory, DIRECTORY_FILES + (LOCK,), (PARTIAL,))
+    check_entries(directory, DIRECTORY_FILES + (LOCK,), (PARTIAL, FIGURES))
 
 
 def writable(directory, path):

@@ -10,8 +10,7 @@ from .options import EXIT_OK
 
 
 def add(sub, describe):
-    p = describe(sub, "query", "one read-only SQL query over a campaign store (DuckDB; the store is the view "
-                 "`results`)", "harness query campaign-store \"SELECT engine, max(abs(e_t)) FROM results GROUP BY "
+    p = describe(sub, "query", "harness query campaign-store \"SELECT engine, max(abs(e_t)) FROM results GROUP BY "
                  "engine\"")
     p.add_argument("store", metavar="STORE")
     p.add_argument("sql", metavar="SQL", help="one SELECT (or WITH, DESCRIBE, SHOW, SUMMARIZE); nothing that writes, "

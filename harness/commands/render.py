@@ -15,7 +15,7 @@ EXAMPLE = "harness render --model hertz-mindlin --engine liggghts --en 0.5 -o de
 
 
 def add(sub, describe):
-    p = describe(sub, "render", "write an engine's input deck/script for the scene without running it", EXAMPLE)
+    p = describe(sub, "render", EXAMPLE)
     p.add_argument("--model", help="law name (see `harness models`)")
     p.add_argument("--engine", help=f"the engine whose input to write ({', '.join(EXTERNAL)})")
     p.add_argument("--calibration", metavar="FILE", help="a calibration.json of `harness calibrate`: its engine's "

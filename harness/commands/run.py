@@ -1,15 +1,11 @@
 """`harness run`: one law over a scene on the reference solver; a results CSV."""
-from ..api import run_request
-from ..request import Request
-from ..results import write_csv
-from ..views.progress import Progress
 from .options import EXIT_OK, add_output_options, add_scene_options, check_output_file, keywords
 
 EXAMPLE = "harness run --model thornton --en 0.9,0.5,0.1 --angles 0:80:10 -o results.csv"
 
 
 def add(sub, describe):
-    p = describe(sub, "run", "simulate one law over a scene with the reference solver, write a results CSV", EXAMPLE)
+    p = describe(sub, "run", EXAMPLE)
     p.add_argument("--model", required=True, help="law name (see `harness models`)")
     add_scene_options(p)
     p.add_argument("-o", "--output", required=True, help="results CSV to write")
@@ -18,6 +14,12 @@ def add(sub, describe):
 
 
 def main(args):
+    from ..laws import get_law
+    get_law(args.model)             # an unknown law is refused before the solver loads
+    from ..api import run_request
+    from ..request import Request
+    from ..results import write_csv
+    from ..views.progress import Progress
     request = Request.from_keywords(args.model, **keywords(args))
     check_output_file(args.output)
     with Progress(f"run {request.model}", quiet=args.quiet) as progress:

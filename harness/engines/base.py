@@ -11,7 +11,6 @@ from functools import lru_cache
 from ..errors import UserError
 from ..laws import compose
 from ..laws.law import replace_submodels
-from .batches import run_grouped
 from .builds import sha256
 from .executable import banner, chosen, missing, present
 from .protocol import Status, check_options as check_declared
@@ -233,6 +232,7 @@ class Engine:
     def run(self, runs):
         """Each run of the plan (one batch: a law, an e_n, every impact) as (results frame, failure or None), each
         told what to run by run.spec; the runs of one flavour share processes, one per core."""
+        from .batches import run_grouped        # loaded by harness.before_threads; here, not when engines are listed
         return run_grouped(self.NAME, self.build(), runs, self.INPUT_NAME,
                            lambda run: self.render_batch(run.law, run.scene, run.spec, run.options_dict, run.observe),
                            lambda run: self.flavour(run.options_dict), self.run_inputs,

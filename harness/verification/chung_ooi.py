@@ -11,6 +11,7 @@ import pandas as pd
 from scipy.integrate import quad
 
 from ..engines import ENGINES
+from ..errors import UserError
 from ..execute import run_all
 from ..laws import compose
 from ..plan import engine_runs, reference_runs
@@ -253,3 +254,13 @@ def verdict(table):
     checked = table[table.passed.notna()]
     passed = int((checked.passed == True).sum())     # noqa: E712 (a column of True/False/None)
     return passed == len(checked) and len(checked) > 0, passed, len(checked)
+
+
+def known_engines(engines, shown=None):
+    """The engines to run the suite on (None: every one), each a known name."""
+    engines = tuple(ENGINES) if engines is None else tuple(engines)
+    unknown = [n for n in engines if n not in ENGINES]
+    if unknown or not engines:
+        given = ", ".join(unknown) or repr(list(engines) if shown is None else shown)
+        raise UserError(f"unknown engine(s) {given}; known: {', '.join(ENGINES)}")
+    return engines

@@ -9,6 +9,7 @@ import numpy as np
 from ..files import write_text
 from ..render import environment
 from ..version import __version__
+from .figure_files import filed, one
 from .pieces import figure_svg, records
 
 STAGE_STYLES = {"paper": ("black", "-", "paper law"), "formulas, e as given": ("tab:red", ":", None),
@@ -78,10 +79,12 @@ def write_calibration_report(calibration, out_dir, inputs):
         verdict=records(verdict_rows(c)), stages=records(c.stages), inputs=records(c.inputs),
         alternatives=records(c.alternatives), attribution=records(c.attribution), refused=c.refused,
         ladder=records(advice.ladder), variation=records(c.variation), files=inputs,
-        figures=[("e_t against Psi1*", paper_figure(c.frame, "e_t", "e_t")),
-                 ("Omega* against Psi1*", paper_figure(c.frame, "omega_star", "Omega*"))],
-        variation_figure=variation_figure(c.variation) if np.isfinite(c.variation.input_e.astype(float)).any()
-        else None, advice=advice, confirmed=c.confirmed)
+        figures=filed(out_dir, [("e_t against Psi1*", paper_figure(c.frame, "e_t", "e_t"), "calibration-e_t-vs-psi1"),
+                                ("Omega* against Psi1*", paper_figure(c.frame, "omega_star", "Omega*"),
+                                 "calibration-omega-vs-psi1")]),
+        variation_figure=one(out_dir, "input e against target e_n", variation_figure(c.variation),
+                             "calibration-input-e-vs-e_n")
+        if np.isfinite(c.variation.input_e.astype(float)).any() else None, advice=advice, confirmed=c.confirmed)
     path = os.path.join(out_dir, "report.html")
     write_text(path, page)
     return path

@@ -1,13 +1,19 @@
-"""The campaign report: one HTML page over a whole store, data first: where each engine agrees with its formulas
-(worst relative difference per law and scene), and how far it deviates from the paper law, as maps of the e_t
-difference over e_n x impact angle per engine and law (the worst over the other dimensions of the matrix)."""
+"""The campaign report: one HTML page over a whole store, data first: each metric (e_n, e_t, Omega*) and each
+engine's deviation from the paper law against each swept parameter, as figures (also SVG and PDF files) over tables
+that `harness query` reproduces with the SQL shown; where each engine agrees with its formulas (worst relative
+difference per law and scene); maps of the e_t difference over e_n x impact angle per engine and law."""
 import html
+import os
 
 import numpy as np
 import pandas as pd
 
 from ..analyses.agreement import AGREEMENT_TOLERANCE, agreement
+from ..citation import doc_link
 from ..files import write_text
+from .drawing import draw_all
+from .figure_files import filed
+from .pieces import figure_svg
 
 SCENE = ["model", "radius", "E", "nu", "rho", "mu", "omega0", "steps_per_contact"]
 
@@ -46,6 +52,11 @@ def deviation_maps(table, metric="e_t"):
     return maps
 
 
+def figures_folder(path):
+    """The folder, beside the page, of its figures' files: STORE-figures for STORE.html."""
+    return os.path.basename(path)[:-len(".html")] + "-figures"
+
+
 def _cell(value, high):
     if not np.isfinite(value):
         return "<td></td>"
@@ -61,17 +72,118 @@ def _map_html(title, grid):
     return (f"<h3>{html.escape(title)}</h3><table><tr><th>e_n \\ angle [deg]</th>{head}</tr>{body}</table>")
 
 
-def write_campaign_report(table, path, name):
-    """Write the page to `path` from the store's table; returns the path."""
+def _positions(values):
+    """x positions of a parameter's values: the numbers themselves, or 0, 1, ... for words (with their ticks)."""
+    if pd.api.types.is_numeric_dtype(values):
+        return values.astype(float).to_numpy(), None
+    order = sorted(values.astype(str).unique())
+    return values.astype(str).map(order.index).to_numpy(float), order
+
+
+def _axes(count, width=3.4):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(1, count, figsize=(width * count, 3.4), squeeze=False, layout="constrained")
+    return plt, fig, axes[0]
+
+
+def metric_figure(table, parameter, label, metric, metric_label):
+    """`metric` against `parameter`, one panel per e_n: per law, engine and dialect the mean over the other
+    dimensions of the matrix (line) and their range (band)."""
+    groups = list(table.groupby("e_n_target", sort=True))
+    plt, fig, axes = _axes(len(groups))
+    for ax, (e_n, group) in zip(axes, groups):
+        for (model, engine, dialect), rows in group.groupby(["model", "engine", "dialect"], sort=True):
+            x, ticks = _positions(rows[parameter])
+            order = np.argsort(x)
+            line, = ax.plot(x[order], rows[f"mean_{metric}"].to_numpy()[order], marker="o", ms=3,
+                            label=f"{model}, {engine} ({dialect})")
+            ax.fill_between(x[order], rows[f"min_{metric}"].to_numpy()[order], rows[f"max_{metric}"].to_numpy()[order],
+                            color=line.get_color(), alpha=0.15, lw=0)
+            if ticks:
+                ax.set_xticks(range(len(ticks)), ticks)
+        ax.set(xlabel=label, ylabel=metric_label, title=f"e_n = {e_n:g}")
+        ax.grid(alpha=0.3)
+    axes[-1].legend(fontsize=6.5)
+    svg = figure_svg(fig)
+    plt.close(fig)
+    return svg
+
+
+def deviation_figure(table, parameter, label):
+    """Each engine's worst deviation from the paper law against `parameter`: one panel per metric, one line per law,
+    engine and e_n."""
+    from ..campaign.sweeps import DEVIATION_METRICS
+    plt, fig, axes = _axes(len(DEVIATION_METRICS))
+    for ax, (column, words) in zip(axes, DEVIATION_METRICS.items()):
+        for (model, engine, e_n), rows in table.groupby(["model", "engine", "e_n_target"], sort=True):
+            x, ticks = _positions(rows[parameter])
+            order = np.argsort(x)
+            ax.plot(x[order], rows[f"worst_{column}"].to_numpy()[order], marker="o", ms=3,
+                    label=f"{model}, {engine}, e_n {e_n:g}")
+            if ticks:
+                ax.set_xticks(range(len(ticks)), ticks)
+        ax.set(xlabel=label, title=words)
+        ax.grid(alpha=0.3)
+    axes[0].set_ylabel("worst over the other dimensions")
+    axes[-1].legend(fontsize=6.5)
+    svg = figure_svg(fig)
+    plt.close(fig)
+    return svg
+
+
+def _table_html(frame):
+    return frame.to_html(index=False, float_format=lambda v: f"{v:.4g}", classes="sweep")
+
+
+def sweep_sections(sweeps, directory, folder, store):
+    """The HTML of each swept parameter: its figures (filed as SVG and PDF) over the tables and their SQL."""
+    from ..campaign.sweeps import METRICS
+    calls, entries = [], []
+    for sweep in sweeps:
+        for metric, words in METRICS.items():
+            entries.append((sweep, f"{words} against {sweep.label}", f"{metric}-vs-{sweep.parameter}"))
+            calls.append((metric_figure, (sweep.table, sweep.parameter, sweep.label, metric, words)))
+        if not sweep.deviation.empty:
+            entries.append((sweep, f"deviation from the paper law against {sweep.label}",
+                            f"deviation-vs-{sweep.parameter}"))
+            calls.append((deviation_figure, (sweep.deviation, sweep.parameter, sweep.label)))
+    drawn = filed(directory, [(title, svg, name) for (_, title, name), svg in zip(entries, draw_all(calls))], folder)
+    parts = []
+    for sweep in sweeps:
+        parameter = html.escape(sweep.parameter)
+        parts.append(f"<h2 id='against-{parameter}'>Against {html.escape(sweep.label)}</h2>")
+        parts += [f"<figure data-parameter='{parameter}'>{svg}<figcaption>{html.escape(title)}</figcaption></figure>"
+                  for (owner, _, _), (title, svg) in zip(entries, drawn) if owner is sweep]
+        for sql, frame, what in ((sweep.sql, sweep.table, "each metric's mean and range over the other dimensions"),
+                                 (sweep.deviation_sql, sweep.deviation, "each engine's worst deviation from the paper "
+                                                                        "law")):
+            if frame.empty:
+                continue
+            command = f'harness query {store} "{sql}"'
+            parts.append(f"<p>{what}: <code>{html.escape(command)}</code></p>")
+            parts.append(f"<div class='sweep' data-parameter='{parameter}' data-sql='{html.escape(sql)}'>"
+                         f"{_table_html(frame)}</div>")
+    return parts
+
+
+def write_campaign_report(table, path, name, sweeps=(), store=""):
+    """Write the page to `path` from the store's table and its sweeps (campaign.sweeps), the figures' files in
+    STORE-figures/ beside it; returns the path."""
     failed = table[table.status == "failed"]
     agree = agreement_table(table) if not table.empty else pd.DataFrame()
     parts = [f"<h1>Campaign {html.escape(name)}</h1>",
              f"<p>{len(table)} rows, {table.task_key.nunique()} tasks; laws: {', '.join(sorted(table.model.unique()))}; "
-             f"engines: {', '.join(sorted(table.engine.unique()))}; {failed.task_key.nunique()} failed tasks.</p>",
+             f"engines: {', '.join(sorted(table.engine.unique()))}; {failed.task_key.nunique()} failed tasks "
+             f"(what each part shows: {doc_link('campaigns.md')}).</p>",
+             "<p>Swept: " + (", ".join(html.escape(s.label) for s in sweeps) or "no scene parameter") + ".</p>",
+             *sweep_sections(sweeps, os.path.dirname(os.path.abspath(path)), figures_folder(path), store),
              "<h2>Agreement of each engine with its formulas (worst relative difference, tolerance "
              f"{AGREEMENT_TOLERANCE:g})</h2>", agree.to_html(index=False, float_format=lambda v: f"{v:.3g}")
              if not agree.empty else "<p>(no engine ran)</p>",
-             "<h2>Deviation from the paper law: |e_t(engine) - e_t(paper)|, worst over the matrix</h2>"]
+             "<h2>Deviation from the paper law over e_n x impact angle: |e_t(engine) - e_t(paper)|, the worst over the "
+             "other dimensions</h2>"]
     parts += [_map_html(f"{engine}, {law}", grid) for (engine, law), grid in sorted(deviation_maps(table).items())]
     if not failed.empty:
         parts.append("<h2>Failed tasks</h2>")

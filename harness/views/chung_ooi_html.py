@@ -7,10 +7,11 @@ from ..render import environment
 from ..verification import chung_ooi as suite
 from ..verification.chung_ooi_cases import TESTS
 from ..version import __version__
+from .figure_files import one
 from .pieces import figure_svg, records
 from .style import colour
 
-CSV = "chung-ooi.csv"
+CSV, PAGE = "chung-ooi.csv", "chung-ooi.html"
 
 
 def summary(table):
@@ -69,7 +70,8 @@ def write_chung_ooi_report(out_dir, table, command):
         curves = suite.curve_errors(table[table.test == number]).drop(columns="test")
         tests.append({"number": number, "title": title, "scene": scene, "expected": expected,
                       "rows": records(rows) or ([], []), "open": len(rows) <= 12, "curves": records(curves),
-                      "figure": sliding_figure(table, number) if number in (4, 5) else None})
+                      "figure": one(out_dir, title, sliding_figure(table, number),
+                                    f"chung-ooi-test-{number}-v_t-vs-angle") if number in (4, 5) else None})
     html = environment(autoescape=True).get_template("chung-ooi.html.j2").render(
         ok=ok, passed=passed, checked=checked, summary=records(summary(table)), tests=tests, command=command,
         version=__version__, date=datetime.datetime.now().strftime("%Y-%m-%d %H:%M"), csv=CSV, law=suite.LAW,
@@ -77,4 +79,4 @@ def write_chung_ooi_report(out_dir, table, command):
                                                    "restitution": f"{suite.RESTITUTION_TOLERANCE:g}",
                                                    "sliding": f"{suite.SLIDING_TOLERANCE:g}",
                                                    "psi": f"{suite.GROSS_SLIDING_PSI:g}"})
-    return write_text(os.path.join(out_dir, "chung-ooi.html"), html)
+    return write_text(os.path.join(out_dir, PAGE), html)

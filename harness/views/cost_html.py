@@ -3,9 +3,10 @@ import numpy as np
 
 from . import style
 from .drawing import draw_all
-from .pieces import figure_svg, records
-from ..analyses.cost import (ADAPTIVE, EXTRAPOLATED, METRICS, TOLERANCES, WITHIN_NOISE, convergence_orders, ladder_rows, per_rung,
-                   recommendations)
+from .pieces import figure_svg, number, records
+from ..analyses.cost import (ADAPTIVE, EXTRAPOLATED, METRICS, NOT_RESOLVED, TOLERANCES, convergence_orders, ladder_rows,
+                             per_rung, recommendations, step_times, verdict)
+from ..outputs import COST, COST_RUN, COST_TRUTH
 
 LABELS = {"e_n": "e_n", "e_t": "e_t", "omega_star": "Omega*", "t_contact": "contact time", "f_n_max": "peak force",
           "max": "worst metric"}
@@ -30,21 +31,26 @@ def _curves(cost):
 
 def cost_figure(cost, x_column, x_label, metrics):
     """One log-log panel per metric: error against `x_column`, one curve per engine and dialect; the 20%-Rayleigh
-    run as a diamond, the converged mode as a star, the 1%, 0.1%, 0.01% levels as grey lines."""
+    run as a diamond (and, against steps per contact, a vertical line), the converged mode as a star, the 1%, 0.1%,
+    0.01% levels as grey lines; one legend below; a curve whose time is not resolved is named on the panel."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, axes = plt.subplots(1, len(metrics), figsize=(3.7 * len(metrics), 3.6), squeeze=False, layout="constrained")
+    from matplotlib.ticker import LogLocator, NullFormatter
+    fig, axes = plt.subplots(1, len(metrics), figsize=(3.9 * len(metrics) + 0.6, 4.2), squeeze=False,
+                             layout="constrained")
+    handles = {}
     for ax, metric in zip(axes[0], metrics):
-        column = f"err_{metric}"
+        column, missing = f"err_{metric}", []
         for engine, dialect, ladder, rayleigh, converged in _curves(cost):
             data = ladder[np.isfinite(ladder[column]) & (ladder[column] > 0) & (ladder[x_column] > 0)]
-            if x_column == "net_wall_s":             # a time within the machine's noise is not a time
-                data = data[data.timing != WITHIN_NOISE]
             if data.empty:
+                if not ladder.empty:
+                    missing.append(style.label(engine, dialect))
                 continue
             line, = ax.plot(data[x_column], data[column], label=style.label(engine, dialect),
                             **curve_style(engine, dialect))
+            handles.setdefault(line.get_label(), line)
             for row in rayleigh.itertuples():
                 if getattr(row, column) > 0 and getattr(row, x_column) > 0:
                     ax.plot(getattr(row, x_column), getattr(row, column), "D", ms=7, mfc="none", color=line.get_color())
@@ -53,30 +59,66 @@ def cost_figure(cost, x_column, x_label, metrics):
                     ax.plot(getattr(row, x_column), getattr(row, column), "*", ms=11, color=line.get_color())
         for tol in TOLERANCES:
             ax.axhline(tol, color="0.6", lw=0.8, ls=":")
+        if x_column == "n":
+            rule = per_rung(cost)
+            rule = rule[(rule.rung == "rayleigh") & (rule.engine == "reference") & (rule.dialect == "paper")]
+            for n in rule.steps_per_contact:
+                ax.axvline(n, color="0.3", lw=0.9, ls="--")
+                ax.annotate(f"20% T_R\n({n:.3g}/contact)", (n, 1), xycoords=("data", "axes fraction"),
+                            xytext=(3, -3), textcoords="offset points", va="top", fontsize=7, color="0.3")
+        if missing:
+            ax.text(0.02, 0.02, "time not resolved: " + ", ".join(missing), transform=ax.transAxes, fontsize=7,
+                    color="#b22222", va="bottom")
         ax.set(xscale="log", yscale="log", title=LABELS[metric], xlabel=x_label)
-        ax.grid(alpha=0.3, which="both")
-    axes[0][0].set_ylabel("relative error")
-    axes[0][-1].plot([], [], "D", mfc="none", color="k", label="20% Rayleigh time")
-    axes[0][-1].plot([], [], "*", color="k", label="converged mode")
-    axes[0][-1].legend(fontsize=7)
+        for axis in (ax.xaxis, ax.yaxis):
+            axis.set_major_locator(LogLocator(base=10, numticks=5))
+            axis.set_minor_formatter(NullFormatter())
+        ax.grid(alpha=0.3, which="major")
+    axes[0][0].set_ylabel("relative error (worst e_n)")
+    marks = [plt.Line2D([], [], marker="D", mfc="none", color="k", ls="none", label="20% of the Rayleigh time"),
+             plt.Line2D([], [], marker="*", color="k", ls="none", label="converged mode")]
+    fig.legend(handles=[*handles.values(), *marks], loc="outside lower center", ncols=min(4, len(handles) + 2),
+               fontsize=7, frameon=False)
     svg = figure_svg(fig)
     plt.close(fig)
     return svg
 
 
+def timing_cells(cost):
+    """Each curve's time per impact-step as the page shows it: the seconds, or 'not resolved', and how it was timed."""
+    times = step_times(cost)
+    if times.empty:
+        return None
+    shown = times.assign(s_per_impact_step=[number(v) if v == v else NOT_RESOLVED for v in times.s_per_impact_step])
+    return records(shown.rename(columns={"s_per_impact_step": "s per impact-step", "message": "timed on"}))
+
+
+def verdict_cells(cost):
+    """The verdict box's rows (analyses.cost.verdict), a time not resolved said as such."""
+    verdicts = verdict(cost)
+    if verdicts.empty:
+        return None
+    verdicts["s/impact-step"] = [number(v) if v == v else NOT_RESOLVED for v in verdicts["s/impact-step"]]
+    return records(verdicts.drop(columns=["timing"]))
+
+
 def cost_section(cost, uncertainty, run):
     """Figures and tables of the cost section, from the cost table, the truth's uncertainty and the study's record."""
     model = run["model"]
-    titles, calls = zip(
-        (f"{model}: worst-metric error against wall time (start-up excluded)",
-         (cost_figure, (cost, "net_wall_s", "wall time [s]", ("max",)))),
-        (f"{model}: error of each metric against wall time (start-up excluded)",
-         (cost_figure, (cost, "net_wall_s", "wall time [s]", METRICS))),
+    titles, names, calls = zip(
+        (f"{model}: worst-metric error against time per impact (impact-steps x the curve's resolved time per "
+         f"impact-step)", f"{model}-worst-error-vs-time-per-impact",
+         (cost_figure, (cost, "s_per_impact", "time per impact [s]", ("max",)))),
+        (f"{model}: error of each metric against time per impact", f"{model}-errors-vs-time-per-impact",
+         (cost_figure, (cost, "s_per_impact", "time per impact [s]", METRICS))),
         (f"{model}: error of each metric against steps per contact (the adaptive curve: force evaluations)",
-         (cost_figure, (cost, "n", "steps or evaluations/contact", METRICS))))
-    figures = list(zip(titles, draw_all(list(calls))))
+         f"{model}-errors-vs-steps-per-contact", (cost_figure, (cost, "n", "steps or evaluations/contact", METRICS))))
+    figures = list(zip(titles, draw_all(list(calls)), names))
     refused = cost[cost.status == "refused"].drop_duplicates(["engine", "dialect", "rung"])
+    times = step_times(cost)
     return {"figures": figures, "recommendations": records(recommendations(cost)),
+            "verdict": verdict_cells(cost), "timings": timing_cells(cost),
+            "unresolved": list(times[times.timing == NOT_RESOLVED].engine), "files": (COST, COST_TRUTH, COST_RUN),
             "orders": records(convergence_orders(cost)),
             "refused": records(refused[["engine", "dialect", "rung", "message"]]),
             "table": records(cost.drop(columns=["model", "message"])),

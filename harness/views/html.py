@@ -17,6 +17,7 @@ from ..version import __version__
 from . import style
 from .cost_html import cost_section
 from .drawing import draw_all
+from .figure_files import filed
 from .paper_axes import (ANGLE_LABELS, PAPER_PANELS, PSI1_RANGE, draw_published, draw_rigid_body, in_window,
                          set_paper_axes)
 from .pieces import figure_svg, number, records, si
@@ -45,12 +46,22 @@ def run_facts(frame, arithmetic):
 
 
 def series_figure(frame, title, x, ys, thresholds=None, published=None):
-    """One panel per e_n; one curve per (engine, dialect) and y column, in the colours and line styles of
-    views.style. Against Psi1* the paper's axes and ranges, the rigid body's curve, where known the
-    sliding-throughout threshold of the paper law (dotted) and, with `published` (the law's name, where the paper's
-    published curves apply to the scene: digitised.published_curves_apply), the paper's points."""
+    """series_plot as inline SVG."""
     import matplotlib
     matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig = series_plot(frame, title, x, ys, thresholds, published)
+    svg = figure_svg(fig)
+    plt.close(fig)
+    return svg
+
+
+def series_plot(frame, title, x, ys, thresholds=None, published=None):
+    """A matplotlib Figure: one panel per e_n; one curve per (engine, dialect) and y column, in the colours and line
+    styles of views.style. Against Psi1* the paper's axes and ranges, the rigid body's curve, where known the
+    sliding-throughout threshold of the paper law (dotted) and, with `published` (the law's name, where the paper's
+    published curves apply to the scene: digitised.published_curves_apply), the paper's points. Drawn with pyplot's
+    backend as it is (a notebook's stays)."""
     import matplotlib.pyplot as plt
     paper = x == "psi1_star"
     beyond = {}
@@ -84,17 +95,15 @@ def series_figure(frame, title, x, ys, thresholds=None, published=None):
             ax.set_ylabel("")
     axes[0][-1].legend(fontsize=6.5)
     fig.suptitle(title)
-    svg = figure_svg(fig)
-    plt.close(fig)
-    return svg
+    return fig
 
 
-PANELS = (   # (title, x column, y columns)
-    ("Psi2*, the normalised rebound slip, against Psi1*", "psi1_star", ("psi2_star",)),
-    ("Omega*, the normalised rebound spin, against Psi1*", "psi1_star", ("omega_star",)),
-    ("e_t, the tangential restitution, against Psi1*", "psi1_star", ("e_t",)),
+PANELS = (   # (title, x column, y columns, file name)
+    ("Psi2*, the normalised rebound slip, against Psi1*", "psi1_star", ("psi2_star",), "psi2-vs-psi1"),
+    ("Omega*, the normalised rebound spin, against Psi1*", "psi1_star", ("omega_star",), "omega-vs-psi1"),
+    ("e_t, the tangential restitution, against Psi1*", "psi1_star", ("e_t",), "e_t-vs-psi1"),
     ("rebound angles of the centre (line) and the contact point (dots) against the impact angle", "theta_deg",
-     ("theta_r_com_deg", "theta_r_cp_deg")),
+     ("theta_r_com_deg", "theta_r_cp_deg"), "rebound-angles-vs-angle"),
 )
 
 
@@ -144,7 +153,11 @@ def write_report(out_dir, comparison=None, cost=None):
     env = environment(autoescape=True)
     cost_part = cost_section(*cost) if cost is not None else None
     files = sorted(name for name in os.listdir(out_dir) if name.endswith((".csv", ".json")))
-    context = {"compare": compare_context(comparison, files) if comparison is not None else None, "cost": cost_part,
+    compare = compare_context(comparison, files) if comparison is not None else None
+    for part in (compare, cost_part):
+        if part is not None:
+            part["figures"] = filed(out_dir, part["figures"])
+    context = {"compare": compare, "cost": cost_part,
                "conventions": CONVENTIONS, "files": files, "version": __version__, "dialect_styles": style.dialect_styles(),
                "title": comparison.law.name if comparison is not None else cost_part["model"]}
     html = env.get_template("report.html.j2").render(**context)
@@ -179,15 +192,16 @@ def compare_context(comparison, files=()):
     calls = []
     published = law.name if published_curves_apply(scene, law.name) else None
     if not oblique.empty:
-        for title, x, ys in PANELS:
-            figures.append(f"{law.name}: {title}")
+        for title, x, ys, name in PANELS:
+            figures.append((f"{law.name}: {title}", f"{law.name}-{name}"))
             calls.append((series_figure, (oblique, title, x, ys, sliding_lines(sliding), published)))
     normal_rows = paper[paper.theta_deg == 0.0]
     ratios = records(hertz_ratios(normal_rows, scene.contact, scene.speed)) if not normal_rows.empty else None
     if histories:
-        figures.append(f"{law.name}: normal impact, force against time and overlap (paper law)")
+        figures.append((f"{law.name}: normal impact, force against time and overlap (paper law)",
+                        f"{law.name}-normal-force-vs-time-and-overlap"))
         calls.append((force_figure, (histories, scene.contact, scene.speed)))
-    figures = list(zip(figures, draw_all(calls)))
+    figures = [(title, svg, name) for (title, name), svg in zip(figures, draw_all(calls))]
     summary = paper.groupby("e_n_target", sort=False).agg(
         e_n_min=("e_n", "min"), e_n_max=("e_n", "max"), e_t_min=("e_t", "min"), e_t_max=("e_t", "max"),
         t_contact_max=("t_contact", "max"), f_n_max=("f_n_max", "max"), ke_ratio_max=("ke_ratio", "max"),

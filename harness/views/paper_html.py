@@ -13,6 +13,7 @@ from ..figures import ELASTIC, PSI1_GRID
 from ..render import environment
 from ..version import __version__
 from .drawing import draw_all
+from .figure_files import filed
 from .paper_axes import PAPER_PANELS, draw_published, draw_rigid_body, set_paper_axes
 from .pieces import figure_svg, records
 
@@ -80,7 +81,9 @@ def write_paper_report(out_dir, oblique, normal, sliding, command, published=Non
     """DIR/paper.html from the tables (the distances from the published points, when given); returns its path."""
     names = [n for n in oblique.model.unique() if n != ELASTIC]
     calls = [(law_figure, (oblique, sliding, name)) for name in names] + [(normal_figure, (normal,))]
-    figures = list(zip(names + ["contact duration and peak force against e_n"], draw_all(calls)))
+    titles = names + ["contact duration and peak force against e_n"]
+    figures = filed(out_dir, list(zip(titles, draw_all(calls), [f"paper-{n}-vs-psi1" for n in names]
+                                      + ["paper-contact-duration-and-peak-force-vs-e_n"])))
     at_paper_en = normal[normal.e_n_target.isin(sorted(set(oblique.e_n_target) - {1.0}))]
     html = environment(autoescape=True).get_template("paper.html.j2").render(
         figures=figures, laws=[LAWS[n] for n in names], sliding=records(sliding.drop(columns=["method"])),

@@ -1,5 +1,5 @@
-"""What every HTML view is made of: figures as inline SVG (crisp at any zoom) and tables of numbers formatted for
-people (4 significant digits, short exponents, blank where there is no value)."""
+"""What every HTML view is made of: figures as inline SVG (crisp at any zoom) that carry their SVG and PDF files,
+and tables of numbers formatted for people (4 significant digits, short exponents, blank where there is no value)."""
 import io
 import math
 import numbers
@@ -7,15 +7,25 @@ import numbers
 from markupsafe import Markup
 
 
+class Figure(Markup):
+    """Inline SVG markup that also holds the figure as files: `svg` (a whole SVG document) and `pdf` (bytes)."""
+    svg = ""
+    pdf = b""
+
+
 def figure_svg(fig):
     """A matplotlib figure as inline SVG markup (its XML header dropped), its text as text (searchable, smaller and
-    faster to write than glyph outlines)."""
+    faster to write than glyph outlines); it carries the SVG document and a PDF (fonts embedded as TrueType) for
+    views.figure_files to write."""
     import matplotlib
-    buffer = io.StringIO()
-    with matplotlib.rc_context({"svg.fonttype": "none"}):
+    buffer, pdf = io.StringIO(), io.BytesIO()
+    with matplotlib.rc_context({"svg.fonttype": "none", "pdf.fonttype": 42}):
         fig.savefig(buffer, format="svg")
+        fig.savefig(pdf, format="pdf", metadata={"CreationDate": None})
     text = buffer.getvalue()
-    return Markup(text[text.index("<svg"):])
+    figure = Figure(text[text.index("<svg"):])
+    figure.svg, figure.pdf = text, pdf.getvalue()
+    return figure
 
 
 def number(value, digits=4):

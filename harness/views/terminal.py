@@ -1,6 +1,6 @@
 """The terminal view: fixed-width tables and what compare, check, cost and paper print."""
-from ..analyses.cost import (METRICS, RAYLEIGH_FRACTION, WITHIN_NOISE, convergence_orders, per_rung, rayleigh_time,
-                              recommendations)
+from ..analyses.cost import (METRICS, NOT_RESOLVED, RAYLEIGH_FRACTION, WITHIN_NOISE, convergence_orders, per_rung,
+                              rayleigh_time, recommendations, step_times, verdict)
 from ..analyses.physics import CHECK_WORDS, Tolerances
 from ..analyses.published import GOAL, meets_goal
 
@@ -203,22 +203,69 @@ def print_comparison(comparison, written):
     print(f"\nwrote {' and '.join(written)}")
 
 
-def print_cost(table, uncertainty, law, scene, ladder, skipped, failures):
-    """The cost study's tables: errors and times per rung, recommended time steps, orders of convergence."""
+def print_cost(table, uncertainty, law, scene, ladder, skipped, failures, verbose=False):
+    """What a person reads after cost (at most 40 lines of 120 columns): the verdict per engine against the paper
+    scheme, then skipped, refused and failed runs; with `verbose` every table too (cost_tables)."""
     t_r = rayleigh_time(scene)
-    print(f"{law.name}: accuracy against cost, {len(scene.e_n)} e_n x {len(scene.impacts(scene.e_n[0])[0])} "
-          f"impacts; ladder {', '.join(map(str, ladder))} steps per contact, plus {RAYLEIGH_FRACTION:.0%} of the "
-          f"Rayleigh time (T_R = {t_r:.4g} s, dt = {RAYLEIGH_FRACTION * t_r:.4g} s)")
-    print("errors: max over impacts |x - x*| / max |x*| against the converged reference of the same dialect; "
-          "wall time: the fastest of repeated timings, summed over e_n, engine start-up (timed the same way) "
+    width = 118
+    def say(text):
+        import textwrap
+        print(textwrap.fill(text, width=width, subsequent_indent="    ", break_long_words=False))
+    say(f"{law.name}: accuracy against cost, {len(scene.e_n)} e_n x {len(scene.impacts(scene.e_n[0])[0])} impacts; "
+        f"ladder {','.join(map(str, ladder))} steps/contact and {RAYLEIGH_FRACTION:.0%} of the Rayleigh time "
+        f"(dt {RAYLEIGH_FRACTION * t_r:.3g} s)")
+    say("worst metric's error against the converged reference of the same dialect; time per impact = impact-steps "
+        "x the curve's time per impact-step, timed on copies of the scene's impacts until resolved:")
+    print(verdict_table(table))
+    times = step_times(table)
+    for row in times[times.timing == NOT_RESOLVED].itertuples():
+        say(f"  {row.engine} ({row.dialect}): time per impact-step NOT RESOLVED: {row.message}")
+    truths = ", ".join(f"{curve} {max(e['err_max'] for e in per_e.values()):.1e}" for curve, per_e in uncertainty.items())
+    say(f"converged references' uncertainty (errors below it are not resolved): {truths}")
+    for name, reason in skipped:
+        say(f"skipped {name}: {reason}")
+    refused = table[table.status == "refused"].drop_duplicates(["engine", "dialect", "rung"])
+    if not refused.empty:
+        say(f"refused above a stability limit: " + ", ".join(f"{r.engine}/{r.dialect} at {r.rung}"
+                                                              for r in refused.itertuples()))
+    for failure in failures:
+        say(f"{failure.engine} failed at e_n = {failure.e_n:g}: {failure.message}")
+        if verbose:
+            print(failure.log_tail)
+    if verbose:
+        cost_tables(table, uncertainty)
+
+
+def verdict_table(table):
+    """The verdict (analyses.cost.verdict) as a fixed-width table of at most 120 columns."""
+    verdicts = verdict(table)
+    if verdicts.empty:
+        return "  (no curve ran)"
+    finest = max((int(r) for r in table.rung.dropna() if str(r).isdigit()), default=0)
+    shown = verdicts.assign(**{"s/impact-step": [f"{v:.3g}" if v == v else NOT_RESOLVED
+                                                for v in verdicts["s/impact-step"]]})
+    for column in ("steps/contact for 1%", "steps/contact for 0.1%"):
+        shown[column] = [f"{v:.0f}" if v == v else f">{finest}" for v in shown[column]]
+    for column in ("s/impact for 1%", "x paper for 1%", "s/impact for 0.1%", "x paper for 0.1%", "20% T_R error"):
+        shown[column] = [f"{v:.3g}" if v == v else "-" for v in shown[column]]
+    names = {"engine": "curve", "s/impact-step": "s/impact-step", "steps/contact for 1%": "1%: steps",
+             "s/impact for 1%": "s/impact", "x paper for 1%": "x paper", "steps/contact for 0.1%": "0.1%: steps",
+             "s/impact for 0.1%": "s/impact ", "x paper for 0.1%": "x paper ", "20% T_R error": "20% T_R error"}
+    shown = shown.rename(columns=names)
+    return text_table(shown, list(names.values()))
+
+
+def cost_tables(table, uncertainty):
+    """The cost study's tables (--verbose): errors and times per rung, recommended time steps, orders of
+    convergence, each curve's time per impact-step."""
+    print("\nerrors: max over impacts |x - x*| / max |x*| against the converged reference of the same dialect; "
+          "net_wall_s: the fastest of repeated timings, summed over e_n, engine start-up (timed the same way) "
           f"excluded; '{WITHIN_NOISE}' where that is not above the timings' spread")
     for curve, per_e in uncertainty.items():
         worst = max(errs["err_max"] for errs in per_e.values())
         truth = next(iter(per_e.values())).get("truth", "")
         print(f"  converged reference of the {curve} dialect: {truth}, uncertainty {worst:.1e}"
               + (" (errors below this are not resolved)" if worst > 1e-6 else ""))
-    for name, reason in skipped:
-        print(f"skipped {name}: {reason}")
     rows = per_rung(table)
     rows["net_wall_s"] = [WITHIN_NOISE if timing == WITHIN_NOISE else f"{wall:.3g}"
                           for wall, timing in zip(rows.net_wall_s, rows.timing)]
@@ -237,8 +284,9 @@ def print_cost(table, uncertainty, law, scene, ladder, skipped, failures):
           "curve: against force evaluations per contact):")
     orders = convergence_orders(table)
     print(text_table(orders, ["engine", "dialect", *METRICS], {m: "{:.2f}" for m in METRICS}))
-    for failure in failures:
-        print(f"\n{failure.engine} failed at e_n = {failure.e_n:g}: {failure.message}\n{failure.log_tail}")
+    print("\ntime per impact-step of each curve (its timing run):")
+    for row in step_times(table).itertuples():
+        print(wrapped(f"  {row.engine} ({row.dialect}): {row.s_per_impact_step:.3g} s: {row.message}", indent=4))
 
 
 def published_summary(published):

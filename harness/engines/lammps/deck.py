@@ -9,7 +9,6 @@ from ...render import render
 from ...version import __version__
 from ..base import split_submodels
 from ..dumps import read_final, read_observed, read_pair_batch, rebound
-from ..batches import in_one_process
 from ..runner import EngineFailure
 from .dialect import HISTORY_STYLES, dialect, numbers, walls, words
 
@@ -113,6 +112,7 @@ def deck(law, scene, spec, options=None, observe=False, version=None):
 
 def run_inputs(lmp, count, timeout_s, workdir):
     """The decks batch<k>/in.harness in one process of the LAMMPS executable `lmp` (batches.in_one_process)."""
+    from ..batches import in_one_process    # loaded by harness.before_threads; here, not when engines are listed
     return in_one_process([lmp, "-log", "none", "-echo", "none", "-nocite"], INPUT, count, timeout_s, workdir)
 
 

@@ -9,7 +9,6 @@ from ...version import __version__
 from ...render import render
 from ..dumps import read_final, read_observed, read_pair_batch, rebound
 from ..executable import chosen
-from ..batches import in_one_process
 from ..runner import EngineFailure, run_engine
 from .dialect import COUNTERPARTS
 
@@ -166,6 +165,7 @@ def run_deck(text, n_atoms, timeout_s, workdir):
 
 def run_inputs(liggghts, count, timeout_s, workdir):
     """The decks batch<k>/in.harness in one process of the LIGGGHTS executable (batches.in_one_process)."""
+    from ..batches import in_one_process    # loaded by harness.before_threads; here, not when engines are listed
     return in_one_process([liggghts, "-log", "none", "-echo", "none"], "in.harness", count, timeout_s, workdir,
                           env={**os.environ, "OMP_NUM_THREADS": "1"})
 

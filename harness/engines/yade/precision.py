@@ -4,7 +4,6 @@ from dataclasses import replace
 
 import numpy as np
 
-from ...plan import Run
 from .dialect import dialect
 from .flavours import available
 
@@ -16,6 +15,7 @@ HIGH = "mpfr150"
 def precision_runs(law, scene):
     """(double run, mpfr150 run) of the impacts of the first e_n nearest SAMPLE_ANGLES at a coarse time step, or ()
     where the high-precision flavour is not installed."""
+    from ...plan import Run         # the plan's import loads the solver: here, not when the engines are listed
     if not available(HIGH):
         return ()
     angles = np.asarray(scene.impacts(scene.e_n[0])[3])

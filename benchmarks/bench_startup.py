@@ -1,0 +1,94 @@
+"""What a command costs before it does anything: `harness --help`, `--version`, `models`, `engines` and a refused
+input (`run --model nosuch`), each as a whole process, today's code beside the code before the lazy start-up
+(BEFORE, exported from git), side by side in one run. Cold: the first run with an empty bytecode cache
+(PYTHONPYCACHEPREFIX in a new directory: every module compiled from source, as after an install that wrote none);
+warm: later runs. Several runs each since these machines are noisy: min and median, and the ratio of the medians.
+Goal: warm `harness --help` well under 1 s.
+
+    .venv/bin/python benchmarks/bench_startup.py [--smoke] [--repeat N] [--before REV]
+"""
+import argparse
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+BEFORE = "28214cd"        # the last commit whose parser imported every command and engine at start
+COMMANDS = {   # label -> harness arguments, exit code expected
+    "--help": (["--help"], 0),
+    "--version": (["--version"], 0),
+    "models": (["models"], 0),
+    "engines": (["engines"], 0),
+    "run --model nosuch (refused)": (["run", "--model", "nosuch", "-o", "nosuch.csv"], 2),
+}
+SMOKE = ("--help",)
+
+
+def timed(tree, arguments, expected, pycache):
+    """Wall seconds of one `python -m harness ARGUMENTS` from the source tree `tree`, bytecode under `pycache`."""
+    env = {**os.environ, "PYTHONPATH": str(tree), "PYTHONPYCACHEPREFIX": pycache}
+    env.pop("PYTHONDONTWRITEBYTECODE", None)
+    start = time.perf_counter()
+    done = subprocess.run([sys.executable, "-m", "harness", *arguments], env=env, capture_output=True, text=True,
+                          cwd=tempfile.gettempdir())
+    wall = time.perf_counter() - start
+    if done.returncode != expected:
+        raise SystemExit(f"harness {' '.join(arguments)} from {tree} exited {done.returncode}: {done.stderr[-500:]}")
+    return wall
+
+
+def measure(tree, arguments, expected, repeat, scratch):
+    """(cold walls, warm walls): each cold run with a new empty bytecode cache, the warm runs with the last one's."""
+    cold, warm = [], []
+    for _ in range(repeat):
+        pycache = tempfile.mkdtemp(dir=scratch)
+        cold.append(timed(tree, arguments, expected, pycache))
+    for _ in range(repeat):
+        warm.append(timed(tree, arguments, expected, pycache))
+    return cold, warm
+
+
+def exported(rev, scratch):
+    """The package as it was at `rev` (git archive), or None where git cannot give it."""
+    target = Path(scratch, "before")
+    target.mkdir()
+    archive = subprocess.run(["git", "-C", str(ROOT), "archive", rev, "harness"], capture_output=True)
+    if archive.returncode != 0:
+        return None
+    subprocess.run(["tar", "-x", "-C", str(target)], input=archive.stdout, check=True)
+    return target
+
+
+def spread(walls):
+    return f"{min(walls):5.2f} / {statistics.median(walls):5.2f}"
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--smoke", action="store_true", help="--help alone, once")
+    parser.add_argument("--repeat", type=int, default=5)
+    parser.add_argument("--before", default=BEFORE, help="the revision to compare with (default %(default)s)")
+    args = parser.parse_args()
+    repeat = 1 if args.smoke else args.repeat
+    labels = SMOKE if args.smoke else tuple(COMMANDS)
+    with tempfile.TemporaryDirectory(prefix="harness-bench-startup-") as scratch:
+        before = exported(args.before, scratch)
+        print(f"{'min / median [s]':30s} {'today cold':>13s} {'today warm':>13s} {'before cold':>13s} "
+              f"{'before warm':>13s} {'RATIO warm before/today':>24s}")
+        for label in labels:
+            arguments, expected = COMMANDS[label]
+            cold, warm = measure(ROOT, arguments, expected, repeat, scratch)
+            if before is None:
+                print(f"{label:30s} {spread(cold):>13s} {spread(warm):>13s} {'(no git)':>13s}")
+                continue
+            old_cold, old_warm = measure(before, arguments, expected, repeat, scratch)
+            print(f"{label:30s} {spread(cold):>13s} {spread(warm):>13s} {spread(old_cold):>13s} "
+                  f"{spread(old_warm):>13s} {statistics.median(old_warm) / statistics.median(warm):24.1f}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,210 @@
+"""Figures for a paper and how to cite: a campaign over mu x speed draws each metric against each swept parameter
+over tables that `harness query` reproduces; every figure of a report is also an SVG and a PDF file beside it,
+rebuilt by `harness report`; `harness cite` prints BibTeX with the sources' DOIs; CITATION.cff names this version."""
+import csv
+import io
+import os
+import re
+import xml.etree.ElementTree as ElementTree
+from html.parser import HTMLParser
+from pathlib import Path
+
+import pandas as pd
+import pytest
+
+import harness
+from conftest import needs
+from harness.citation import DOCS_URL, PROJECT_URL
+from harness.commands import main
+from harness.version import RELEASED
+
+ROOT = Path(__file__).resolve().parent.parent
+MU_SPEED = """name = "mu-speed"
+laws = ["hertz-mindlin"]
+engines = ["reference"]
+e_n = [0.5]
+angles = [20, 45, 70]
+mus = [0.1, 0.3]
+speeds = [1.0, 5.0]
+steps_per_contact = [200]
+"""
+
+
+class Page(HTMLParser):
+    """What a test reads of a report: figures (with their data-parameter and links), the sweep tables (their SQL,
+    headers and rows) and every link."""
+
+    def __init__(self, text):
+        super().__init__()
+        self.figures, self.tables, self.links = [], [], []
+        self._figure = self._table = self._cell = None
+        self.feed(text)
+
+    def handle_starttag(self, tag, attrs):
+        attrs = dict(attrs)
+        if tag == "figure":
+            self._figure = {"parameter": attrs.get("data-parameter"), "links": []}
+            self.figures.append(self._figure)
+        elif tag == "div" and "sweep" in (attrs.get("class") or "").split():
+            self._table = {"parameter": attrs["data-parameter"], "sql": attrs["data-sql"], "head": [], "rows": []}
+            self.tables.append(self._table)
+        elif tag == "a":
+            self.links.append(attrs.get("href", ""))
+            if self._figure is not None:
+                self._figure["links"].append(attrs.get("href", ""))
+        elif tag == "tr" and self._table is not None:
+            self._table["rows"].append([])
+        elif tag in ("th", "td") and self._table is not None:
+            self._cell = tag
+
+    def handle_endtag(self, tag):
+        if tag == "p" and self._figure is not None and self._figure["links"]:
+            self._figure = None                    # the figure's links end its entry
+        elif tag == "div":
+            self._table = None
+        elif tag in ("th", "td"):
+            self._cell = None
+
+    def handle_data(self, data):
+        if self._cell == "th" and self._table is not None and len(self._table["rows"]) == 1:
+            self._table["head"].append(data.strip())
+
+
+def files_of(directory, page):
+    """Every figure's (svg, pdf) paths, from the page's links, each figure having both."""
+    out = []
+    for figure in page.figures:
+        svg = [link for link in figure["links"] if link.endswith(".svg")]
+        pdf = [link for link in figure["links"] if link.endswith(".pdf")]
+        assert len(svg) == len(pdf) == 1, figure
+        out.append((directory / svg[0], directory / pdf[0]))
+    return out
+
+
+def assert_whole(svg, pdf):
+    assert pdf.read_bytes().startswith(b"%PDF-") and pdf.read_bytes().rstrip().endswith(b"%%EOF")
+    assert ElementTree.parse(svg).getroot().tag.endswith("svg")
+
+
+def test_a_mu_by_speed_campaign_draws_each_metric_against_each_parameter(tmp_path, capfd):
+    """Three figures (e_n, e_t, Omega*) per swept parameter and none for what was not swept; each figure an SVG and
+    a PDF file; each table the page shows is what `harness query` prints for the SQL the page gives, and its means
+    are the store's rows averaged here with pandas."""
+    spec = tmp_path / "mu-speed.toml"
+    spec.write_text(MU_SPEED)
+    store = tmp_path / "store"
+    assert main(["campaign", str(spec), "-o", str(store), "--quiet"]) == 0
+    capfd.readouterr()
+    page = Page((tmp_path / "store.html").read_text())
+    per_parameter = {}
+    for figure in page.figures:
+        if figure["parameter"]:
+            per_parameter[figure["parameter"]] = per_parameter.get(figure["parameter"], 0) + 1
+    assert per_parameter == {"mu": 3, "speed": 3}
+    for svg, pdf in files_of(tmp_path, Page((tmp_path / "store.html").read_text())):
+        assert svg.parent.name == "store-figures"
+        assert_whole(svg, pdf)
+    assert {t["parameter"] for t in page.tables} == {"mu", "speed"}
+    rows = pd.read_parquet(store)
+    for table in page.tables:
+        assert main(["query", str(store), table["sql"], "--csv"]) == 0
+        printed = list(csv.reader(io.StringIO(capfd.readouterr().out)))
+        assert printed[0] == table["head"]
+        assert len(printed) == len(table["rows"])             # header and rows alike
+        mean = rows.groupby(table["parameter"]).e_t.mean()
+        column = printed[0].index("mean_e_t")
+        shown = {float(row[printed[0].index(table["parameter"])]): float(row[column]) for row in printed[1:]}
+        assert shown == pytest.approx(mean.to_dict(), rel=1e-12)
+
+
+def test_every_figure_of_a_compare_report_is_a_file_that_report_rebuilds(tmp_path, capfd):
+    """SVG and PDF files for every figure of the report, named for what they show; `harness report` writes them
+    again; a figures entry that is a file is refused in one line before anything is written."""
+    out = tmp_path / "out"
+    assert main(["compare", "--model", "hertz-mindlin", "--engines", "reference", "--en", "0.5", "--angles",
+                 "20,60", "--steps-per-contact", "200", "-o", str(out)]) == 0
+    page = Page((out / "report.html").read_text())
+    files = files_of(out, page)
+    assert len(files) == len(page.figures) >= 5
+    assert out / "figures" / "hertz-mindlin-e_t-vs-psi1.svg" in [svg for svg, _ in files]
+    for svg, pdf in files:
+        assert_whole(svg, pdf)
+    for svg, pdf in files:
+        svg.unlink()
+        pdf.unlink()
+    assert main(["report", str(out)]) == 0
+    assert all(svg.exists() and pdf.exists() for svg, pdf in files)
+    assert [link for link in page.links if "docs/" in link] and \
+        all(link.startswith(DOCS_URL) for link in page.links if "docs/" in link)
+    (out / "figures").rename(tmp_path / "kept")
+    (out / "figures").write_text("not a folder")
+    capfd.readouterr()
+    assert main(["report", str(out)]) == 2
+    err = capfd.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "figures" in err[0] and "not a directory" in err[0]
+
+
+def test_cite_prints_bibtex_for_harness_the_paper_and_the_benchmark(capfd):
+    assert main(["cite"]) == 0
+    text = capfd.readouterr().out
+    entries = re.findall(r"@(\w+)\{(\w+),\n((?:  \w+ = \{.*\},?\n)+)\}", text)
+    assert len(entries) == text.count("@") == 3
+    fields = {key: dict(re.findall(r"  (\w+) = \{(.*)\}", body)) for _, key, body in entries}
+    assert fields["harness"]["version"] == harness.__version__ and fields["harness"]["url"] == PROJECT_URL
+    assert fields["thornton2013"]["doi"] == "10.1016/j.powtec.2012.08.012"
+    assert fields["thornton2013"]["pages"] == "30--46" and fields["thornton2013"]["volume"] == "233"
+    assert fields["chung2011"]["doi"] == "10.1007/s10035-011-0277-0" and fields["chung2011"]["pages"] == "643--656"
+    assert all(body.count("{") == body.count("}") for _, _, body in entries)
+
+
+def test_citation_cff_names_this_version_date_and_address():
+    text = (ROOT / "CITATION.cff").read_text()
+    top = dict(re.findall(r"^([a-z-]+): \"?([^\"\n]*)\"?$", text, re.M))
+    assert top["version"] == harness.__version__
+    assert top["date-released"] == RELEASED
+    assert top["url"] == PROJECT_URL
+    assert os.path.basename(PROJECT_URL) == "harness"
+
+
+@pytest.mark.parametrize("extra, words", [
+    ({"walls": ["steel"]}, "walls[0] is a string ('steel'); expected one of same, rigid"),
+    ({"mus": 0.1}, "mus is a float (0.1); expected an array of numbers"),
+    ({"targets": [1]}, "targets[0] is an integer (1); expected one of wall, sphere"),
+    ({"radii": [0.01], "materials": [{"radius": 0.02, "E": 1e9, "nu": 0.3, "rho": 2500, "mu": 0.3}]},
+     "give radius in materials or radii, not both"),
+])
+def test_a_scene_list_of_the_wrong_kind_is_one_line(extra, words):
+    from harness.campaign.spec import from_dict
+    from harness.errors import UserError
+    with pytest.raises(UserError) as caught:
+        from_dict({"laws": ["hertz-mindlin"], **extra})
+    assert words in str(caught.value) and "\n" not in str(caught.value)
+
+
+def test_each_scene_list_reaches_the_requests():
+    from harness.campaign.spec import from_dict
+    campaign = from_dict({"laws": ["hertz-mindlin"], "mus": [0.1, 0.4], "radii": [0.005, 0.01], "walls": ["rigid"]})
+    assert sorted((r.scene.mu, r.scene.radius, r.scene.wall) for r in campaign.requests) == [
+        (0.1, 0.005, "rigid"), (0.1, 0.01, "rigid"), (0.4, 0.005, "rigid"), (0.4, 0.01, "rigid")]
+
+
+@needs("liggghts")
+def test_the_deviations_view_is_the_pages_pandas_pairing(tmp_path):
+    """The view `deviations` (DuckDB) gives per mu the worst |e_t(LIGGGHTS) - e_t(paper law)| that the page's own
+    pairing of the rows in pandas (deviation_maps) gives."""
+    from harness.campaign.driver import run_campaign
+    from harness.campaign.executors import InProcess
+    from harness.campaign.query import query
+    from harness.campaign.spec import from_dict
+    from harness.campaign.store import Store
+    from harness.views.campaign_html import deviation_maps
+    store = tmp_path / "store"
+    for mu in (0.1, 0.3):
+        run_campaign(from_dict({"laws": ["hertz-mindlin"], "engines": ["reference", "liggghts"], "e_n": [0.5],
+                                "angles": [30.0, 60.0], "mus": [mu], "steps_per_contact": [200]}), store, InProcess())
+    worst = query(Store(store, create=False), "SELECT mu, max(d_e_t) AS worst FROM deviations GROUP BY mu")
+    table = Store(store, create=False).table()
+    assert len(worst) == 2
+    for row in worst.itertuples():
+        grid = deviation_maps(table[table.mu == row.mu])[("liggghts", "hertz-mindlin")]
+        assert row.worst == pytest.approx(float(grid.max().max()), rel=1e-12) and row.worst > 0
