@@ -54,7 +54,7 @@ def test_lammps_tsuji_given_the_calibrated_e_returns_the_target_in_the_engine(tm
         assert "not in this build: damping=coeff_restitution" in said
     assert sorted(os.listdir(out)) == sorted(
         ["alternatives.csv", "attribution.csv", "calibration.json", "inputs.csv", "report.html", "results.csv",
-         "stages.csv", "timestep.csv", "variation.csv"] +
+         "stages.csv", "timestep.csv", "variation.csv", "figures"] +
         [f"lammps-hertz-mindlin-en{e:g}-calibrated.in" for e in (0.3, 0.6, 0.95)])
     tried = pd.read_csv(out / "alternatives.csv").set_index("options")
     tuned = [o for o in tried.index if o.startswith("with:tangential-damping=")]       # LAMMPS' x_gamma_t, searched
