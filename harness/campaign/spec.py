@@ -73,7 +73,8 @@ def from_dict(data, name="campaign"):
              * ((1 + external) * -(-impacts // block) + external))
     if bound > MAX_TASKS:
         raise UserError(f"campaign {name}: up to {bound} tasks (law variants x materials x mu x radii x walls x "
-                        f"targets x speeds x spins x resolutions x e_n x runs per engine); at most {MAX_TASKS} are taken: split the campaign")
+                        f"targets x speeds x spins x resolutions x e_n x runs per engine); at most {MAX_TASKS} are "
+                        "taken: split the campaign")
     options = {engine: dict(o) for engine, o in data.get("engine_options", {}).items()}
     requests = []
     for (law, overrides), material, scene, speed, spin, resolution in itertools.product(
