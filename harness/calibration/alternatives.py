@@ -5,7 +5,9 @@ import itertools
 from dataclasses import dataclass, replace
 
 import pandas as pd
+from scipy.optimize import minimize_scalar
 
+from ..analyses.physics import IMPACT
 from ..errors import UserError
 from ..solver.simulate import simulate
 from .restitution import restitution_input
@@ -80,7 +82,6 @@ def with_ratio(alternative, engine, law_name, scene, steps, label, target="wall"
     """The alternative with the tangential damping ratio g_t in RATIO_RANGE (its inputs e unchanged: a normal
     impact has no tangential dashpot) that minimises the worst velocity deviation from the paper law over the
     sweep (scipy's bounded minimize_scalar), measured against `paper` rows in alternative.rows' frame."""
-    from scipy.optimize import minimize_scalar
     paper = alternative.paper
 
     def worst(ratio):
@@ -96,7 +97,6 @@ def with_ratio(alternative, engine, law_name, scene, steps, label, target="wall"
 
 def worst_velocity(paper, rows):
     """max over impacts and v_n1, v_t1, R omega1 of |rows - paper| / V at the same impacts."""
-    from ..analyses.physics import IMPACT
     pairs = rows.merge(paper, on=IMPACT, suffixes=("", "_paper"))
     speed = (pairs.v_n0 ** 2 + pairs.v_t0 ** 2) ** 0.5
     return float(max(((pairs[m] - pairs[m + "_paper"]).abs() * (pairs.radius if m == "omega1" else 1.0) / speed)
