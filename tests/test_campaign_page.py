@@ -13,7 +13,7 @@ import harness
 from conftest import needs
 from harness.analyses.agreement import agreement
 from harness.commands import main
-from test_figures_and_citation import Page, assert_whole, files_of, paired_worst
+from test_figures_and_citation import assert_whole, campaign_page, files_of, paired_worst
 
 SMALL = """name = "small"
 laws = ["hertz-mindlin"]
@@ -43,12 +43,7 @@ def same_cell(shown, exact):
 
 @needs("liggghts")
 def test_each_table_the_page_shows_is_what_harness_query_prints(tmp_path, capfd):
-    spec = tmp_path / "small.toml"
-    spec.write_text(SMALL)
-    store = tmp_path / "store"
-    assert main(["campaign", str(spec), "-o", str(store), "--quiet"]) == 0
-    capfd.readouterr()
-    page = Page((tmp_path / "store.html").read_text())
+    store, page = campaign_page(tmp_path, SMALL, capfd)
     kinds = [next((v for v in ("agreement", "deviation_map", "deviations", "results") if f"FROM {v}" in t["sql"]))
              for t in page.tables]
     assert sorted(kinds) == ["agreement", "deviation_map", "deviations", "results"]
@@ -77,13 +72,10 @@ def test_a_campaign_over_spins_stores_each_spin_as_a_direct_run_gives_it(tmp_pat
     throughout, so Omega* is the rolling spin's term plus -5, the rigid sphere's); each row as harness.run gives it
     at that spin; the page draws e_n, e_t and Omega* against the spin, each also an SVG and a PDF."""
     spins = [0.0, ROLLING, -ROLLING]
-    spec = tmp_path / "spins.toml"
-    spec.write_text(f'name = "spins"\nlaws = ["hertz-mindlin"]\nengines = ["reference"]\ne_n = [0.5]\n'
-                    f'angles = [{ANGLE!r}]\nspeeds = [1.0]\nmus = [{MU!r}]\nradii = [{RADIUS!r}]\n'
-                    f'spins = [{", ".join(map(repr, spins))}]\nsteps_per_contact = [500]\n')
-    store = tmp_path / "store"
-    assert main(["campaign", str(spec), "-o", str(store), "--quiet"]) == 0
-    capfd.readouterr()
+    store, page = campaign_page(
+        tmp_path, f'name = "spins"\nlaws = ["hertz-mindlin"]\nengines = ["reference"]\ne_n = [0.5]\n'
+        f'angles = [{ANGLE!r}]\nspeeds = [1.0]\nmus = [{MU!r}]\nradii = [{RADIUS!r}]\n'
+        f'spins = [{", ".join(map(repr, spins))}]\nsteps_per_contact = [500]\n', capfd)
     rows = pd.read_parquet(store).set_index("omega0")
     assert sorted(rows.index) == sorted(spins)
     for spin in spins:
@@ -100,7 +92,6 @@ def test_a_campaign_over_spins_stores_each_spin_as_a_direct_run_gives_it(tmp_pat
     assert backward.psi1_star > 7
     assert backward.omega_star == pytest.approx(RADIUS * ROLLING / unit - 5, abs=1e-3)
     assert rows.loc[0.0].omega_star != pytest.approx(backward.omega_star, abs=0.1)
-    page = Page((tmp_path / "store.html").read_text())
     assert [f["parameter"] for f in page.figures] == ["omega0"] * 3
     assert [t["parameter"] for t in page.tables] == ["omega0"]
     for svg, pdf in files_of(tmp_path, page):
