@@ -222,9 +222,13 @@ class CampaignRun:
 
     def report(self, path=None):
         """Write the campaign's page (default STORE.html); returns its path."""
+        from .campaign.page import page_data
+        from .campaign.store import Store
         from .views.campaign_html import write_campaign_report
         path = as_path("path", path, optional=True) or self.store.rstrip("/") + ".html"
-        return write_campaign_report(self.table, path, self.name)
+        store = Store(self.store, create=False)
+        table = store.table()
+        return write_campaign_report(table, path, self.name, page_data(store, table), self.store)
 
 
 def series(frame, y, x=None, title=None, thresholds=None):

@@ -14,6 +14,7 @@ import pyarrow.fs as pafs
 import pyarrow.parquet as pq
 
 from ..errors import UserError
+from . import page_views
 from .fragments import KEY
 from .store import SCENE
 from .limits import MAX_QUERY_BYTES, MAX_QUERY_S, MAX_RESULT_BYTES, MAX_ROWS, QUERY_GROWTH_MB, QUERY_MEMORY_MB
@@ -58,8 +59,9 @@ def first_line(exc):
 
 
 def connection(store):
-    """An in-memory DuckDB connection, locked down, whose view `results` is the store with each task once and whose
-    view `deviations` pairs each engine's row (its own formulas) with the paper law's on the same impact."""
+    """An in-memory DuckDB connection, locked down, whose view `results` is the store with each task once, whose
+    view `deviations` pairs each engine's row (its own formulas) with the paper law's on the same impact, and with
+    the views the campaign page draws from (page_views)."""
     import duckdb
     copies = {name: keys for name, keys in store.copies().items() if keys}
     if not copies:
@@ -87,6 +89,7 @@ def connection(store):
                       if c not in schema.names)          # a store written before its rows held their scene's columns
     db.execute(f"CREATE VIEW {VIEW} AS SELECT *{missing} FROM (" + " UNION ALL BY NAME ".join(parts) + ")")
     db.execute(DEVIATION_SQL)
+    page_views.create(db)
     return db
 
 

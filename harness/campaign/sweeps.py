@@ -5,7 +5,7 @@ from dataclasses import dataclass
 
 import pandas as pd
 
-from .query import DEVIATIONS, VIEW, connection
+from .query import DEVIATIONS, VIEW
 
 PARAMETERS = {"mu": "friction coefficient mu", "speed": "impact speed [m/s]", "radius": "radius [m]",
               "E": "Young's modulus E [Pa]", "nu": "Poisson's ratio nu", "rho": "density rho [kg/m^3]",
@@ -46,14 +46,8 @@ def deviation_sql(parameter):
             "GROUP BY ALL ORDER BY ALL")
 
 
-def sweeps(store, table):
-    """[Sweep] of every parameter the store's table sweeps, each computed by its SQL over the store."""
-    parameters = swept(table)
-    if not parameters:
-        return []
-    db = connection(store)
-    try:
-        return [Sweep(p, PARAMETERS[p], metric_sql(p), db.sql(metric_sql(p)).df(), deviation_sql(p),
-                      db.sql(deviation_sql(p)).df()) for p in parameters]
-    finally:
-        db.close()
+def sweeps(db, table):
+    """[Sweep] of every parameter the store's table sweeps, each computed by its SQL over the connection `db`
+    (query.connection)."""
+    return [Sweep(p, PARAMETERS[p], metric_sql(p), db.sql(metric_sql(p)).df(), deviation_sql(p),
+                  db.sql(deviation_sql(p)).df()) for p in swept(table)]

@@ -8,10 +8,10 @@ from ..campaign.clusters import Unavailable, remove
 from ..campaign.driver import dry_run, run_campaign
 from ..campaign.executors import executor
 from ..campaign.limits import max_workers
+from ..campaign.page import page_data
 from ..campaign.slurm import forget_credentials, preflight, shell_safe, slurm_cluster, slurm_options
 from ..campaign.spec import load
 from ..campaign.store import DROP, DROP_HELP, Store
-from ..campaign.sweeps import sweeps
 from ..errors import UserError
 from ..files import refuse_unless_regular
 from ..lock import exclusive
@@ -69,7 +69,8 @@ def main(args):
                 where = where or executor(args.executor, args.workers, slurm=slurm, shared=args.output)
                 summary = run_campaign(campaign, store, where, args.no_cache, progress)
                 table = store.table()
-                page = write_campaign_report(table, report_path, campaign.name, sweeps(store, table), args.output)
+                page = write_campaign_report(table, report_path, campaign.name, page_data(store, table),
+                                             args.output)
         finally:
             if where is not None:
                 where.close()

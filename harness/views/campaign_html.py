@@ -1,56 +1,20 @@
 """The campaign report: one HTML page over a whole store, data first: each metric (e_n, e_t, Omega*) and each
 engine's deviation from the paper law against each swept parameter, as figures (also SVG and PDF files) over tables
 that `harness query` reproduces with the SQL shown; where each engine agrees with its formulas (worst relative
-difference per law and scene); maps of the e_t difference over e_n x impact angle per engine and law."""
+difference per law and scene); maps of the e_t difference over e_n x impact angle per engine and law; each table
+drawn from campaign.page's data under the command that prints it."""
 import html
 import os
 
 import numpy as np
 import pandas as pd
 
-from ..analyses.agreement import AGREEMENT_TOLERANCE, agreement
+from ..analyses.agreement import AGREEMENT_TOLERANCE
 from ..citation import doc_link
 from ..files import write_text
 from .drawing import draw_all
 from .figure_files import filed
 from .pieces import figure_svg
-
-SCENE = ["model", "radius", "E", "nu", "rho", "mu", "omega0", "steps_per_contact"]
-
-
-def scenes(table):
-    """The store's rows grouped by comparison: one law on one scene at one resolution (speed from the impacts)."""
-    speed = np.round(np.hypot(table.v_n0, table.v_t0), 9)
-    return table.assign(speed=speed).groupby(SCENE + ["speed"], sort=True, dropna=False)
-
-
-def agreement_table(table):
-    """Per engine, law and scene: the worst relative difference from its formulas at equal dt."""
-    rows = []
-    for key, group in scenes(table):
-        for engine in sorted(set(group.engine) - {"reference"}):
-            worst = agreement(group, engine).max_rel_diff.max()
-            rows.append({**dict(zip(SCENE + ["speed"], key)), "engine": engine, "worst": worst,
-                         "agrees": bool(worst <= AGREEMENT_TOLERANCE)})
-    return pd.DataFrame(rows)
-
-
-def deviation_maps(table, metric="e_t"):
-    """{(engine, law): e_n x angle table of the largest |engine - paper law| in `metric`}."""
-    maps = {}
-    for _, group in scenes(table):
-        paper = group[(group.engine == "reference") & (group.dialect == "paper")]
-        for engine in sorted(set(group.engine) - {"reference"}):
-            mine = group[(group.engine == engine) & (group.dialect == engine) & (group.status == "ok")]
-            pairs = mine.merge(paper, on=["e_n_target", "theta_deg"], suffixes=("", "_paper"))
-            if pairs.empty:
-                continue
-            pairs = pairs.assign(diff=(pairs[metric] - pairs[metric + "_paper"]).abs())
-            grid = pairs.pivot_table(index="e_n_target", columns="theta_deg", values="diff", aggfunc="max")
-            key = (engine, group.model.iloc[0])
-            maps[key] = grid if key not in maps else np.fmax(maps[key], grid.reindex_like(maps[key]))
-    return maps
-
 
 def figures_folder(path):
     """The folder, beside the page, of its figures' files: STORE-figures for STORE.html."""
@@ -64,12 +28,21 @@ def _cell(value, high):
     return f'<td style="background: rgb(255,{shade},{shade})">{value:.3g}</td>'
 
 
-def _map_html(title, grid):
-    high = float(np.nanmax(grid.to_numpy())) if grid.size else 0.0
-    head = "".join(f"<th>{a:g}</th>" for a in grid.columns)
+def _map_html(frame):
+    """A map's table, e_n down and the impact angles across, each cell shaded by its share of the largest."""
+    grid = frame.set_index("e_n_target")
+    high = float(np.nanmax(grid.to_numpy(float))) if grid.size else 0.0
+    head = "".join(f"<th>{html.escape(str(a))}</th>" for a in grid.columns)
     body = "".join(f"<tr><th>{e:g}</th>{''.join(_cell(v, high) for v in row)}</tr>"
-                   for e, row in zip(grid.index, grid.to_numpy()))
-    return (f"<h3>{html.escape(title)}</h3><table><tr><th>e_n \\ angle [deg]</th>{head}</tr>{body}</table>")
+                   for e, row in zip(grid.index, grid.to_numpy(float)))
+    return f"<table><tr><th>e_n_target</th>{head}</tr>{body}</table>"
+
+
+def _queried(what, sql, store, body, attributes=""):
+    """A table of the page under the `harness query` command that prints it."""
+    command = f'harness query {store} "{sql}"'
+    return (f"<p>{what}: <code>{html.escape(command)}</code></p>"
+            f"<div class='query'{attributes} data-sql='{html.escape(sql)}'>{body}</div>")
 
 
 def _positions(values):
@@ -159,32 +132,33 @@ def sweep_sections(sweeps, directory, folder, store):
         for sql, frame, what in ((sweep.sql, sweep.table, "each metric's mean and range over the other dimensions"),
                                  (sweep.deviation_sql, sweep.deviation, "each engine's worst deviation from the paper "
                                                                         "law")):
-            if frame.empty:
-                continue
-            command = f'harness query {store} "{sql}"'
-            parts.append(f"<p>{what}: <code>{html.escape(command)}</code></p>")
-            parts.append(f"<div class='sweep' data-parameter='{parameter}' data-sql='{html.escape(sql)}'>"
-                         f"{_table_html(frame)}</div>")
+            if not frame.empty:
+                parts.append(_queried(what, sql, store, _table_html(frame), f" data-parameter='{parameter}'"))
     return parts
 
 
-def write_campaign_report(table, path, name, sweeps=(), store=""):
-    """Write the page to `path` from the store's table and its sweeps (campaign.sweeps), the figures' files in
-    STORE-figures/ beside it; returns the path."""
+def write_campaign_report(table, path, name, data=None, store=""):
+    """Write the page to `path` from the store's table and what it shows (campaign.page.page_data), the figures'
+    files in STORE-figures/ beside it; returns the path."""
     failed = table[table.status == "failed"]
-    agree = agreement_table(table) if not table.empty else pd.DataFrame()
+    agreement, maps = (data.agreement, data.maps) if data is not None else (None, [])
     parts = [f"<h1>Campaign {html.escape(name)}</h1>",
              f"<p>{len(table)} rows, {table.task_key.nunique()} tasks; laws: {', '.join(sorted(table.model.unique()))}; "
              f"engines: {', '.join(sorted(table.engine.unique()))}; {failed.task_key.nunique()} failed tasks "
              f"(what each part shows: {doc_link('campaigns.md')}).</p>",
-             "<p>Swept: " + (", ".join(html.escape(s.label) for s in sweeps) or "no scene parameter") + ".</p>",
-             *sweep_sections(sweeps, os.path.dirname(os.path.abspath(path)), figures_folder(path), store),
+             "<p>Swept: " + (", ".join(html.escape(s.label) for s in data.sweeps) if data is not None and data.sweeps
+                             else "no scene parameter") + ".</p>",
+             *sweep_sections(data.sweeps if data is not None else (), os.path.dirname(os.path.abspath(path)),
+                             figures_folder(path), store),
              "<h2>Agreement of each engine with its formulas (worst relative difference, tolerance "
-             f"{AGREEMENT_TOLERANCE:g})</h2>", agree.to_html(index=False, float_format=lambda v: f"{v:.3g}")
-             if not agree.empty else "<p>(no engine ran)</p>",
+             f"{AGREEMENT_TOLERANCE:g})</h2>",
+             _queried("per engine, law and scene", agreement.sql, store,
+                      agreement.frame.to_html(index=False, float_format=lambda v: f"{v:.3g}"))
+             if agreement is not None and not agreement.frame.empty else "<p>(no engine ran)</p>",
              "<h2>Deviation from the paper law over e_n x impact angle: |e_t(engine) - e_t(paper)|, the worst over the "
              "other dimensions</h2>"]
-    parts += [_map_html(f"{engine}, {law}", grid) for (engine, law), grid in sorted(deviation_maps(table).items())]
+    parts += [f"<h3>{html.escape(shown.title)}</h3>" + _queried("the map", shown.sql, store, _map_html(shown.frame))
+              for shown in maps]
     if not failed.empty:
         parts.append("<h2>Failed tasks</h2>")
         for key, group in failed.groupby("task_key"):
