@@ -97,3 +97,27 @@ def test_a_campaign_over_spins_stores_each_spin_as_a_direct_run_gives_it(tmp_pat
     for svg, pdf in files_of(tmp_path, page):
         assert svg.name.endswith("-vs-omega0.svg")
         assert_whole(svg, pdf)
+
+
+def test_the_failed_tasks_the_page_shows_are_what_harness_query_prints(tmp_path, monkeypatch, capfd):
+    """A LIGGGHTS that crashes (a stand-in script): its tasks are failed in the store, and the page's failed-tasks
+    table is what `harness query` prints for the SQL shown above it, one row per e_n with the crash's reason."""
+    from conftest import fake_executable
+    from harness.engines import liggghts
+    from test_figures_and_citation import Page
+    monkeypatch.setenv(liggghts.BINARY_VARIABLE, fake_executable(tmp_path, 'echo "ERROR: Illegal fix wall"; exit 1'))
+    spec = tmp_path / "campaign.toml"
+    spec.write_text(SMALL.replace("mus = [0.1, 0.3]\n", ""))
+    store = tmp_path / "store"
+    main(["campaign", str(spec), "-o", str(store), "--quiet"])
+    capfd.readouterr()
+    page = Page((tmp_path / "store.html").read_text())
+    failed = [t for t in page.tables if "status = 'failed'" in t["sql"]]
+    assert len(failed) == 1
+    out = printed(store, failed[0]["sql"], capfd)
+    body = [row for row in failed[0]["rows"] if row]
+    assert out[0] == failed[0]["head"] == ["engine", "model", "e_n_target", "message"]
+    assert [r[:3] for r in out[1:]] == [["liggghts", "hertz-mindlin", "0.5"], ["liggghts", "hertz-mindlin", "0.8"]]
+    assert len(body) == 2 and all(map(same_cell, body[0], out[1])) and all(map(same_cell, body[1], out[2]))
+    stored = pd.read_parquet(store)
+    assert set(stored[stored.status == "failed"].engine) == {"liggghts"}

@@ -20,10 +20,11 @@ class Shown:
 
 @dataclass
 class PageData:
-    """The sweeps (campaign.sweeps), the agreement table and one deviation map per engine and law."""
+    """The sweeps (campaign.sweeps), the agreement table, one deviation map per engine and law, the failed tasks."""
     sweeps: list = field(default_factory=list)
     agreement: Shown = None
     maps: list = field(default_factory=list)
+    failures: Shown = None
 
 
 def page_data(store, table):
@@ -37,6 +38,7 @@ def page_data(store, table):
         for engine, law, angles in db.sql(page_views.maps_sql()).fetchall():
             sql = page_views.map_sql(engine, law, angles)
             maps.append(Shown(f"{engine}, {law}", sql, db.sql(sql).df()))
-        return PageData(sweeps(db, table), agreement, maps)
+        failures = Shown("failed tasks", page_views.failures_sql(), db.sql(page_views.failures_sql()).df())
+        return PageData(sweeps(db, table), agreement, maps, failures)
     finally:
         db.close()

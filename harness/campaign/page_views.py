@@ -44,6 +44,12 @@ def agreement_sql():
     return f"SELECT engine, {', '.join(GROUP)}, worst, agrees FROM {AGREEMENT} ORDER BY ALL"
 
 
+def failures_sql():
+    """The page's failed tasks: each engine, law and e_n whose run failed, with its one-line reason."""
+    return ("SELECT DISTINCT engine, model, e_n_target, message FROM results WHERE status = 'failed' "
+            "ORDER BY engine, model, e_n_target")
+
+
 def quoted(word):
     return "'" + str(word).replace("'", "''") + "'"
 

@@ -143,7 +143,8 @@ def write_campaign_report(table, path, name, data=None, store=""):
     failed = table[table.status == "failed"]
     agreement, maps = (data.agreement, data.maps) if data is not None else (None, [])
     parts = [f"<h1>Campaign {html.escape(name)}</h1>",
-             f"<p>{len(table)} rows, {table.task_key.nunique()} tasks; laws: {', '.join(sorted(table.model.unique()))}; "
+             f"<p>{len(table)} rows, {table.task_key.nunique()} tasks; "
+             f"laws: {', '.join(sorted(table.model.unique()))}; "
              f"engines: {', '.join(sorted(table.engine.unique()))}; {failed.task_key.nunique()} failed tasks "
              f"(what each part shows: {doc_link('campaigns.md')}).</p>",
              "<p>Swept: " + (", ".join(html.escape(s.label) for s in data.sweeps) if data is not None and data.sweeps
@@ -161,6 +162,9 @@ def write_campaign_report(table, path, name, data=None, store=""):
               for shown in maps]
     if not failed.empty:
         parts.append("<h2>Failed tasks</h2>")
+        if data is not None and data.failures is not None:
+            parts.append(_queried("each failed engine, law and e_n", data.failures.sql, store,
+                                  data.failures.frame.to_html(index=False)))
         for key, group in failed.groupby("task_key"):
             parts.append(f"<p><b>{html.escape(group.engine.iloc[0])} {html.escape(group.model.iloc[0])} e_n "
                          f"{group.e_n_target.iloc[0]:g}</b>: {html.escape(group.message.iloc[0])}</p>"
