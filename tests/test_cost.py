@@ -13,9 +13,9 @@ import pytest
 from conftest import needs
 from scipy.optimize import brentq
 
-from harness.analyses.cost import (ADAPTIVE, ADAPTIVE_RUNGS, EXTRAPOLATED, TOLERANCES, convergence_orders, per_rung,
-                                   rayleigh_time, recommendations, relative_errors)
-from harness.cost_plan import cost_table, truth_of
+from harness.analyses.cost import (ADAPTIVE, ADAPTIVE_RUNGS, EXTRAPOLATED, TOLERANCES, convergence_orders, fastest,
+                                   per_rung, rayleigh_time, recommendations, relative_errors)
+from harness.cost_plan import FIRST_IMPACTS, cost_table, step_time, truth_of
 from harness.engines import ENGINES
 from harness.laws import compose
 from harness.scene import Scene
@@ -48,6 +48,31 @@ def test_relative_errors_are_scaled_by_the_sweeps_largest_value():
     assert relative_errors(got, truth)["err_omega_star"] == np.inf
     got["t_contact"] = np.nan                              # a metric the engine does not report: no error at all
     assert np.isnan(relative_errors(got, truth)["err_t_contact"])
+
+
+def test_one_slow_timing_does_not_widen_the_spread():
+    """The fastest of repeated timings and its spread: the second fastest less it, whatever a slow outlier took."""
+    assert fastest([1.02, 5.0, 1.0]) == pytest.approx((1.0, 0.02))
+    assert fastest([2.0, np.nan]) == (2.0, pytest.approx(np.nan, nan_ok=True))
+
+
+def test_a_start_up_that_grows_with_the_impacts_is_resolved_by_finer_steps():
+    """A modelled engine: start-up 1 s plus 1 ms per impact, 2e-7 s per impact-step, each timing one of
+    (t, t + 0.05 s, t + 3 s): its time per impact-step is resolved at the first impacts by finer steps alone, and is
+    the model's."""
+    scene = Scene(e_n=(0.5,), angles_deg=(10.0, 40.0))
+    rows = [{"engine": "e", "dialect": "d", "e_n_target": 0.5, "status": "ok", "rung": "200", "steps": 2 * 200,
+             "steps_per_contact": 200.0, "dt": 1e-6}]
+
+    def timed(copies, rung):
+        impacts = len(copies.impacts(0.5)[0])
+        start = 1.0 + 1e-3 * impacts
+        wall = start + 2e-7 * impacts * int(rung)
+        return [wall + 3.0, wall, wall + 0.05], [start + 0.05, start + 3.0, start]
+    step_time(rows, "law", "e", "d", scene, timed)
+    row = rows[-1]
+    assert row["timing"] == "resolved" and row["impacts"] == FIRST_IMPACTS, row["message"]
+    assert row["s_per_impact_step"] == pytest.approx(2e-7, rel=1e-9)
 
 
 NO_DASHPOT = {"tangential-damping": "none"}
@@ -350,11 +375,28 @@ def test_cost_answers_per_engine_within_40_by_120(all_engines_cost):
         assert engine in verdict
 
 
+@needs("yade")
+def test_yades_time_per_impact_step_is_resolved(all_engines_cost):
+    """YADE (a Python interpreter's start-up of about a second) on the small scene: its net time per impact-step is
+    at least 3x its noise and 0.2 s, and every rung of its ladder is priced with it."""
+    proc, _, out = all_engines_cost
+    assert proc.returncode == 0, proc.stderr
+    table = pd.read_csv(out / "cost.csv", dtype={"rung": str})
+    row = table[(table.rung == "per impact-step") & (table.engine == "yade")].iloc[0]
+    assert row.timing == "resolved", row.message
+    assert row.net_wall_s >= 0.2 and 0 < row.s_per_impact_step < 1e-3
+    assert row.s_per_impact_step == pytest.approx(row.net_wall_s / row.steps)
+    ladder = table[(table.engine == "yade") & table.rung.str.fullmatch(r"\d+")]
+    assert np.isfinite(ladder.s_per_impact).all()
+
+
 @needs("liggghts")
 def test_cost_json_is_strict_and_has_the_verdict(all_engines_cost):
-    """`cost --json` parses without NaN or Infinity (null instead) and names each curve's time per impact-step."""
-    _, as_json, _ = all_engines_cost
+    """`cost --json` and cost.json parse without NaN or Infinity (null instead); --json names each curve's time per
+    impact-step."""
+    _, as_json, out = all_engines_cost
     assert as_json.returncode == 0, as_json.stderr
+    assert strict_json((out.parent / "j" / "cost.json").read_text())["model"] == "hertz-mindlin"
     found = strict_json(as_json.stdout)
     assert {row["engine"] for row in found["verdict"]} == {"paper scheme", "liggghts"}
     assert all(row["timing"] in ("resolved", "not resolved") for row in found["step_times"])
@@ -367,6 +409,15 @@ def test_compare_json_is_strict(tmp_path):
                    "--json", "-o", str(tmp_path / "c"))
     assert proc.returncode in (0, 1), proc.stderr
     strict_json(proc.stdout)
+
+
+def test_cost_json_is_written_strict(tmp_path):
+    """cost.json through the strict writer: a value that is not a number (here a failure's e_n) is null."""
+    from harness.engines.batches import FailedRun
+    from harness.outputs import save_cost
+    failure = FailedRun("yade", np.float64(np.nan), "crashed", "")
+    save_cost(str(tmp_path), pd.DataFrame(), {}, compose("hertz-mindlin"), Scene(), {}, [], [failure])
+    assert strict_json((tmp_path / "cost.json").read_text())["failures"][0]["e_n"] is None
 
 
 def test_strict_json_writes_null_for_nan_and_infinity():
