@@ -1,7 +1,9 @@
 """`harness cost`: errors against the converged reference, orders of convergence, recommendations, refusals, the
 engines' curves against their dialects, and the CLI and report."""
+import fcntl
 import json
 import math
+import os
 import subprocess
 import sys
 from html.parser import HTMLParser
@@ -331,13 +333,26 @@ class Page(HTMLParser):
 
 @pytest.fixture(scope="module")
 def all_engines_cost(tmp_path_factory):
-    """One cost study with every installed engine on a small scene: its stdout (default and --json) and directory."""
-    out = tmp_path_factory.mktemp("cost") / "c"
-    proc = run_cli("cost", "--model", "hertz-mindlin", "--en", "0.5", "--angles", "10,40", "--ladder", "20,100,500",
-                   "-o", str(out))
-    as_json = run_cli("cost", "--model", "hertz-mindlin", "--en", "0.5", "--angles", "10,40", "--ladder", "20,100",
-                      "--engines", "liggghts", "--json", "-o", str(out.parent / "j"))
-    return proc, as_json, out
+    """One cost study with every installed engine on a small scene, run once for all test processes (the first to
+    take the lock runs it, the others read its record): its stdout and directory."""
+    shared = tmp_path_factory.getbasetemp()
+    shared = shared.parent if os.environ.get("PYTEST_XDIST_WORKER") else shared    # this session's, every worker's
+    out, record = shared / "cost-all-engines", shared / "cost-all-engines.json"
+    with open(shared / "cost-all-engines.lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        if not record.exists():
+            proc = run_cli("cost", "--model", "hertz-mindlin", "--en", "0.5", "--angles", "10,40", "--ladder",
+                           "20,100,500", "-o", str(out))
+            record.write_text(json.dumps([proc.returncode, proc.stdout, proc.stderr]))
+    return subprocess.CompletedProcess([], *json.loads(record.read_text())), out
+
+
+@pytest.fixture(scope="module")
+def cost_json(tmp_path_factory):
+    """`cost --json` of LIGGGHTS on a small scene: its process and directory."""
+    out = tmp_path_factory.mktemp("cost") / "j"
+    return run_cli("cost", "--model", "hertz-mindlin", "--en", "0.5", "--angles", "10,40", "--ladder", "20,100",
+                   "--engines", "liggghts", "--json", "-o", str(out)), out
 
 
 @needs("liggghts")
@@ -347,7 +362,7 @@ def test_cost_answers_per_engine_within_40_by_120(all_engines_cost):
     """Default printout: at most 40 lines of 120 columns; every engine that ran has a time per impact-step in cost.csv
     (a positive number marked resolved, or an explicit 'not resolved'), in the printout and on the page; the page
     closes every tag, links its CSVs and marks the 20%-of-Rayleigh rule."""
-    proc, _, out = all_engines_cost
+    proc, out = all_engines_cost
     assert proc.returncode == 0, proc.stderr
     lines = proc.stdout.splitlines()
     assert len(lines) <= 40 and max(map(len, lines)) <= 120, (len(lines), max(map(len, lines)))
@@ -379,7 +394,7 @@ def test_cost_answers_per_engine_within_40_by_120(all_engines_cost):
 def test_yades_time_per_impact_step_is_resolved(all_engines_cost):
     """YADE (a Python interpreter's start-up of about a second) on the small scene: its net time per impact-step is
     at least 3x its noise and 0.2 s, and every rung of its ladder is priced with it."""
-    proc, _, out = all_engines_cost
+    proc, out = all_engines_cost
     assert proc.returncode == 0, proc.stderr
     table = pd.read_csv(out / "cost.csv", dtype={"rung": str})
     row = table[(table.rung == "per impact-step") & (table.engine == "yade")].iloc[0]
@@ -391,12 +406,12 @@ def test_yades_time_per_impact_step_is_resolved(all_engines_cost):
 
 
 @needs("liggghts")
-def test_cost_json_is_strict_and_has_the_verdict(all_engines_cost):
+def test_cost_json_is_strict_and_has_the_verdict(cost_json):
     """`cost --json` and cost.json parse without NaN or Infinity (null instead); --json names each curve's time per
     impact-step."""
-    _, as_json, out = all_engines_cost
+    as_json, out = cost_json
     assert as_json.returncode == 0, as_json.stderr
-    assert strict_json((out.parent / "j" / "cost.json").read_text())["model"] == "hertz-mindlin"
+    assert strict_json((out / "cost.json").read_text())["model"] == "hertz-mindlin"
     found = strict_json(as_json.stdout)
     assert {row["engine"] for row in found["verdict"]} == {"paper scheme", "liggghts"}
     assert all(row["timing"] in ("resolved", "not resolved") for row in found["step_times"])
