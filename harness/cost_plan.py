@@ -26,8 +26,9 @@ STARTUP_STEPS = 1                # a start-up run's step cap: stopped after its 
 STARTUP_RESOLUTION = 1000        # steps per contact of the start-up runs (their first check: a tenth of a contact)
 TIMING_STEPS = 200               # a curve's time per impact-step is timed at its rung nearest this many steps/contact,
 FIRST_IMPACTS = 256              # on copies of the scene's impacts of its first e_n: at least this many at first,
-GROWTH = 16                      # this many times more while the net time is not resolved (or as many as it needs),
-MAX_TIMING_IMPACTS = 4096        # up to this many impacts (an engine's start-up grows with them), then finer rungs,
+GROWTH = 16                      # this many times more while the net time is not resolved (or as many as it needs):
+MAX_TIMING_STEPS = 2 ** 16       # steps per contact up to this many (an engine's start-up does not grow with them),
+MAX_TIMING_IMPACTS = 4096        # then impacts up to this many (an engine's start-up grows with them),
 MAX_TIMING_ROUNDS = 5            # in at most this many rounds
 
 
@@ -152,9 +153,9 @@ def timing_rung(rows, engine, dialect, e_n):
 
 def step_time(rows, law_name, engine, dialect, scene, timed, progress=None, finer=True):
     """A curve's time per impact-step: its rung nearest TIMING_STEPS on copies of the scene's impacts of one e_n,
-    FIRST_IMPACTS at first, while the net time (wall less start-up, each the fastest of at least two timings) is not
-    resolved GROWTH times more impacts (or what the last net time says is needed) up to MAX_TIMING_IMPACTS, then (if
-    `finer`: a start-up grows with the impacts) as many times more steps per contact, in at most MAX_TIMING_ROUNDS;
+    FIRST_IMPACTS at first; while the net time (wall less start-up, each the fastest of at least two timings) is not
+    resolved, GROWTH times more (or what the last net time says is needed) steps per contact up to MAX_TIMING_STEPS
+    (if `finer`: the rung has a finer one), then impacts up to MAX_TIMING_IMPACTS, in at most MAX_TIMING_ROUNDS;
     a row saying 'not resolved' where it never is. timed(scene, rung label) -> (wall timings, start-up timings)."""
     e_n = scene.e_n[0]
     rung = timing_rung(rows, engine, dialect, e_n)
@@ -162,6 +163,7 @@ def step_time(rows, law_name, engine, dialect, scene, timed, progress=None, fine
         return
     per_copy = len(scene.impacts(e_n)[0])
     count, scale, tried = max(1, math.ceil(FIRST_IMPACTS / per_copy)), 1, []
+    most = max(count, MAX_TIMING_IMPACTS // per_copy)
     while True:
         label = rung["rung"] if scale == 1 else str(int(rung["rung"]) * scale)
         walls, starts = timed(copies(scene, e_n, count), label)
@@ -172,10 +174,11 @@ def step_time(rows, law_name, engine, dialect, scene, timed, progress=None, fine
             break
         need = min(max(math.ceil(max(MIN_NET_S, RESOLVE_RATIO * noise) * 1.5 / net) if net > noise else GROWTH, 2),
                    GROWTH)
-        if count * per_copy < MAX_TIMING_IMPACTS:
-            count = min(count * need, max(1, MAX_TIMING_IMPACTS // per_copy))
-        elif finer and int(rung["rung"]) * scale * need <= MAX_STEPS_PER_CONTACT:
-            scale *= need
+        finest = MAX_TIMING_STEPS // (int(rung["rung"]) * scale) if finer else 1
+        if finest >= 2:
+            scale *= min(need, finest)
+        elif count < most:
+            count = min(count * need, most)
         else:
             break
     timed_rung = {"rung": label, "steps_per_contact": rung["steps_per_contact"] * scale, "dt": rung["dt"] / scale}

@@ -20,6 +20,7 @@ from .reading import read_table
 from .records import COST_FIELDS, RUN_FIELDS, load_record
 from .results import read_csv, write_csv
 from .scene import scene_of_record
+from .views import strict_json
 
 RUN, ATTRIBUTION, HISTORIES, FAILURES, PRECISION = ("run.json", "attribution.csv", "histories.csv", "failures.csv",
                                                     "precision.csv")
@@ -192,6 +193,6 @@ def save_cost(out_dir, cost, uncertainty, law, scene, overrides, skipped, failur
             for e_n, errs in per_e.items()]
     _table(out_dir, COST_TRUTH, pd.DataFrame(rows))
     scene_fields = {k: v for k, v in asdict(scene).items() if k != "extra"}
-    write_text(os.path.join(out_dir, COST_RUN), json.dumps(
+    write_text(os.path.join(out_dir, COST_RUN), strict_json.dumps(
         {"model": law.name, "overrides": overrides, "scene": scene_fields, "skipped": skipped,
          "failures": [vars(f) for f in failures]}, indent=1))

@@ -1,7 +1,9 @@
 """`harness cost`: errors against the converged reference, orders of convergence, recommendations, refusals, the
 engines' curves against their dialects, and the CLI and report."""
+import fcntl
 import json
 import math
+import os
 import subprocess
 import sys
 from html.parser import HTMLParser
@@ -13,9 +15,9 @@ import pytest
 from conftest import needs
 from scipy.optimize import brentq
 
-from harness.analyses.cost import (ADAPTIVE, ADAPTIVE_RUNGS, EXTRAPOLATED, TOLERANCES, convergence_orders, per_rung,
-                                   rayleigh_time, recommendations, relative_errors)
-from harness.cost_plan import cost_table, truth_of
+from harness.analyses.cost import (ADAPTIVE, ADAPTIVE_RUNGS, EXTRAPOLATED, TOLERANCES, convergence_orders, fastest,
+                                   per_rung, rayleigh_time, recommendations, relative_errors)
+from harness.cost_plan import FIRST_IMPACTS, cost_table, step_time, truth_of
 from harness.engines import ENGINES
 from harness.laws import compose
 from harness.scene import Scene
@@ -48,6 +50,31 @@ def test_relative_errors_are_scaled_by_the_sweeps_largest_value():
     assert relative_errors(got, truth)["err_omega_star"] == np.inf
     got["t_contact"] = np.nan                              # a metric the engine does not report: no error at all
     assert np.isnan(relative_errors(got, truth)["err_t_contact"])
+
+
+def test_one_slow_timing_does_not_widen_the_spread():
+    """The fastest of repeated timings and its spread: the second fastest less it, whatever a slow outlier took."""
+    assert fastest([1.02, 5.0, 1.0]) == pytest.approx((1.0, 0.02))
+    assert fastest([2.0, np.nan]) == (2.0, pytest.approx(np.nan, nan_ok=True))
+
+
+def test_a_start_up_that_grows_with_the_impacts_is_resolved_by_finer_steps():
+    """A modelled engine: start-up 1 s plus 1 ms per impact, 2e-7 s per impact-step, each timing one of
+    (t, t + 0.05 s, t + 3 s): its time per impact-step is resolved at the first impacts by finer steps alone, and is
+    the model's."""
+    scene = Scene(e_n=(0.5,), angles_deg=(10.0, 40.0))
+    rows = [{"engine": "e", "dialect": "d", "e_n_target": 0.5, "status": "ok", "rung": "200", "steps": 2 * 200,
+             "steps_per_contact": 200.0, "dt": 1e-6}]
+
+    def timed(copies, rung):
+        impacts = len(copies.impacts(0.5)[0])
+        start = 1.0 + 1e-3 * impacts
+        wall = start + 2e-7 * impacts * int(rung)
+        return [wall + 3.0, wall, wall + 0.05], [start + 0.05, start + 3.0, start]
+    step_time(rows, "law", "e", "d", scene, timed)
+    row = rows[-1]
+    assert row["timing"] == "resolved" and row["impacts"] == FIRST_IMPACTS, row["message"]
+    assert row["s_per_impact_step"] == pytest.approx(2e-7, rel=1e-9)
 
 
 NO_DASHPOT = {"tangential-damping": "none"}
@@ -306,13 +333,26 @@ class Page(HTMLParser):
 
 @pytest.fixture(scope="module")
 def all_engines_cost(tmp_path_factory):
-    """One cost study with every installed engine on a small scene: its stdout (default and --json) and directory."""
-    out = tmp_path_factory.mktemp("cost") / "c"
-    proc = run_cli("cost", "--model", "hertz-mindlin", "--en", "0.5", "--angles", "10,40", "--ladder", "20,100,500",
-                   "-o", str(out))
-    as_json = run_cli("cost", "--model", "hertz-mindlin", "--en", "0.5", "--angles", "10,40", "--ladder", "20,100",
-                      "--engines", "liggghts", "--json", "-o", str(out.parent / "j"))
-    return proc, as_json, out
+    """One cost study with every installed engine on a small scene, run once for all test processes (the first to
+    take the lock runs it, the others read its record): its stdout and directory."""
+    shared = tmp_path_factory.getbasetemp()
+    shared = shared.parent if os.environ.get("PYTEST_XDIST_WORKER") else shared    # this session's, every worker's
+    out, record = shared / "cost-all-engines", shared / "cost-all-engines.json"
+    with open(shared / "cost-all-engines.lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        if not record.exists():
+            proc = run_cli("cost", "--model", "hertz-mindlin", "--en", "0.5", "--angles", "10,40", "--ladder",
+                           "20,100,500", "-o", str(out))
+            record.write_text(json.dumps([proc.returncode, proc.stdout, proc.stderr]))
+    return subprocess.CompletedProcess([], *json.loads(record.read_text())), out
+
+
+@pytest.fixture(scope="module")
+def cost_json(tmp_path_factory):
+    """`cost --json` of LIGGGHTS on a small scene: its process and directory."""
+    out = tmp_path_factory.mktemp("cost") / "j"
+    return run_cli("cost", "--model", "hertz-mindlin", "--en", "0.5", "--angles", "10,40", "--ladder", "20,100",
+                   "--engines", "liggghts", "--json", "-o", str(out)), out
 
 
 @needs("liggghts")
@@ -322,7 +362,7 @@ def test_cost_answers_per_engine_within_40_by_120(all_engines_cost):
     """Default printout: at most 40 lines of 120 columns; every engine that ran has a time per impact-step in cost.csv
     (a positive number marked resolved, or an explicit 'not resolved'), in the printout and on the page; the page
     closes every tag, links its CSVs and marks the 20%-of-Rayleigh rule."""
-    proc, _, out = all_engines_cost
+    proc, out = all_engines_cost
     assert proc.returncode == 0, proc.stderr
     lines = proc.stdout.splitlines()
     assert len(lines) <= 40 and max(map(len, lines)) <= 120, (len(lines), max(map(len, lines)))
@@ -350,11 +390,28 @@ def test_cost_answers_per_engine_within_40_by_120(all_engines_cost):
         assert engine in verdict
 
 
+@needs("yade")
+def test_yades_time_per_impact_step_is_resolved(all_engines_cost):
+    """YADE (a Python interpreter's start-up of about a second) on the small scene: its net time per impact-step is
+    at least 3x its noise and 0.2 s, and every rung of its ladder is priced with it."""
+    proc, out = all_engines_cost
+    assert proc.returncode == 0, proc.stderr
+    table = pd.read_csv(out / "cost.csv", dtype={"rung": str})
+    row = table[(table.rung == "per impact-step") & (table.engine == "yade")].iloc[0]
+    assert row.timing == "resolved", row.message
+    assert row.net_wall_s >= 0.2 and 0 < row.s_per_impact_step < 1e-3
+    assert row.s_per_impact_step == pytest.approx(row.net_wall_s / row.steps)
+    ladder = table[(table.engine == "yade") & table.rung.str.fullmatch(r"\d+")]
+    assert np.isfinite(ladder.s_per_impact).all()
+
+
 @needs("liggghts")
-def test_cost_json_is_strict_and_has_the_verdict(all_engines_cost):
-    """`cost --json` parses without NaN or Infinity (null instead) and names each curve's time per impact-step."""
-    _, as_json, _ = all_engines_cost
+def test_cost_json_is_strict_and_has_the_verdict(cost_json):
+    """`cost --json` and cost.json parse without NaN or Infinity (null instead); --json names each curve's time per
+    impact-step."""
+    as_json, out = cost_json
     assert as_json.returncode == 0, as_json.stderr
+    assert strict_json((out / "cost.json").read_text())["model"] == "hertz-mindlin"
     found = strict_json(as_json.stdout)
     assert {row["engine"] for row in found["verdict"]} == {"paper scheme", "liggghts"}
     assert all(row["timing"] in ("resolved", "not resolved") for row in found["step_times"])
@@ -367,6 +424,15 @@ def test_compare_json_is_strict(tmp_path):
                    "--json", "-o", str(tmp_path / "c"))
     assert proc.returncode in (0, 1), proc.stderr
     strict_json(proc.stdout)
+
+
+def test_cost_json_is_written_strict(tmp_path):
+    """cost.json through the strict writer: a value that is not a number (here a failure's e_n) is null."""
+    from harness.engines.batches import FailedRun
+    from harness.outputs import save_cost
+    failure = FailedRun("yade", np.float64(np.nan), "crashed", "")
+    save_cost(str(tmp_path), pd.DataFrame(), {}, compose("hertz-mindlin"), Scene(), {}, [], [failure])
+    assert strict_json((tmp_path / "cost.json").read_text())["failures"][0]["e_n"] is None
 
 
 def test_strict_json_writes_null_for_nan_and_infinity():
