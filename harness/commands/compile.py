@@ -15,10 +15,10 @@ def add(sub, describe):
 
 def main(args):
     from ..jit import cache_base
-    from ..laws import LAWS, get_law
+    from ..laws.table import LAWS, known_law
     from ..views.progress import Progress
     from ..warm_up import compile_laws
-    laws = tuple(get_law(name.strip()).name for name in args.laws.split(",")) if args.laws else tuple(LAWS)
+    laws = tuple(known_law(name.strip()) for name in args.laws.split(",")) if args.laws else tuple(LAWS)
     start = time.perf_counter()
     with Progress("compile", quiet=args.quiet, compiling=lambda: 0.0) as progress:    # every step compiles
         seconds = compile_laws(laws, progress)

@@ -9,8 +9,7 @@ import sys
 from functools import lru_cache
 
 from ..errors import UserError
-from ..laws import compose
-from ..laws.law import replace_submodels
+from .. import laws            # the composed laws (and their kernels) load when a dialect is first asked for
 from .builds import sha256
 from .executable import banner, chosen, missing, present
 from .protocol import Status, check_options as check_declared
@@ -158,7 +157,7 @@ class Engine:
         sphere) in place of the paper's sub-models."""
         self.check_options(law_name, options)
         chosen_ = self.PAIR_DIALECTS if target == "sphere" else self.DIALECTS
-        return replace_submodels(compose(law_name), chosen_[law_name], self.dialect_label)
+        return laws.replace_submodels(laws.compose(law_name), chosen_[law_name], self.dialect_label)
 
     def dialect(self, law_name, options=None, target="wall"):
         """The law as this engine computes it (a harness.laws.Law), for the options given, against a wall or a
@@ -166,7 +165,7 @@ class Engine:
         replaces sub-model KEY of the dialect, which the engine's inputs then follow."""
         options, submodels = split_submodels(options)
         law = self.composition(law_name, options, target)
-        law = replace_submodels(law, submodels) if submodels else law
+        law = laws.replace_submodels(law, submodels) if submodels else law
         return law if law.dialect == self.dialect_label else dataclasses.replace(law, dialect=self.dialect_label)
 
     def release_dialect(self, law_name, release):
@@ -198,7 +197,7 @@ class Engine:
             dialect = self.dialect(law_name, options, target)
         except UserError:               # options its inputs refuse for this law or target
             return False
-        wanted = replace_submodels(compose(law_name), {key: value}).describe()[key]
+        wanted = laws.replace_submodels(laws.compose(law_name), {key: value}).describe()[key]
         return dialect.describe()[key] == wanted
 
     def precision_runs(self, law, scene, options):
