@@ -1,16 +1,7 @@
 """`harness compile`: every law's kernels compiled into numba's cache now, so that no first run waits for them."""
 import time
 
-from .options import EXIT_OK, add_output_options
-
-EXAMPLE = "harness compile            # once after installing (tools/setup.sh runs it); --laws thornton for one law"
-
-
-def add(sub, describe):
-    p = describe(sub, "compile", EXAMPLE)
-    p.add_argument("--laws", default=None, metavar="LIST", help="comma-separated laws (default: every law)")
-    add_output_options(p)
-    p.set_defaults(func=main)
+from .options import EXIT_OK
 
 
 def main(args):

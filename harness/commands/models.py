@@ -7,12 +7,6 @@ from ..materials import MATERIALS
 from .options import EXIT_OK
 
 
-def add(sub, describe):
-    p = describe(sub, "models", "harness models --json")
-    p.add_argument("--json", action="store_true", help="one machine-readable list")
-    p.set_defaults(func=main)
-
-
 def support(law_name):
     """{engine: the engine's model of the law, or None} for every external engine."""
     return {name: (engine.COUNTERPARTS[law_name] if engine.supports(law_name) else None)
