@@ -1,15 +1,15 @@
 """`harness compile`: every law's kernels compiled into numba's cache now, so that no first run waits for them."""
 import time
 
+from ..laws.table import LAWS, known_law
 from .options import EXIT_OK
 
 
 def main(args):
-    from ..jit import cache_base
-    from ..laws.table import LAWS, known_law
+    laws = tuple(known_law(name.strip()) for name in args.laws.split(",")) if args.laws else tuple(LAWS)
+    from ..jit import cache_base            # numba: once the laws are known
     from ..views.progress import Progress
     from ..warm_up import compile_laws
-    laws = tuple(known_law(name.strip()) for name in args.laws.split(",")) if args.laws else tuple(LAWS)
     start = time.perf_counter()
     with Progress("compile", quiet=args.quiet, compiling=lambda: 0.0) as progress:    # every step compiles
         seconds = compile_laws(laws, progress)
