@@ -28,8 +28,8 @@ COMMANDS = {   # label -> harness arguments, exit code expected
     "models": (["models"], 0),
     "engines": (["engines"], 0),
     "compare --help": (["compare", "--help"], 0),
-    "run --model nosuch (refused)": (["run", "--model", "nosuch", "-o", "nosuch.csv"], 2),
-    "compare --model nosuch (refused)": (["compare", "--model", "nosuch"], 2),
+    "run: unknown law": (["run", "--model", "nosuch", "-o", "nosuch.csv"], 2),
+    "compare: unknown law": (["compare", "--model", "nosuch"], 2),
 }
 SMOKE = ("--help",)
 
@@ -70,7 +70,7 @@ def exported(rev, scratch):
 
 
 def spread(walls):
-    return f"{min(walls):5.2f} / {statistics.median(walls):5.2f}"
+    return f"{min(walls):.2f} / {statistics.median(walls):.2f}"
 
 
 def main():
@@ -84,19 +84,19 @@ def main():
     labels = SMOKE if args.smoke else tuple(COMMANDS)
     with tempfile.TemporaryDirectory(prefix="harness-bench-startup-") as scratch:
         before = {rev: exported(rev, scratch) for rev in args.before or BEFORE}
-        print(f"{'min / median [s]':32s} {'today cold':>13s} {'today warm':>13s}"
-              + "".join(f" {rev + ' cold':>13s} {rev + ' warm':>13s} {'RATIO':>6s}" for rev in before))
+        print(f"{'min / median [s]':20s} {'today cold':>12s} {'today warm':>12s}"
+              + "".join(f" {rev + ' cold':>13s} {rev + ' warm':>13s} {'RATIO':>5s}" for rev in before))
         for label in labels:
             arguments, expected = COMMANDS[label]
             cold, warm = measure(ROOT, arguments, expected, repeat, scratch)
-            line = f"{label:32s} {spread(cold):>13s} {spread(warm):>13s}"
+            line = f"{label:20s} {spread(cold):>12s} {spread(warm):>12s}"
             for tree in before.values():
                 if tree is None:
-                    line += f" {'(no git)':>13s} {'':13s} {'':6s}"
+                    line += f" {'(no git)':>13s} {'':13s} {'':5s}"
                     continue
                 old_cold, old_warm = measure(tree, arguments, expected, repeat, scratch)
                 line += (f" {spread(old_cold):>13s} {spread(old_warm):>13s} "
-                         f"{statistics.median(old_warm) / statistics.median(warm):6.1f}")
+                         f"{statistics.median(old_warm) / statistics.median(warm):5.1f}")
             print(line)
         print("RATIO: the reference's warm median over today's")
 
