@@ -9,6 +9,7 @@ import sys
 
 import pytest
 
+from harness.commands import COMMANDS
 from harness.views.progress import Progress
 
 HEAVY = ("numba", "pandas", "matplotlib", "scipy", "dask")
@@ -40,13 +41,47 @@ def test_help_version_and_a_refused_option_import_no_library_of_the_physics(argv
     assert not [m for m in modules if m.split(".")[0] in HEAVY + ("numpy",)], modules
 
 
-@pytest.mark.parametrize("argv", [["models"], ["engines"], ["run", "--model", "nosuch", "-o", "r.csv"]])
-def test_listing_and_an_unknown_law_load_neither_the_solver_nor_plotting(argv, tmp_path):
-    """The laws are compiled functions (numba is imported), but nothing plans, simulates, tabulates or draws."""
+@pytest.mark.parametrize("argv", [["models"], ["engines"], ["run", "--model", "nosuch", "-o", "r.csv"],
+                                  ["compare", "--model", "nosuch"], ["compile", "--laws", "nosuch"]])
+def test_listing_and_an_unknown_law_load_no_kernel_table_or_plot(argv, tmp_path):
+    """The laws' names and labels come from their registration table: no compiled kernel (numba), no table
+    (pandas), no plotting, no solver."""
     code, modules = imported(argv, tmp_path)
     assert code == (2 if "nosuch" in argv else 0)
-    assert not [m for m in modules if m.split(".")[0] in ("pandas", "matplotlib", "dask")], modules
-    assert not [m for m in modules if m in ("harness.plan", "harness.solver.batch", "harness.api")], modules
+    assert not [m for m in modules if m.split(".")[0] in HEAVY], modules
+    assert not [m for m in modules if m in ("harness.plan", "harness.solver.batch", "harness.api",
+                                            "harness.laws.named")], modules
+
+
+@pytest.mark.parametrize("command", ["compare", "run", "cost", "calibrate", "paper", "benchmark", "campaign", "check",
+                                     "baseline", "render", "report", "query", "compile", "models", "engines", "cite"])
+def test_a_commands_help_imports_none_of_its_implementation(command, tmp_path):
+    code, modules = imported([command, "--help"], tmp_path)
+    assert code == 0
+    assert not [m for m in modules if m.split(".")[0] in HEAVY], modules
+    implementation = COMMANDS[command][0]
+    assert f"harness.commands.{implementation}" not in modules, modules
+
+
+def test_models_prints_the_composed_laws():
+    """What `harness models --json` prints from the table is what the composed laws (their sub-models) describe."""
+    from harness.laws import LAWS
+    done = subprocess.run([sys.executable, "-m", "harness", "models", "--json"], capture_output=True, text=True,
+                          timeout=300, check=True)
+    printed = json.loads(done.stdout)
+    assert [law["name"] for law in printed] == list(LAWS)
+    assert [(law["summary"], law["provisional"], law["submodels"]) for law in printed] == [
+        (law.summary, law.provisional, law.describe()) for law in LAWS.values()]
+
+
+def test_a_table_that_misnames_a_composed_law_is_refused(monkeypatch):
+    import dataclasses
+
+    from harness.laws import LAWS, named
+    wrong = dataclasses.replace(named.TABLE["thornton"], tangential="mindlin(total)")
+    monkeypatch.setitem(named.TABLE, "thornton", wrong)
+    with pytest.raises(ImportError, match="thornton"):
+        named.check_table(LAWS)
 
 
 def test_every_command_is_listed_and_its_module_builds_it():

@@ -18,14 +18,13 @@ import pyarrow.parquet as pq
 from ..errors import UserError
 from ..keys import run_key
 from ..results import COLUMNS, TEXT
+from .drop import DROP
 from .fragments import KEY, LOG_TAIL, Damaged, is_fragment, keys_of
 from .reading import kind_of
 
 SCENE = ("material", "wall", "target", "speed")   # what a task's scene adds to its rows (the swept parameters
 #                                                 the results columns leave out)
 STRINGS = TEXT + (KEY, LOG_TAIL, "material", "wall", "target")
-DROP = "--drop-damaged"
-DROP_HELP = "remove the store's damaged fragments (named when found) so that their tasks rerun"
 
 
 class DamagedStore(UserError):

@@ -14,7 +14,8 @@ from .stopping import Stopped, stop_behind, stop_on_signals
 EXIT_CLOSED_OUTPUT = 128 + signal.SIGPIPE
 
 
-COMMANDS = {   # name -> (its module, its summary): the parser lists every command but imports the chosen one's alone
+COMMANDS = {   # name -> (its module, its summary): the parser lists every command, parsers.MODULE_parser builds the
+    #            chosen one's options and harness.commands.MODULE runs it
     "models": ("models", "the laws, their sub-models and the engines that support each"),
     "engines": ("engines", "every engine and build found here (pick one with --engines ENGINE@VERSION)"),
     "run": ("run", "simulate one law over a scene with the reference solver, write a results CSV"),
@@ -55,10 +56,11 @@ def chosen_command(argv):
 
 
 def build_parser(chosen=None):
-    """The parser: the commands in `chosen` (None: every one) built in full from their modules, the others by name
-    and summary alone, so that `harness --help`, `--version` and a typo import no command's dependencies."""
-    import importlib
+    """The parser: the commands in `chosen` (None: every one) built in full (parsers.py: their options alone, never
+    their modules), the others by name and summary alone, so that `harness --help`, `--version` and a typo build no
+    command's options, and `harness COMMAND --help` imports none of its implementation."""
     from ..engines import EXTERNAL
+    from . import parsers
     parser = Parser(prog="harness", formatter_class=argparse.RawDescriptionHelpFormatter,
                     description="Cross-validate DEM contact force models against the literature (Thornton, Cummins "
                                 f"& Cleary 2013) and against the engines {', '.join(EXTERNAL)}.",
@@ -70,9 +72,9 @@ def build_parser(chosen=None):
     for name, (module, summary) in COMMANDS.items():
         if module not in full:
             sub.add_parser(name, help=summary, add_help=False)
-        elif module not in loaded:          # a module adds every command it holds (check.py: check and baseline)
+        elif module not in loaded:          # a module's parser adds every command it holds (check and baseline)
             loaded.add(module)
-            importlib.import_module(f"{__name__}.{module}").add(sub, describe)
+            getattr(parsers, f"{module}_parser")(sub, describe)
     return parser
 
 

@@ -11,37 +11,12 @@ from ..views.figure_files import FIGURES
 from ..views.progress import Progress
 from ..views.terminal import text_table
 from ..views import strict_json
-from .options import (EXIT_DISAGREE, EXIT_ENGINE, EXIT_OK, add_output_options, check_entries,
-                      check_output_directory)
-
-EXAMPLE = "harness benchmark chung-ooi --engines reference,liggghts -o chung-ooi/"
-SUITES = ("chung-ooi",)
-EXIT_CODES = """exit codes:
-  0  done; every check made passes at the suite's published values, and every engine asked for by name ran
-  1  a check fails: a quantity off its published value by more than its tolerance (the CSV and the page say
-     which, and what caused it)
-  2  bad input (one line on stderr says which); nothing was run
-  3  no check failed, but an engine could not run (missing, crashed, timed out: what and why is printed) while it
-     was asked for by name or had runs that failed, or no check was made
-  4  an internal error of harness (a bug: the traceback is printed)
-  130 interrupted (Ctrl-C), 143 terminated (SIGTERM), 129 hung up (SIGHUP): engines stopped, temporary files
-     removed"""
-
-
-def add(sub, describe):
-    p = describe(sub, "benchmark", EXAMPLE, EXIT_CODES)
-    p.add_argument("suite", choices=SUITES, help="the suite: chung-ooi")
-    p.add_argument("--engines", default=None, metavar="LIST",
-                   help=f"comma-separated engines of {', '.join(ENGINES)} (default: every one; those missing are "
-                        "reported as not run)")
-    p.add_argument("-o", "--output", default="harness-chung-ooi", metavar="DIR",
-                   help="output directory (default %(default)s)")
-    add_output_options(p, json=True)
-    p.set_defaults(func=main)
+from .options import EXIT_DISAGREE, EXIT_ENGINE, EXIT_OK, check_entries, check_output_directory
 
 
 def exit_code(ok, checked, could_not_run):
-    """EXIT_CODES: 1 when a check fails; 3 when none fails but an engine could not run or nothing was checked; 0."""
+    """BENCHMARK_EXIT_CODES (options.py): 1 when a check fails; 3 when none fails but an engine could not run or
+    nothing was checked; 0."""
     if checked and not ok:
         return EXIT_DISAGREE
     if could_not_run or not checked:
@@ -50,7 +25,7 @@ def exit_code(ok, checked, could_not_run):
 
 
 def main(args):
-    """chung-ooi.csv and chung-ooi.html in DIR; the exit code of EXIT_CODES."""
+    """chung-ooi.csv and chung-ooi.html in DIR; the exit code of BENCHMARK_EXIT_CODES."""
     named = args.engines is not None
     engines = known_engines(None if not named else tuple(n.strip() for n in args.engines.split(",") if n.strip()),
                             args.engines)

@@ -4,32 +4,13 @@ import os
 
 from ..api import calibrate_request, check_timestep_tolerance
 from ..calibration.files import RECORD, TABLES, rendered, save
-from ..engines import EXTERNAL, get_engine
+from ..engines import get_engine
 from ..files import write_text
 from ..request import Request
 from ..views.calibration_html import write_calibration_report
 from ..views.terminal import print_calibration
 from ..views.figure_files import FIGURES
-from .options import (EXIT_ENGINE, EXIT_OK, add_output_options, add_scene_options, check_entries,
-                      check_output_directory, keywords, number)
-
-EXAMPLE = "harness calibrate --model hertz-mindlin --engine lammps --en 0.25,0.5,0.9 --angles 0:80:10 -o calibrated/"
-
-
-def add(sub, describe):
-    p = describe(sub, "calibrate", EXAMPLE)
-    p.add_argument("--model", required=True, help="law name (see `harness models`)")
-    p.add_argument("--engine", required=True, help=f"the engine to calibrate ({', '.join(EXTERNAL)}, or a build "
-                                                    "ENGINE@VERSION)")
-    add_scene_options(p)
-    p.add_argument("--tolerance", dest="tolerances", action="append", default=[], metavar="NAME=VALUE",
-                   help="a tolerance of the physics verdict before and after (as compare's)")
-    p.add_argument("--timestep-tolerance", type=number, default=1e-2, metavar="X",
-                   help="the time-step advice: largest relative error on e_n, e_t, Omega*, contact time and peak "
-                        "force against the engine's own formulas at a vanishing step (default 0.01)")
-    p.add_argument("-o", "--output", default="calibrated", metavar="DIR", help="output directory (default %(default)s)")
-    add_output_options(p)
-    p.set_defaults(func=main)
+from .options import EXIT_ENGINE, EXIT_OK, check_entries, check_output_directory, keywords
 
 
 def main(args):

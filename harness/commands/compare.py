@@ -9,7 +9,7 @@ import pandas as pd
 from ..analyses.physics import DEVIATES
 from ..analyses.verdict import DISAGREE, NOT_COMPARED, verdict
 from ..api import compare_request
-from ..campaign.store import DROP, DROP_HELP, RunCache, Store
+from ..campaign.store import RunCache, Store
 from ..comparison import Comparison
 from ..files import discard
 from ..lock import exclusive
@@ -21,31 +21,7 @@ from ..views.html import rebuild
 from ..views.progress import Progress
 from ..views.terminal import print_comparison, print_summary, verdict_line
 from ..views import strict_json
-from .options import (EXIT_DISAGREE, EXIT_ENGINE, EXIT_OK, add_engine_options, add_output_options,
-                      add_scene_options, check_results_directory, check_store, keywords)
-
-EXAMPLE = "harness compare --model hertz-mindlin --engines liggghts --en 0.5 --require paper -o out/"
-
-
-def add(sub, describe):
-    p = describe(sub, "compare", EXAMPLE)
-    p.add_argument("--model", required=True, help="law name (see `harness models`)")
-    add_engine_options(p)
-    add_scene_options(p)
-    p.add_argument("-o", "--output", default="harness-out", metavar="DIR", help="output directory (default %(default)s)")
-    p.add_argument("--store", metavar="STORE", help="a campaign store: runs it holds are taken from it, the others "
-                                                    "are added to it")
-    p.add_argument(DROP, action="store_true", help=DROP_HELP)
-    verdict_options = p.add_argument_group("physics verdict (does each engine reproduce the paper law?)")
-    verdict_options.add_argument("--tolerance", dest="tolerances", action="append", default=[], metavar="NAME=VALUE",
-                                 help="a tolerance of the physics verdict, repeatable: velocity= (fraction of the "
-                                      "incident speed, default 0.01), e_n= (absolute, 0.01), coulomb= (fraction of "
-                                      "mu J_n, 0.001), energy= (fraction of the kinetic energy, 1e-6)")
-    verdict_options.add_argument("--require", choices=("paper",), default=None,
-                                 help="--require paper: exit 1 also when an engine deviates from the paper law "
-                                      "(by default the exit code is the agreement verdict alone)")
-    add_output_options(p, json=True, verbose=True)
-    p.set_defaults(func=main)
+from .options import EXIT_DISAGREE, EXIT_ENGINE, EXIT_OK, check_results_directory, check_store, keywords
 
 
 def main(args):

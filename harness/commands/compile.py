@@ -1,24 +1,15 @@
 """`harness compile`: every law's kernels compiled into numba's cache now, so that no first run waits for them."""
 import time
 
-from .options import EXIT_OK, add_output_options
-
-EXAMPLE = "harness compile            # once after installing (tools/setup.sh runs it); --laws thornton for one law"
-
-
-def add(sub, describe):
-    p = describe(sub, "compile", EXAMPLE)
-    p.add_argument("--laws", default=None, metavar="LIST", help="comma-separated laws (default: every law)")
-    add_output_options(p)
-    p.set_defaults(func=main)
+from ..laws.table import LAWS, known_law
+from .options import EXIT_OK
 
 
 def main(args):
-    from ..jit import cache_base
-    from ..laws import LAWS, get_law
+    laws = tuple(known_law(name.strip()) for name in args.laws.split(",")) if args.laws else tuple(LAWS)
+    from ..jit import cache_base            # numba: once the laws are known
     from ..views.progress import Progress
     from ..warm_up import compile_laws
-    laws = tuple(get_law(name.strip()).name for name in args.laws.split(",")) if args.laws else tuple(LAWS)
     start = time.perf_counter()
     with Progress("compile", quiet=args.quiet, compiling=lambda: 0.0) as progress:    # every step compiles
         seconds = compile_laws(laws, progress)

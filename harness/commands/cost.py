@@ -5,7 +5,7 @@ import pandas as pd
 
 from ..analyses.cost import COLUMNS, LADDER, convergence_orders, recommendations, step_times, verdict
 from ..api import able_engines
-from ..campaign.store import DROP, DROP_HELP, RunCache, Store
+from ..campaign.store import RunCache, Store
 from ..cost_plan import check_ladder, cost_table
 from ..errors import UserError
 from ..files import discard
@@ -17,25 +17,7 @@ from ..views.html import rebuild
 from ..views.progress import Progress
 from ..views.terminal import print_cost
 from ..views import strict_json
-from .options import (EXIT_ENGINE, EXIT_OK, add_engine_options, add_output_options, add_scene_options,
-                      check_results_directory, check_store, keywords)
-
-EXAMPLE = "harness cost --model hertz-mindlin --en 0.9,0.3 --angles 0:80:20 -o cost/"
-
-
-def add(sub, describe):
-    p = describe(sub, "cost", EXAMPLE)
-    p.add_argument("--model", required=True, help="law name (see `harness models`)")
-    add_engine_options(p)
-    add_scene_options(p, resolution=False)
-    p.add_argument("--ladder", default=None, metavar="LIST",
-                   help="steps per contact to try (default 5,10,20,50,100,200,500,1000,5000)")
-    p.add_argument("-o", "--output", default="harness-out", metavar="DIR", help="output directory (default %(default)s)")
-    p.add_argument("--store", metavar="STORE", help="a campaign store: the converged truths' runs are taken from it "
-                                                    "or added to it (timed runs never are)")
-    p.add_argument(DROP, action="store_true", help=DROP_HELP)
-    add_output_options(p, json=True, verbose=True)
-    p.set_defaults(func=main)
+from .options import EXIT_ENGINE, EXIT_OK, check_results_directory, check_store, keywords
 
 
 def ladder_from_text(text):

@@ -6,12 +6,6 @@ from ..engines.builds import DIRECTORY_VARIABLE, builds, directory
 from .options import EXIT_OK
 
 
-def add(sub, describe):
-    p = describe(sub, "engines", "harness engines --json")
-    p.add_argument("--json", action="store_true", help="one machine-readable list")
-    p.set_defaults(func=main)
-
-
 def found():
     """[{engine, name, version, binary, sha256, origin, dialect_note}] of every build, and the engines with none
     ({engine, missing})."""

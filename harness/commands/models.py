@@ -2,15 +2,9 @@
 import json
 
 from ..engines import ENGINES
-from ..laws import LAWS
+from ..laws.table import LAWS
 from ..materials import MATERIALS
 from .options import EXIT_OK
-
-
-def add(sub, describe):
-    p = describe(sub, "models", "harness models --json")
-    p.add_argument("--json", action="store_true", help="one machine-readable list")
-    p.set_defaults(func=main)
 
 
 def support(law_name):
@@ -21,15 +15,15 @@ def support(law_name):
 
 def main(args):
     if args.json:
-        print(json.dumps([{"name": law.name, "provisional": law.provisional, "summary": law.summary,
-                           "submodels": law.describe(), "engines": {"reference": "paper", **support(law.name)}}
-                          for law in LAWS.values()], indent=2))
+        print(json.dumps([{"name": name, "provisional": law.provisional, "summary": law.summary,
+                           "submodels": law.describe(), "engines": {"reference": "paper", **support(name)}}
+                          for name, law in LAWS.items()], indent=2))
         return EXIT_OK
     rows = [("law", "normal", "damping", "end", "tangential", "tangential dashpot", "engines")]
-    for law in LAWS.values():
+    for name, law in LAWS.items():
         d = law.describe()
-        engines = ", ".join(["reference"] + [f"{e} ({m})" for e, m in support(law.name).items() if m])
-        rows.append((law.name + (" [provisional]" if law.provisional else ""), d["normal"], d["damping"], d["end"],
+        engines = ", ".join(["reference"] + [f"{e} ({m})" for e, m in support(name).items() if m])
+        rows.append((name + (" [provisional]" if law.provisional else ""), d["normal"], d["damping"], d["end"],
                      d["tangential"], d["tangential-damping"], engines))
     widths = [max(len(row[i]) for row in rows) for i in range(6)]
     for row in rows:

@@ -22,6 +22,17 @@ EXIT_CODES = """exit codes:
      removed, finished results kept
   141 its output was closed before it was all printed (`harness ... | head`): ended quietly, files kept"""
 
+BENCHMARK_EXIT_CODES = """exit codes:
+  0  done; every check made passes at the suite's published values, and every engine asked for by name ran
+  1  a check fails: a quantity off its published value by more than its tolerance (the CSV and the page say
+     which, and what caused it)
+  2  bad input (one line on stderr says which); nothing was run
+  3  no check failed, but an engine could not run (missing, crashed, timed out: what and why is printed) while it
+     was asked for by name or had runs that failed, or no check was made
+  4  an internal error of harness (a bug: the traceback is printed)
+  130 interrupted (Ctrl-C), 143 terminated (SIGTERM), 129 hung up (SIGHUP): engines stopped, temporary files
+     removed"""
+
 
 class Parser(argparse.ArgumentParser):
     """argparse that reports a usage error as one line and exit code 2, and reads -1e4 as a number, not an option."""

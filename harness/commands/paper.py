@@ -9,18 +9,7 @@ from ..views.paper_html import FILES, NORMAL, OBLIQUE, PUBLISHED, SLIDING, write
 from ..views.progress import Progress
 from ..views.terminal import published_summary, text_table
 from ..views.figure_files import FIGURES
-from .options import EXIT_OK, add_output_options, check_entries, check_output_directory
-
-EXAMPLE = "harness paper -o paper/"
-
-
-def add(sub, describe):
-    p = describe(sub, "paper", EXAMPLE)
-    p.add_argument("--laws", default=None, metavar="LIST", help="comma-separated laws (default: every law)")
-    p.add_argument("--steps-per-contact", type=int, default=2000, metavar="N", help="resolution (default 2000)")
-    p.add_argument("-o", "--output", default="harness-paper", metavar="DIR", help="output directory (default %(default)s)")
-    add_output_options(p)
-    p.set_defaults(func=main)
+from .options import EXIT_OK, check_entries, check_output_directory
 
 
 def main(args):

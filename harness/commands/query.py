@@ -4,20 +4,9 @@ import pandas as pd
 
 from ..campaign.limits import MAX_CELL_CHARS
 from ..campaign.query import query
-from ..campaign.store import DROP, DROP_HELP, Store
+from ..campaign.store import Store
 from ..errors import UserError
 from .options import EXIT_OK
-
-
-def add(sub, describe):
-    p = describe(sub, "query", "harness query campaign-store \"SELECT engine, max(abs(e_t)) FROM results GROUP BY "
-                 "engine\"")
-    p.add_argument("store", metavar="STORE")
-    p.add_argument("sql", metavar="SQL", help="one SELECT (or WITH, DESCRIBE, SHOW, SUMMARIZE); nothing that writes, "
-                   "reads other files, attaches or installs")
-    p.add_argument("--csv", action="store_true", help="print CSV instead of a table")
-    p.add_argument(DROP, action="store_true", help=DROP_HELP)
-    p.set_defaults(func=main)
 
 
 def main(args):

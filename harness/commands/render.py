@@ -3,29 +3,12 @@ import os
 
 from ..api import options_for
 from ..calibration.files import read, rendered
-from ..engines import EXTERNAL, get_engine
+from ..engines import get_engine
 from ..errors import UserError
 from ..files import write_text
 from ..plan import engine_runs
 from ..request import Request
-from .options import (EXIT_OK, add_output_options, add_scene_options, check_entries, check_output_directory,
-                      engine_option, keywords)
-
-EXAMPLE = "harness render --model hertz-mindlin --engine liggghts --en 0.5 -o decks/"
-
-
-def add(sub, describe):
-    p = describe(sub, "render", EXAMPLE)
-    p.add_argument("--model", help="law name (see `harness models`)")
-    p.add_argument("--engine", help=f"the engine whose input to write ({', '.join(EXTERNAL)})")
-    p.add_argument("--calibration", metavar="FILE", help="a calibration.json of `harness calibrate`: its engine's "
-                                                         "inputs at the calibrated values (no other option needed)")
-    p.add_argument("--engine-option", dest="engine_options", type=engine_option, action="append", default=[],
-                   metavar="ENGINE:KEY=VALUE", help="an engine's option (see `harness compare --help`)")
-    add_scene_options(p)
-    p.add_argument("-o", "--output", required=True, metavar="DIR", help="directory for the inputs")
-    add_output_options(p)
-    p.set_defaults(func=main)
+from .options import EXIT_OK, check_entries, check_output_directory, keywords
 
 
 def main(args):

@@ -2,14 +2,7 @@
 from ..outputs import REPORT
 from ..views.figure_files import FIGURES
 from ..views.html import rebuild
-from .options import EXIT_OK, add_output_options, check_entries
-
-
-def add(sub, describe):
-    p = describe(sub, "report", "harness report harness-out")
-    p.add_argument("directory", metavar="DIR")
-    add_output_options(p)
-    p.set_defaults(func=main)
+from .options import EXIT_OK, check_entries
 
 
 def main(args):

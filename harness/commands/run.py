@@ -1,21 +1,8 @@
 """`harness run`: one law over a scene on the reference solver; a results CSV."""
-from .options import EXIT_OK, add_output_options, add_scene_options, check_output_file, keywords
-
-EXAMPLE = "harness run --model thornton --en 0.9,0.5,0.1 --angles 0:80:10 -o results.csv"
-
-
-def add(sub, describe):
-    p = describe(sub, "run", EXAMPLE)
-    p.add_argument("--model", required=True, help="law name (see `harness models`)")
-    add_scene_options(p)
-    p.add_argument("-o", "--output", required=True, help="results CSV to write")
-    add_output_options(p)
-    p.set_defaults(func=main)
+from .options import EXIT_OK, check_output_file, keywords
 
 
 def main(args):
-    from ..laws import get_law
-    get_law(args.model)             # an unknown law is refused before the solver loads
     from ..api import run_request
     from ..request import Request
     from ..results import write_csv

@@ -9,8 +9,6 @@ import sys
 from functools import lru_cache
 
 from ..errors import UserError
-from ..laws import compose
-from ..laws.law import replace_submodels
 from .builds import sha256
 from .executable import banner, chosen, missing, present
 from .protocol import Status, check_options as check_declared
@@ -156,6 +154,7 @@ class Engine:
     def composition(self, law_name, options, target):
         """Its dialect of the law for its own options: the paper law with DIALECTS (PAIR_DIALECTS against a
         sphere) in place of the paper's sub-models."""
+        from ..laws import compose, replace_submodels      # the kernels: when a dialect is asked for, not listed
         self.check_options(law_name, options)
         chosen_ = self.PAIR_DIALECTS if target == "sphere" else self.DIALECTS
         return replace_submodels(compose(law_name), chosen_[law_name], self.dialect_label)
@@ -164,6 +163,7 @@ class Engine:
         """The law as this engine computes it (a harness.laws.Law), for the options given, against a wall or a
         sphere (the two-sphere dialect, reduced to the equivalent wall impact). An option `with:KEY` (with_options)
         replaces sub-model KEY of the dialect, which the engine's inputs then follow."""
+        from ..laws import replace_submodels
         options, submodels = split_submodels(options)
         law = self.composition(law_name, options, target)
         law = replace_submodels(law, submodels) if submodels else law
@@ -198,6 +198,7 @@ class Engine:
             dialect = self.dialect(law_name, options, target)
         except UserError:               # options its inputs refuse for this law or target
             return False
+        from ..laws import compose, replace_submodels
         wanted = replace_submodels(compose(law_name), {key: value}).describe()[key]
         return dialect.describe()[key] == wanted
 

@@ -2,7 +2,7 @@
 compiled kernels of harness/solver, at a number of steps per contact, a time step or converged."""
 import os
 
-from ...laws import LAWS
+from ...laws.table import LAWS
 from ...version import __version__
 from ..base import Engine
 
