@@ -63,11 +63,10 @@ def capped_total(ot, p, code, a, f_s, slip, limit):
 
 @njit(cache=True, inline="always")
 def capped_cases(ot, p, code, a, f_s, slip, limit):
-    """Coulomb rule 'total-cases': spring F_s and dashpot F_d = -c_t V_s capped together at mu |F_n| by four cases
-    (Kratos' DEM_D_Hertz_viscous_Coulomb_CL.cpp, CalculateTangentialForceWithNeighbour): on one side, a spring
-    beyond the cap is cut to it and the dashpot dropped, else the dashpot is shortened to the cap's rest; opposed,
-    a dashpot at least as strong as the spring is scaled to mu |F_n| + |F_s|, else the spring is cut to the cap and
-    the dashpot dropped. Returns (F_t, F_s)."""
+    """Coulomb rule 'total-cases': spring F_s and dashpot F_d = -c_t V_s capped together at mu |F_n| by four cases:
+    on one side, a spring beyond the cap is cut to it and the dashpot dropped, else the dashpot is shortened to the
+    cap's rest; opposed, a dashpot at least as strong as the spring is scaled to mu |F_n| + |F_s|, else the spring
+    is cut to the cap and the dashpot dropped. Returns (F_t, F_s)."""
     c_t = p[C.P_TDAMP] * math.sqrt(tangential_stiffness(code, p[C.P_T1], a)) if p[C.P_TDAMP] != 0.0 else 0.0
     f_d = -c_t * slip
     if abs(f_s + f_d) <= limit:

@@ -40,8 +40,8 @@ def lsd_notension_g(e):
 
 
 def lsd_notension_g_bisection(e, low=0.0, high=16.0, tolerance=1e-4, iterations=300):
-    """Schwager & Poeschel's e(g) inverted as Kratos does (sphere_strategy.py, RootByBisection): bisection on [0, 16]
-    until the bracket is at most 1e-4, returning its midpoint; e clamped to 0.001, and g = 0 above e = 0.999."""
+    """Schwager & Poeschel's e(g) inverted by bisection on [0, 16] until the bracket is at most 1e-4, returning its
+    midpoint (g to about 3e-5); e clamped to 0.001, and g = 0 above e = 0.999."""
     e = max(e, 0.001)
     if e > 0.999:
         return 0.0

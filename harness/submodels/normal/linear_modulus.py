@@ -1,5 +1,5 @@
-"""Linear spring F = k_n alpha with k_n = beta E* pi 0.31225 R*, from the moduli and the radius (Kratos'
-DEM_D_Linear_viscous_Coulomb_CL.cpp: InitializeContactWithFEM, beta 1, and InitializeContact, beta 1.432)."""
+"""Linear spring F = k_n alpha with k_n = beta E* pi 0.31225 R* from the moduli and the radius: a stiffness taken at
+the contact radius of a 5% sagitta, beta 1 against a wall and 1.432 between two spheres."""
 import math
 
 from .linear import LinearSpring
@@ -9,13 +9,13 @@ BETAS = {"wall": 1.0, "pair": 1.432}
 
 
 def modulus_stiffness(E_star, radius, beta):
-    """k_n = beta E* pi (0.31225 R*) (DEM_D_Linear_viscous_Coulomb_CL.cpp, InitializeContact and ...WithFEM)."""
+    """k_n = beta E* pi (0.31225 R*)."""
     return beta * E_star * math.pi * (radius * MODIFIED_RADIUS)
 
 
 class LinearModulus(LinearSpring):
-    """F = k_n alpha, k_n = beta E* pi 0.31225 R*: beta 1 against a wall ('wall'), 1.432 between two spheres ('pair')
-    (DEM_D_Linear_viscous_Coulomb_CL.cpp); the linear kernel."""
+    """F = k_n alpha, k_n = beta E* pi 0.31225 R*: beta 1 against a wall ('wall'), 1.432 between two spheres ('pair');
+    the linear kernel."""
     name = "linear-modulus"
     CALIBRATIONS = tuple(BETAS)
 

@@ -1,6 +1,5 @@
 """Mindlin k_t = 8 G* a with the stored force rescaled on unloading only: F_s sqrt(delta/delta_old) - k_t dd while
-the overlap falls, F_s - k_t dd otherwise (Kratos' DEM_D_Hertz_viscous_Coulomb_CL.cpp,
-CalculateTangentialForceWithNeighbour)."""
+the overlap falls, F_s - k_t dd otherwise (docs/laws.md#tangential-laws)."""
 from ...jit import compiled
 from ..base import TangentialModel
 from .mindlin import stiffness  # noqa: F401  (its dispatch point: k_t = 8 G* a)
@@ -10,7 +9,7 @@ NAME = "mindlin-unloading"
 
 class MindlinUnloading(TangentialModel):
     """k_t = 8 G* a, the stored force times a/a_old = sqrt(delta/delta_old) where the overlap falls, the increment
-    at the current k_t (Kratos' DEM_D_Hertz_viscous_Coulomb_CL.cpp, CalculateTangentialForceWithNeighbour)."""
+    at the current k_t (paper eq. 18b's rescale without its loading half)."""
     name = kernel = NAME
 
     def parameter(self, contact, k_n):
