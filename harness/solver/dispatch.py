@@ -22,6 +22,7 @@ from ..submodels.tangential import walton_braun as tangential_walton_braun
 from ..submodels.tangential import viscous as tangential_viscous
 from ..submodels.tangential import mindlin_wall_coefficient as tangential_mindlin_wall_coefficient
 from ..submodels.tangential import contact_radius_spring as tangential_contact_radius_spring
+from ..submodels.tangential import mindlin_unloading as tangential_mindlin_unloading
 from .extension import BELOW, FORCE, KINK, RESIDUAL, SLOPE, call
 
 N_NORMAL = 8
@@ -48,9 +49,10 @@ TANGENTIAL_VISCOUS_MINDLIN = 8
 TANGENTIAL_MINDLIN_TOTAL_RESCALE = 9
 TANGENTIAL_MINDLIN_FORCE_RESCALE = 10
 TANGENTIAL_CONTACT_RADIUS_SPRING = 11
-TANGENTIAL_VISCOUS = np.array([False, False, False, False, False, False, False, True, True, False, False, False], dtype=np.bool_)
-TANGENTIAL_IMPLICIT = np.array([False, False, False, False, False, False, True, False, False, False, False, False], dtype=np.bool_)
-TANGENTIAL_LOG_RATE = np.array([0, 0, 0, 1, 2, 0, 0, 0, 0, 0, 0, 0], dtype=np.int64)
+TANGENTIAL_MINDLIN_UNLOADING = 12
+TANGENTIAL_VISCOUS = np.array([False, False, False, False, False, False, False, True, True, False, False, False, False], dtype=np.bool_)
+TANGENTIAL_IMPLICIT = np.array([False, False, False, False, False, False, True, False, False, False, False, False, False], dtype=np.bool_)
+TANGENTIAL_LOG_RATE = np.array([0, 0, 0, 1, 2, 0, 0, 0, 0, 0, 0, 0, 0], dtype=np.int64)
 TANGENTIAL_ANY_IMPLICIT = True   # numba drops the implicit stepper where False
 
 
@@ -158,6 +160,8 @@ def tangential_stiffness(code, p1, a):
         return tangential_mindlin_wall_coefficient.stiffness(p1, a)
     if code == 11:
         return tangential_contact_radius_spring.stiffness(p1, a)
+    if code == 12:
+        return tangential_mindlin_unloading.stiffness(p1, a)
     return math.nan
 
 
@@ -181,6 +185,8 @@ def tangential_spring(code, f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, 
         return tangential_mindlin_wall_coefficient.force_rescale(f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, scratch, midpoint)
     if code == 11:
         return tangential_contact_radius_spring.spring(f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, scratch, midpoint)
+    if code == 12:
+        return tangential_mindlin_unloading.spring(f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, scratch, midpoint)
     return math.nan
 
 

@@ -7,7 +7,7 @@ from numba import njit
 from ..submodels.tangential.state import N_TSTATE, T_HELD, T_MARGIN, T_STEP
 from ..submodels.tangential.viscous import friction as viscous_friction
 from . import codes as C
-from .switches import LEAPFROG, PAPER, VELOCITY_VERLET, VERLET_PAIR
+from .switches import LEAPFROG, LEAPFROG_SCALAR_PAIR, PAPER, VELOCITY_VERLET, VERLET_PAIR
 from .dispatch import TANGENTIAL_NONE, TANGENTIAL_VISCOUS, tangential_after_cap, tangential_stiffness
 from .spring import cap, spring_force
 from .state import S_ALPHA, S_FEL, S_FS, S_FT, S_NOLD, S_U, S_VX, S_VZ, S_W
@@ -29,8 +29,10 @@ def friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, in_contact, scheme
         ot[T_MARGIN] = ot[T_HELD] = abs(f_s) - limit
         if PAPER and paper and p[C.P_TDAMP] != 0.0:
             f_t, f_s = damped_friction(ot, p, code, h, a, f_s, slip, limit, lever)
-        elif (VELOCITY_VERLET or VERLET_PAIR or LEAPFROG) and coulomb == C.COULOMB_TOTAL:
+        elif (VELOCITY_VERLET or VERLET_PAIR or LEAPFROG or LEAPFROG_SCALAR_PAIR) and coulomb == C.COULOMB_TOTAL:
             f_t, f_s = capped_total(ot, p, code, a, f_s, slip, limit)
+        elif (LEAPFROG or LEAPFROG_SCALAR_PAIR) and coulomb == C.COULOMB_TOTAL_CASES:
+            f_t, f_s = capped_cases(ot, p, code, a, f_s, slip, limit)
         elif abs(f_s) > limit:
             f_s = cap(f_s, limit)
             tangential_after_cap(code, f_s, p[C.P_T1], a, ot)
@@ -57,6 +59,25 @@ def capped_total(ot, p, code, a, f_s, slip, limit):
     f_s = f_t + c_t * slip
     tangential_after_cap(code, f_s, p[C.P_T1], a, ot)
     return f_t, f_s
+
+
+@njit(cache=True, inline="always")
+def capped_cases(ot, p, code, a, f_s, slip, limit):
+    """Coulomb rule 'total-cases': spring F_s and dashpot F_d = -c_t V_s capped together at mu |F_n| by four cases:
+    on one side, a spring beyond the cap is cut to it and the dashpot dropped, else the dashpot is shortened to the
+    cap's rest; opposed, a dashpot at least as strong as the spring is scaled to mu |F_n| + |F_s|, else the spring
+    is cut to the cap and the dashpot dropped. Returns (F_t, F_s)."""
+    c_t = p[C.P_TDAMP] * math.sqrt(tangential_stiffness(code, p[C.P_T1], a)) if p[C.P_TDAMP] != 0.0 else 0.0
+    f_d = -c_t * slip
+    if abs(f_s + f_d) <= limit:
+        return f_s + f_d, f_s
+    if (f_s * f_d >= 0.0 and abs(f_s) > limit) or (f_s * f_d < 0.0 and abs(f_d) < abs(f_s)):
+        f_s = f_s * (limit / abs(f_s))
+        tangential_after_cap(code, f_s, p[C.P_T1], a, ot)
+        return f_s, f_s
+    if f_s * f_d >= 0.0:
+        return f_s + f_d * ((limit - abs(f_s)) / abs(f_d)), f_s
+    return f_s + f_d * ((limit + abs(f_s)) / abs(f_d)), f_s
 
 
 @njit(cache=True, inline="always")

@@ -19,11 +19,12 @@ from ..submodels.tangential.state import N_TSTATE, T_HELD, T_MARGIN
 from ..submodels.tangential.viscous import friction as viscous_friction
 from . import codes as C
 from .compile_notice import announce_compiling
-from .switches import LEAPFROG, LEAPFROG_PAIR, LEAPFROG_SPHERE, PAPER, VELOCITY_VERLET, VERLET_PAIR
+from .switches import (LEAPFROG, LEAPFROG_PAIR, LEAPFROG_SCALAR_PAIR, LEAPFROG_SPHERE, PAPER, VELOCITY_VERLET,
+                       VERLET_PAIR)
 from .dispatch import N_NORMAL, TANGENTIAL_NONE, TANGENTIAL_VISCOUS, tangential_stiffness
 from .events import locate_release, split_at_event
 from .mesh import PEAK_POINTS, graded_step, parabola_peak, polynomial_peak
-from .pair import step_leapfrog_pair, step_verlet_pair
+from .pair import step_leapfrog_pair, step_leapfrog_scalar_pair, step_verlet_pair
 from .schemes import paper_first_touch, step, step_leapfrog, step_leapfrog_sphere, step_velocity_verlet
 from .specialise import specialised
 from .state import N_STATE, S_ALPHA, S_C, S_FN, S_FT, S_U, S_VX, S_VZ, S_W, S_Z, reset_history
@@ -111,6 +112,8 @@ def integrate_rows(first, last, params, ints, out, history, stride, ext, work):
                 indicator = step_verlet_pair(s, st, o, ot, p, row_ints, h, scratch, ext)
             elif LEAPFROG_PAIR and scheme == C.INTEGRATOR_LEAPFROG and geometry == C.GEOMETRY_PAIR_VECTOR:
                 indicator = step_leapfrog_pair(s, st, o, ot, p, row_ints, h, scratch, ext)
+            elif LEAPFROG_SCALAR_PAIR and scheme == C.INTEGRATOR_LEAPFROG and geometry == C.GEOMETRY_PAIR:
+                indicator = step_leapfrog_scalar_pair(s, st, o, ot, p, row_ints, h, scratch, ext)
             else:                                  # a scheme this copy does not compile (never planned)
                 indicator = math.nan
             h_last = h

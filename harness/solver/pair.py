@@ -1,7 +1,9 @@
-"""Two spheres stepped in their relative motion, the normal turning as they pass each other: velocity Verlet with a
-scalar shear along the tangent (geometry pair), leapfrog with the shear vector turned with the normal (geometry
-pair-vector) (docs/two-spheres.md)."""
+"""Two spheres stepped in their relative motion, the normal turning as they pass each other: velocity Verlet or
+leapfrog with a scalar shear along the tangent (geometry pair), leapfrog with the shear vector turned with the normal
+(geometry pair-vector) (docs/two-spheres.md)."""
 import math
+
+from numba import njit
 
 from ..jit import compiled
 from ..submodels.tangential.state import N_TSTATE, T_STEP
@@ -25,6 +27,28 @@ def carry_and_spins(s, st, o, ot, p):
     return (p[C.P_RADIUS] * s[S_W] - p[C.P_R2] * w2) / p[C.P_R1], w2
 
 
+@njit(cache=True, inline="always")
+def pair_forces(s, ot, o, p, ints, h, scratch, ext, alpha, amax, nx, nz, vx, vz, w1, w2, scheme):
+    """In contact along n: the normal force (dashpot on u.n, clipped at 0 without tension) and the tangential force
+    from the slip u.t - (l1 w1 + l2 w2), t = (n_z, -n_x), l_i = R_i - lever d, by the law's Coulomb rule
+    (friction.friction). Returns (F_n, F_t, F_s, F_el)."""
+    radius = p[C.P_RADIUS]
+    f_el, a = normal_step(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], radius, alpha, s[S_ALPHA],
+                          s[S_FEL], amax, s[S_HISTORY:S_HISTORY + NORMAL_HISTORY],
+                          o[S_HISTORY:S_HISTORY + NORMAL_HISTORY], ext)
+    c = p[C.P_DAMP_C0] * damping_power(alpha, p[C.P_DAMP_POWER]) if p[C.P_DAMP_C0] != 0.0 else 0.0
+    f_n = f_el - c * (vx * nx + vz * nz)
+    if f_n < 0.0 and ints[C.I_END] == C.END_FORCE:
+        f_n = 0.0
+    f_t, f_s = 0.0, 0.0
+    code = ints[C.I_TANGENTIAL]
+    if code != TANGENTIAL_NONE:
+        c_slip = p[C.P_LEVER]
+        slip = (vx * nz - vz * nx) - ((p[C.P_R1] - c_slip * alpha) * w1 + (p[C.P_R2] - c_slip * alpha) * w2)
+        f_t, f_s = friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, True, scheme, ints[C.I_COULOMB], radius)
+    return f_n, f_t, f_s, f_el
+
+
 @compiled
 def step_verlet_pair(s, st, o, ot, p, ints, h, scratch, ext):
     """Velocity Verlet on both spheres, as the relative motion
@@ -35,7 +59,7 @@ def step_verlet_pair(s, st, o, ot, p, ints, h, scratch, ext):
     its length; the law's Coulomb rule (friction.friction); contact while the overlap is > 0. Returns the overlap."""
     m, radius = p[C.P_MASS], p[C.P_RADIUS]
     r1, r2, inv1, inv2 = p[C.P_R1], p[C.P_R2], p[C.P_INV_I1], p[C.P_INV_I2]
-    c_slip, c_torque = p[C.P_LEVER], p[C.P_TORQUE_LEVER]
+    c_torque = p[C.P_TORQUE_LEVER]
     centres = radius + p[C.P_BIG_R]
     w1, w2 = carry_and_spins(s, st, o, ot, p)
     vx = s[S_VX] + 0.5 * h * (s[S_FN] * s[S_NX] + s[S_FT] * s[S_NZ]) / m
@@ -48,20 +72,10 @@ def step_verlet_pair(s, st, o, ot, p, ints, h, scratch, ext):
     amax = s[S_AMAX]
     f_n, f_t, f_s, f_el, nx, nz = 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
     reset_history(ints[C.I_NORMAL], o)
-    code = ints[C.I_TANGENTIAL]
     if alpha > 0.0:
         nx, nz = x / dist, (z + p[C.P_BIG_R]) / dist
-        f_el, a = normal_step(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], radius, alpha, s[S_ALPHA],
-                              s[S_FEL], amax, s[S_HISTORY:S_HISTORY + NORMAL_HISTORY],
-                              o[S_HISTORY:S_HISTORY + NORMAL_HISTORY], ext)
-        c = p[C.P_DAMP_C0] * damping_power(alpha, p[C.P_DAMP_POWER]) if p[C.P_DAMP_C0] != 0.0 else 0.0
-        f_n = f_el - c * (vx * nx + vz * nz)
-        if f_n < 0.0 and ints[C.I_END] == C.END_FORCE:
-            f_n = 0.0
-        if code != TANGENTIAL_NONE:
-            slip = (vx * nz - vz * nx) - ((r1 - c_slip * alpha) * w1 + (r2 - c_slip * alpha) * w2)
-            f_t, f_s = friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, True, C.INTEGRATOR_VELOCITY_VERLET,
-                                ints[C.I_COULOMB], radius)
+        f_n, f_t, f_s, f_el = pair_forces(s, ot, o, p, ints, h, scratch, ext, alpha, amax, nx, nz, vx, vz, w1, w2,
+                                          C.INTEGRATOR_VELOCITY_VERLET)
     else:
         for k in range(N_TSTATE):
             ot[k] = 0.0
@@ -76,6 +90,20 @@ def step_verlet_pair(s, st, o, ot, p, ints, h, scratch, ext):
     return alpha
 
 
+@njit(cache=True, inline="always")
+def leapfrog_kick_drift(s, o, p, h, fx, fz, torque, w1, w2, x, alpha, amax):
+    """The leapfrog's closing half: u += h F/m*, spins -= h (R_i - torque d) T/I_i, r += h u, into the output."""
+    m = p[C.P_MASS]
+    vx, vz = s[S_VX] + h * fx / m, s[S_VZ] + h * fz / m
+    c_torque = p[C.P_TORQUE_LEVER]
+    w1 -= h * (p[C.P_R1] - c_torque * alpha) * torque * p[C.P_INV_I1]
+    w2 -= h * (p[C.P_R2] - c_torque * alpha) * torque * p[C.P_INV_I2]
+    o[S_VX], o[S_VZ] = vx, vz
+    o[S_X], o[S_Z] = x + h * vx, s[S_Z] + h * vz
+    o[S_W], o[S_DW2] = (p[C.P_R1] * w1 + p[C.P_R2] * w2) / p[C.P_RADIUS], w2 - p[C.P_W2]
+    o[S_ALPHA], o[S_AMAX] = alpha, amax
+
+
 @compiled
 def step_leapfrog_pair(s, st, o, ot, p, ints, h, scratch, ext):
     """Leapfrog on both spheres with the shear force a vector turned with the normal, as the relative motion
@@ -86,9 +114,9 @@ def step_leapfrog_pair(s, st, o, ot, p, ints, h, scratch, ext):
     (S -= S x (n_old x n)) and incremented by -k_s slip h t (k_s not reduced as it falls); normal force
     clipped at 0, the spring capped at mu F_n, else the dashpot -c_s slip t added; torques -(R_i - d/2) (n x F)_y on
     each. Contact while d >= 0; the first negative overlap applies no force and ends it (returns -1)."""
-    m, radius = p[C.P_MASS], p[C.P_RADIUS]
-    r1, r2, inv1, inv2 = p[C.P_R1], p[C.P_R2], p[C.P_INV_I1], p[C.P_INV_I2]
-    c_slip, c_torque = p[C.P_LEVER], p[C.P_TORQUE_LEVER]
+    radius = p[C.P_RADIUS]
+    r1, r2 = p[C.P_R1], p[C.P_R2]
+    c_slip = p[C.P_LEVER]
     centres = radius + p[C.P_BIG_R]
     w1, w2 = carry_and_spins(s, st, o, ot, p)
     vx, vz = s[S_VX], s[S_VZ]
@@ -133,14 +161,39 @@ def step_leapfrog_pair(s, st, o, ot, p, ints, h, scratch, ext):
         for k in range(N_TSTATE):
             ot[k] = 0.0
         reset_history(ints[C.I_NORMAL], o)
-    vx, vz = vx + h * fx / m, vz + h * fz / m
-    w1 -= h * (r1 - c_torque * alpha) * torque * inv1
-    w2 -= h * (r2 - c_torque * alpha) * torque * inv2
-    o[S_VX], o[S_VZ] = vx, vz
-    o[S_X], o[S_Z] = x + h * vx, s[S_Z] + h * vz
-    o[S_W], o[S_DW2] = (r1 * w1 + r2 * w2) / radius, w2 - p[C.P_W2]
-    o[S_ALPHA], o[S_AMAX] = alpha, amax
+    leapfrog_kick_drift(s, o, p, h, fx, fz, torque, w1, w2, x, alpha, amax)
     o[S_FN], o[S_FT], o[S_FS], o[S_FEL], o[S_NOLD] = f_n, f_t, math.sqrt(sx * sx + sz * sz), f_el, abs(f_n)
     o[S_NX], o[S_NZ], o[S_SX], o[S_SZ] = nx, nz, sx, sz
     ot[T_STEP] = h
     return 1.0 if in_contact else -1.0
+
+
+@compiled
+def step_leapfrog_scalar_pair(s, st, o, ot, p, ints, h, scratch, ext):
+    """Leapfrog on both spheres with a scalar shear along the tangent, as the relative motion r = x1 - x2 (mass m*)
+    and each sphere's spin: forces at r(t) from the half-step velocities, then u += h F/m*, spins += h T_i/I_i,
+    r += h u. Overlap R1 + R2 - |r|, normal n = r/|r|; slip u.t - (l1 w1 + l2 w2) along t = (n_z, -n_x) with levers
+    l_i = R_i - lever d, torques -(R_i - torque d) F_t on each; the law's Coulomb rule (friction.friction); contact
+    while the overlap is >= 0 (touch 'overlap': forces from overlap > 0); the first negative overlap ends it."""
+    radius = p[C.P_RADIUS]
+    w1, w2 = carry_and_spins(s, st, o, ot, p)
+    vx, vz = s[S_VX], s[S_VZ]
+    x, z = s[S_X], s[S_Z] + p[C.P_BIG_R]
+    dist = math.sqrt(x * x + z * z)
+    alpha = radius + p[C.P_BIG_R] - dist
+    amax = s[S_AMAX] if s[S_AMAX] > alpha else alpha
+    touching = alpha >= 0.0
+    in_contact = touching and (alpha > 0.0 or ints[C.I_TOUCH] == C.TOUCH_GAP)
+    f_n, f_t, f_s, f_el, nx, nz = 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
+    if in_contact:
+        nx, nz = x / dist, z / dist
+        f_n, f_t, f_s, f_el = pair_forces(s, ot, o, p, ints, h, scratch, ext, alpha, amax, nx, nz, vx, vz, w1, w2,
+                                          C.INTEGRATOR_LEAPFROG)
+    else:
+        for k in range(N_TSTATE):
+            ot[k] = 0.0
+        reset_history(ints[C.I_NORMAL], o)
+    leapfrog_kick_drift(s, o, p, h, f_n * nx + f_t * nz, f_n * nz - f_t * nx, f_t, w1, w2, x, alpha, amax)
+    o[S_FN], o[S_FT], o[S_FS], o[S_FEL], o[S_NOLD], o[S_NX], o[S_NZ] = f_n, f_t, f_s, f_el, abs(f_n), nx, nz
+    ot[T_STEP] = h
+    return 1.0 if touching else -1.0

@@ -41,12 +41,13 @@ def drift(alpha, rate0, c_alpha, h):
 def step_leapfrog(s, st, o, ot, p, ints, h, scratch, ext):
     """Leapfrog: forces from the overlap at x(t) and the half-step velocities v(t - h/2), then
     v(t + h/2) = v(t - h/2) + h F/m and x(t + h) = x(t) + h v(t + h/2). A contact exists while the overlap is
-    >= 0 (a sphere placed touching starts in contact with zero force); the first step with a negative overlap
-    applies no force and ends it (returns -1)."""
+    >= 0 (a sphere placed touching starts in contact with zero force; with touch 'overlap' no force acts until the
+    overlap is > 0); the first step with a negative overlap applies no force and ends it (returns -1)."""
     m, inertia, radius, g = p[C.P_MASS], p[C.P_INERTIA], p[C.P_RADIUS], p[C.P_GRAVITY]
     alpha = s[S_ALPHA]
     amax = s[S_AMAX] if s[S_AMAX] > alpha else alpha
-    in_contact = alpha >= 0.0
+    touching = alpha >= 0.0
+    in_contact = touching and (alpha > 0.0 or ints[C.I_TOUCH] == C.TOUCH_GAP)
     f_n, a = 0.0, 0.0
     for k in range(NORMAL_HISTORY):
         o[S_HISTORY + k] = s[S_HISTORY + k]
@@ -73,7 +74,7 @@ def step_leapfrog(s, st, o, ot, p, ints, h, scratch, ext):
     o[S_W] = s[S_W] - h * lever * f_t / inertia
     o[S_FT], o[S_FS], o[S_NOLD] = f_t, f_s, abs(f_n)
     o[S_ALPHA] = alpha - h * vz
-    return 1.0 if in_contact else -1.0
+    return 1.0 if touching else -1.0
 
 
 @compiled

@@ -39,6 +39,25 @@ def lsd_notension_g(e):
     return brentq(lambda g: lsd_notension_e(g) - e, 0.0, 50.0, xtol=1e-15, rtol=1e-15)
 
 
+def lsd_notension_g_bisection(e, low=0.0, high=16.0, tolerance=1e-4, iterations=300):
+    """Schwager & Poeschel's e(g) inverted by bisection on [0, 16] until the bracket is at most 1e-4, returning its
+    midpoint (g to about 3e-5); e clamped to 0.001, and g = 0 above e = 0.999."""
+    e = max(e, 0.001)
+    if e > 0.999:
+        return 0.0
+    g, k = 0.5 * (low + high), 0
+    while high - low > tolerance and k <= iterations:
+        trial = lsd_notension_e(g) - e
+        if (lsd_notension_e(low) - e) * trial < 0.0:
+            high = g
+        elif trial == 0.0:
+            return g
+        else:
+            low = g
+        g, k = 0.5 * (low + high), k + 1
+    return g
+
+
 def thornton_appendix_b_g(e):
     """Thornton et al. (2013) Appendix B: g = sqrt(1/[1 - (1+e)^2 exp(x)] - 1), x = sum h_i e^i (docs/laws.md)."""
     if e >= 1.0:

@@ -23,11 +23,13 @@ from .normal.thornton import Thornton
 from .normal.walton_braun import WaltonBraun
 from .normal.cundall_strack import CundallStrackSpring
 from .normal.luding_incremental import LudingIncremental
+from .normal.linear_modulus import LinearModulus
 from .tangential.contact_radius_spring import ContactRadiusSpring
 from .tangential.mindlin_wall_coefficient import MindlinPairCoefficient, MindlinWallCoefficient
 from .tangential.linear import LinearTangential
 from .tangential.mindlin import Mindlin
 from .tangential.mindlin_deresiewicz import MindlinDeresiewicz
+from .tangential.mindlin_unloading import MindlinUnloading
 from .tangential.viscous import ViscousTangential
 from .tangential.walton_braun import WaltonBraunTangential
 
@@ -153,16 +155,17 @@ TANGENTIAL_KERNELS = (
                       spring="force_rescale"),
     tangential_kernel("contact-radius-spring", "contact_radius_spring", stiffness="stiffness", spring="spring",
                       after_cap="after_cap"),
+    tangential_kernel("mindlin-unloading", "mindlin_unloading", stiffness="stiffness", spring="spring"),
 )
 
 # sub-models by the name --with takes; engine dialects' own sub-models are listed apart (engines name them)
 NORMAL_MODELS = {cls.name: cls for cls in (LinearSpring, Hertz, WaltonBraun, PartiallyLatchingSpring, Thornton, Stronge)}
 ENGINE_NORMAL_MODELS = {cls.name: cls for cls in (LudingPeak, ThorntonNing, CundallStrackSpring, LudingIncremental,
-                                                   HertzWallModulus)}
+                                                   HertzWallModulus, LinearModulus)}
 TANGENTIAL_MODELS = {cls.name: cls for cls in (LinearTangential, Mindlin, MindlinDeresiewicz, WaltonBraunTangential,
                                                ViscousTangential)}
 ENGINE_TANGENTIAL_MODELS = {cls.name: cls for cls in (MindlinWallCoefficient, MindlinPairCoefficient,
-                                                       ContactRadiusSpring)}
+                                                       ContactRadiusSpring, MindlinUnloading)}
 DAMPING_MODELS = {cls.name: cls for cls in (NoDamping, LinearDashpot, TsujiDashpot, KuwabaraKonoDashpot)}
 INTEGRATORS = {s.name: s for s in stepping.INTEGRATORS}          # stepping sub-models: the codes the steppers take
 COULOMB_RULES = {s.name: s for s in stepping.COULOMB_RULES}

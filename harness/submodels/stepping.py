@@ -17,7 +17,7 @@ class Stepping:
 
 
 INTEGRATOR_PAPER, INTEGRATOR_VELOCITY_VERLET, INTEGRATOR_LEAPFROG = 0, 1, 2
-COULOMB_SPRING, COULOMB_TOTAL = 0, 1
+COULOMB_SPRING, COULOMB_TOTAL, COULOMB_TOTAL_CASES = 0, 1, 2
 GEOMETRY_WALL, GEOMETRY_STAND_IN_SPHERE, GEOMETRY_PAIR, GEOMETRY_PAIR_VECTOR = 0, 1, 2, 3
 TOUCH_GAP, TOUCH_OVERLAP = 0, 1
 
@@ -34,6 +34,9 @@ COULOMB_RULES = (
              "the spring capped at mu |F_n|; the tangential dashpot added only below the cap"),
     Stepping("coulomb", "total", COULOMB_TOTAL,
              "spring plus dashpot capped together at mu |F_n|; a capped total leaves the spring F_t + c_t V_s"),
+    Stepping("coulomb", "total-cases", COULOMB_TOTAL_CASES,
+             "spring plus dashpot capped together at mu |F_n|; a spring beyond mu |F_n| on the total's side is cut to "
+             "it (the dashpot dropped), else the dashpot alone is shortened and the spring kept"),
 )
 GEOMETRIES = (
     Stepping("geometry", "wall", GEOMETRY_WALL, "a sphere against a flat wall: the normal fixed, scalar shear"),
@@ -57,9 +60,11 @@ TOUCHES = (
 STEPPERS = {      # (integrator, geometry) -> the stepper that computes it (solver/switches.py) and its Coulomb rules
     ("paper", "wall"): ("PAPER", ("spring",)),
     ("velocity-verlet", "wall"): ("VELOCITY_VERLET", ("spring", "total")),
-    ("leapfrog", "wall"): ("LEAPFROG", ("spring", "total")),
+    ("leapfrog", "wall"): ("LEAPFROG", ("spring", "total", "total-cases")),
     ("leapfrog", "stand-in-sphere"): ("LEAPFROG_SPHERE", ("spring",)),
     ("velocity-verlet", "pair"): ("VERLET_PAIR", ("spring", "total")),
     ("leapfrog", "pair-vector"): ("LEAPFROG_PAIR", ("spring",)),
+    ("leapfrog", "pair"): ("LEAPFROG_SCALAR_PAIR", ("spring", "total", "total-cases")),
 }
-TOUCH_STEPPERS = {("velocity-verlet", "wall"): ("gap", "overlap")}     # the others apply 'gap' only
+TOUCH_STEPPERS = {("velocity-verlet", "wall"): ("gap", "overlap"), ("leapfrog", "wall"): ("gap", "overlap"),
+                  ("leapfrog", "pair"): ("gap", "overlap")}     # the others apply 'gap' only
