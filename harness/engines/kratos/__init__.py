@@ -8,7 +8,7 @@ import os
 
 from ..base import Engine
 from ..builds import directory, sha256
-from .dialect import COUNTERPARTS, DIALECTS, PAIR_DIALECTS, check_options, walls
+from .dialect import COUNTERPARTS, DIALECTS, PAIR_DIALECTS, walls
 from .script import INPUT, TEMPLATES, read_batch, render_batch, run_inputs, script
 from .venv import PYTHON_VARIABLE, probe
 
@@ -63,9 +63,6 @@ class Kratos(Engine):
         library = self.executable_file()
         return {"version": self.version(), "binary": library, "sha256": sha256(library),
                 "origin": self.origin or self.default_origin()}
-
-    def check_options(self, law_name, options):
-        return check_options(law_name, options)
 
     def walls(self, law_name, options=None):
         return walls(law_name, options)

@@ -44,12 +44,6 @@ def walls(law_name, options=None):
     return ("same", "other", "rigid")
 
 
-def check_options(law_name, options):
-    if options:
-        raise UserError(f"Kratos takes no engine option, got {', '.join(options)}")
-    return {}
-
-
 def moduli_scale(law, scene, e_n, target):
     """The factor on every Young's modulus that makes Kratos' own stiffness the law's: 1 for Hertz (its k_n is
     harness'); for the linear law, k_n/(beta E* pi 0.31225 R*), which leaves 4 G*/E* = k_t/k_n as it is."""

@@ -10,7 +10,7 @@ import numpy as np
 from ...render import render
 from ...version import __version__
 from ..dumps import pair_rebound, rebound
-from ..runner import EngineFailure, run_engine
+from ..runner import EngineFailure, read_tail, run_engine
 from .dialect import COUNTERPARTS, RIGID_SCALE, moduli_scale
 
 TEMPLATES = Path(__file__).resolve().parent / "templates"
@@ -91,7 +91,14 @@ def read_json(path, what):
 
 def read_batch(scene, spec, directory, observe=False):
     """Rebound velocities and separation of one run's spec from result.json (per sphere x, z, vx, vz, omega_y), and
-    what observe mode saw."""
+    what observe mode saw; a failure carries the tail of the batch's own log."""
+    try:
+        return read_outputs(scene, spec, directory, observe)
+    except EngineFailure as exc:
+        raise EngineFailure(str(exc), exc.log_tail or read_tail(os.path.join(directory, "engine.log"))) from None
+
+
+def read_outputs(scene, spec, directory, observe):
     data = read_json(os.path.join(directory, RESULT), "result file")
     per_impact = 2 if scene.spheres else 1
     try:
