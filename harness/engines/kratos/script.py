@@ -16,30 +16,35 @@ from .dialect import COUNTERPARTS, RIGID_SCALE, moduli_scale
 TEMPLATES = Path(__file__).resolve().parent / "templates"
 INPUT = "harness_kratos.py"
 RESULT, OBSERVED = "result.json", "observe.json"
+# every sphere starts this fraction of its radius clear of its target: Kratos counts contact from overlap > 0, and
+# at a gap of exactly 0 the round-off of the distance to the face (it grows with x) would decide whether a sphere
+# touches at step 0; 1e-10 R is far above that round-off and far below what the step's first overlap v dt resolves
+CLEARANCE = 1e-10
 
 
 def wall_spheres(scene, spec, scale):
-    """Every impact's sphere at gap 0 above the plane z = 0, 4R apart; the materials of the sphere and the wall."""
+    """Every impact's sphere touching the plane z = 0 (CLEARANCE), 4R apart, each over its own square of the wall (3R
+    wide); the materials of the sphere and the wall."""
     radius = scene.radius
-    spheres = [{"x": i * 4.0 * radius, "z": radius, "radius": radius, "vx": float(vt), "vz": -float(vn),
+    spheres = [{"x": i * 4.0 * radius, "z": radius * (1.0 + CLEARANCE), "radius": radius, "vx": float(vt), "vz": -float(vn),
                 "omegay": float(w), "material": "ball", "fixed": False}
                for i, (vn, vt, w) in enumerate(zip(spec.v_n0, spec.v_t0, spec.omega0))]
     wall = {"same": (scene.E, scene.nu), "rigid": (scene.E * RIGID_SCALE, scene.nu),
             "other": (scene.wall_E, scene.wall_nu)}[scene.wall]
     materials = [{"name": "ball", "E": scene.E * scale, "nu": scene.nu, "rho": scene.rho},
                  {"name": "wall", "E": wall[0] * scale, "nu": wall[1], "rho": scene.rho}]
-    return spheres, materials, {"x_lo": -2.0 * radius, "x_hi": len(spheres) * 4.0 * radius, "half": 2.0 * radius}
+    return spheres, materials, 1.5 * radius
 
 
 def pair_spheres(scene, spec, scale):
-    """Every impact a projectile touching its target below it (at rest, its own spin, fixed or free), their relative
+    """Every impact a projectile touching its target below it (CLEARANCE) (at rest, its own spin, fixed or free), their relative
     velocity the impact's; omega0 is the equivalent spin, so the projectile's own is (R* omega0 - R2 omega2)/R1."""
     projectile, target = scene.spheres
     r1, r2, r_star = projectile.radius, target.radius, scene.contact.radius
     spheres = []
     for i, (vn, vt, w) in enumerate(zip(spec.v_n0, spec.v_t0, spec.omega0)):
         x = i * 3.0 * (r1 + r2)
-        spheres.append({"x": x, "z": r1 + r2, "radius": r1, "vx": float(vt), "vz": -float(vn),
+        spheres.append({"x": x, "z": (r1 + r2) * (1.0 + CLEARANCE), "radius": r1, "vx": float(vt), "vz": -float(vn),
                         "omegay": (r_star * float(w) - r2 * target.omega) / r1, "material": "ball", "fixed": False})
         spheres.append({"x": x, "z": 0.0, "radius": r2, "vx": 0.0, "vz": 0.0, "omegay": target.omega,
                         "material": "target", "fixed": target.fixed})
