@@ -155,7 +155,8 @@ def test_the_linear_law_gets_the_moduli_that_make_kratos_stiffness_the_laws():
 
 
 def test_a_crashing_kratos_gives_its_exit_code_and_log_tail(tmp_path, monkeypatch):
-    monkeypatch.setenv(kratos.PYTHON_VARIABLE, fake_executable(tmp_path, 'echo "RuntimeError: Error: bad mdpa"; exit 3'))
+    crash = 'echo "RuntimeError: Error: bad mdpa"; exit 3'
+    monkeypatch.setenv(kratos.PYTHON_VARIABLE, fake_executable(tmp_path, crash))
     scene = Scene(e_n=(0.5,), angles_deg=(10.0,), psi1_star=None)
     with pytest.raises(EngineFailure, match="exit code 3") as failure:
         ENGINE.run_batch(compose("hertz-mindlin"), scene, the_spec("hertz-mindlin", scene, 100), 30, str(tmp_path))

@@ -9,17 +9,22 @@ ROOT="${1:-${HARNESS_ENGINES_DIR:-/opt/harness/engines}}"
 VERSION=10.4.4
 PYTHON="${KRATOS_PYTHON:-python3.11}"
 prefix="$ROOT/kratos-$VERSION"
-check='import importlib.metadata as m, KratosMultiphysics.DEMApplication; print("kratos-dem", m.version("KratosDEMApplication"))'
+check='import importlib.metadata as m, KratosMultiphysics.DEMApplication
+print("kratos-dem", m.version("KratosDEMApplication"))'
 
 installed() {
-  [ -x "$prefix/bin/python" ] && OMP_NUM_THREADS=1 "$prefix/bin/python" -c "$check" 2>/dev/null | grep -x "kratos-dem $VERSION" >/dev/null
+  [ -x "$prefix/bin/python" ] &&
+    OMP_NUM_THREADS=1 "$prefix/bin/python" -c "$check" 2>/dev/null | grep -x "kratos-dem $VERSION" >/dev/null
 }
 
 if installed; then
   echo "install_kratos: $prefix is complete" >&2
   exit 0
 fi
-command -v "$PYTHON" >/dev/null 2>&1 || { echo "install_kratos: no $PYTHON (the Kratos wheels are CPython 3.11)" >&2; exit 1; }
+if ! command -v "$PYTHON" >/dev/null 2>&1; then
+  echo "install_kratos: no $PYTHON (the Kratos wheels are CPython 3.11)" >&2
+  exit 1
+fi
 mkdir -p "$ROOT"
 echo "install_kratos: installing KratosMultiphysics $VERSION and KratosDEMApplication $VERSION into $prefix" >&2
 [ -x "$prefix/bin/python" ] || "$PYTHON" -m venv "$prefix"

@@ -26,8 +26,8 @@ def wall_spheres(scene, spec, scale):
     """Every impact's sphere touching the plane z = 0 (CLEARANCE), 4R apart, each over its own square of the wall (3R
     wide); the materials of the sphere and the wall."""
     radius = scene.radius
-    spheres = [{"x": i * 4.0 * radius, "z": radius * (1.0 + CLEARANCE), "radius": radius, "vx": float(vt), "vz": -float(vn),
-                "omegay": float(w), "material": "ball", "fixed": False}
+    spheres = [{"x": i * 4.0 * radius, "z": radius * (1.0 + CLEARANCE), "radius": radius, "vx": float(vt),
+                "vz": -float(vn), "omegay": float(w), "material": "ball", "fixed": False}
                for i, (vn, vt, w) in enumerate(zip(spec.v_n0, spec.v_t0, spec.omega0))]
     wall = {"same": (scene.E, scene.nu), "rigid": (scene.E * RIGID_SCALE, scene.nu),
             "other": (scene.wall_E, scene.wall_nu)}[scene.wall]
@@ -37,8 +37,9 @@ def wall_spheres(scene, spec, scale):
 
 
 def pair_spheres(scene, spec, scale):
-    """Every impact a projectile touching its target below it (CLEARANCE) (at rest, its own spin, fixed or free), their relative
-    velocity the impact's; omega0 is the equivalent spin, so the projectile's own is (R* omega0 - R2 omega2)/R1."""
+    """Every impact a projectile touching its target below it (CLEARANCE; the target at rest, its own spin, fixed or
+    free), their relative velocity the impact's; omega0 is the equivalent spin, so the projectile's own is
+    (R* omega0 - R2 omega2)/R1."""
     projectile, target = scene.spheres
     r1, r2, r_star = projectile.radius, target.radius, scene.contact.radius
     spheres = []
