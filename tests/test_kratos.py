@@ -208,6 +208,17 @@ def test_without_a_variable_or_prefix_the_reason_names_the_installer(monkeypatch
 
 
 @needs_kratos
+def test_while_its_dialects_are_provisional_kratos_runs_only_when_named(tmp_path, capsys):
+    """Every engine (none named): Kratos is skipped with its reason; named, it runs."""
+    code = main(["compare", "--model", "hertz-mindlin", "--en", "0.5", "--angles", "10", "-o", str(tmp_path / "all")])
+    out = capsys.readouterr().out
+    assert "skipped kratos: runs only when named (--engines kratos)" in out and code in (0, 1, 3)
+    main(["compare", "--model", "hertz-mindlin", "--engines", "kratos", "--en", "0.5", "--angles", "10", "-o",
+          str(tmp_path / "named")])
+    assert "kratos 10.4.4" in capsys.readouterr().out
+
+
+@needs_kratos
 def test_compare_on_the_papers_scene_gives_kratos_an_agreement_and_a_physics_verdict(tmp_path):
     """The acceptance command. Its exit code says whether Kratos agrees with its dialect: 0 when it does, 1 while
     the dialect is provisional (docs/kratos-dialect.md); either way both verdicts name kratos."""
