@@ -18,8 +18,7 @@ class Kratos(Engine):
     INPUT_SUFFIX, INPUT_NAME = ".py", INPUT
     EXECUTABLE, VARIABLE = "python", PYTHON_VARIABLE      # a prefix's bin/python; another interpreter
     COUNTERPARTS, DIALECTS, PAIR_DIALECTS = COUNTERPARTS, DIALECTS, PAIR_DIALECTS
-    PROVISIONAL = ("its dialects are a first mapping onto existing sub-models, not yet its own Coulomb rule "
-                   "(docs/kratos-dialect.md)")
+    PROVISIONAL = "its dialects are provisional (docs/kratos-dialect.md)"
     COLOUR, DASHES = "tab:brown", (0, (5, 1, 1, 1))
     STARTUP_S, SPHERE_STEP_S = 0.6, 7.5e-6      # bench_kratos.py: ~0.3 ms a step for 45 spheres
     render_batch, read_batch = staticmethod(render_batch), staticmethod(read_batch)
