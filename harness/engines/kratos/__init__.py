@@ -39,15 +39,18 @@ class Kratos(Engine):
         return bool(probe(self.binary()).get("dem"))
 
     def missing_reason(self, flavour=None):
+        """What was looked for, and where, when no interpreter here imports Kratos."""
         binary = self.binary()
         if not binary:
             return (f"no Kratos venv {directory()}/kratos-<release>/bin/python (bash tools/install_kratos.sh, or "
                     f"bash tools/setup.sh)")
         if self.VARIABLE in os.environ and not self._binary:
-            return f"{self.VARIABLE}={binary!r} does not import KratosMultiphysics' DEMApplication"
+            what = "does not import" if os.access(binary, os.X_OK) else "is not an executable file that imports"
+            return f"{self.VARIABLE}={binary!r} {what} KratosMultiphysics' DEMApplication"
         return f"{binary} does not import KratosMultiphysics' DEMApplication (bash tools/install_kratos.sh)"
 
     def default_origin(self):
+        """$HARNESS_KRATOS_PYTHON, or the prefix whose python runs."""
         if self.VARIABLE in os.environ:
             return f"${self.VARIABLE}"
         return f"prefix {os.path.dirname(os.path.dirname(self.binary()))}"
@@ -61,6 +64,7 @@ class Kratos(Engine):
         return probe(self.binary()).get("library") or self.binary()
 
     def build(self):
+        """What ran: the installed version, the DEMApplication's library with its SHA-256, where the build is."""
         library = self.executable_file()
         return {"version": self.version(), "binary": library, "sha256": sha256(library),
                 "origin": self.origin or self.default_origin()}
