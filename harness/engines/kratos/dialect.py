@@ -1,10 +1,7 @@
 """What Kratos DEMApplication 10.4.4 computes for each law, as a composition of harness' existing sub-models
 (docs/kratos-dialect.md): a first mapping, the nearest sub-models to Kratos' own formulas; where they differ is
-written beside each entry and measured in the doc. Everything dialect-related of the Kratos engine is here."""
-import math
-
-from ...errors import UserError
-
+written beside each entry and measured in the doc. Everything dialect-related of the Kratos engine is here (the
+engine reads COUNTERPARTS, DIALECTS and PAIR_DIALECTS)."""
 COUNTERPARTS = {                # harness law -> Kratos' constitutive law of the ball-wall and ball-ball relations
     "hertz-mindlin": "DEM_D_Hertz_viscous_Coulomb",
     "linear-spring-dashpot": "DEM_D_Linear_viscous_Coulomb",
@@ -31,24 +28,3 @@ PAIR_DIALECTS = {
                       "tangential-damping": "normal-ratio"},
     "linear-spring-dashpot": {**PAIR, "damping": "linear:exact", "tangential-damping": "normal-ratio"},
 }
-# Kratos' linear stiffness is k_n = beta E* pi r, r = 0.31225 R* (DEM_D_Linear_viscous_Coulomb_CL.cpp): beta = 1
-# against a wall, 1.432 between two spheres
-LINEAR_RADIUS = 0.31225
-LINEAR_BETA = {"wall": 1.0, "sphere": 1.432}
-RIGID_SCALE = 1e20              # a rigid wall: Kratos' E_wall this many times the sphere's (its own tests use 1e20)
-
-
-def walls(law_name, options=None):
-    """Any wall: a rigid face carries its own YOUNG_MODULUS and POISSON_RATIO, mixed with the sphere's as harness
-    mixes them (InitializeContactWithFEM); rigid is a face this many times stiffer."""
-    return ("same", "other", "rigid")
-
-
-def moduli_scale(law, scene, e_n, target):
-    """The factor on every Young's modulus that makes Kratos' own stiffness the law's: 1 for Hertz (its k_n is
-    harness'); for the linear law, k_n/(beta E* pi 0.31225 R*), which leaves 4 G*/E* = k_t/k_n as it is."""
-    if law.name != "linear-spring-dashpot":
-        return 1.0
-    contact = scene.contact
-    k_n = law.normal.parameters(contact, e_n, scene.speed).values[0]
-    return k_n / (LINEAR_BETA[target] * contact.E_star * math.pi * LINEAR_RADIUS * contact.radius)

@@ -2,6 +2,7 @@
 against one rigid face, run by the Kratos venv's python in its batch's directory, and the velocities it reads from
 the model part back (docs/kratos-dialect.md)."""
 import json
+import math
 import os
 from pathlib import Path
 
@@ -11,15 +12,30 @@ from ...render import render
 from ...version import __version__
 from ..dumps import pair_rebound, rebound
 from ..runner import EngineFailure, read_tail, run_engine
-from .dialect import COUNTERPARTS, RIGID_SCALE, moduli_scale
+from .dialect import COUNTERPARTS
 
 TEMPLATES = Path(__file__).resolve().parent / "templates"
+# Kratos' linear stiffness is k_n = beta E* pi r, r = 0.31225 R* (DEM_D_Linear_viscous_Coulomb_CL.cpp): beta = 1
+# against a wall, 1.432 between two spheres
+LINEAR_RADIUS = 0.31225
+LINEAR_BETA = {"wall": 1.0, "sphere": 1.432}
+RIGID_SCALE = 1e20              # a rigid wall: its E this many times the sphere's (Kratos' own tests use 1e20)
 INPUT = "harness_kratos.py"
 RESULT, OBSERVED = "result.json", "observe.json"
 # every sphere starts this fraction of its radius clear of its target: Kratos counts contact from overlap > 0, and
 # at a gap of exactly 0 the round-off of the distance to the face (it grows with x) would decide whether a sphere
 # touches at step 0; 1e-10 R is far above that round-off and far below what the step's first overlap v dt resolves
 CLEARANCE = 1e-10
+
+
+def moduli_scale(law, scene, e_n, target):
+    """The factor on every Young's modulus that makes Kratos' own stiffness the law's: 1 for Hertz (its k_n is
+    harness'); for the linear law, k_n/(beta E* pi 0.31225 R*), which leaves 4 G*/E* = k_t/k_n as it is."""
+    if law.name != "linear-spring-dashpot":
+        return 1.0
+    contact = scene.contact
+    k_n = law.normal.parameters(contact, e_n, scene.speed).values[0]
+    return k_n / (LINEAR_BETA[target] * contact.E_star * math.pi * LINEAR_RADIUS * contact.radius)
 
 
 def wall_spheres(scene, spec, scale):
