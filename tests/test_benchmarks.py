@@ -11,7 +11,7 @@ from conftest import needs
 
 BENCHMARKS = Path(__file__).resolve().parents[1] / "benchmarks"
 
-# script -> (extra arguments, a line its output must hold, whether it runs an engine)
+# script -> (extra arguments, a line its output must hold, whether it runs an engine: True, or the one it needs)
 SMOKES = {
     "bench_cold_start.py": ([], r"run \(paper scheme\)\s+[\d.]+ /\s+[\d.]+\s+[\d.]+ /\s+[\d.]+\s+[\d.]+", False),
     "bench_reference.py": ([], r"reference, 1 thread\(s\): \d+ impact-steps", False),
@@ -23,6 +23,7 @@ SMOKES = {
     "bench_campaign.py": ([], r"cached rerun\s+[\d.]+ s\s+ran 0 of \d+", True),
     "bench_calibrate.py": (["liggghts"], r"RATIO calibrate/compare \(medians\): [\d.]+", True),
     "bench_startup.py": ([], r"--help\s+[\d.]+ /\s+[\d.]+\s+[\d.]+ /\s+[\d.]+", False),
+    "bench_kratos.py": ([], r"RATIO separate/batched: [\d.]+x \(same results to 1e-12: True\)", "kratos"),
     "bench_commands.py": ([], r"compare --model hertz-mindlin\s+[\d.]+ /\s+[\d.]+\s+[\d.]+ /\s+[\d.]+\s+1", True),
 }
 
@@ -48,6 +49,11 @@ def test_reference_benchmark_runs_at_smallest_size(name):
 
 @needs("liggghts")
 @needs("yade")
-@pytest.mark.parametrize("name", [n for n, (_, _, engine) in SMOKES.items() if engine])
+@pytest.mark.parametrize("name", [n for n, (_, _, engine) in SMOKES.items() if engine is True])
 def test_engine_benchmark_runs_at_smallest_size(name):
     smoke(name)
+
+
+@needs("kratos")
+def test_kratos_benchmark_runs_at_smallest_size():
+    smoke("bench_kratos.py")

@@ -42,7 +42,7 @@ def test_harness_engines_lists_the_default_build_with_its_hash(capfd):
     ("lammps@1999.1", 3, "no build of lammps has version 1999.1 (found: 2021.9.29.2"),
     ("lammps@/nonexistent/lmp", 2, "lammps@/nonexistent/lmp: not an executable file"),
     ("lammps@all,lammps@2021.9.29.2", 2, "--engines names the build lammps@2021.9.29.2 twice"),
-    ("kratos@1.0", 2, "unknown engine 'kratos@1.0'"),
+    ("mercury@1.0", 2, "unknown engine 'mercury@1.0'"),
 ])
 def test_a_build_that_is_not_here_is_one_line(selector, code, words, capfd, tmp_path):
     assert main(["compare", "--model", "hertz-mindlin", "--engines", selector, "--en", "0.5", "--angles", "30",

@@ -278,7 +278,7 @@ def test_mu_down_to_zero_is_continuous():
 
 ENGINE_EN = {("liggghts", None): (0.01, 0.05, 0.5, 1.0),         # refusals cost nothing
              ("yade", None): (0.01, 0.5, 1.0), ("yade", "walton-braun"): (0.01, 0.05, 0.5, 1.0),
-             ("lammps", None): (0.01, 0.5, 1.0)}
+             ("lammps", None): (0.01, 0.5, 1.0), ("kratos", None): (0.01, 0.5, 1.0)}
 CUNDALL_STRACK = {"linear": "cundall-strack"}
 BASE = [c for c in CATALOGUE if material_key(c.make_scene()) == material_key(PAPER)]
 MATERIALS = [c for c in CATALOGUE if c not in BASE]
@@ -330,7 +330,7 @@ def engine_run(engine_runs, engine):
 REFUSALS = {"liggghts": (r"LIGGGHTS accepts coefficientRestitution in \(0.05, 1\] only; e_n = (0.01|0.05) was not run",
                          r"LIGGGHTS accepts poissonsRatio in \[0, 0.5\] only; nu = -0.99 was not run"),
             "yade": (r"YADE's Luding law needs kp > k1, i.e. e_n < 1; e_n = 1 was not run",),
-            "lammps": ()}
+            "lammps": (), "kratos": ()}
 
 
 @pytest.mark.engine
@@ -367,8 +367,18 @@ def dialect_frame(engine, frame):
     return pd.concat(parts)
 
 
+PROVISIONAL = {"kratos": "its dialect is a first mapping onto existing sub-models (docs/kratos-dialect.md): Kratos' "
+                         "Coulomb rule and the linear law's contact from overlap > 0 are not sub-models yet"}
+
+
+def provisional(engines):
+    """The engines as parameters, those whose dialect is still provisional expected to fail (not strictly)."""
+    return [pytest.param(e, marks=pytest.mark.xfail(reason=PROVISIONAL[e], strict=False)) if e in PROVISIONAL else e
+            for e in engines]
+
+
 @pytest.mark.engine
-@pytest.mark.parametrize("engine", list(EXTERNAL))
+@pytest.mark.parametrize("engine", provisional(EXTERNAL))
 def test_engine_agrees_with_its_dialect_on_every_hard_case(engine, engine_runs):
     """Agreement at equal dt (< 1e-6 relative, floor 1e-9 of the scale) holds on the hard cases too, so each engine
     finding below is the engine's formulas at work, reproduced by its dialect, not a harness artefact."""
@@ -442,7 +452,7 @@ def test_yade_defects_match_their_theory(engine_runs):
 
 
 @pytest.mark.engine
-@pytest.mark.parametrize("engine", list(EXTERNAL))
+@pytest.mark.parametrize("engine", provisional(EXTERNAL))
 def test_engine_angle_sweeps_are_continuous_except_liggghts_hooke(engine, engine_runs):
     """The fine sweep at e_n 0.5 in each engine: continuous (jumps halve with the spacing, floor pi/N for the step-
     granular contact end) for every law but LIGGGHTS hooke, whose tangential dashpot is added only while the spring

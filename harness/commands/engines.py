@@ -31,6 +31,6 @@ def main(args):
             continue
         print(f"{row['name']}\n    binary  {row['binary']}\n    sha256  {row['sha256']}\n    from    {row['origin']}"
               + (f"\n    note    {row['dialect_note']}" if row["dialect_note"] else ""))
-    print(f"\nother builds: prefixes under {directory()} (${DIRECTORY_VARIABLE}; tools/install_lammps.sh), or a "
-          "binary of one's own as --engines ENGINE@/path/to/binary")
+    print(f"\nother builds: prefixes under {directory()} (${DIRECTORY_VARIABLE}; tools/install_lammps.sh, "
+          "tools/install_kratos.sh), or a binary of one's own as --engines ENGINE@/path/to/binary")
     return EXIT_OK

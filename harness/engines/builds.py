@@ -42,14 +42,15 @@ def sha256(path):
 
 
 def found(engine):
-    """(binary, origin) of every build of `engine` here: its default, then each prefix `<directory>/<engine>-*`."""
+    """(binary, origin) of every build of `engine` here: its default, then each prefix `<directory>/<engine>-*` (once:
+    a default that is a prefix's own binary is not listed again)."""
     out = []
     default = shutil.which(engine.binary())
     if default:
         out.append((os.path.abspath(default), engine.default_origin()))
     for prefix in sorted(glob.glob(os.path.join(directory(), f"{engine.NAME}-*"))):
         binary = engine.prefix_binary(prefix)
-        if binary and os.access(binary, os.X_OK):
+        if binary and os.access(binary, os.X_OK) and binary not in (path for path, _ in out):
             out.append((binary, f"prefix {prefix}"))
     return out
 

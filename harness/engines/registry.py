@@ -1,6 +1,7 @@
 """The registry of the engines, one line each: name -> Engine. A name `engine@selector` (builds.py) is one build of
 an engine, resolved on first use."""
 from ..errors import UserError
+from .kratos import ENGINE as KRATOS
 from .lammps import ENGINE as LAMMPS
 from .liggghts import ENGINE as LIGGGHTS
 from .names import EXTERNAL
@@ -41,7 +42,7 @@ class Registry(dict):
         return chosen
 
 
-ENGINES = Registry({engine.NAME: engine for engine in (REFERENCE, LIGGGHTS, YADE, LAMMPS)})
+ENGINES = Registry({engine.NAME: engine for engine in (REFERENCE, LIGGGHTS, YADE, LAMMPS, KRATOS)})
 if tuple(ENGINES) != ("reference", *EXTERNAL):
     raise ImportError(f"harness.engines.EXTERNAL {EXTERNAL} does not name the registered engines {tuple(ENGINES)}")
 
