@@ -61,10 +61,9 @@ def check_timestep_tolerance(value):
 
 
 def statuses(request, refuse=True):
-    """The Status of every external engine for the request: asked for (or every one when none was named, but for those
-    whose dialects are provisional), able to run the law, to express the scene and to follow its replacements
-    (--with; an engine named in --engines that cannot is refused when `refuse`, as compare does, and otherwise
-    skipped with the reason, as a campaign's variants are)."""
+    """The Status of every external engine for the request: asked for (or every one when none was named), able to run
+    the law, to express the scene and to follow its replacements (--with; an engine named in --engines that cannot is
+    refused when `refuse`, as compare does, and otherwise skipped with the reason, as a campaign's variants are)."""
     names = [e for e in (request.engines if request.engines is not None else EXTERNAL) if e != "reference"]
     out = []
     scene = request.scene
@@ -76,8 +75,6 @@ def statuses(request, refuse=True):
                        ("engine inputs do not model gravity" if scene.gravity else
                        f"its {request.law.name} inputs use a wall of the sphere's own material"
                        if not scene.spheres and scene.wall not in engine.walls(request.law.name, options) else None))
-        if not unsupported and status.available and engine.PROVISIONAL and request.engines is None:
-            unsupported = f"runs only when named (--engines {name}): {engine.PROVISIONAL}"
         if not unsupported and status.available and request.overrides:
             try:
                 options_for(request, name)

@@ -46,7 +46,6 @@ def compute(progress=None, cache=None, engines=None):
     (each its default build, or the build `engines` pins); (frame, skipped)."""
     scene = matrix_scene()
     builds = pinned(engines)
-    named = {e.partition("@")[0] for e in engines or ()}     # an engine with provisional dialects joins only if named
     frames, skipped = [], []
     if progress:
         progress.expect(len(LAWS))
@@ -55,7 +54,7 @@ def compute(progress=None, cache=None, engines=None):
         plan = reference_runs(law, scene, STEPS_PER_CONTACT)
         for engine_name, engine in builds.items():
             status = engine.status(name)
-            if not engine.supports(name) or (engine.PROVISIONAL and engine_name not in named):
+            if not engine.supports(name):
                 continue
             if status.available:
                 plan += engine_plan(engine, law, scene, STEPS_PER_CONTACT)

@@ -367,18 +367,8 @@ def dialect_frame(engine, frame):
     return pd.concat(parts)
 
 
-PROVISIONAL = {"kratos": "its dialect is a first mapping onto existing sub-models (docs/kratos-dialect.md): Kratos' "
-                         "Coulomb rule and the linear law's contact from overlap > 0 are not sub-models yet"}
-
-
-def provisional(engines):
-    """The engines as parameters, those whose dialect is still provisional expected to fail (not strictly)."""
-    return [pytest.param(e, marks=pytest.mark.xfail(reason=PROVISIONAL[e], strict=False)) if e in PROVISIONAL else e
-            for e in engines]
-
-
 @pytest.mark.engine
-@pytest.mark.parametrize("engine", provisional(EXTERNAL))
+@pytest.mark.parametrize("engine", EXTERNAL)
 def test_engine_agrees_with_its_dialect_on_every_hard_case(engine, engine_runs):
     """Agreement at equal dt (< 1e-6 relative, floor 1e-9 of the scale) holds on the hard cases too, so each engine
     finding below is the engine's formulas at work, reproduced by its dialect, not a harness artefact."""
@@ -452,7 +442,7 @@ def test_yade_defects_match_their_theory(engine_runs):
 
 
 @pytest.mark.engine
-@pytest.mark.parametrize("engine", provisional(EXTERNAL))
+@pytest.mark.parametrize("engine", EXTERNAL)
 def test_engine_angle_sweeps_are_continuous_except_liggghts_hooke(engine, engine_runs):
     """The fine sweep at e_n 0.5 in each engine: continuous (jumps halve with the spacing, floor pi/N for the step-
     granular contact end) for every law but LIGGGHTS hooke, whose tangential dashpot is added only while the spring

@@ -52,7 +52,7 @@ def test_report_renders_figures_and_tables_without_errors(report, browser):
     agreement = headings.index("Agreement: engine against its own formulas at equal time step")
     table = browser.find_elements(By.XPATH, f"(//h2)[{agreement + 1}]/following-sibling::table[1]//tr")
     from harness.engines import ENGINES, EXTERNAL
-    engines = [name for name in EXTERNAL if ENGINES[name].available() and not ENGINES[name].PROVISIONAL]
+    engines = [name for name in EXTERNAL if ENGINES[name].available()]
     assert len(table) - 1 == 3 * len(engines)                 # v_n1, v_t1, omega1 per engine
     assert all("True" in row.text for row in table[1:])
     facts = browser.find_elements(
@@ -95,13 +95,9 @@ def test_report_opens_with_the_verdict_per_engine_and_where_everything_is(report
     assert "each engine computes its own formulas" in headline and "agree" not in summary.get_attribute("class")
     rows = summary.find_elements(By.XPATH, ".//table//tr")[1:]
     engines = sorted(e for e in results.engine.unique() if e != "reference")
-    from harness.engines import ENGINES, EXTERNAL
-    skipped = [n for n in EXTERNAL if ENGINES[n].PROVISIONAL or not ENGINES[n].available()]     # named, not run
-    assert sorted(r.find_elements(By.TAG_NAME, "td")[0].text for r in rows) == sorted(engines + skipped)
+    assert sorted(r.find_elements(By.TAG_NAME, "td")[0].text for r in rows) == engines
     for row in rows:
         cells = [c.text for c in row.find_elements(By.TAG_NAME, "td")]
-        if cells[0] in skipped:
-            continue
         assert cells[1] == str(results[results.engine == cells[0]].engine_version.iloc[0])
         assert cells[2] == "deviates" if cells[0] in far else cells[2] in ("deviates", "reproduces")
         agreement, worst = cells[4].split(" (")

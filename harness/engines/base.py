@@ -36,8 +36,6 @@ class Engine:
     COLOUR = None               # of its curves in every figure (matplotlib colour)
     DASHES = None               # of the curves of its dialect (matplotlib line style)
     VERIFIED = ()               # versions (their start, as `harness engines` prints them) its dialects were checked on
-    PROVISIONAL = ""            # why its dialects are not yet checked against it ('' once they agree): it then runs
-                                # only where named (--engines), and is skipped with this reason otherwise
     STARTUP_S = 1.0             # campaign --dry-run estimate: seconds per process start
     SPHERE_STEP_S = 1e-6        # and per sphere-step (docs/performance.md)
 

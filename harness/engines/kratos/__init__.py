@@ -18,7 +18,6 @@ class Kratos(Engine):
     INPUT_SUFFIX, INPUT_NAME = ".py", INPUT
     EXECUTABLE, VARIABLE = "python", PYTHON_VARIABLE      # a prefix's bin/python; another interpreter
     COUNTERPARTS, DIALECTS, PAIR_DIALECTS = COUNTERPARTS, DIALECTS, PAIR_DIALECTS
-    PROVISIONAL = "its dialects are provisional (docs/kratos-dialect.md)"
     COLOUR, DASHES = "tab:brown", (0, (5, 1, 1, 1))
     STARTUP_S, SPHERE_STEP_S = 0.6, 7.5e-6      # bench_kratos.py: ~0.3 ms a step for 45 spheres
     render_batch, read_batch = staticmethod(render_batch), staticmethod(read_batch)
@@ -73,6 +72,21 @@ class Kratos(Engine):
         """Any wall: a rigid face carries its own YOUNG_MODULUS and POISSON_RATIO, mixed with the sphere's as harness
         mixes them (InitializeContactWithFEM); rigid is a face RIGID_SCALE times stiffer than the sphere."""
         return ("same", "other", "rigid")
+
+    def target_reason(self, law_name, scene):
+        """Its pair dialects hold for a free target of the projectile's moduli (any size, density or spin): a held
+        target still lends its mass to Kratos' damping, m* = m1 m2/(m1 + m2), and unequal moduli move each lever to
+        R_i - d E_j/(E_i + E_j) (docs/kratos-dialect.md, measured there)."""
+        reason = super().target_reason(law_name, scene)
+        if reason or not scene.spheres:
+            return reason
+        projectile, target = scene.spheres
+        if target.fixed:
+            return "its damping takes a held target's mass (m* = m1 m2/(m1 + m2)): no dialect for a frozen target yet"
+        if (target.E, target.nu) != (projectile.E, projectile.nu):
+            return "its lever arms split the overlap by the moduli (R_i - d E_j/(E_i + E_j)): no dialect for a target " \
+                   "of other moduli yet"
+        return ""
 
     def run_inputs(self, flavour, count, timeout_s, workdir):
         return run_inputs(self.binary(), count, timeout_s, workdir)

@@ -18,17 +18,19 @@ TEMPLATES = Path(__file__).resolve().parent / "templates"
 RIGID_SCALE = 1e20              # a rigid wall: its E this many times the sphere's (Kratos' own tests use 1e20)
 INPUT = "harness_kratos.py"
 RESULT, OBSERVED = "result.json", "observe.json"
-# every sphere starts this fraction of its radius clear of its target: Kratos counts contact from overlap > 0, and
+# every sphere starts CLEARANCE of the contact's size clear of its target: Kratos counts contact from overlap > 0, and
 # at a gap of exactly 0 the round-off of the distance to the face (it grows with x) would decide whether a sphere
-# touches at step 0; 1e-10 R is far above that round-off and far below what the step's first overlap v dt resolves
-CLEARANCE = 1e-10
+# touches at step 0. The same gap in every batch (batched = alone), above that round-off for batches some metres wide,
+# and its effect on the rebound (gap over peak overlap) at most ~2e-7 of v_n1 at grazing incidence
+CLEARANCE = 1e-11
 
 
 def wall_spheres(scene, spec):
     """Every impact's sphere touching the plane z = 0 (CLEARANCE), 4R apart, each over its own square of the wall (3R
     wide); the materials of the sphere and the wall."""
     radius = scene.radius
-    spheres = [{"x": i * 4.0 * radius, "z": radius * (1.0 + CLEARANCE), "radius": radius, "vx": float(vt),
+    gap = CLEARANCE * radius
+    spheres = [{"x": i * 4.0 * radius, "z": radius + gap, "radius": radius, "vx": float(vt),
                 "vz": -float(vn), "omegay": float(w), "material": "ball", "fixed": False}
                for i, (vn, vt, w) in enumerate(zip(spec.v_n0, spec.v_t0, spec.omega0))]
     wall = {"same": (scene.E, scene.nu), "rigid": (scene.E * RIGID_SCALE, scene.nu),
@@ -44,10 +46,10 @@ def pair_spheres(scene, spec):
     (R* omega0 - R2 omega2)/R1."""
     projectile, target = scene.spheres
     r1, r2, r_star = projectile.radius, target.radius, scene.contact.radius
-    spheres = []
+    spheres, gap = [], CLEARANCE * (r1 + r2)
     for i, (vn, vt, w) in enumerate(zip(spec.v_n0, spec.v_t0, spec.omega0)):
         x = i * 3.0 * (r1 + r2)
-        spheres.append({"x": x, "z": (r1 + r2) * (1.0 + CLEARANCE), "radius": r1, "vx": float(vt), "vz": -float(vn),
+        spheres.append({"x": x, "z": r1 + r2 + gap, "radius": r1, "vx": float(vt), "vz": -float(vn),
                         "omegay": (r_star * float(w) - r2 * target.omega) / r1, "material": "ball", "fixed": False})
         spheres.append({"x": x, "z": 0.0, "radius": r2, "vx": 0.0, "vz": 0.0, "omegay": target.omega,
                         "material": "target", "fixed": target.fixed})
