@@ -37,8 +37,8 @@ def print_summary(record, comparison, written):
     engines = record["engines"]
     names = [e["engine"] if "@" in e["engine"] else f"{e['engine']} {e['version']}" for e in engines]
     ran = " and ".join(filter(None, [", ".join(names[:-1]), names[-1]])) if names else "no engine"
-    print(f"{record['model']}: the paper law against {ran}; {len(record['e_n'])} e_n x "
-          f"{record['impacts'] // max(len(record['e_n']), 1)} impacts")
+    print(wrapped(f"{record['model']}: the paper law against {ran}; {len(record['e_n'])} e_n x "
+                  f"{record['impacts'] // max(len(record['e_n']), 1)} impacts"))
     if engines:
         width = max(18, *(len(name) for name in names))
         tolerances = Tolerances.of(record["tolerances"]).describe()
