@@ -21,8 +21,8 @@ RESULT, OBSERVED = "result.json", "observe.json"
 # every sphere starts CLEARANCE of the contact's size clear of its target: Kratos counts contact from overlap > 0, and
 # at a gap of exactly 0 the round-off of the distance to the face (it grows with x) would decide whether a sphere
 # touches at step 0. The same gap in every batch (batched = alone), above that round-off for batches some metres wide,
-# and its effect on the rebound (gap over peak overlap) at most ~2e-7 of v_n1 at grazing incidence
-CLEARANCE = 1e-11
+# and its effect on the rebound (gap over peak overlap) ~2e-8 of v_n1 at grazing incidence
+CLEARANCE = 1e-12
 
 
 def wall_spheres(scene, spec):
