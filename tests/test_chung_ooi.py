@@ -356,3 +356,15 @@ def test_the_engines_score_what_docs_chung_ooi_says():
                       int((g.quantity == "not run").sum())) for engine, g in table.groupby("engine")}
     assert score == {"liggghts": (338, 376, 0), "yade": (322, 376, 0), "lammps": (160, 244, 50)}
     assert not (table.quantity == "failed").any()
+
+
+@needs("kratos")
+def test_kratos_on_the_rigid_plane_tests():
+    """Kratos' Hertz viscous Coulomb against a rigid plane is Hertz's (test 2) and returns e_in (test 3); under spin
+    (test 6) its tangential impulse is mu J_n but the spin's change differs by its lever R - d, which the row says
+    (docs/kratos-dialect.md)."""
+    rows = engine_rows("kratos", [case(2, "aluminium alloy"), case(3, "alumina, e_in 0.6"),
+                                  case(6, "nylon, tan(angle) 5.671")])
+    assert rows[rows.test.isin([2, 3])].passed.all() and len(rows[rows.test.isin([2, 3])]) == 5
+    spin = rows[(rows.test == 6) & (rows.quantity == "omega1 R [m/s]")].iloc[0]
+    assert not spin.passed and "differs by its lever (not R)" in spin.note
