@@ -48,10 +48,19 @@ def found(engine):
     default = shutil.which(engine.binary())
     if default:
         out.append((os.path.abspath(default), engine.default_origin()))
-    for prefix in sorted(glob.glob(os.path.join(directory(), f"{engine.NAME}-*"))):
-        binary = engine.prefix_binary(prefix)
-        if binary and os.access(binary, os.X_OK) and binary not in (path for path, _ in out):
+    for prefix, binary in prefix_binaries(engine):
+        if binary not in (path for path, _ in out):
             out.append((binary, f"prefix {prefix}"))
+    return out
+
+
+def prefix_binaries(engine):
+    """(prefix, executable) of every prefix `<directory>/<engine>-*` that holds the engine's executable, in order."""
+    out = []
+    for prefix in sorted(glob.glob(os.path.join(directory(), f"{engine.code}-*"))):
+        binary = engine.prefix_binary(prefix)
+        if binary and os.access(binary, os.X_OK):
+            out.append((prefix, binary))
     return out
 
 

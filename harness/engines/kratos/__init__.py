@@ -3,11 +3,10 @@ run, run by the python of a venv that holds the KratosMultiphysics and KratosDEM
 is that interpreter: a build is a prefix <engines directory>/kratos-<release>/ (tools/install_kratos.sh) whose
 bin/python imports Kratos, or the interpreter HARNESS_KRATOS_PYTHON names; its dialects are in dialect.py, its input
 and output in script.py, the interpreter's probe in venv.py."""
-import glob
 import os
 
 from ..base import Engine
-from ..builds import directory, sha256
+from ..builds import directory, prefix_binaries, sha256
 from .dialect import COUNTERPARTS, DIALECTS, PAIR_DIALECTS
 from .script import INPUT, TEMPLATES, read_batch, render_batch, run_inputs, script
 from .venv import PYTHON_VARIABLE, probe
@@ -29,9 +28,8 @@ class Kratos(Engine):
             return self._binary
         if self.VARIABLE in os.environ:
             return os.environ[self.VARIABLE]
-        found = [self.prefix_binary(p) for p in sorted(glob.glob(os.path.join(directory(), f"{self.code}-*")))]
-        found = [path for path in found if os.access(path, os.X_OK)]
-        return found[-1] if found else ""
+        found = prefix_binaries(self)
+        return found[-1][1] if found else ""
 
     def available(self, flavour=None):
         """Its interpreter is there and imports KratosMultiphysics and its DEMApplication."""
