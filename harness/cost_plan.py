@@ -172,8 +172,7 @@ def step_time(rows, law_name, engine, dialect, scene, timed, progress=None, fine
         tried.append(f"{count * per_copy} at {label}")
         if resolved(net, noise) or len(tried) >= MAX_TIMING_ROUNDS or not np.isfinite(net):
             break
-        need = min(max(math.ceil(max(MIN_NET_S, RESOLVE_RATIO * noise) * 1.5 / net) if net > noise else GROWTH, 2),
-                   GROWTH)
+        need = growth(net, noise)
         finest = MAX_TIMING_STEPS // (int(rung["rung"]) * scale) if finer else 1
         if finest >= 2:
             scale *= min(need, finest)
@@ -185,6 +184,14 @@ def step_time(rows, law_name, engine, dialect, scene, timed, progress=None, fine
     rows.append(step_time_row(law_name, engine, dialect, e_n, timed_rung, count, count * per_copy,
                               count * rung["steps"] * scale, wall, start, "; ".join(tried)))
     step(progress, f"{engine} ({dialect}): time per impact-step")
+
+
+def growth(net, noise):
+    """How many times more work the next timing round needs: what makes the net time 1.5x the least it must be
+    (MIN_NET_S and RESOLVE_RATIO x its noise) where the net time stands above its noise, else GROWTH; 2 to GROWTH."""
+    if net <= noise:
+        return GROWTH
+    return min(max(math.ceil(max(MIN_NET_S, RESOLVE_RATIO * noise) * 1.5 / net), 2), GROWTH)
 
 
 def repeated(once, least=2):
