@@ -678,3 +678,29 @@ def test_a_stop_turned_into_another_error_is_still_a_stop():
     done = subprocess.run([sys.executable, "-c", STOP_IN_AN_EXTENSION], capture_output=True, text=True, timeout=120)
     assert done.returncode == 143 and done.stderr.strip().splitlines() == [
         "harness: terminated; engines stopped, nothing had been written yet"], done.stderr
+
+
+LOST_AT_THE_END = r"""
+import os, signal, sys
+from harness.commands import main, models
+
+class Finaliser:
+    def __del__(self):                          # SIGTERM handled here: Python ignores what its handler raises
+        os.kill(os.getpid(), signal.SIGTERM)
+        sum(range(1000))
+
+def finish(args):
+    Finaliser()                                 # collected at once, in the command's last moment
+    return 0
+
+models.main = finish
+sys.exit(main(["models"]))
+"""
+
+
+def test_a_stop_lost_in_a_commands_last_moment_still_stops_harness():
+    """A stop lost where Python ignores exceptions just before the command returns, sooner than its redelivery
+    timer: the command's end raises it, exit 143, rather than exit 0 as if never stopped."""
+    done = subprocess.run([sys.executable, "-c", LOST_AT_THE_END], capture_output=True, text=True, timeout=120)
+    assert done.returncode == 143 and "Traceback" not in done.stderr, done.stderr
+    assert "terminated" in done.stderr

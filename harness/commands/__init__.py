@@ -139,14 +139,16 @@ def main(argv=None):
     """Parse, run one command, return its exit code; a user's mistake is one line and 2, Ctrl-C is 130, a closed
     output ends it quietly with 141 (128 + SIGPIPE, as a shell reports a Unix tool stopped by its closed pipe)."""
     args, since = None, time.time() - 1.0
-    restore_signals = stop_on_signals()
+    raise_lost_stop, restore_signals = stop_on_signals()
     try:
         argv = sys.argv[1:] if argv is None else argv
         args = build_parser({chosen_command(argv)}).parse_args(argv)
         from ..engines.runner import sweep_stale
         sweep_stale()
         show_log(quiet=getattr(args, "quiet", False))
-        return args.func(args)
+        code = args.func(args)
+        raise_lost_stop()               # a stop lost in the command's last moments, before its timer raised it
+        return code
     except KeyboardInterrupt as exc:
         return interrupted(exc, args, since)
     except EngineMissing as exc:

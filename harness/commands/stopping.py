@@ -17,20 +17,21 @@ class Stopped(KeyboardInterrupt):
 
 def stop_on_signals():
     """SIGTERM and SIGHUP stop harness the way Ctrl-C does, and lost stops are raised again (both only where the
-    main thread runs the command: only it receives signals); returns what restores the handlers replaced."""
+    main thread runs the command: only it receives signals); returns (what raises a lost stop not yet raised again,
+    what restores the handlers replaced)."""
     if threading.current_thread() is not threading.main_thread():
-        return lambda: None
+        return (lambda: None), (lambda: None)
 
     def stop(signum, frame):
         raise Stopped(signum)
     replaced = {signum: signal.signal(signum, stop) for signum in (signal.SIGTERM, signal.SIGHUP)}
-    restore_redelivery = redeliver_lost_stops()
+    raise_lost, restore_redelivery = redeliver_lost_stops()
 
     def restore():
         restore_redelivery()
         for signum, handler in replaced.items():
             signal.signal(signum, handler)
-    return restore
+    return raise_lost, restore
 
 
 def stop_behind(exc):
@@ -49,8 +50,8 @@ def stop_behind(exc):
 def redeliver_lost_stops():
     """A stop raised where Python ignores exceptions (a handler run at a fork, a finaliser: "Exception ignored in
     ...") would be lost, and harness would carry on as if never asked to stop. Such a stop is raised again, by a
-    timer's SIGALRM, once the main thread is out of that code. Returns what restores the previous hook and
-    SIGALRM handler."""
+    timer's SIGALRM, once the main thread is out of that code, or when the command ends, if that comes first.
+    Returns (what raises a lost stop not yet raised again, what restores the previous hook and SIGALRM handler)."""
     lost = []
     previous_hook, previous_alarm = sys.unraisablehook, signal.getsignal(signal.SIGALRM)
 
@@ -62,8 +63,12 @@ def redeliver_lost_stops():
         lost.append(stop.signum if isinstance(stop, Stopped) else signal.SIGINT)
         signal.setitimer(signal.ITIMER_REAL, REDELIVER_S)
 
-    def again(signum, frame):
-        raise KeyboardInterrupt if lost[-1] == signal.SIGINT else Stopped(lost[-1])
+    def again(signum=None, frame=None):
+        """The lost stop raised again, once: by the timer, or by the command's end if that comes first."""
+        if lost:
+            signum = lost[-1]
+            lost.clear()
+            raise KeyboardInterrupt if signum == signal.SIGINT else Stopped(signum)
 
     sys.unraisablehook = hook
     signal.signal(signal.SIGALRM, again)
@@ -72,4 +77,4 @@ def redeliver_lost_stops():
         signal.setitimer(signal.ITIMER_REAL, 0)
         signal.signal(signal.SIGALRM, previous_alarm)
         sys.unraisablehook = previous_hook
-    return restore
+    return again, restore
