@@ -8,10 +8,12 @@ set, else the user's cache directory), and changed code is never served from an 
 took three quarters of a step's time (an atomic increment and decrement per array per call), and leaving them out
 changes no result (docs/performance.md#compiled-kernels). It is called from compiled code only, so it is built
 without the wrappers that let Python (or a first-class function pointer) call it, which were an eighth of the first
-run's compile time: Python reaches one through `python_twin`. This module is imported before anything is compiled."""
+run's compile time: Python reaches one through `python_twin`, and a Python call of the function itself raises a
+TypeError that says so. This module is imported before anything is compiled."""
 import os
 
 from numba import config, njit
+from numba.core.registry import CPUDispatcher
 
 from .sources import source_digest
 
@@ -27,7 +29,25 @@ def cache_base():
 
 config.CACHE_DIR = os.path.join(cache_base(), source_digest(*COMPILED_SOURCES, "jit.py"))
 
-compiled = njit(cache=True, _nrt=False, no_cfunc_wrapper=True, no_cpython_wrapper=True)
+COMPILED_OPTIONS = {"nopython": True, "boundscheck": None, "_nrt": False, "no_cfunc_wrapper": True,
+                    "no_cpython_wrapper": True}
+
+
+class CompiledOnly(CPUDispatcher):
+    """A compiled function that only compiled code calls: called from Python, it raises (it has no wrapper to be
+    called through)."""
+
+    def __call__(self, *args, **kwargs):
+        name = self.py_func.__name__
+        raise TypeError(f"{name} is compiled for compiled callers only (no Python wrapper); from Python call "
+                        f"harness.jit.python_twin({name})")
+
+
+def compiled(function):
+    """`function` compiled without reference counting nor Python wrapper, cached on disk (CompiledOnly)."""
+    dispatcher = CompiledOnly(py_func=function, locals={}, targetoptions=dict(COMPILED_OPTIONS))
+    dispatcher.enable_caching()
+    return dispatcher
 
 
 def python_twin(function):

@@ -77,3 +77,33 @@ def test_the_check_finds_such_a_call(tmp_path):
     spec.loader.exec_module(module)
     assert python_calls_to_unwrapped(module) == [("k_t", "tangential_stiffness"),
                                                  ("k_t_again", "dispatch.tangential_stiffness")]
+
+
+PYTHON_CALL = """
+import math
+from harness.jit import python_twin
+from harness.solver.spring import cap, mean_radius
+print(python_twin(mean_radius)(1.0, 1.0), flush=True)
+try:
+    cap(2.0, 1.0)
+except TypeError as error:
+    print(f"TypeError: {error}", flush=True)
+"""
+
+
+def test_a_python_call_of_a_compiled_function_raises_naming_its_twin():
+    """Calling a compiled function from Python raises a one-line TypeError naming python_twin (it used to jump to a
+    null address: exit 139). In a subprocess, so that a segfault fails this test, not the run; its compiled callers
+    still work (the kernel integrates a batch first)."""
+    import subprocess
+    import sys
+    script = ("import numpy as np\nfrom harness.laws import compose\nfrom harness.scene import Scene\n"
+              "from harness.solver.simulate import simulate\n"
+              "frame = simulate(compose('hertz-mindlin'), Scene(e_n=(0.5,), angles_deg=(30.0,)), 100)[0]\n"
+              "print('status', frame.status.iloc[0], flush=True)\n" + PYTHON_CALL)
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=900)
+    assert done.returncode == 0, (done.returncode, done.stderr[-2000:])
+    lines = done.stdout.splitlines()
+    assert lines[0] == "status ok" and float(lines[1]) == 1.0
+    assert lines[2] == ("TypeError: cap is compiled for compiled callers only (no Python wrapper); from Python call "
+                        "harness.jit.python_twin(cap)")
