@@ -13,7 +13,7 @@ import numpy as np
 from harness.engines import ENGINES, EXTERNAL
 from harness.execute import execute
 from harness.laws import compose
-from harness.plan import engine_runs
+from harness.plan import engine_runs, run_spec
 from harness.scene import DEFAULT_ANGLES, Scene
 from harness.solver import codes as C
 from harness.solver.batch import batch_of
@@ -26,7 +26,7 @@ HISTORY_POINTS = 400
 
 def kernel_seconds(law, scene, every_effect=False, history_points=0):
     """Fastest of REPEATS wall times of the integrator over every e_n of the scene, and the rebounds."""
-    batches = [batch_of(law, scene, e, STEPS, every_effect=every_effect) for e in scene.e_n]
+    batches = [batch_of(law, scene, run_spec(law, scene, e, STEPS), every_effect=every_effect) for e in scene.e_n]
     run_kernel(batches[0], history_points)                        # compiled outside the timing
     best, outs = np.inf, None
     for _ in range(REPEATS):

@@ -13,9 +13,8 @@ import numpy as np
 
 from harness.engines import ENGINES
 from harness.laws import compose
-from harness.plan import RunSpec
+from harness.solver.simulate import batch_at
 from harness.scene import Scene
-from harness.solver.batch import batch_of
 
 STEPS = 1000
 
@@ -31,7 +30,7 @@ def one_row(batch, i):
 def timed_run(engine, law, scene, batch):
     with tempfile.TemporaryDirectory() as workdir:
         start = time.perf_counter()
-        final, _, _ = engine.run_batch(law, scene, RunSpec.of(batch), 600, workdir)
+        final, _, _ = engine.run_batch(law, scene, batch.spec, 600, workdir)
         return time.perf_counter() - start, final
 
 
@@ -44,7 +43,7 @@ def main(name, smoke=False):
     scene = Scene(e_n=(0.5,), angles_deg=(10.0, 30.0, 50.0, 70.0)) if smoke else Scene(e_n=(0.5,))
     STEPS = 100 if smoke else STEPS
     law = compose("hertz-mindlin")
-    batch = batch_of(engine.dialect(law.name), scene, 0.5, STEPS)
+    batch = batch_at(engine.dialect(law.name), scene, 0.5, STEPS)
     batched, final = timed_run(engine, law, scene, batch)
     separate, results = 0.0, []
     for i in range(len(batch.v_n0)):

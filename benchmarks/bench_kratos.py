@@ -11,14 +11,15 @@ marginal (the difference of the two: the start-up cancels). Engines that are not
 import sys
 import tempfile
 import time
+from dataclasses import replace
 
 import numpy as np
 
 from harness.engines import ENGINES
 from harness.laws import compose
 from harness.plan import RunSpec
+from harness.solver.simulate import batch_at
 from harness.scene import Scene
-from harness.solver.batch import batch_of
 
 LAW = compose("hertz-mindlin")
 REPEATS = 2
@@ -40,8 +41,8 @@ def steps_run(spec):
 
 def batching(engine, scene, steps):
     """(batched seconds, separate seconds, impacts, identical) of the sweep in Kratos."""
-    batch = batch_of(engine.dialect(LAW.name), scene, 0.5, steps)
-    spec = RunSpec.of(batch)
+    batch = batch_at(engine.dialect(LAW.name), scene, 0.5, steps)
+    spec = batch.spec
     batched, final = timed(engine, scene, spec)
     separate, alone = 0.0, []
     for i in range(spec.impacts):
@@ -56,8 +57,8 @@ def batching(engine, scene, steps):
 def impact_step_costs(engine, scene, steps):
     """(whole, marginal) seconds per impact-step of the batch stepped one chunk and one contact's length (no sphere
     leaves before the last check), each the fastest of REPEATS runs."""
-    batch = batch_of(engine.dialect(LAW.name), scene, 0.5, steps)
-    short, long = RunSpec.of(batch, step_cap=0), RunSpec.of(batch, step_cap=steps - 1)
+    batch = batch_at(engine.dialect(LAW.name), scene, 0.5, steps)
+    short, long = replace(batch.spec, step_cap=0), replace(batch.spec, step_cap=steps - 1)
     t_short = min(timed(engine, scene, short)[0] for _ in range(REPEATS))
     t_long = min(timed(engine, scene, long)[0] for _ in range(REPEATS))
     n = short.impacts

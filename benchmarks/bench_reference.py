@@ -8,18 +8,17 @@ the default sweep.
 import sys
 import tempfile
 import time
+from dataclasses import replace
 
 import numpy as np
 
 from harness.engines import liggghts
 from harness.laws import LAWS, compose
-from harness.plan import RunSpec
 from harness.scene import Scene
 from harness.solver import codes as C
 from harness.solver.extension import table as extension_table
 from harness.solver.kernel import integrate
-from harness.solver.batch import batch_of
-from harness.solver.simulate import simulate
+from harness.solver.simulate import batch_at, simulate
 from harness.solver.threads import THREADS
 
 STEPS = 1000
@@ -44,9 +43,9 @@ def liggghts_seconds(law, scene, batches):
     total = startup = 0.0
     for batch in batches:
         with tempfile.TemporaryDirectory(prefix="harness-bench-") as workdir:
-            total += liggghts.ENGINE.run_batch(law, scene, RunSpec.of(batch), 600, workdir)[1]
+            total += liggghts.ENGINE.run_batch(law, scene, batch.spec, 600, workdir)[1]
         with tempfile.TemporaryDirectory(prefix="harness-bench-") as workdir:
-            startup += liggghts.ENGINE.run_batch(law, scene, RunSpec.of(batch, step_cap=1), 600, workdir)[1]
+            startup += liggghts.ENGINE.run_batch(law, scene, replace(batch.spec, step_cap=1), 600, workdir)[1]
     return total, startup
 
 
@@ -54,7 +53,7 @@ def main(smoke=False):
     e_n = (0.5,) if smoke else tuple(round(0.1 * i, 1) for i in range(1, 10))
     scene = Scene(e_n=e_n, angles_deg=(10.0, 40.0) if smoke else None, psi1_star=None) if smoke else Scene(e_n=e_n)
     law = compose("hertz-mindlin")
-    batches = [batch_of(law, scene, e, STEPS) for e in scene.e_n]
+    batches = [batch_at(law, scene, e, STEPS) for e in scene.e_n]
     impacts = sum(len(b.v_n0) for b in batches)
     print(f"hertz-mindlin, {len(batches)} e_n x {impacts // len(batches)} angles, {STEPS} steps per contact")
     rates = {}
@@ -64,7 +63,7 @@ def main(smoke=False):
         print(f"reference, {threads} thread(s): {steps} impact-steps in {seconds:.3f} s = {rates[threads]:.4f} us per "
               f"impact-step")
     if liggghts.ENGINE.available():
-        dialect_batches = [batch_of(liggghts.dialect(law.name), scene, e, STEPS) for e in scene.e_n]
+        dialect_batches = [batch_at(liggghts.dialect(law.name), scene, e, STEPS) for e in scene.e_n]
         total, startup = liggghts_seconds(law, scene, dialect_batches)
         reference, _ = reference_seconds(dialect_batches, 1)
         print(f"liggghts: {total:.3f} s for the same sweep, of which start-up {startup:.3f} s")

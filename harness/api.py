@@ -14,7 +14,7 @@ from .engines.protocol import Status
 from .errors import UserError
 from .execute import execute, run_all
 from .outputs import arithmetic_of
-from .plan import CONVERGED, compare_plan, reference_runs, target_of
+from .plan import CONVERGED, compare_plan, reference_runs, specs_of, target_of
 from .sliding_search import sliding_thresholds
 from .solver.simulate import simulate
 from .two_spheres import with_bodies
@@ -118,9 +118,7 @@ def compare_request(request, on_frame=None, progress=None, partial=None):
     engines = {ENGINES[s.name]: options_for(request, s.name) for s in found if s.available}
     engine_resolution = 1000 if request.resolution == CONVERGED else request.resolution
     plan = compare_plan(law, scene, request.resolution, engines, engine_resolution)
-    for run_ in plan:                          # a time step above a stability limit: refused before anything runs
-        if run_.resolution != CONVERGED:
-            run_.batch()
+    specs_of(plan)                             # a time step above a stability limit: refused before anything runs
     checks = [(engine.NAME, engine.precision_runs(law, scene, options)) for engine, options in engines.items()]
     extra = [run_ for _, pair in checks for run_ in pair]
     if progress:

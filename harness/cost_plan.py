@@ -11,9 +11,8 @@ from .analyses.cost import (ADAPTIVE, ADAPTIVE_RUNGS, COLUMNS, EXTRAPOLATED, LAD
                             RESOLVE_RATIO, Rows, converged_rows, fastest, measure, per_e_n, priced, rayleigh_time,
                             refused, resolved, step_time_row, uncertainties)
 from .execute import execute
-from .plan import engine_runs, reference_runs
+from .plan import MAX_STEPS_PER_CONTACT, FixedTimeStep, engine_runs, reference_runs
 from .errors import UserError
-from .solver.batch import MAX_STEPS_PER_CONTACT, FixedTimeStep
 from .solver.simulate import CONVERGED_START, adaptive_batch, simulate, simulate_adaptive, simulate_extrapolated
 from .solver.stability import UnstableTimeStep
 

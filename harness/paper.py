@@ -15,7 +15,7 @@ from .scene import DEFAULT_EN, Scene
 from .analyses.published import published_distances
 from .analyses.sliding import threshold_table
 from .sliding_search import sliding_thresholds
-from .solver.batch import MAX_STEPS_PER_CONTACT
+from .plan import MAX_STEPS_PER_CONTACT
 from .solver.simulate import simulate
 from .errors import UserError
 

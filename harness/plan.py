@@ -8,47 +8,10 @@ import numbers
 from dataclasses import asdict, dataclass, replace
 from functools import cached_property
 
-import numpy as np
+from .resolution import CONVERGED, MAX_STEPS_PER_CONTACT, FixedTimeStep, RunSpec, joined, run_spec  # noqa: F401
+from .solver.batch import batch_of, join
 
-from .solver.batch import FixedTimeStep, join, batch_of
-
-CONVERGED = "converged"       # the resolution of the converged mode
 SCHEMA = 1                    # of the results table and of the key: a change makes every key new
-
-
-MIN_CHUNK = 10                # steps between an engine's separation checks: a tenth of a contact, at least this
-
-
-@dataclass(frozen=True)
-class RunSpec:
-    """What an engine runs: every impact (incident velocities at the target e_n), the time step, the step cap and the
-    output cadence (a separation check every `chunk` steps, at most `chunks` of them, which covers the cap)."""
-    e_n: float
-    dt: float
-    steps_per_contact: float
-    step_cap: int
-    theta_deg: np.ndarray
-    v_n0: np.ndarray
-    v_t0: np.ndarray
-    omega0: np.ndarray
-
-    @property
-    def impacts(self):
-        return len(self.v_n0)
-
-    @property
-    def chunk(self):
-        return max(MIN_CHUNK, int(self.steps_per_contact // 10))
-
-    @property
-    def chunks(self):
-        return max(1, self.step_cap // self.chunk + 1)
-
-    @classmethod
-    def of(cls, batch, step_cap=None):
-        """The spec of a planned batch; step_cap: stop every impact after that many steps instead of its own cap."""
-        return cls(batch.e_n, batch.dt, batch.steps_per_contact, batch.step_cap if step_cap is None else step_cap,
-                   batch.theta_deg, batch.v_n0, batch.v_t0, batch.omega0)
 
 
 @dataclass(frozen=True)
@@ -72,16 +35,23 @@ class Run:
     def options_dict(self):
         return dict(self.options)
 
-    def batch(self):
-        """The kernel rows of this run (their time step is the engine's too: agreement is at equal dt)."""
-        if not self.together:
-            return batch_of(self.dialect, self.scene, self.e_n, self.resolution)
-        return join([batch_of(self.dialect, s, self.e_n, self.resolution) for s in (self.scene,) + self.together])
+    @cached_property
+    def scene_specs(self):
+        """The RunSpec of each of its scenes (the run's own, then those run together), from the dialect and the
+        scene: the time step, checked against the stability limit, and the step cap."""
+        return tuple(run_spec(self.dialect, s, self.e_n, self.resolution, self.step_cap)
+                     for s in (self.scene,) + self.together)
 
     @cached_property
     def spec(self):
-        """What the engine is told (RunSpec), computed once from this run's batch."""
-        return RunSpec.of(self.batch(), self.step_cap)
+        """What the engine is told (RunSpec), computed once from the dialect and the scenes."""
+        return self.scene_specs[0] if not self.together else joined(self.scene_specs)
+
+    def batch(self):
+        """The kernel rows of this run's spec (their time step is the engine's too: agreement is at equal dt)."""
+        batches = [batch_of(self.dialect, s, spec) for s, spec in zip((self.scene,) + self.together,
+                                                                       self.scene_specs)]
+        return batches[0] if not self.together else join(batches)
 
     def key(self, engine_version):
         """sha256 of the engine and its version, the dialect's sub-models, the scene, the resolution and options."""
@@ -92,6 +62,12 @@ class Run:
                     "resolution": [type(self.resolution).__name__, resolution], "options": list(self.options),
                     "observe": self.observe, **({"step_cap": self.step_cap} if self.step_cap is not None else {})}
         return hashlib.sha256(json.dumps(identity, sort_keys=True, default=repr).encode()).hexdigest()[:20]
+
+
+def specs_of(runs):
+    """The specs of the runs (but the converged ones), computed now: a time step above a stability limit is refused
+    before anything runs."""
+    return [run.spec for run in runs if run.resolution != CONVERGED]
 
 
 def scene_identity(scene):

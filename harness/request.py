@@ -8,10 +8,8 @@ from dataclasses import dataclass, field
 from .errors import UserError, UserTypeError
 from .keywords import (as_engine_options, as_flag, as_names, as_pairs, as_real, as_text, as_tolerances, as_whole,
                        scene_keywords)
-from .solver.batch import MAX_STEPS_PER_CONTACT
-from .plan import CONVERGED
+from .plan import CONVERGED, MAX_STEPS_PER_CONTACT, FixedTimeStep
 from .scene import DEFAULT_ANGLES, DEFAULT_EN, DEFAULT_SPEED, from_material
-from .solver.batch import FixedTimeStep
 
 SCENE_KEYWORDS = ("en", "angles", "psi", "vt", "mu", "material", "radius", "E", "nu", "rho", "speed", "normal_speed",
                   "omega0", "gravity", "wall", "target", "target_radius", "target_material", "target_omega",

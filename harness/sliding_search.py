@@ -10,8 +10,7 @@ import numpy as np
 from .analyses.sliding import Threshold, derived_threshold
 from .errors import UserError
 from .solver import codes as C
-from .solver.batch import batch_of
-from .solver.simulate import adaptive_batch, run_adaptive, run_kernel
+from .solver.simulate import adaptive_batch, batch_at, run_adaptive, run_kernel
 
 PSI_MAX = 40.0          # Psi1* searched up to this (the rigid-body threshold is 7; viscous laws without a
                         # tangential dashpot approach the sliding line only as 1/Psi1* and never reach it)
@@ -47,7 +46,7 @@ def _sliding(law, scene, e_n, psi):
         batch = adaptive_batch(law, probe, e_n)[0]
         out = run_adaptive(batch, np.arange(len(psi)), ADAPTIVE_TOLERANCE)[0]
     else:
-        out = run_kernel(batch_of(law, probe, e_n, SLIDING_STEPS))[0]
+        out = run_kernel(batch_at(law, probe, e_n, SLIDING_STEPS))[0]
     slides = (out[:, C.O_STATUS] == C.STATUS_OK) & (out[:, C.O_STICKING] == 0)
     return slides, out[:, C.O_VZ] / scene.speed
 

@@ -165,6 +165,15 @@ def test_render_refuses_another_engines_option(tmp_path, capfd):
     assert not (tmp_path / "decks").exists()
 
 
+
+def test_render_refuses_the_converged_mode_in_one_line(tmp_path, capfd):
+    """An engine runs at a time step: render --converged is one line and exit 2 (it was a traceback, exit 4)."""
+    code = main(["render", "--model", "hertz-mindlin", "--engine", "yade", "--en", "0.5", "--converged",
+                 "-o", str(tmp_path / "decks")])
+    err = capfd.readouterr().err
+    assert code == 2 and len(err.strip().splitlines()) == 1 and "--steps-per-contact or --dt" in err
+    assert not (tmp_path / "decks").exists()
+
 @pytest.mark.parametrize("damage, message", [
     ("run.json:{not json", "cannot read"), ("run.json:[1, 2]", "damaged or foreign"),
     ("run.json:{\"model\": \"thornton\", \"scene\": {\"radius\": \"big\"}}", "damaged or foreign"),
@@ -227,9 +236,9 @@ def test_rows_with_a_negative_e_n_or_a_non_finite_energy_are_invalid():
     from harness.laws import compose
     from harness.results import impact_frame
     from harness.scene import Scene
-    from harness.solver.batch import batch_of
+    from harness.solver.simulate import batch_at
     scene = Scene(e_n=(0.5,), angles_deg=(10.0, 20.0, 30.0))
-    batch = batch_of(compose("thornton"), scene, 0.5, 100)
+    batch = batch_at(compose("thornton"), scene, 0.5, 100)
     v_n1 = np.array([-0.88 * batch.v_n0[0], 0.5 * batch.v_n0[1], np.inf])
     frame = impact_frame(scene, batch, model="thornton", dialect="yade", engine="yade", engine_version="x", dt=batch.dt,
                          steps_per_contact=100, v_n1=v_n1, v_t1=batch.v_t0, omega1=np.zeros(3), wall_s=0.0,
@@ -250,9 +259,9 @@ def _rows(engine="reference", angles=(10.0, 20.0, 30.0), mu=0.1, **measured):
     from harness.laws import compose
     from harness.results import impact_frame
     from harness.scene import Scene
-    from harness.solver.batch import batch_of
+    from harness.solver.simulate import batch_at
     scene = Scene(e_n=(0.5,), angles_deg=angles, mu=mu)
-    batch = batch_of(compose("thornton"), scene, 0.5, 100)
+    batch = batch_at(compose("thornton"), scene, 0.5, 100)
     n = len(angles)
     measured = {k: np.full(n, 1e-5) for k in ("t_contact", "f_n_max", "overlap_max")} | measured
     return impact_frame(scene, batch, model="thornton", dialect=engine, engine=engine, engine_version="x",

@@ -13,7 +13,7 @@ from harness.laws.law import replace_submodels
 from harness.scene import Scene
 from harness.solver import codes as C
 from harness.solver import friction
-from harness.solver.batch import FixedTimeStep, batch_of
+from harness.plan import FixedTimeStep, run_spec
 from harness.solver.dispatch import TANGENTIAL_LINEAR
 from harness.solver.simulate import simulate
 from harness.submodels import calibration as cal
@@ -125,7 +125,7 @@ def test_wall_dialect_is_kratos_step_by_step(law_name, theta, omega0):
     rebound to round-off."""
     scene = Scene(e_n=(0.5,), angles_deg=(theta,), omega0=omega0)
     law = kratos(law_name)
-    dt = batch_of(law, scene, 0.5, 200).dt
+    dt = run_spec(law, scene, 0.5, 200).dt
     row = simulate(law, scene, steps_per_contact=FixedTimeStep(dt))[0].iloc[0]
     vz, vx, w = symplectic_euler_wall(law_name, scene, 0.5, dt, theta, omega0)
     assert np.abs(np.array([row.v_n1 - vz, row.v_t1 - vx, scene.radius * (row.omega1 - w)])).max() < 1e-12 * 5.0
@@ -138,6 +138,6 @@ def test_pair_leapfrog_head_on_is_the_wall_impact_of_the_relative_motion(law_nam
     scene = reduce(Scene(e_n=(0.5,), angles_deg=(0.0,)), Sphere(0.025))
     pair = kratos(law_name, "sphere")
     wall = replace_submodels(pair, {"geometry": "wall"}, "kratos")
-    dt = batch_of(pair, scene, 0.5, 200).dt
+    dt = run_spec(pair, scene, 0.5, 200).dt
     a, b = (simulate(law, scene, steps_per_contact=FixedTimeStep(dt))[0].iloc[0] for law in (pair, wall))
     assert abs(a.v_n1 - b.v_n1) < 1e-11 * 5.0 and a.v_n1 > 0.0      # positions of 0.05 m round off at 1e-17 m

@@ -13,12 +13,11 @@ from harness.engines import liggghts
 from harness.engines.runner import EngineFailure, run_engine
 from harness.execute import execute
 from harness.laws import compose
-from harness.plan import RunSpec, engine_runs
+from harness.plan import engine_runs
 from harness.render import RenderError, render
 from harness.scene import Scene
 from harness.solver import codes as C
-from harness.solver.batch import batch_of
-from harness.solver.simulate import run_kernel
+from harness.solver.simulate import batch_at, run_kernel
 
 needs_liggghts = needs("liggghts")
 SCENE = Scene(e_n=(0.9, 0.5, 0.1), angles_deg=(0.0, 10.0, 30.0, 50.0, 70.0, 85.0))
@@ -26,9 +25,9 @@ SCENE = Scene(e_n=(0.9, 0.5, 0.1), angles_deg=(0.0, 10.0, 30.0, 50.0, 70.0, 85.0
 
 def engine_and_dialect(name, scene, e_n, steps=200, tmp_path=None, options=None):
     law = liggghts.dialect(name, options)
-    batch = batch_of(law, scene, e_n, steps)
+    batch = batch_at(law, scene, e_n, steps)
     out, _, _ = run_kernel(batch)
-    final, _, _ = liggghts.ENGINE.run_batch(compose(name), scene, RunSpec.of(batch), 300, str(tmp_path), options)
+    final, _, _ = liggghts.ENGINE.run_batch(compose(name), scene, batch.spec, 300, str(tmp_path), options)
     engine = np.column_stack([final["v_n1"], final["v_t1"], final["omega1"]])
     reference = out[:, [C.O_VZ, C.O_VX, C.O_W]]
     return engine, reference, final
@@ -117,8 +116,8 @@ def test_lost_atoms_are_a_clear_failure(tmp_path):
     """A sphere thrown out of the domain: LIGGGHTS stops on 'Lost atoms' (thermo_modify lost error)."""
     law = compose("hertz-mindlin")
     scene = Scene(e_n=(0.5,), angles_deg=(0.0,))
-    batch = batch_of(liggghts.dialect("hertz-mindlin"), scene, 0.5, 100)
-    deck = liggghts.deck(law, scene, replace(RunSpec.of(batch, step_cap=100000), v_t0=np.array([5e3])))
+    batch = batch_at(liggghts.dialect("hertz-mindlin"), scene, 0.5, 100)
+    deck = liggghts.deck(law, scene, replace(replace(batch.spec, step_cap=100000), v_t0=np.array([5e3])))
     with pytest.raises(EngineFailure) as failure:
         liggghts.run_deck(deck.text, deck.n_atoms, 120, str(tmp_path))
     assert "Lost atoms" in failure.value.log_tail
@@ -213,7 +212,7 @@ def test_hostile_values_cannot_reach_a_deck(value):
     with pytest.raises(Exception) as scene_error:
         Scene(mu=value)
     assert type(scene_error.value).__name__ == "UserError"
-    batch = batch_of(liggghts.dialect("hertz-mindlin"), SCENE, 0.5, 100)
+    batch = batch_at(liggghts.dialect("hertz-mindlin"), SCENE, 0.5, 100)
     with pytest.raises(RenderError):
         render(liggghts.TEMPLATES, "batch.in.j2", harness_version="0", law="hertz-mindlin", model="hertz", e_n=value,
                atoms=[], x_lo=0.0, x_hi=1.0, box_half=1.0, z_lo=0.0, z_hi=1.0, skin=0.1, E=1e9, nu=0.3, mu=0.3,
@@ -232,8 +231,8 @@ def test_keywords_outside_the_vocabulary_are_refused(word):
 def test_rendered_deck_holds_only_the_expected_commands():
     """Every line of a real deck starts with a known LIGGGHTS command or is a comment."""
     law = compose("hertz-mindlin")
-    batch = batch_of(liggghts.dialect("hertz-mindlin"), SCENE, 0.5, 100)
-    text = liggghts.deck(law, SCENE, RunSpec.of(batch, step_cap=1000)).text
+    batch = batch_at(liggghts.dialect("hertz-mindlin"), SCENE, 0.5, 100)
+    text = liggghts.deck(law, SCENE, replace(batch.spec, step_cap=1000)).text
     allowed = {"atom_style", "atom_modify", "boundary", "newton", "communicate", "units", "hard_particles",
                "soft_particles", "region",
                "create_box", "neighbor", "neigh_modify", "fix", "pair_style", "pair_coeff", "timestep",

@@ -7,7 +7,7 @@ import pytest
 from harness.laws import compose
 from harness.scene import Scene
 from harness.solver import codes as C
-from harness.solver.batch import batch_of
+from harness.solver.simulate import batch_at
 from harness.solver.simulate import run_kernel, simulate
 
 SCENE = dict(radius=5e-3, E=70e9, nu=0.3, rho=2650.0, mu=0.0)
@@ -88,7 +88,7 @@ def test_lsd_tension_calibration_clipped_gives_classic_error():
     tension = compose("linear-spring-dashpot", {"end": "tension"})
     expected = [0.902, 0.718, 0.550, 0.397, 0.253]
     for e, want in zip(scene.e_n, expected):
-        batch = batch_of(tension, scene, e, 2000)
+        batch = batch_at(tension, scene, e, 2000)
         batch.ints[:, C.I_END] = C.END_FORCE            # clip, but keep the tension calibration
         out, _, _ = run_kernel(batch)
         assert out[0, C.O_VZ] == pytest.approx(want, abs=1.5e-3)
@@ -115,7 +115,7 @@ def test_kuwabara_kono_restitution_follows_its_table():
     whose table is for contact ending at alpha = 0 (tension allowed); without tension e is higher (0.845 at y=0.1)."""
     scene = normal_scene([0.5] * 1, angles=[0.0] * len(KK_TABLE))
     law = compose("hertz-kuwabara-kono", {"end": "tension"})
-    batch = batch_of(law, scene, 0.5, 4000)
+    batch = batch_at(law, scene, 0.5, 4000)
     m, e_star = mass_and_estar(scene)
     k = 4.0 / 3.0 * e_star * math.sqrt(scene.radius)
     for i, (y, _) in enumerate(KK_TABLE):

@@ -12,6 +12,7 @@ Oracles (the reference dialect reproduces the engine's steps to round-off, docs/
   differ by exactly 0 and -1 steps, within the one step the step quantisation allows.
 """
 import difflib
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -20,11 +21,9 @@ from harness.engines import lammps, liggghts, yade
 from harness.engines import ENGINES
 from harness.engines.runner import EngineFailure
 from harness.laws import compose
-from harness.plan import RunSpec
 from harness.scene import Scene
 from harness.solver import codes as C
-from harness.solver.batch import batch_of
-from harness.solver.simulate import run_kernel, simulate
+from harness.solver.simulate import batch_at, run_kernel, simulate
 
 STEPS = 200
 ROUND_OFF = 1e-8                 # engine vs dialect at equal dt, relative (docs/liggghts-dialect.md, docs/yade-dialect.md: ~1e-15 .. 4e-9)
@@ -65,8 +64,8 @@ def observed_run(engine, name, options, e_n, workdir, observe=True):
         pytest.skip(f"{engine} is not installed")
     law = adapter.dialect(name, options)
     scene = Scene(e_n=(e_n,), angles_deg=ANGLES, omega0=-50.0)
-    batch = batch_of(law, scene, e_n, STEPS)
-    final, wall, _ = adapter.run_batch(compose(name), scene, RunSpec.of(batch), 300, str(workdir), options,
+    batch = batch_at(law, scene, e_n, STEPS)
+    final, wall, _ = adapter.run_batch(compose(name), scene, batch.spec, 300, str(workdir), options,
                                        observe=observe)
     return scene, batch, final, wall, simulate(law, scene, steps_per_contact=STEPS)[0]
 
@@ -119,8 +118,8 @@ RENDER_CASES = ([(liggghts, name, {}) for name in liggghts.DIALECTS] + [(liggght
 def test_observe_only_adds_lines_to_the_rendered_input(adapter, name, options):
     """observe=False renders what the adapter rendered before (the default); observe=True only inserts lines."""
     scene = Scene(e_n=(0.5,), angles_deg=ANGLES)
-    batch = batch_of(adapter.dialect(name, options), scene, 0.5, 100)
-    args = (compose(name), scene, RunSpec.of(batch, step_cap=10000), options)
+    batch = batch_at(adapter.dialect(name, options), scene, 0.5, 100)
+    args = (compose(name), scene, replace(batch.spec, step_cap=10000), options)
     default, plain, seen = adapter.render_batch(*args), adapter.render_batch(*args, observe=False), \
         adapter.render_batch(*args, observe=True)
     assert plain == default and seen != plain and "observe" not in plain

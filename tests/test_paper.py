@@ -43,9 +43,9 @@ def test_linear_law_lasts_as_long_as_elastic_hertz():
 def test_kt_over_kn_is_kappa_with_the_normal_dashpots_ratio():
     """The paper's linear law: k_t = kappa k_n (0.8235 at nu 0.3), c_t = 2 g sqrt(m k_t) with the normal g."""
     from harness.solver import codes as C
-    from harness.solver.batch import batch_of
+    from harness.solver.simulate import batch_at
     scene = Scene(e_n=(0.5,), angles_deg=(30.0,))
-    params = batch_of(compose("linear-spring-dashpot"), scene, 0.5, 1000).params[0]
+    params = batch_at(compose("linear-spring-dashpot"), scene, 0.5, 1000).params[0]
     k_n, c_n = params[C.P_N1], params[C.P_DAMP_C0]
     assert params[C.P_T1] == pytest.approx(2 * 0.7 / 1.7 * k_n, rel=1e-15)
     g = c_n / (2 * math.sqrt(scene.contact.mass * k_n))
@@ -58,11 +58,11 @@ def test_tangential_dashpot_options():
     test; an unknown option is one line of bad input."""
     from harness.errors import UserError
     from harness.solver import codes as C
-    from harness.solver.batch import batch_of
+    from harness.solver.simulate import batch_at
     scene = Scene(e_n=(0.5,), angles_deg=(30.0,))
-    plain = batch_of(compose("linear-spring-dashpot"), scene, 0.5, 1000).params[0]
+    plain = batch_at(compose("linear-spring-dashpot"), scene, 0.5, 1000).params[0]
     law = compose("linear-spring-dashpot", {"tangential-damping": "classical:total:sphere-mass"})
-    params = batch_of(law, scene, 0.5, 1000).params[0]
+    params = batch_at(law, scene, 0.5, 1000).params[0]
     beta = -math.log(0.5) / math.sqrt(math.log(0.5) ** 2 + math.pi ** 2)
     assert params[C.P_TDAMP] == pytest.approx(2 * beta * math.sqrt(2.0 / 7.0 * scene.contact.mass), rel=1e-12)
     assert (plain[C.P_TCONE], params[C.P_TCONE]) == (0.0, 1.0)

@@ -15,7 +15,7 @@ from harness.solver import codes as C
 from harness.solver.extension import table as extension_table
 from harness.solver import kernel
 from harness.solver.kernel import WORK, kernel_of_batch
-from harness.solver.batch import batch_of
+from harness.solver.simulate import batch_at
 
 SCENE = Scene(e_n=(0.5,), angles_deg=(0.0, 20.0, 45.0, 70.0, 88.0), omega0=-20.0)
 LAWS = {"hertz-mindlin": compose("hertz-mindlin"), "thornton": compose("thornton"),
@@ -33,7 +33,7 @@ def outcomes(kernel, batch):
 
 @pytest.mark.parametrize("name", sorted(LAWS))
 def test_the_specialised_integrator_is_the_general_one_bit_for_bit(name):
-    batch = batch_of(LAWS[name], SCENE, 0.5, 300)
+    batch = batch_at(LAWS[name], SCENE, 0.5, 300)
     specialised, stepper = kernel_of_batch(batch.params, batch.ints)
     assert specialised is not kernel.integrate_rows
     assert specialised.py_func.__module__.startswith(f"harness.solver_{stepper.lower()}_n")
@@ -72,6 +72,6 @@ def test_an_unwritable_cache_runs_the_general_kernels(tmp_path, monkeypatch):
     blocker = tmp_path / "a-file"
     blocker.write_text("")
     monkeypatch.setattr(config, "CACHE_DIR", str(blocker / "cache"))
-    batch = batch_of(compose("stronge"), SCENE, 0.5, 100)
+    batch = batch_at(compose("stronge"), SCENE, 0.5, 100)
     monkeypatch.delitem(sys.modules, "harness.solver_paper_n4", raising=False)
     assert kernel_of_batch(batch.params, batch.ints) == (kernel.integrate_rows, "PAPER")

@@ -13,7 +13,7 @@ from harness.engines import liggghts
 from harness.errors import UserError
 from harness.laws import LAWS, compose
 from harness.scene import Scene
-from harness.solver.batch import FixedTimeStep, batch_of
+from harness.plan import FixedTimeStep, run_spec
 from harness.solver.simulate import simulate
 
 
@@ -35,9 +35,9 @@ def test_explicit_linear_spring_dashpot_limit_is_the_damped_oscillator_one(e_n):
     w = math.sqrt(duration_k(c, scene.speed) / c.mass)
     z = -math.log(e_n) / math.sqrt(math.pi ** 2 + math.log(e_n) ** 2)
     h_c = 2.0 / w * (math.sqrt(1 + z * z) - z)
-    batch_of(law, scene, e_n, FixedTimeStep(0.999 * h_c))
+    run_spec(law, scene, e_n, FixedTimeStep(0.999 * h_c))
     with pytest.raises(UserError, match=r"stability limit (\S+) s") as refused:
-        batch_of(law, scene, e_n, FixedTimeStep(1.001 * h_c))
+        run_spec(law, scene, e_n, FixedTimeStep(1.001 * h_c))
     named = float(refused.value.args[0].split("stability limit ")[1].split(" s")[0])
     assert named == pytest.approx(h_c, rel=1e-3)
 
@@ -49,9 +49,9 @@ def test_paper_scheme_limit_is_undamped_hertz_at_peak_overlap():
     alpha = (15 * c.mass * scene.speed ** 2 / (16 * math.sqrt(c.radius) * c.E_star)) ** 0.4
     h_c = 2.0 / math.sqrt(2 * c.E_star * math.sqrt(c.radius * alpha) / c.mass)
     law = compose("hertz-mindlin")
-    batch_of(law, scene, 0.3, FixedTimeStep(0.999 * h_c))
+    run_spec(law, scene, 0.3, FixedTimeStep(0.999 * h_c))
     with pytest.raises(UserError, match="stability limit"):
-        batch_of(law, scene, 0.3, FixedTimeStep(1.001 * h_c))
+        run_spec(law, scene, 0.3, FixedTimeStep(1.001 * h_c))
 
 
 def test_a_stiff_tangential_spring_sets_the_limit():
@@ -62,9 +62,9 @@ def test_a_stiff_tangential_spring_sets_the_limit():
     c = scene.contact
     h_c = 2.0 / math.sqrt(3.5 * duration_k(c, scene.speed) / c.mass)
     with pytest.raises(UserError, match="tangential mode"):
-        batch_of(law, scene, 0.9, FixedTimeStep(1.001 * h_c))
-    batch_of(law, scene, 0.9, FixedTimeStep(0.999 * h_c))
-    batch_of(normal_only, Scene(e_n=(0.9,), angles_deg=(0.0,), mu=0.5), 0.9, FixedTimeStep(1.5 * h_c))
+        run_spec(law, scene, 0.9, FixedTimeStep(1.001 * h_c))
+    run_spec(law, scene, 0.9, FixedTimeStep(0.999 * h_c))
+    run_spec(normal_only, Scene(e_n=(0.9,), angles_deg=(0.0,), mu=0.5), 0.9, FixedTimeStep(1.5 * h_c))
 
 
 @pytest.mark.parametrize("name", list(LAWS))

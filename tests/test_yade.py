@@ -2,6 +2,7 @@
 import os
 import subprocess
 import sys
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -12,9 +13,8 @@ from harness.engines import yade
 from harness.engines.runner import EngineFailure
 from harness.execute import execute
 from harness.laws import compose
-from harness.plan import RunSpec
 from harness.scene import Scene
-from harness.solver.batch import batch_of
+from harness.solver.simulate import batch_at
 
 needs_yade = needs("yade")
 needs_float128 = needs("yade", "float128")
@@ -69,8 +69,8 @@ def test_yade_as_a_module_opens_no_listening_socket(tmp_path):
 
 def batch_and_script(scene, e_n=0.5, steps=200):
     law = compose("hertz-mindlin")
-    batch = batch_of(law, scene, e_n, steps)
-    return law, batch, yade.script(law, scene, RunSpec.of(batch, step_cap=40000))
+    batch = batch_at(law, scene, e_n, steps)
+    return law, batch, yade.script(law, scene, replace(batch.spec, step_cap=40000))
 
 
 @needs_yade
@@ -147,9 +147,9 @@ def test_viscel_against_a_wall_uses_half_the_mass():
     from oracles import lsd_notension_e
     g_a = -math.log(0.5) / math.sqrt(math.pi ** 2 + math.log(0.5) ** 2)
     scene = Scene(e_n=(0.5,), angles_deg=(0.0,))
-    batch = batch_of(yade.dialect("linear-spring-dashpot"), scene, 0.5, 2000)
+    batch = batch_at(yade.dialect("linear-spring-dashpot"), scene, 0.5, 2000)
     with tempfile.TemporaryDirectory() as workdir:
-        final, _, _ = yade.ENGINE.run_batch(compose("linear-spring-dashpot"), scene, RunSpec.of(batch, step_cap=200000), 300,
+        final, _, _ = yade.ENGINE.run_batch(compose("linear-spring-dashpot"), scene, replace(batch.spec, step_cap=200000), 300,
                                      workdir)
     assert final["v_n1"][0] / scene.speed == pytest.approx(lsd_notension_e(g_a / math.sqrt(2.0)), abs=2e-3)
 
@@ -190,9 +190,9 @@ def test_engine_agrees_with_its_yade_dialect_at_equal_dt(name, options, e_n, ome
     from harness.solver import codes as C
     from harness.solver.simulate import run_kernel
     scene = Scene(e_n=(e_n,), angles_deg=(0.0, 10.0, 30.0, 60.0, 85.0), omega0=omega0)
-    batch = batch_of(yade.dialect(name, options), scene, e_n, 200)
+    batch = batch_at(yade.dialect(name, options), scene, e_n, 200)
     out, _, _ = run_kernel(batch)
-    final, _, _ = yade.ENGINE.run_batch(compose(name), scene, RunSpec.of(batch, step_cap=20000), 120, str(tmp_path), options)
+    final, _, _ = yade.ENGINE.run_batch(compose(name), scene, replace(batch.spec, step_cap=20000), 120, str(tmp_path), options)
     assert final["separated"].all()
     engine = np.column_stack([final["v_n1"], final["v_t1"], final["omega1"]])
     reference = out[:, [C.O_VZ, C.O_VX, C.O_W]]

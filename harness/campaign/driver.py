@@ -37,9 +37,9 @@ def keyed(campaign):
 
 def estimate_s(run):
     """Rough wall seconds of one task (the dry run's estimate)."""
-    batch = run.batch() if run.resolution != "converged" else None
-    impacts = len(batch.v_n0) if batch is not None else 1
-    steps = (run.spec.step_cap if run.engine != "reference" else 1.2 * batch.steps_per_contact) if batch else 5e3
+    spec = run.spec if run.resolution != "converged" else None
+    impacts = spec.impacts if spec is not None else 1
+    steps = (spec.step_cap if run.engine != "reference" else 1.2 * spec.steps_per_contact) if spec else 5e3
     return ENGINES[run.engine].campaign_seconds(impacts, steps)
 
 

@@ -7,7 +7,7 @@ from dataclasses import dataclass, replace
 from ..api import options_for, statuses
 from ..engines import ENGINES
 from ..errors import UserError
-from ..plan import CONVERGED, compare_plan
+from ..plan import CONVERGED, compare_plan, specs_of
 from ..request import Request
 from ..scene import DEFAULT_ANGLES
 from .limits import MAX_FILE_BYTES, MAX_TASKS
@@ -107,8 +107,7 @@ def tasks(campaign):
         engines = {ENGINES[s.name]: options_for(request, s.name) for s in found if s.available}
         engine_resolution = 1000 if request.resolution == CONVERGED else request.resolution
         plan = compare_plan(request.law, request.scene, request.resolution, engines, engine_resolution)
+        specs_of(plan)                         # an unstable time step is refused before anything runs
         for run in plan:
-            if run.resolution != CONVERGED:
-                run.batch()                    # an unstable time step is refused before anything runs
             runs += blocks(run, campaign.block)
     return runs, sorted(skipped.items())

@@ -1,61 +1,40 @@
-"""A batch: (law, scene, e_n) as kernel rows, switching on only the effects the scene calls for."""
-from dataclasses import dataclass, replace
+"""A batch: the kernel rows of one run's spec (law, scene, RunSpec), switching on only the effects the scene calls
+for."""
+from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import UserError
-
+from ..resolution import joined, needs_tangential, step_caps
 from ..submodels.registry import COULOMB_RULES, GEOMETRIES, INTEGRATORS, TOUCHES, check_parameters, kernel_code
 from ..submodels.tangential_damping import CONE_CODES
 from . import codes as C
 from .dispatch import TANGENTIAL_NONE
-from .stability import check_time_step
 
 NORATCH_WALL_RADIUS = 1e8      # slip 'noratch': the wall's reference radius 1e8 R in the noRatch slip factor
 
 
-MAX_STEPS_PER_CONTACT = 10 ** 6      # beyond, a run of one impact takes minutes and round-off dominates
-
-
-@dataclass(frozen=True)
-class FixedTimeStep:
-    """One time step in seconds (--dt) for every law and e_n; each batch's steps per contact follow from it."""
-    seconds: float
-
-
 @dataclass
 class Batch:
-    """Kernel input for one sweep at one target e_n, with the incident conditions kept for the results table."""
+    """Kernel input for one spec (one sweep at one target e_n, its time step and step cap), with the incident
+    conditions kept for the results table."""
+    spec: object                # harness.resolution.RunSpec
     params: np.ndarray
     ints: np.ndarray
-    e_n: float
-    v_n0: np.ndarray
-    v_t0: np.ndarray
-    omega0: np.ndarray
-    theta_deg: np.ndarray
-    dt: float
-    steps_per_contact: float
     tangential_active: np.ndarray
 
-    @property
-    def step_cap(self):
-        """The most steps any of its impacts may take (the largest of the rows' caps)."""
-        return int(self.params[:, C.P_MAXSTEPS].max())
+    e_n = property(lambda self: self.spec.e_n)
+    dt = property(lambda self: self.spec.dt)
+    steps_per_contact = property(lambda self: self.spec.steps_per_contact)
+    v_n0 = property(lambda self: self.spec.v_n0)
+    v_t0 = property(lambda self: self.spec.v_t0)
+    omega0 = property(lambda self: self.spec.omega0)
+    theta_deg = property(lambda self: self.spec.theta_deg)
 
 
 def join(batches):
     """One batch holding the impacts of several batches of one material and one dt (one engine run)."""
-    if len({b.dt for b in batches}) != 1:
-        raise ValueError("batches run together must share one dt")
-    per_impact = ("params", "ints", "v_n0", "v_t0", "omega0", "theta_deg", "tangential_active")
-    return replace(batches[0], **{name: np.concatenate([getattr(b, name) for b in batches]) for name in per_impact})
-
-
-def needs_tangential(scene, v_t0, omega0, law=None):
-    """Per impact: a tangential model (and rotation) only with some tangential motion or spin, and friction or a
-    tangential dashpot (engines add it while the spring is within the cap, which at mu = 0 is when it is zero)."""
-    acts = scene.mu > 0.0 or (law is not None and law.tangential_damping.rule != "none")
-    return acts & ((v_t0 != 0.0) | (omega0 != 0.0))
+    return Batch(joined([b.spec for b in batches]), *(np.concatenate([getattr(b, name) for b in batches])
+                                                      for name in ("params", "ints", "tangential_active")))
 
 
 def centres_less_radius(scene):
@@ -79,32 +58,21 @@ def contact_point_lever(scene):
     return 0.5 * contact.mass * contact.radius * spread
 
 
-def batch_of(law, scene, e_n, steps_per_contact, check_stability=True, every_effect=False, bounded=True):
-    """Kernel rows for every impact of the scene at target e_n; dt = (contact-time estimate at V) / steps, or the
-    given FixedTimeStep; a dt above the stability limit is refused (harness.stability) unless the rows are for the
-    adaptive integrator, which chooses its own steps. every_effect: the tangential model on every row whether the
-    scene calls for it or not (what benchmarks/bench_effects.py measures the saving against). bounded: a FixedTimeStep
-    (a user's --dt) giving more than MAX_STEPS_PER_CONTACT is refused; the converged ladder's own finest levels are
-    not a user's request and pass bounded=False."""
-    contact = scene.contact
-    v_n0, v_t0, omega0, theta = scene.impacts(e_n)
+def batch_of(law, scene, spec, every_effect=False):
+    """Kernel rows for every impact of the scene at the spec's e_n, time step and step cap (each impact's own cap,
+    step_caps, at most the spec's). every_effect: the tangential model on every row whether the scene calls for it
+    or not (what benchmarks/bench_effects.py measures the saving against)."""
+    contact, e_n = scene.contact, spec.e_n
+    v_n0, v_t0, omega0 = spec.v_n0, spec.v_t0, spec.omega0
     normal = law.normal.parameters(contact, e_n, scene.speed)
     dashpot = law.damping.dashpot(law.normal, contact, e_n, scene.speed, law.end)
-    if isinstance(steps_per_contact, FixedTimeStep):
-        steps_per_contact = normal.contact_time / steps_per_contact.seconds
-        if bounded and steps_per_contact > MAX_STEPS_PER_CONTACT:
-            raise UserError(f"--dt gives {steps_per_contact:.3g} steps per contact at e_n {e_n:g}; at most "
-                            f"{MAX_STEPS_PER_CONTACT:.0e} (a contact lasts {normal.contact_time:.3g} s)")
-    if not steps_per_contact > 0:
-        raise ValueError(f"steps per contact must be positive, got {steps_per_contact}")
-    dt = normal.contact_time / steps_per_contact
     tangential = np.ones(len(v_n0), dtype=bool) if every_effect else needs_tangential(scene, v_t0, omega0, law)
     n = len(v_n0)
     params = np.zeros((n, C.N_PARAMS))
     params[:, C.P_MASS] = contact.mass
     params[:, C.P_INERTIA] = contact.inertia
     params[:, C.P_RADIUS] = contact.radius
-    params[:, C.P_DT] = dt
+    params[:, C.P_DT] = spec.dt
     params[:, C.P_GRAVITY] = scene.gravity
     params[:, C.P_MU] = scene.mu
     params[:, C.P_N1:C.P_N4 + 1] = check_parameters(law.normal, normal)
@@ -133,14 +101,7 @@ def batch_of(law, scene, e_n, steps_per_contact, check_stability=True, every_eff
     params[:, C.P_VZ0] = -v_n0
     params[:, C.P_VX0] = v_t0
     params[:, C.P_W0] = omega0
-    slow = np.maximum(scene.speed / np.maximum(v_n0, 1e-12 * scene.speed), 1.0) ** 0.4
-    # step cap: 20 slowed contact times, plus leaving a latched dent (engine hysteresis laws keep the contact at zero
-    # force until the gap opens): depth <= alpha_max <= V_n t_c, crossed at e_n V_n, so at most t_c/e_n more
-    params[:, C.P_MAXSTEPS] = np.ceil(steps_per_contact * (slow * (20.0 + 1.0 / e_n) + 20.0))
-    active = np.flatnonzero(tangential)
-    if check_stability:
-        check_time_step(law, scene, e_n, dt, params[active[0] if len(active) else 0], normal.contact_time,
-                        len(active) > 0)
+    params[:, C.P_MAXSTEPS] = np.minimum(step_caps(scene, e_n, v_n0, spec.steps_per_contact), spec.step_cap)
     ints = np.zeros((n, C.N_INTS), dtype=np.int64)
     ints[:, C.I_NORMAL] = kernel_code(law.normal)
     ints[:, C.I_END] = C.END_ALPHA if law.end == "tension" else C.END_FORCE
@@ -149,4 +110,4 @@ def batch_of(law, scene, e_n, steps_per_contact, check_stability=True, every_eff
     ints[:, C.I_COULOMB] = COULOMB_RULES[law.coulomb].code
     ints[:, C.I_GEOMETRY] = GEOMETRIES[law.geometry].code
     ints[:, C.I_TOUCH] = TOUCHES[law.touch].code
-    return Batch(params, ints, e_n, v_n0, v_t0, omega0, theta, dt, steps_per_contact, tangential)
+    return Batch(spec, params, ints, tangential)

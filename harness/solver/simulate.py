@@ -13,12 +13,18 @@ from .adaptive import integrate_adaptive, stepper_names, supports
 from .extension import table as extension_table
 from .kernel import integrate
 from .mesh import graded_largest_step
-from .batch import FixedTimeStep, batch_of
+from ..resolution import FixedTimeStep, run_spec
+from .batch import batch_of
 
 CONVERGED_START = 64             # steps per contact of the first level of the converged ladder
 CONVERGED_LIMIT = 2 ** 20        # finest level tried
 CONVERGED_TOLERANCE = 1e-6       # between successive Richardson values (v/V, R omega/V, relative t_c and F_max)
 STATUS_TEXT = {C.STATUS_OK: "ok", C.STATUS_NO_SEPARATION: "no-separation", C.STATUS_NONFINITE: "non-finite"}
+
+
+def batch_at(law, scene, e_n, resolution, **spec_options):
+    """The kernel rows of `law` on the scene at target e_n and a resolution (its RunSpec: harness.resolution)."""
+    return batch_of(law, scene, run_spec(law, scene, e_n, resolution, **spec_options))
 
 
 def run_kernel(batch, history_points=0, rows=None):
@@ -72,7 +78,7 @@ def graded_rows(law, scene, e_n, n, span, rows):
     first touch and towards span, just beyond the release, so that the onset and release singularities
     (alpha^(1/4), alpha^(1/2), alpha^(3/2)) become smooth in the step and the error expands in powers of 1/n.
     The stability limit is checked at the largest graded step."""
-    batch = batch_of(law, scene, e_n, FixedTimeStep(float(np.max(graded_largest_step(n, span)))), bounded=False)
+    batch = batch_at(law, scene, e_n, FixedTimeStep(float(np.max(graded_largest_step(n, span)))), bounded=False)
     batch.params[:, C.P_GRADE_T] = span
     batch.params[:, C.P_GRADE_N] = n
     return run_kernel(batch, rows=rows)
@@ -82,13 +88,13 @@ def graded_span(law, scene, e_n):
     """Where every impact's graded mesh ends: release_bound from uniform runs at 32 and 64 steps per contact (64 and
     128 where 32 is above the stability limit); returns (the 64-step batch, spans, wall seconds)."""
     n = CONVERGED_START
-    batch = batch_of(law, scene, e_n, n)
+    batch = batch_at(law, scene, e_n, n)
     out, _, wall = run_kernel(batch)
     try:
-        coarse, _, seconds = run_kernel(batch_of(law, scene, e_n, n // 2))
+        coarse, _, seconds = run_kernel(batch_at(law, scene, e_n, n // 2))
         span = release_bound(coarse[:, C.O_TC], out[:, C.O_TC])
     except UnstableTimeStep:                    # a stiff tangential spring: place the release from n and 2n
-        finer, _, seconds = run_kernel(batch_of(law, scene, e_n, 2 * n))
+        finer, _, seconds = run_kernel(batch_at(law, scene, e_n, 2 * n))
         span = release_bound(out[:, C.O_TC], finer[:, C.O_TC])
     return batch, span, wall + seconds
 
@@ -130,7 +136,7 @@ ADAPTIVE_FLOOR = 1e-12          # tightest tolerance tried (round-off of the err
 
 def adaptive_batch(law, scene, e_n):
     """Kernel rows for the adaptive integrator (no time step to check) and which of them it covers."""
-    batch = batch_of(law, scene, e_n, CONVERGED_START, check_stability=False)
+    batch = batch_at(law, scene, e_n, CONVERGED_START, check_stability=False)
     return batch, supports(batch.ints, batch.params)
 
 
@@ -251,7 +257,7 @@ def run_converged(law, scene, e_n, tolerance=CONVERGED_TOLERANCE, extrapolate=No
         out, _, seconds = graded_rows(law, scene, e_n, n, span, np.arange(len(batch.v_n0)))
         wall += seconds
     else:
-        batch = batch_of(law, scene, e_n, n)
+        batch = batch_at(law, scene, e_n, n)
         out, _, wall = run_kernel(batch)
     every = np.arange(len(out))
     plain = out[:, KEPT]
@@ -265,7 +271,7 @@ def run_converged(law, scene, e_n, tolerance=CONVERGED_TOLERANCE, extrapolate=No
         if extrapolate:
             finer, _, seconds = graded_rows(law, scene, e_n, n, span, pending)
         else:
-            finer, _, seconds = run_kernel(batch_of(law, scene, e_n, n), rows=pending)
+            finer, _, seconds = run_kernel(batch_at(law, scene, e_n, n), rows=pending)
         wall += seconds
         new = finer[:, KEPT]
         estimate = richardson(new, plain[pending]) if extrapolate else new
@@ -291,7 +297,7 @@ def simulate(law, scene, steps_per_contact=1000, converged=False, history_points
         if converged:
             batch, out, steps, dt, messages, wall = converged_batch(law, scene, e_n, tolerance, extrapolate)
         else:
-            batch = batch_of(law, scene, e_n, steps_per_contact)
+            batch = batch_at(law, scene, e_n, steps_per_contact)
             out, history, wall = run_kernel(batch, history_points)
             if history_points:
                 histories[e_n] = history

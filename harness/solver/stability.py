@@ -10,8 +10,7 @@ import math
 from dataclasses import dataclass
 
 from ..errors import UserError
-from ..submodels.registry import kernel_code, python_point
-from . import codes as C
+from ..submodels.registry import kernel_code, kernel_of, python_point
 
 
 @dataclass(frozen=True)
@@ -44,23 +43,26 @@ class UnstableTimeStep(UserError):
         self.limit = limit
 
 
-def stability_limit(law, scene, e_n, params, tangential=True):
-    """Limit for `law` at target e_n, from the planned kernel parameters of one impact (`params` row); the
-    tangential mode counts when some impact of the batch has friction and tangential motion."""
+def stability_limit(law, scene, e_n, tangential=True):
+    """Limit for `law` at target e_n, from its normal model's peak stiffness, its dashpots and its tangential spring;
+    the tangential mode counts when some impact of the batch has friction and tangential motion."""
     contact, explicit = scene.contact, law.integrator != "paper"
     k_n, alpha = law.normal.peak(contact, e_n, scene.speed)
-    c_n = params[C.P_DAMP_C0] * (alpha ** params[C.P_DAMP_POWER] if params[C.P_DAMP_POWER] else 1.0)
+    dashpot = law.damping.dashpot(law.normal, contact, e_n, scene.speed, law.end)
+    c_n = dashpot.c0 * (alpha ** dashpot.power if dashpot.power else 1.0)
     mass = contact.mass
     modes = [("normal", k_n, c_n, mass)]
     code = kernel_code(law.tangential)
     if tangential and scene.mu > 0.0:
-        from .dispatch import TANGENTIAL_VISCOUS
-        p1 = law.tangential.parameter(contact, law.normal.parameters(contact, e_n, scene.speed).linear_stiffness)
+        k_lin = law.normal.parameters(contact, e_n, scene.speed).linear_stiffness
+        p1 = law.tangential.parameter(contact, k_lin)
+        prefactor = law.tangential_damping.prefactor(contact, dashpot, k_lin,
+                                                     p1 if law.tangential.constant_stiffness else None, e_n)
         stiffness = python_point("tangential", code, "stiffness")
         k_t = abs(stiffness(p1, math.sqrt(contact.radius * alpha)))                 # |k_s| = |nu| k_n for k_t/k_n = nu
-        c_t = abs(params[C.P_TDAMP]) * math.sqrt(k_t)                               # CundallStrack with nu < 0
+        c_t = abs(prefactor) * math.sqrt(k_t)                                       # CundallStrack with nu < 0
         m_t = 1.0 / (1.0 / mass + contact.radius ** 2 / contact.inertia)
-        spring = 0.0 if TANGENTIAL_VISCOUS[code] else k_t
+        spring = 0.0 if kernel_of("tangential", code).viscous else k_t
         modes.append(("tangential", spring, c_t, m_t))
     limits = []
     for mode, k, c, m in modes:
@@ -69,9 +71,9 @@ def stability_limit(law, scene, e_n, params, tangential=True):
     return min(limits, key=lambda limit: limit.dt)
 
 
-def check_time_step(law, scene, e_n, dt, params, contact_time, tangential=True):
+def check_time_step(law, scene, e_n, dt, contact_time, tangential=True):
     """Refuse dt above the stability limit: one line naming the limit and the steps per contact it allows."""
-    limit = stability_limit(law, scene, e_n, params, tangential)
+    limit = stability_limit(law, scene, e_n, tangential)
     if dt > limit.dt:
         raise UnstableTimeStep(f"time step {dt:.4g} s is too large for {law.name} ({law.dialect} dialect, {law.integrator} "
                         f"scheme) at e_n = {e_n:g}: stability limit {limit.describe()}; use dt <= {limit.dt:.4g} s "

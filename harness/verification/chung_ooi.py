@@ -14,8 +14,7 @@ from ..engines import ENGINES
 from ..errors import UserError
 from ..execute import run_all
 from ..laws import compose
-from ..plan import engine_runs, reference_runs
-from ..solver.batch import FixedTimeStep
+from ..plan import FixedTimeStep, engine_runs, reference_runs
 from ..two_spheres import with_bodies
 from .chung_ooi_cases import cases, published_e
 

@@ -4,10 +4,7 @@ this process. It overrides what differs from harness.engines.base.Engine and not
 import json
 import os
 
-import numpy as np
-
 from harness.engines.base import Engine
-from harness.engines.runner import EngineFailure
 from harness.solver import codes as C
 from harness.solver.batch import batch_of
 from harness.solver.simulate import run_kernel
@@ -47,10 +44,7 @@ class StandIn(Engine):
         with open(os.path.join(directory, self.INPUT_NAME)) as handle:
             record = json.load(handle)
         dialect = self.dialect(record["law"], record["options"], "sphere" if scene.spheres else "wall")
-        batch = batch_of(dialect, scene, spec.e_n, spec.steps_per_contact)
-        if len(batch.v_n0) != spec.impacts or batch.dt != spec.dt:
-            raise EngineFailure("the stand-in runs one scene's impacts at its own steps per contact")
-        batch.params[:, C.P_MAXSTEPS] = np.minimum(batch.params[:, C.P_MAXSTEPS], spec.step_cap)
+        batch = batch_of(dialect, scene, spec)
         out = run_kernel(batch)[0]
         final = {"v_n1": out[:, C.O_VZ], "v_t1": out[:, C.O_VX], "omega1": out[:, C.O_W],
                  "separated": out[:, C.O_STATUS] == C.STATUS_OK}
