@@ -10,6 +10,7 @@ import oracles
 from harness.laws import compose
 from harness.scene import Scene
 from harness.solver import codes as C
+from harness.solver import layout as L
 from harness.solver.simulate import adaptive_batch, run_adaptive, simulate
 
 ADAPTIVE_LAWS = ["linear-spring-dashpot", "hertz-mindlin", "hertz-kuwabara-kono", "stronge", "thornton",
@@ -74,7 +75,7 @@ def test_damped_impacts_match_an_independent_integration(name):
         law = adaptive_law(name)
         batch = normal_run(law, scene, 1e-3)[0]
         p = batch.params[0]
-        k, c0, power = p[C.P_N1], p[C.P_DAMP_C0], p[C.P_DAMP_POWER]
+        k, c0, power = p[L.NORMAL_BLOCK], p[L.DAMPING_C0], p[L.DAMPING_POWER]   # k: the kernel's first slot
         hertz = name != "linear-spring-dashpot"
         radius = scene.radius
 

@@ -82,10 +82,11 @@ def test_the_check_finds_such_a_call(tmp_path):
 PYTHON_CALL = """
 import math
 from harness.jit import python_twin
-from harness.solver.spring import cap, mean_radius
+from harness.solver.spring import mean_radius
+from harness.submodels.coulomb import clip
 print(python_twin(mean_radius)(1.0, 1.0), flush=True)
 try:
-    cap(2.0, 1.0)
+    clip(2.0, 1.0)
 except TypeError as error:
     print(f"TypeError: {error}", flush=True)
 """
@@ -105,5 +106,5 @@ def test_a_python_call_of_a_compiled_function_raises_naming_its_twin():
     assert done.returncode == 0, (done.returncode, done.stderr[-2000:])
     lines = done.stdout.splitlines()
     assert lines[0] == "status ok" and float(lines[1]) == 1.0
-    assert lines[2] == ("TypeError: cap is compiled for compiled callers only (no Python wrapper); from Python call "
-                        "harness.jit.python_twin(cap)")
+    assert lines[2] == ("TypeError: clip is compiled for compiled callers only (no Python wrapper); from Python call "
+                        "harness.jit.python_twin(clip)")

@@ -11,12 +11,10 @@ from harness.jit import python_twin
 from harness.laws import compose
 from harness.laws.law import replace_submodels
 from harness.scene import Scene
-from harness.solver import codes as C
-from harness.solver import friction
 from harness.plan import FixedTimeStep, run_spec
-from harness.solver.dispatch import TANGENTIAL_LINEAR
 from harness.solver.simulate import simulate
 from harness.submodels import calibration as cal
+from harness.submodels.coulomb import total_cases
 from harness.submodels.normal.linear_modulus import LinearModulus
 from harness.submodels.tangential import mindlin_unloading
 from harness.submodels.tangential.state import N_TSTATE
@@ -65,7 +63,7 @@ def test_unloading_rescale_only_while_the_overlap_falls():
     a_old = math.sqrt(radius * 1e-4)
     for delta, scale in ((1.2e-4, 1.0), (1e-4, 1.0), (0.81e-4, 0.9)):
         a = math.sqrt(radius * delta)
-        got = spring(f_s, dd, a, a, a_old, g_star, 0.1, 0.0, 0.0, np.zeros(N_TSTATE), np.zeros(4), False)
+        got = spring(g_star, f_s, dd, a, a, a_old, 0.1, 0.0, 0.0, np.zeros(N_TSTATE), np.zeros(4), False)
         assert got == pytest.approx(f_s * scale - 8.0 * g_star * a * dd, rel=1e-14)
 
 
@@ -78,9 +76,7 @@ def test_unloading_rescale_only_while_the_overlap_falls():
 ])
 def test_total_cases_four_cases(f_s, f_d, total, spring):
     """Kratos' cap on spring plus dashpot at mu F_n = 1 (k_t = c_t = 1, so F_d = -V_s)."""
-    p = np.zeros(C.N_PARAMS)
-    p[C.P_T1], p[C.P_TDAMP] = 1.0, 1.0
-    got = python_twin(friction.capped_cases)(np.zeros(N_TSTATE), p, TANGENTIAL_LINEAR, 0.0, f_s, -f_d, 1.0)
+    got = python_twin(total_cases.cap)(f_s, 1.0, 1.0, -f_d, 1.0)[:2]
     assert got == pytest.approx((total, spring), rel=1e-15, abs=1e-15)
 
 

@@ -7,6 +7,8 @@ import pytest
 from harness.laws import compose
 from harness.scene import Scene
 from harness.solver import codes as C
+from harness.solver import layout as L
+from harness.solver.dispatch import END_NO_TENSION
 from harness.solver.simulate import batch_at
 from harness.solver.simulate import run_kernel, simulate
 
@@ -89,7 +91,7 @@ def test_lsd_tension_calibration_clipped_gives_classic_error():
     expected = [0.902, 0.718, 0.550, 0.397, 0.253]
     for e, want in zip(scene.e_n, expected):
         batch = batch_at(tension, scene, e, 2000)
-        batch.ints[:, C.I_END] = C.END_FORCE            # clip, but keep the tension calibration
+        batch.ints[:, L.I_END] = END_NO_TENSION        # clip, but keep the tension calibration
         out, _, _ = run_kernel(batch)
         assert out[0, C.O_VZ] == pytest.approx(want, abs=1.5e-3)
 
@@ -119,7 +121,7 @@ def test_kuwabara_kono_restitution_follows_its_table():
     m, e_star = mass_and_estar(scene)
     k = 4.0 / 3.0 * e_star * math.sqrt(scene.radius)
     for i, (y, _) in enumerate(KK_TABLE):
-        batch.params[i, C.P_DAMP_C0] = 1.5 * k * y * (m / k) ** 0.4 * scene.speed ** -0.2
+        batch.params[i, L.DAMPING_C0] = 1.5 * k * y * (m / k) ** 0.4 * scene.speed ** -0.2
     out, _, _ = run_kernel(batch)
     for i, (_, e_table) in enumerate(KK_TABLE):
         assert out[i, C.O_VZ] / scene.speed == pytest.approx(e_table, abs=1e-3)

@@ -100,7 +100,8 @@ def stronge_ratio(frame, scene):
     contact = scene.contact
     ratio = np.empty(len(frame))
     for i, (e, v_n) in enumerate(zip(frame.e_n_target, frame.v_n0)):
-        _, alpha_y, f_y, _ = law.normal.parameters(contact, e, scene.speed).values
+        parameters = law.normal.parameters(contact, e, scene.speed)
+        alpha_y, f_y = parameters["alpha_y"], parameters["f_y"]
         ratio[i] = v_n / np.sqrt(0.8 * f_y * alpha_y / contact.mass)
     return ratio
 

@@ -23,6 +23,7 @@ from harness.engines.runner import EngineFailure
 from harness.laws import compose
 from harness.scene import Scene
 from harness.solver import codes as C
+from harness.solver import layout as L
 from harness.solver.simulate import batch_at, run_kernel, simulate
 
 STEPS = 200
@@ -53,7 +54,7 @@ def dialect_samples(batch, steps):
     force = np.where(recorded, history[:, :, 2], np.nan)
     overlap = np.where(recorded, history[:, :, 1], np.nan)
     p = batch.params
-    touch = np.where(p[:, C.P_DAMP_POWER] == 0.0, -p[:, C.P_DAMP_C0] * p[:, C.P_VZ0], 0.0)
+    touch = np.where(p[:, L.DAMPING_POWER] == 0.0, -p[:, L.DAMPING_C0] * p[:, L.VZ0], 0.0)
     return out, np.column_stack([touch, force]), overlap
 
 

@@ -42,14 +42,16 @@ def test_linear_law_lasts_as_long_as_elastic_hertz():
 
 def test_kt_over_kn_is_kappa_with_the_normal_dashpots_ratio():
     """The paper's linear law: k_t = kappa k_n (0.8235 at nu 0.3), c_t = 2 g sqrt(m k_t) with the normal g."""
-    from harness.solver import codes as C
+    from harness.solver import layout as L
     from harness.solver.simulate import batch_at
     scene = Scene(e_n=(0.5,), angles_deg=(30.0,))
     params = batch_at(compose("linear-spring-dashpot"), scene, 0.5, 1000).params[0]
-    k_n, c_n = params[C.P_N1], params[C.P_DAMP_C0]
-    assert params[C.P_T1] == pytest.approx(2 * 0.7 / 1.7 * k_n, rel=1e-15)
+    k_n, c_n = params[L.NORMAL_LINEAR_K_N], params[L.DAMPING_C0]
+    assert params[L.TANGENTIAL_LINEAR_K_T] == pytest.approx(2 * 0.7 / 1.7 * k_n, rel=1e-15)
     g = c_n / (2 * math.sqrt(scene.contact.mass * k_n))
-    assert params[C.P_TDAMP] * math.sqrt(params[C.P_T1]) == pytest.approx(2 * g * math.sqrt(scene.contact.mass * params[C.P_T1]))
+    k_t = params[L.TANGENTIAL_LINEAR_K_T]
+    prefactor = params[L.TANGENTIAL_DAMPING_PREFACTOR]
+    assert prefactor * math.sqrt(k_t) == pytest.approx(2 * g * math.sqrt(scene.contact.mass * k_t))
 
 
 def test_tangential_dashpot_options():
@@ -57,15 +59,16 @@ def test_tangential_dashpot_options():
     'classical': g_t = -ln e/sqrt(ln^2 e + pi^2); 'total' and the default 'spring-first' set the kernel's Coulomb
     test; an unknown option is one line of bad input."""
     from harness.errors import UserError
-    from harness.solver import codes as C
+    from harness.solver import layout as L
     from harness.solver.simulate import batch_at
     scene = Scene(e_n=(0.5,), angles_deg=(30.0,))
     plain = batch_at(compose("linear-spring-dashpot"), scene, 0.5, 1000).params[0]
     law = compose("linear-spring-dashpot", {"tangential-damping": "classical:total:sphere-mass"})
     params = batch_at(law, scene, 0.5, 1000).params[0]
     beta = -math.log(0.5) / math.sqrt(math.log(0.5) ** 2 + math.pi ** 2)
-    assert params[C.P_TDAMP] == pytest.approx(2 * beta * math.sqrt(2.0 / 7.0 * scene.contact.mass), rel=1e-12)
-    assert (plain[C.P_TCONE], params[C.P_TCONE]) == (0.0, 1.0)
+    prefactor = params[L.TANGENTIAL_DAMPING_PREFACTOR]
+    assert prefactor == pytest.approx(2 * beta * math.sqrt(2.0 / 7.0 * scene.contact.mass), rel=1e-12)
+    assert (plain[L.TANGENTIAL_DAMPING_CONE], params[L.TANGENTIAL_DAMPING_CONE]) == (0.0, 1.0)
     assert law.describe()["tangential-damping"] == "classical:total:sphere-mass"
     assert compose("hertz-mindlin").describe()["tangential-damping"] == "normal-ratio"
     with pytest.raises(UserError, match="options are"):

@@ -7,7 +7,7 @@ from conftest import EXAMPLE
 
 from harness.laws import LAWS, compose
 from harness.scene import Scene
-from harness.solver import codes as C
+from harness.solver import layout as L
 from harness.solver import dispatch as D
 from harness.solver.simulate import batch_at, simulate
 
@@ -60,7 +60,7 @@ def test_plastic_laws_error_falls_like_dt_squared(name):
 def test_normal_impact_skips_tangential_model_and_rotation():
     scene = Scene(e_n=(0.5,), angles_deg=(0.0, 30.0))
     batch = batch_at(compose("hertz-mindlin"), scene, 0.5, 100)
-    assert list(batch.ints[:, C.I_TANGENTIAL]) == [D.TANGENTIAL_NONE, D.TANGENTIAL_MINDLIN_RESCALE]
+    assert list(batch.ints[:, L.I_TANGENTIAL]) == [D.TANGENTIAL_NONE, D.TANGENTIAL_MINDLIN_RESCALE]
     frame = simulate(compose("hertz-mindlin"), scene, steps_per_contact=100)[0]
     assert frame.omega1.iloc[0] == 0.0 and frame.v_t1.iloc[0] == 0.0
 
@@ -68,7 +68,7 @@ def test_normal_impact_skips_tangential_model_and_rotation():
 def test_frictionless_scene_needs_no_tangential_model():
     scene = Scene(e_n=(0.5,), angles_deg=(30.0, 60.0), mu=0.0)
     batch = batch_at(compose("thornton"), scene, 0.5, 100)
-    assert (batch.ints[:, C.I_TANGENTIAL] == D.TANGENTIAL_NONE).all()
+    assert (batch.ints[:, L.I_TANGENTIAL] == D.TANGENTIAL_NONE).all()
     frame = simulate(compose("thornton"), scene, steps_per_contact=100)[0]
     assert (frame.v_t1 == frame.v_t0).all() and (frame.omega1 == 0.0).all()
 
@@ -76,7 +76,7 @@ def test_frictionless_scene_needs_no_tangential_model():
 def test_spin_alone_switches_the_tangential_model_on():
     scene = Scene(e_n=(0.5,), angles_deg=(0.0,), omega0=100.0)
     batch = batch_at(compose("thornton"), scene, 0.5, 100)
-    assert batch.ints[0, C.I_TANGENTIAL] != D.TANGENTIAL_NONE
+    assert batch.ints[0, L.I_TANGENTIAL] != D.TANGENTIAL_NONE
     row = simulate(compose("thornton"), scene, steps_per_contact=400)[0].iloc[0]
     assert row.omega1 < 100.0 and row.v_t1 > 0.0     # friction converts spin into forward motion
 
@@ -85,11 +85,11 @@ def test_gravity_only_when_set_and_then_it_acts():
     """With gravity, the LSD impact matches an independent ODE integration of m a'' = -(k a + c a') + m g."""
     from oracles import normal_impact
     base = Scene(e_n=(0.5,), angles_deg=(0.0,), speed=0.01)
-    assert batch_at(compose("thornton"), base, 0.5, 100).params[0, C.P_GRAVITY] == 0.0
+    assert batch_at(compose("thornton"), base, 0.5, 100).params[0, L.GRAVITY] == 0.0
     heavy = Scene(e_n=(0.5,), angles_deg=(0.0,), speed=0.01, gravity=9.81)
     law = compose("linear-spring-dashpot", {"end": "tension"})
     batch = batch_at(law, heavy, 0.5, 100)
-    m, k, c = heavy.contact.mass, batch.params[0, C.P_N1], batch.params[0, C.P_DAMP_C0]
+    m, k, c = heavy.contact.mass, batch.params[0, L.NORMAL_LINEAR_K_N], batch.params[0, L.DAMPING_C0]
     expected = normal_impact(lambda a, ad: k * a + c * ad - m * 9.81, m, 0.01, end="alpha")
     still = simulate(law, base, converged=True)[0].iloc[0]
     fallen = simulate(law, heavy, converged=True)[0].iloc[0]
@@ -278,8 +278,8 @@ def test_touch_overlap_starts_force_free_and_changes_nothing_where_the_force_at_
         _, history, _ = run_kernel(batch, history_points=400)
         first[touch] = history[:, 0, 2]
         p = batch.params.T
-        v, h = -p[C.P_VZ0], p[C.P_DT]
-        expected = p[C.P_N1] * h * v + p[C.P_DAMP_C0] * v
+        v, h = -p[L.VZ0], p[L.DT]
+        expected = p[L.NORMAL_LINEAR_K_N] * h * v + p[L.DAMPING_C0] * v
     assert np.allclose(first["overlap"], expected, rtol=1e-12, atol=0)
     assert (np.abs(first["gap"] / expected - 1.0) > 1e-6).all()
     for name in ("hertz-mindlin", "hertz-kuwabara-kono"):
@@ -304,6 +304,6 @@ def test_contact_radius_spring_applies_k_a_and_resets_to_the_displacement_of_k_a
     spring, after_cap = (python_point("tangential", code, point) for point in ("spring", "after_cap"))
     st = np.zeros(8)
     k, a = 3.0e5, 2.0e-3
-    assert math.isclose(spring(0.0, 1e-6, a, a, a, k, 0.1, 0.0, 0.0, st, None, False), -k * a * 1e-6)
-    after_cap(-0.25, k, a, st)
-    assert math.isclose(spring(0.0, 0.0, a, a, a, k, 0.1, 0.0, 0.0, st, None, False), -0.25 * a)
+    assert math.isclose(spring(k, 0.0, 1e-6, a, a, a, 0.1, 0.0, 0.0, st, None, False), -k * a * 1e-6)
+    after_cap(k, -0.25, a, st)
+    assert math.isclose(spring(k, 0.0, 0.0, a, a, a, 0.1, 0.0, 0.0, st, None, False), -0.25 * a)

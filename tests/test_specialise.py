@@ -46,12 +46,12 @@ from harness.scene import Scene
 from harness.solver.simulate import simulate
 import sys
 from harness.submodels.normal import hertz, thornton, stronge
-from harness.submodels.tangential import mindlin, walton_braun
+from harness.submodels.tangential import mindlin_rescale, walton_braun
 simulate(compose("hertz-mindlin"), Scene(e_n=(0.5,), angles_deg=(30.0,)), steps_per_contact=100)
-print(bool(hertz.force.signatures), bool(mindlin.rescale.signatures), bool(thornton.force.signatures),
+print(bool(hertz.force.signatures), bool(mindlin_rescale.spring.signatures), bool(thornton.force.signatures),
       bool(stronge.force.signatures), bool(walton_braun.spring.signatures))
 schemes, pair = sys.modules["harness.solver_paper_n1.schemes"], sys.modules["harness.solver_paper_n1.pair"]
-print(bool(schemes.step.signatures), bool(schemes.step_velocity_verlet.signatures),
+print(bool(schemes.step_paper.signatures), bool(schemes.step_velocity_verlet.signatures),
       bool(schemes.step_leapfrog.signatures), bool(pair.step_leapfrog_pair.signatures))
 """
 

@@ -149,8 +149,8 @@ def test_viscel_against_a_wall_uses_half_the_mass():
     scene = Scene(e_n=(0.5,), angles_deg=(0.0,))
     batch = batch_at(yade.dialect("linear-spring-dashpot"), scene, 0.5, 2000)
     with tempfile.TemporaryDirectory() as workdir:
-        final, _, _ = yade.ENGINE.run_batch(compose("linear-spring-dashpot"), scene, replace(batch.spec, step_cap=200000), 300,
-                                     workdir)
+        final, _, _ = yade.ENGINE.run_batch(compose("linear-spring-dashpot"), scene,
+                                            replace(batch.spec, step_cap=200000), 300, workdir)
     assert final["v_n1"][0] / scene.speed == pytest.approx(lsd_notension_e(g_a / math.sqrt(2.0)), abs=2e-3)
 
 
@@ -192,7 +192,8 @@ def test_engine_agrees_with_its_yade_dialect_at_equal_dt(name, options, e_n, ome
     scene = Scene(e_n=(e_n,), angles_deg=(0.0, 10.0, 30.0, 60.0, 85.0), omega0=omega0)
     batch = batch_at(yade.dialect(name, options), scene, e_n, 200)
     out, _, _ = run_kernel(batch)
-    final, _, _ = yade.ENGINE.run_batch(compose(name), scene, replace(batch.spec, step_cap=20000), 120, str(tmp_path), options)
+    final, _, _ = yade.ENGINE.run_batch(compose(name), scene, replace(batch.spec, step_cap=20000), 120, str(tmp_path),
+                                        options)
     assert final["separated"].all()
     engine = np.column_stack([final["v_n1"], final["v_t1"], final["omega1"]])
     reference = out[:, [C.O_VZ, C.O_VX, C.O_W]]

@@ -9,13 +9,13 @@ from ..submodels.damping.none import NoDamping
 from ..submodels.damping.tsuji import TsujiDashpot
 from ..submodels.normal.hertz import Hertz
 from ..submodels.normal.linear import LinearSpring
-from ..submodels.registry import (COULOMB_RULES, DAMPING_MODELS, ENGINE_NORMAL_MODELS, ENGINE_TANGENTIAL_MODELS,
+from ..submodels.registry import (COULOMB_RULES, DAMPING_MODELS, ENDS, ENGINE_NORMAL_MODELS, ENGINE_TANGENTIAL_MODELS,
                                   GEOMETRIES, INTEGRATORS, NORMAL_MODELS, TANGENTIAL_MODELS, TOUCHES, kernel_code,
                                   kernel_of)
-from ..submodels.stepping import STEPPERS, TOUCH_STEPPERS
+from ..submodels.stepping import EVERY, STEPPERS, TOUCH_STEPPERS
 from ..submodels.tangential_damping import TangentialDashpot
 
-END_RULES = ("tension", "no-tension")
+END_RULES = tuple(ENDS)
 SLIPS = ("lever", "noratch", "noratch-sphere", "noratch-pair")
 TORQUES = ("lever", "contact-point")
 LEVERS = ("0", "0.25", "0.5", "1")
@@ -151,9 +151,10 @@ def check_stepping(law):
     if stepper is None:
         known = ", ".join(f"{i} with {g}" for i, g in STEPPERS)
         raise UserError(f"no stepper integrates {law.integrator} with geometry {law.geometry}; known: {known}")
-    if law.coulomb not in stepper[1]:
+    rules = tuple(COULOMB_RULES) if stepper[1] == EVERY else stepper[1]
+    if law.coulomb not in rules:
         raise UserError(f"the {law.integrator} stepper with geometry {law.geometry} applies Coulomb rule "
-                        f"{' or '.join(stepper[1])}, not {law.coulomb}")
+                        f"{' or '.join(rules)}, not {law.coulomb}")
     touches = TOUCH_STEPPERS.get((law.integrator, law.geometry), ("gap",))
     if law.touch not in touches:
         raise UserError(f"the {law.integrator} stepper with geometry {law.geometry} applies touch rule "

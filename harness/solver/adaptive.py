@@ -17,14 +17,14 @@ from numba import njit
 
 from ..jit import compiled
 from . import codes as C
-from .adaptive_work import copy_into, vectors, work_arrays
+from . import layout as L
+from .adaptive_work import copy_into, row_work, work_arrays
 from .compile_notice import announce_compiling
 from .contact_ode import (A_DFN, A_FN, A_TRIAL, E_RELEASE, E_REVERSAL, E_SLIP, E_STICK, E_TURN, M_AMAX, M_DENT,
                           M_DIR, M_LOADING, M_SIGN, M_STAR, M_STICKS, M_TANGENTIAL, N_AUX, N_EVENTS, N_MODE, N_Y, SLIDE, STICK,
                           Y_ALPHA, Y_FS, Y_RATE, Y_VX, Y_W, cone_rate, coulomb_cone, edge_w, evaluate, events,
                           slip_velocity)
-from .dispatch import (TANGENTIAL_ANY_IMPLICIT, TANGENTIAL_IMPLICIT, TANGENTIAL_NONE, normal_residual,
-                       tangential_onset_w)
+from .dispatch import TANGENTIAL_ANY_IMPLICIT, TANGENTIAL_IMPLICIT, TANGENTIAL_NONE, normal_residual, tangential_onset_w
 from .events import illinois
 from .steppers import J_END, J_START, STAGES, dp_step, hermite, sdirk_step
 from .threads import in_threads
@@ -44,34 +44,37 @@ ONSET_PROBE = 1e-9          # overlap, in alpha_ref, at which the first touch's 
 
 
 def supports(ints, params):
-    """Rows this integrator covers: the paper scheme with the normal laws and tangential springs it models, without
-    a tangential dashpot or an engine's slip form (the rest stays on the graded Richardson ladder)."""
+    """Rows this integrator covers: the kernels, integrator (the paper scheme, whose h -> 0 limit it is) and geometry
+    (a wall) that declare it, without a tangential dashpot or an engine's slip form (the rest stays on the graded
+    Richardson ladder)."""
     from ..submodels.registry import kernels
-    normal = np.array([k.adaptive for k in kernels("normal")])
-    tangential = np.array([k.adaptive for k in kernels("tangential")])
-    return (normal[ints[:, C.I_NORMAL]] & tangential[ints[:, C.I_TANGENTIAL]]
-            & (ints[:, C.I_INTEGRATOR] == C.INTEGRATOR_PAPER) & (params[:, C.P_TDAMP] == 0.0)
-            & (params[:, C.P_SLIP_R1] == 0.0) & (params[:, C.P_BIG_R] == 0.0))
+    covered = np.ones(len(ints), dtype=bool)
+    for family, column in (("normal", L.I_NORMAL), ("tangential", L.I_TANGENTIAL), ("integrator", L.I_INTEGRATOR),
+                           ("geometry", L.I_GEOMETRY)):
+        covered &= np.array([k.adaptive for k in kernels(family)])[ints[:, column]]
+    return covered & (params[:, L.TANGENTIAL_DAMPING_PREFACTOR] == 0.0) & (params[:, L.SLIP_RADIUS] == 0.0)
 
 
 def stepper_names(ints):
     """Which stepper each row takes: the implicit one for Walton-Braun's spring, Dormand-Prince otherwise."""
-    return np.where(TANGENTIAL_IMPLICIT[ints[:, C.I_TANGENTIAL]], "SDIRK4(3)", "DP5(4)")
+    return np.where(TANGENTIAL_IMPLICIT[ints[:, L.I_TANGENTIAL]], "SDIRK4(3)", "DP5(4)")
 
 
 @compiled
-def interpolated_root(kind, p, ints, y, y_end, f_start, f_end, mode, h, state, dy, aux, scale, g, g_start, g_end, ext):
-    """Step fraction of event `kind` on the step's Hermite interpolant (one force evaluation per trial): a cheap,
-    O(h^4) first estimate for `locate`; returns (fraction, slope of the event function there, evaluations)."""
+def interpolated_root(kind, p, ints, wk, h, ext):
+    """Step fraction of event `kind` on the Hermite interpolant of the step of length h from wk.y to wk.y_new (one
+    force evaluation per trial, at wk.stage): a cheap, O(h^4) first estimate for `locate`; returns (fraction, slope
+    of the event function there, evaluations)."""
+    g_start, g_end, g = wk.g_start[kind], wk.g_end[kind], wk.g
     lo, hi, g_lo, g_hi, side, trials = 0.0, 1.0, g_start, g_end, 0, 0
     mid = 1.0
     while trials < LOCATE_ITERATIONS and hi - lo > 1e-13 * hi:
         mid = (lo * g_hi - hi * g_lo) / (g_hi - g_lo)
         if not lo < mid < hi:
             mid = 0.5 * (lo + hi)
-        hermite(y, y_end, f_start, f_end, h, mid, state)
-        evaluate(p, ints, state, mode, math.nan, dy, aux, ext)
-        events(p, ints, state, mode, aux, scale, g, ext)
+        hermite(wk.y, wk.y_new, wk.k[0], wk.k[STAGES - 1], h, mid, wk.stage)
+        evaluate(p, ints, wk.stage, wk.mode, math.nan, wk.dy, wk.aux, ext)
+        events(p, ints, wk.stage, wk.mode, wk.aux, wk.scale, g, ext)
         trials += 1
         if abs(g[kind]) <= EVENT_ROUND_OFF:
             break
@@ -80,24 +83,24 @@ def interpolated_root(kind, p, ints, y, y_end, f_start, f_end, mode, h, state, d
 
 
 @compiled
-def advance(implicit, p, ints, y, mode, h, k, y_new, stage, aux, scale, tol, work, jac, lu, pivot, spring, ext):
-    """One step of length h with the row's stepper (spring[0]: w at y, spring[1]: at y_new); returns (error norm,
-    force evaluations)."""
+def advance(implicit, p, ints, wk, h, tol, ext):
+    """One step of length h from wk.y into wk.y_new with the row's stepper, wk.aux_new the forces there (spring[0]:
+    w at y, spring[1]: at y_new); returns (error norm, force evaluations)."""
     if TANGENTIAL_ANY_IMPLICIT and implicit:
-        return sdirk_step(p, ints, y, spring[0], mode, h, k, y_new, work, jac, lu, pivot, aux, scale, tol,
-                          spring[1:], ext)
-    return dp_step(p, ints, y, mode, h, k, y_new, stage, aux, scale, tol, ext), STAGES - 1
+        return sdirk_step(p, ints, wk.y, wk.spring[0], wk.mode, h, wk.k, wk.y_new, wk.rows, wk.jac, wk.lu, wk.pivot,
+                          wk.aux_new, wk.scale, tol, wk.spring[1:], ext)
+    return dp_step(p, ints, wk.y, wk.mode, h, wk.k, wk.y_new, wk.stage, wk.aux_new, wk.scale, tol, ext), STAGES - 1
 
 
 @compiled
-def locate(kind, implicit, p, ints, y, mode, h, k, y_new, stage, aux, scale, g_start, g_end, g, tol, guess, slope,
-           work, jac, lu, pivot, spring, ext):
-    """Step fraction in (0, 1] at which event `kind` happens inside the step of length h from y: secant steps on the
+def locate(kind, implicit, p, ints, wk, h, tol, guess, slope, ext):
+    """Step fraction in (0, 1] at which event `kind` happens inside the step of length h from wk.y (its event
+    function wk.g_start[kind] there, wk.g_end[kind] at the step's end): secant steps on the
     event function after real trial steps, from `guess` with `slope` (the interpolant's), kept inside the bracket
     (Illinois false position when a secant leaves it), until the function is within round-off or a share of the
     tolerance of 0 and not below it (the rates after a kink must be the new ones); returns it and the number of
     force evaluations."""
-    lo, hi, g_lo, g_hi = 0.0, 1.0, g_start, g_end
+    lo, hi, g_lo, g_hi = 0.0, 1.0, wk.g_start[kind], wk.g_end[kind]
     side, trials, evaluations = 0, 0, 0
     last, g_last = -1.0, 0.0
     mid = guess
@@ -106,12 +109,11 @@ def locate(kind, implicit, p, ints, y, mode, h, k, y_new, stage, aux, scale, g_s
             mid = (lo * g_hi - hi * g_lo) / (g_hi - g_lo)
             if not lo < mid < hi:
                 mid = 0.5 * (lo + hi)
-        _, spent = advance(implicit, p, ints, y, mode, mid * h, k, y_new, stage, aux, scale, tol, work, jac, lu,
-                           pivot, spring, ext)
-        events(p, ints, y_new, mode, aux, scale, g, ext)
+        _, spent = advance(implicit, p, ints, wk, mid * h, tol, ext)
+        events(p, ints, wk.y_new, wk.mode, wk.aux_new, wk.scale, wk.g, ext)
         trials += 1
         evaluations += spent
-        value = g[kind]
+        value = wk.g[kind]
         close = abs(value) <= max(EVENT_ROUND_OFF, EVENT_SHARE * tol)
         if close and value >= 0.0:                    # located, on or just past the event
             return mid, evaluations
@@ -170,8 +172,7 @@ def beyond_cone(p, ints, y, aux):
 def start_unloading(p, ints, y, mode, ext):
     """The normal motion turns: unloading from alpha_max, towards its residual dent."""
     mode[M_LOADING], mode[M_AMAX] = 0.0, y[Y_ALPHA]
-    mode[M_DENT] = normal_residual(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], p[C.P_RADIUS],
-                                    y[Y_ALPHA], ext)
+    mode[M_DENT] = normal_residual(ints[L.I_NORMAL], p, p[L.RADIUS], y[Y_ALPHA], ext)
 
 
 @njit(cache=True, inline="always")
@@ -186,7 +187,7 @@ def start_stick(p, ints, y, mode, f_n, spring):
     mode[M_TANGENTIAL] = STICK
     mode[M_STICKS] += 1.0
     y[Y_FS] = mode[M_SIGN] * coulomb_cone(p, ints, f_n)
-    spring[0] = edge_w(ints[C.I_TANGENTIAL], mode)
+    spring[0] = edge_w(ints[L.I_TANGENTIAL], mode)
 
 
 @njit(cache=True, inline="always")
@@ -210,8 +211,8 @@ def implicit_onset(p, ints, y, mode, dy, aux, scale, spring, ext):
     w = 1.0
     if coulomb_cone(p, ints, aux[A_FN]) == 0.0 and v_s != 0.0:
         evaluate_just_after_touch(p, ints, y, mode, 1.0, dy, aux, scale, ext)   # N' (0 at alpha = 0 itself)
-        rise = p[C.P_MU] * aux[A_DFN]
-        w = tangential_onset_w(ints[C.I_TANGENTIAL], p[C.P_T1], v_s, rise)           # w^3 + beta w = 1
+        rise = p[L.MU] * aux[A_DFN]
+        w = tangential_onset_w(ints[L.I_TANGENTIAL], p, v_s, rise)           # w^3 + beta w = 1
     spring[0] = w
 
 
@@ -229,19 +230,19 @@ def evaluate_just_after_touch(p, ints, y, mode, w, dy, aux, scale, ext):
 def onset_mode(p, ints, y, mode, dy, aux, scale, spring, ext):
     """Stick or slide at first touch: stick while mu |F_n| > 0 there; where both start from 0 (undamped laws, whose
     spring and cone grow alike), slide if the trial spring outgrows the cone, judged at a tiny overlap."""
-    if ints[C.I_TANGENTIAL] == TANGENTIAL_NONE or p[C.P_MU] == 0.0:
+    if ints[L.I_TANGENTIAL] == TANGENTIAL_NONE or p[L.MU] == 0.0:
         mode[M_TANGENTIAL] = 0.0
         return
-    if TANGENTIAL_ANY_IMPLICIT and TANGENTIAL_IMPLICIT[ints[C.I_TANGENTIAL]]:
+    if TANGENTIAL_ANY_IMPLICIT and TANGENTIAL_IMPLICIT[ints[L.I_TANGENTIAL]]:
         implicit_onset(p, ints, y, mode, dy, aux, scale, spring, ext)
         return
     mode[M_TANGENTIAL] = STICK
     evaluate(p, ints, y, mode, math.nan, dy, aux, ext)
-    if p[C.P_MU] * abs(aux[A_FN]) > 0.0:
+    if p[L.MU] * abs(aux[A_FN]) > 0.0:
         mode[M_STICKS] = 1.0
         return
     evaluate_just_after_touch(p, ints, y, mode, math.nan, dy, aux, scale, ext)
-    if abs(aux[A_TRIAL]) > p[C.P_MU] * aux[A_DFN]:
+    if abs(aux[A_TRIAL]) > p[L.MU] * aux[A_DFN]:
         mode[M_TANGENTIAL] = SLIDE
         mode[M_SIGN] = 1.0 if aux[A_TRIAL] > 0.0 else -1.0
     else:
@@ -251,29 +252,30 @@ def onset_mode(p, ints, y, mode, dy, aux, scale, spring, ext):
 @njit(cache=True, inline="always")
 def spring_w(ints, mode, spring):
     """w to evaluate with: the sticking Walton-Braun spring's own, NaN (read from F_s) otherwise."""
-    if TANGENTIAL_ANY_IMPLICIT and TANGENTIAL_IMPLICIT[ints[C.I_TANGENTIAL]] and mode[M_TANGENTIAL] == STICK:
+    if TANGENTIAL_ANY_IMPLICIT and TANGENTIAL_IMPLICIT[ints[L.I_TANGENTIAL]] and mode[M_TANGENTIAL] == STICK:
         return spring[0]
     return math.nan
 
 
 @compiled
-def impact(p, ints, tol, t_ref, row_out, ext, vec, k, work, jac, lu, pivot):
+def impact(p, ints, tol, t_ref, row_out, ext, wk):
     """One impact from first touch to release at tolerance `tol`; fills row_out like kernel.integrate, with O_STEPS
     the number of force evaluations. Walton-Braun's spring takes the implicit stepper (stiff where it rides the
-    cone), every other row Dormand-Prince. vec, k, work, jac, lu, pivot: the row's zeroed work arrays
-    (adaptive_work.work_arrays)."""
-    m, radius = p[C.P_MASS], p[C.P_RADIUS]
-    v_n = abs(p[C.P_VZ0])                            # the normalised outcomes divide by the incident normal and
-    v_t = abs(p[C.P_VX0]) + radius * abs(p[C.P_W0])  # tangential speeds: errors are measured against each
+    cone), every other row Dormand-Prince. wk: the row's zeroed work arrays (adaptive_work.Work)."""
+    m, radius = p[L.MASS], p[L.RADIUS]
+    v_n = abs(p[L.VZ0])                            # the normalised outcomes divide by the incident normal and
+    v_t = abs(p[L.VX0]) + radius * abs(p[L.W0])  # tangential speeds: errors are measured against each
     if v_t == 0.0:
         v_t = v_n
     alpha_ref, f_ref = v_n * t_ref, m * v_n / t_ref
-    scale, y, mode, y_new, stage, dy, aux, aux_new, g_start, g_end, g, spring = vectors(vec)
+    scale, y, mode, y_new, aux, aux_new, g_start, g_end = wk.scale, wk.y, wk.mode, wk.y_new, wk.aux, wk.aux_new, \
+        wk.g_start, wk.g_end
+    k, jac, spring = wk.k, wk.jac, wk.spring
     for i, value in enumerate((alpha_ref, v_n, f_ref, t_ref, alpha_ref, v_n, v_t, v_t / radius, m * v_t / t_ref)):
         scale[i] = value
-    y[1], y[2], y[3] = -p[C.P_VZ0], p[C.P_VX0], p[C.P_W0]
+    y[1], y[2], y[3] = -p[L.VZ0], p[L.VX0], p[L.W0]
     mode[M_LOADING] = 1.0
-    implicit = TANGENTIAL_IMPLICIT[ints[C.I_TANGENTIAL]]
+    implicit = TANGENTIAL_IMPLICIT[ints[L.I_TANGENTIAL]]
     exponent = -0.25 if implicit else -0.2            # 1/(order + 1) of the embedded estimate
     spring[0] = spring[1] = math.nan                  # w = x^(1/3) of Walton-Braun's sticking spring: now, step's end
     onset_mode(p, ints, y, mode, k[0], aux, scale, spring, ext)
@@ -283,12 +285,11 @@ def impact(p, ints, tol, t_ref, row_out, ext, vec, k, work, jac, lu, pivot):
     t, h = 0.0, FIRST_STEP * t_ref
     f_peak, a_peak = aux[A_FN], 0.0
     status = C.STATUS_NO_SEPARATION
-    t_cap = p[C.P_MAXSTEPS] * p[C.P_DT]               # the kernel's time limit: the same slowed contact times
+    t_cap = p[L.MAX_STEPS] * p[L.DT]               # the kernel's time limit: the same slowed contact times
     for _ in range(STEP_CAP):
         if t >= t_cap:
             break
-        err, spent = advance(implicit, p, ints, y, mode, h, k, y_new, stage, aux_new, scale, tol, work, jac, lu,
-                             pivot, spring, ext)
+        err, spent = advance(implicit, p, ints, wk, h, tol, ext)
         evaluations += spent
         if not err <= 1.0:
             h *= max(SHRINK, SAFETY * err ** exponent) if err < math.inf else SHRINK
@@ -300,8 +301,7 @@ def impact(p, ints, tol, t_ref, row_out, ext, vec, k, work, jac, lu, pivot):
         first, frac, slope, release, release_rise = -1, 1.0, 0.0, 2.0, 0.0
         for e in range(N_EVENTS):                     # the first event of the step, on its interpolant
             if crosses(e, g_start[e], g_end[e]):
-                at, rise, trials = interpolated_root(e, p, ints, y, y_new, k[0], k[STAGES - 1], mode, h, stage, dy,
-                                                     aux, scale, g, g_start[e], g_end[e], ext)
+                at, rise, trials = interpolated_root(e, p, ints, wk, h, ext)
                 evaluations += trials
                 if e == E_RELEASE:
                     release, release_rise = at, rise
@@ -311,12 +311,10 @@ def impact(p, ints, tol, t_ref, row_out, ext, vec, k, work, jac, lu, pivot):
             first, frac, slope = E_RELEASE, release, release_rise
         step = h
         if first >= 0:                                # land on it: located on real steps, then the landing step
-            frac, spent = locate(first, implicit, p, ints, y, mode, h, k, y_new, stage, aux_new, scale,
-                                 g_start[first], g_end[first], g, tol, frac, slope, work, jac, lu, pivot, spring, ext)
+            frac, spent = locate(first, implicit, p, ints, wk, h, tol, frac, slope, ext)
             evaluations += spent
             step = frac * h
-            err, spent = advance(implicit, p, ints, y, mode, step, k, y_new, stage, aux_new, scale, tol, work, jac,
-                                 lu, pivot, spring, ext)
+            err, spent = advance(implicit, p, ints, wk, step, tol, ext)
             evaluations += spent
             if not err <= 1.0:                        # a singular end (alpha^3/2 at release): refine towards it
                 h = step * max(SHRINK, SAFETY * err ** exponent) if err < math.inf else step * SHRINK
@@ -374,7 +372,7 @@ def adaptive_rows(first, last, params, ints, tol, t_ref, out, ext, vec, k, work,
     """Rows first..last-1 of params/ints at tolerance tol; t_ref per row: the contact-time estimate; the rest: each
     row's work arrays (adaptive_work.work_arrays)."""
     for i in range(first, last):
-        impact(params[i], ints[i], tol, t_ref[i], out[i], ext, vec[i], k[i], work[i], jac[i], lu[i], pivot[i])
+        impact(params[i], ints[i], tol, t_ref[i], out[i], ext, row_work(vec[i], k[i], work[i], jac[i], lu[i], pivot[i]))
 
 
 def integrate_adaptive(params, ints, tol, t_ref, out, ext):

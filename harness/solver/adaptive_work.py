@@ -1,6 +1,8 @@
 """The adaptive integrator's work arrays, allocated by the caller so that nothing it compiles allocates (or counts
-references), and the element copies it makes between them (a slice assignment would compile numba's shape-error
-message)."""
+references), a row's views of them as one record (Work), and the element copies it makes between them (a slice
+assignment would compile numba's shape-error message)."""
+from collections import namedtuple
+
 import numpy as np
 from numba import njit
 
@@ -8,7 +10,7 @@ from ..jit import compiled
 from .contact_ode import N_AUX, N_EVENTS, N_MODE, N_Y
 from .steppers import STAGES
 
-VECTORS = (9, N_Y, N_MODE, N_Y, N_Y, N_Y, N_AUX, N_AUX, N_EVENTS, N_EVENTS, N_EVENTS, 2)   # vectors(): their lengths
+VECTORS = (9, N_Y, N_MODE, N_Y, N_Y, N_Y, N_AUX, N_AUX, N_EVENTS, N_EVENTS, N_EVENTS, 2)   # Work's vectors' lengths
 VECTOR_ENDS = tuple(int(x) for x in np.cumsum(VECTORS))
 
 
@@ -19,12 +21,19 @@ def work_arrays(rows):
             np.zeros((rows, 3, 3, N_Y, N_Y)), np.zeros((rows, N_Y, N_Y)), np.zeros((rows, N_Y), dtype=np.int64))
 
 
+Work = namedtuple("Work", (
+    "scale", "y", "mode", "y_new", "stage", "dy", "aux", "aux_new", "g_start", "g_end", "g", "spring",   # vectors
+    "k", "rows", "jac", "lu", "pivot"))     # stage rates, the implicit stepper's work rows, Jacobians, LU, pivots
+
+
 @njit(cache=True, inline="always")
-def vectors(vec):
-    """scale, y, mode, y_new, stage, dy, aux, aux_new, g_start, g_end, g, spring: views of one row of VECTORS."""
+def row_work(vec, k, rows, jac, lu, pivot):
+    """One row's Work: its vectors (scale, y, mode, y_new, stage, dy, aux, aux_new, g_start, g_end, g, spring:
+    views of its row of VECTORS) and its other work arrays."""
     e = VECTOR_ENDS
-    return (vec[0:e[0]], vec[e[0]:e[1]], vec[e[1]:e[2]], vec[e[2]:e[3]], vec[e[3]:e[4]], vec[e[4]:e[5]],
-            vec[e[5]:e[6]], vec[e[6]:e[7]], vec[e[7]:e[8]], vec[e[8]:e[9]], vec[e[9]:e[10]], vec[e[10]:e[11]])
+    return Work(vec[0:e[0]], vec[e[0]:e[1]], vec[e[1]:e[2]], vec[e[2]:e[3]], vec[e[3]:e[4]], vec[e[4]:e[5]],
+                vec[e[5]:e[6]], vec[e[6]:e[7]], vec[e[7]:e[8]], vec[e[8]:e[9]], vec[e[9]:e[10]], vec[e[10]:e[11]],
+                k, rows, jac, lu, pivot)
 
 
 @compiled

@@ -14,9 +14,9 @@ import math
 from numba import njit
 
 from ..jit import compiled
-from . import codes as C
-from .dispatch import (TANGENTIAL_ANY_IMPLICIT, TANGENTIAL_IMPLICIT, TANGENTIAL_LOG_RATE, normal_below, normal_force,
-                       normal_slope, tangential_edge_w, tangential_force_from_w, tangential_stiffness,
+from . import layout as L
+from .dispatch import (END_PULLS, TANGENTIAL_ANY_IMPLICIT, TANGENTIAL_IMPLICIT, TANGENTIAL_LOG_RATE, normal_below,
+                       normal_force, normal_slope, tangential_edge_w, tangential_force_from_w, tangential_stiffness,
                        tangential_w_from_force)
 from .schemes import damping_power, loading_kink
 
@@ -39,34 +39,33 @@ def normal_ode(ints, p, alpha, amax, ext):
     (the kernel's slope: a ~ F^(1/3) on Hertzian branches, a = sqrt(R alpha) on linear ones). At the yield overlap
     itself the slope is the plastic one: the loading curve's kink is an event that lands on or just past it, and
     the rates must be those that follow."""
-    code, radius = ints[C.I_NORMAL], p[C.P_RADIUS]
-    p1, p2, p3, p4 = p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4]
+    code, radius = ints[L.I_NORMAL], p[L.RADIUS]
     if alpha <= 0.0:
-        return normal_below(code, p1, p2, p3, p4, alpha, ext), 0.0, 0.0, 0.0
-    f, a = normal_force(code, p1, p2, p3, p4, radius, alpha, amax, ext)
+        return normal_below(code, p, alpha, ext), 0.0, 0.0, 0.0
+    f, a = normal_force(code, p, radius, alpha, amax, ext)
     if a <= 0.0:                                      # below the residual dent: the force is delta < 0
         return f, 1.0, 0.0, 0.0
-    slope, log_slope = normal_slope(code, p1, p2, p3, p4, radius, alpha, alpha >= amax, f, a, ext)
+    slope, log_slope = normal_slope(code, p, radius, alpha, alpha >= amax, f, a, ext)
     return f, slope, a, log_slope
 
 
 @compiled
 def coulomb_cone(p, ints, f_n):
     """mu |F_n|; without tension mu max(F_n, 0), so that the cone stays closed beyond the release."""
-    if ints[C.I_END] == C.END_FORCE and f_n < 0.0:
+    if not END_PULLS[ints[L.I_END]] and f_n < 0.0:
         return 0.0
-    return p[C.P_MU] * abs(f_n)
+    return p[L.MU] * abs(f_n)
 
 
 @compiled
 def evaluate(p, ints, y, mode, w, dy, aux, ext):
     """dy/dt at y in `mode`, and the forces the events read (aux: F_n, dF_n/dt, trial spring rate, F_t). For
     Walton-Braun's sticking spring a given w (not NaN) sets y's F_s; otherwise w is read from it."""
-    m, inertia, radius = p[C.P_MASS], p[C.P_INERTIA], p[C.P_RADIUS]
+    m, inertia, radius = p[L.MASS], p[L.INERTIA], p[L.RADIUS]
     alpha, rate = y[Y_ALPHA], y[Y_RATE]
     amax = alpha if mode[M_LOADING] > 0.0 else mode[M_AMAX]
     f_el, slope, a, log_slope = normal_ode(ints, p, alpha, amax, ext)
-    c0, power = p[C.P_DAMP_C0], p[C.P_DAMP_POWER]
+    c0, power = p[L.DAMPING_C0], p[L.DAMPING_POWER]
     c, c_slope = 0.0, 0.0
     if c0 != 0.0 and power == 0.0:
         c = c0                                        # a constant dashpot acts from first touch
@@ -74,21 +73,21 @@ def evaluate(p, ints, y, mode, w, dy, aux, ext):
         c = c0 * damping_power(alpha, power)
         c_slope = power * c / alpha
     f_n = f_el + c * rate
-    accel = p[C.P_GRAVITY] - f_n / m
+    accel = p[L.GRAVITY] - f_n / m
     aux[A_FN] = f_n
     aux[A_DFN] = slope * rate + c_slope * rate * rate + c * accel
     dy[Y_ALPHA], dy[Y_RATE] = rate, accel
     dy[Y_VX], dy[Y_W], dy[Y_FS], aux[A_TRIAL], aux[A_FT] = 0.0, 0.0, 0.0, 0.0, 0.0
     if mode[M_TANGENTIAL] == 0.0:
         return
-    code = ints[C.I_TANGENTIAL]
-    lever = radius - p[C.P_LEVER] * alpha
+    code = ints[L.I_TANGENTIAL]
+    lever = radius - p[L.LEVER] * alpha
     slide = mode[M_TANGENTIAL] == SLIDE
     v_s = slip_velocity(p, y)
     if TANGENTIAL_ANY_IMPLICIT and TANGENTIAL_IMPLICIT[code]:
         trial = implicit_rate(code, p, y, mode, w, coulomb_cone(p, ints, f_n), v_s)
     else:
-        trial = -tangential_stiffness(code, p[C.P_T1], a) * v_s
+        trial = -tangential_stiffness(code, p, a) * v_s
     f_t = mode[M_SIGN] * coulomb_cone(p, ints, f_n) if slide else y[Y_FS]
     log_rate = TANGENTIAL_LOG_RATE[code]                # F_s a'/a: eq. 18b while a shrinks, the total form always
     if ((log_rate == 1 and rate < 0.0) or log_rate == 2) and f_t != 0.0:
@@ -103,12 +102,12 @@ def implicit_rate(code, p, y, mode, w, cone, v_s):
     """A spring integrated in its hidden variable w (Walton-Braun's x^(1/3)): trial dF_s/dt = -k_t0 w V_s. Sticking:
     w given sets F_s, else w from F_s; sliding: w of the spring held on the cone's edge."""
     if mode[M_TANGENTIAL] == SLIDE:
-        return -p[C.P_T1] * edge_w(code, mode) * v_s
+        return -tangential_stiffness(code, p, 0.0) * edge_w(code, mode) * v_s
     if w == w:
         y[Y_FS] = tangential_force_from_w(code, mode[M_DIR], mode[M_STAR], cone, w)
     else:
         w = spring_w_of(code, y, mode, cone)
-    return -p[C.P_T1] * w * v_s
+    return -tangential_stiffness(code, p, 0.0) * w * v_s
 
 
 @njit(cache=True, inline="always")
@@ -125,14 +124,14 @@ def spring_w_of(code, y, mode, cone):
 
 @njit(cache=True, inline="always")
 def slip_velocity(p, y):
-    """V_s = v_x - (R - c alpha) omega: the lever R, shortened by the overlap in engine dialects (c = P_LEVER)."""
-    return y[Y_VX] - (p[C.P_RADIUS] - p[C.P_LEVER] * y[Y_ALPHA]) * y[Y_W]
+    """V_s = v_x - (R - c alpha) omega: the lever R, shortened by the overlap in engine dialects (c: column LEVER)."""
+    return y[Y_VX] - (p[L.RADIUS] - p[L.LEVER] * y[Y_ALPHA]) * y[Y_W]
 
 
 @njit(cache=True, inline="always")
 def cone_rate(p, ints, aux):
     """d(mu |F_n|)/dt."""
-    return p[C.P_MU] * (-aux[A_DFN] if aux[A_FN] < 0.0 and ints[C.I_END] == C.END_ALPHA else aux[A_DFN])
+    return p[L.MU] * (-aux[A_DFN] if aux[A_FN] < 0.0 and END_PULLS[ints[L.I_END]] else aux[A_DFN])
 
 
 @compiled
@@ -142,20 +141,20 @@ def events(p, ints, y, mode, aux, scale, g, ext):
     alpha_ref, v_ref, f_ref, t_ref = scale[0], scale[1], scale[2], scale[3]
     f_n, alpha = aux[A_FN], y[Y_ALPHA]
     loading = mode[M_LOADING] > 0.0
-    if ints[C.I_END] == C.END_ALPHA:
+    if END_PULLS[ints[L.I_END]]:
         g[E_RELEASE] = -alpha / alpha_ref
-    elif p[C.P_DAMP_C0] == 0.0:                       # F_el ~ (alpha - dent)^3/2: the overlap crosses, F is flat
+    elif p[L.DAMPING_C0] == 0.0:                       # F_el ~ (alpha - dent)^3/2: the overlap crosses, F is flat
         g[E_RELEASE] = INACTIVE if loading else (mode[M_DENT] - alpha) / alpha_ref
     else:
         g[E_RELEASE] = -min(f_n / f_ref, alpha / alpha_ref)
     g[E_TURN] = -y[Y_RATE] / v_ref if loading else INACTIVE
     kink = loading_kink(p, ints, ext)
     g[E_YIELD] = (alpha - kink) / alpha_ref if loading and kink > 0.0 else INACTIVE
-    g[E_PEAK] = -aux[A_DFN] * t_ref / f_ref if p[C.P_DAMP_C0] != 0.0 else INACTIVE
+    g[E_PEAK] = -aux[A_DFN] * t_ref / f_ref if p[L.DAMPING_C0] != 0.0 else INACTIVE
     cone = coulomb_cone(p, ints, f_n)
     g[E_SLIP] = (abs(y[Y_FS]) - cone) / f_ref if mode[M_TANGENTIAL] == STICK else INACTIVE
     v_s = slip_velocity(p, y)
-    reversible = TANGENTIAL_ANY_IMPLICIT and TANGENTIAL_IMPLICIT[ints[C.I_TANGENTIAL]] and mode[M_TANGENTIAL] != 0.0
+    reversible = TANGENTIAL_ANY_IMPLICIT and TANGENTIAL_IMPLICIT[ints[L.I_TANGENTIAL]] and mode[M_TANGENTIAL] != 0.0
     g[E_REVERSAL] = -mode[M_DIR] * v_s / scale[6] if reversible else INACTIVE
     inward = cone_rate(p, ints, aux) - mode[M_SIGN] * aux[A_TRIAL]
     g[E_STICK] = inward * t_ref / f_ref if mode[M_TANGENTIAL] == SLIDE else INACTIVE

@@ -4,9 +4,9 @@ from numba import njit
 
 from ..jit import compiled
 from ..submodels.tangential.state import T_HELD, T_MARGIN, T_STEP
-from . import codes as C
-from .dispatch import TANGENTIAL_IMPLICIT, TANGENTIAL_NONE, TANGENTIAL_VISCOUS
-from .schemes import loading_kink, step
+from . import layout as L
+from .dispatch import END_PULLS, TANGENTIAL_IMPLICIT, TANGENTIAL_NONE, TANGENTIAL_VISCOUS
+from .schemes import loading_kink, step_paper
 from .state import S_ALPHA, S_AMAX, S_FN, S_VZ
 
 RELEASE_ITERATIONS = 100
@@ -24,12 +24,12 @@ def event_kind(s, st, o, ot, p, ints, ext):
     kink = loading_kink(p, ints, ext)
     if s[S_ALPHA] < kink <= o[S_ALPHA] and s[S_ALPHA] >= s[S_AMAX]:
         return EVENT_YIELD
-    code = ints[C.I_TANGENTIAL]
+    code = ints[L.I_TANGENTIAL]
     if code == TANGENTIAL_NONE or TANGENTIAL_VISCOUS[code] or s[S_FN] <= 0.0 or o[S_FN] <= 0.0:
         return EVENT_NONE
     if TANGENTIAL_IMPLICIT[code]:             # a stiff spring (k_t -> 0 at full mobilisation) meets mu F_n
         return EVENT_NONE                     # tangentially, and locating that only amplifies round-off
-    if st[T_HELD] < 0.0 < ot[T_HELD] and p[C.P_TDAMP] != 0.0:   # spring and tangential dashpot reach the cone
+    if st[T_HELD] < 0.0 < ot[T_HELD] and p[L.TANGENTIAL_DAMPING_PREFACTOR] != 0.0:   # spring and dashpot reach the cone
         return EVENT_SATURATE
     if st[T_MARGIN] < 0.0 < ot[T_MARGIN]:
         return EVENT_SLIP
@@ -55,17 +55,17 @@ def event_value(kind, f, s, st, lo, lot, probe, probe_t, p, ints, h, scratch, ex
     if kind == EVENT_TURN or kind == EVENT_YIELD:
         at = s
         if f > 0.0:
-            step(s, st, lo, lot, p, ints, f * h, scratch, ext)
+            step_paper(s, st, lo, lot, p, ints, f * h, scratch, ext)
             at = lo
         return at[S_VZ] if kind == EVENT_TURN else at[S_ALPHA] - loading_kink(p, ints, ext)
     if kind == EVENT_SLIP or kind == EVENT_SATURATE:
         which = T_MARGIN if kind == EVENT_SLIP else T_HELD
         return st[which] if f == 0.0 else margin_at(f, s, st, lo, lot, p, ints, h, scratch, which, ext)
     if f == 0.0:
-        step(s, st, probe, probe_t, p, ints, STICK_PROBE * h, scratch, ext)
+        step_paper(s, st, probe, probe_t, p, ints, STICK_PROBE * h, scratch, ext)
     else:
-        step(s, st, lo, lot, p, ints, f * h, scratch, ext)
-        step(lo, lot, probe, probe_t, p, ints, STICK_PROBE * h, scratch, ext)
+        step_paper(s, st, lo, lot, p, ints, f * h, scratch, ext)
+        step_paper(lo, lot, probe, probe_t, p, ints, STICK_PROBE * h, scratch, ext)
     return -probe_t[T_HELD] / STICK_PROBE
 
 
@@ -74,7 +74,7 @@ def margin_at(f, s, st, lo, lot, p, ints, h, scratch, which, ext):
     """The margin `which` (T_MARGIN: |F_s| - mu F_n; T_HELD: what holds the cone) after a trial step of fraction
     f > 0 (at f = 0 the start's own margin holds: a step of length 0 would end the contact at first touch, where a
     constant dashpot already pushes)."""
-    step(s, st, lo, lot, p, ints, f * h, scratch, ext)
+    step_paper(s, st, lo, lot, p, ints, f * h, scratch, ext)
     return lot[which]
 
 
@@ -119,7 +119,7 @@ def locate_release(s, st, lo, lot, p, ints, h, scratch, indicator, ext):
     `indicator` <= 0: Illinois false position; the fraction returned still has contact."""
     frac_lo, frac_hi = 0.0, 1.0
     g_lo, g_hi = s[S_ALPHA] if s[S_ALPHA] > 0.0 else 1.0, indicator
-    if ints[C.I_END] == C.END_FORCE:
+    if not END_PULLS[ints[L.I_END]]:
         g_lo = min(s[S_FN], s[S_ALPHA]) if s[S_ALPHA] > 0.0 else s[S_FN]
     side = 0
     for _ in range(RELEASE_ITERATIONS):
@@ -128,7 +128,7 @@ def locate_release(s, st, lo, lot, p, ints, h, scratch, indicator, ext):
         mid = (frac_lo * g_hi - frac_hi * g_lo) / (g_hi - g_lo) if g_lo > 0.0 > g_hi else 0.5 * (frac_lo + frac_hi)
         if not frac_lo < mid < frac_hi:
             mid = 0.5 * (frac_lo + frac_hi)
-        g_mid = step(s, st, lo, lot, p, ints, mid * h, scratch, ext)
+        g_mid = step_paper(s, st, lo, lot, p, ints, mid * h, scratch, ext)
         frac_lo, frac_hi, g_lo, g_hi, side = illinois(frac_lo, frac_hi, g_lo, g_hi, side, mid, g_mid, g_mid > 0.0)
     return frac_lo
 
@@ -146,14 +146,14 @@ def split_at_event(s, st, o, ot, lo, lot, at_event, at_event_t, p, ints, h, scra
     frac = locate_event(kind, s, st, lo, lot, at_event, at_event_t, p, ints, h, scratch, ext)
     if not 0.0 < frac < 1.0:
         return a_peak, f_peak, indicator, h
-    step(s, st, at_event, at_event_t, p, ints, frac * h, scratch, ext)
+    step_paper(s, st, at_event, at_event_t, p, ints, frac * h, scratch, ext)
     if kind == EVENT_TURN:                  # alpha_max itself; F_max too when undamped
         a_peak = max(a_peak, at_event[S_ALPHA])
-        if p[C.P_DAMP_C0] == 0.0:
+        if p[L.DAMPING_C0] == 0.0:
             f_peak = max(f_peak, at_event[S_FN])
     rest = h_full - frac * h
-    indicator = step(at_event, at_event_t, o, ot, p, ints, rest, scratch, ext)
+    indicator = step_paper(at_event, at_event_t, o, ot, p, ints, rest, scratch, ext)
     if h < h_full and indicator <= 0.0:
         rest *= locate_release(at_event, at_event_t, lo, lot, p, ints, rest, scratch, indicator, ext)
-        step(at_event, at_event_t, o, ot, p, ints, rest, scratch, ext)
+        step_paper(at_event, at_event_t, o, ot, p, ints, rest, scratch, ext)
     return a_peak, f_peak, indicator, frac * h + rest

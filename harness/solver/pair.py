@@ -1,18 +1,23 @@
 """Two spheres stepped in their relative motion, the normal turning as they pass each other: velocity Verlet or
 leapfrog with a scalar shear along the tangent (geometry pair), leapfrog with the shear vector turned with the normal
-(geometry pair-vector) (docs/two-spheres.md)."""
+(geometry pair-vector) (docs/two-spheres.md). Both read the pair geometry's slots (pair-vector's are the same
+columns)."""
 import math
 
 from numba import njit
 
 from ..jit import compiled
 from ..submodels.tangential.state import N_TSTATE, T_STEP
-from . import codes as C
-from .dispatch import NORMAL_HISTORY, TANGENTIAL_NONE, normal_step, tangential_stiffness
+from . import layout as L
+from .dispatch import NORMAL_HISTORY, TANGENTIAL_NONE, end_clip, normal_step, tangential_stiffness, touch_contact
 from .friction import friction
 from .schemes import damping_power
 from .state import (N_STATE, S_ALPHA, S_AMAX, S_DW2, S_FEL, S_FN, S_FS, S_FT, S_HISTORY, S_NOLD, S_NX, S_NZ, S_SX,
                     S_SZ, S_VX, S_VZ, S_W, S_X, S_Z, reset_history)
+
+# the pair geometry's slots: both radii, inverse inertias (0: a fixed target), the target's spin, R1 + R2 - R*
+R1, R2, INV_I1, INV_I2 = L.GEOMETRY_PAIR_R1, L.GEOMETRY_PAIR_R2, L.GEOMETRY_PAIR_INV_I1, L.GEOMETRY_PAIR_INV_I2
+W2, OFFSET = L.GEOMETRY_PAIR_W2, L.GEOMETRY_PAIR_CENTRES_LESS_RADIUS
 
 
 @compiled
@@ -23,29 +28,26 @@ def carry_and_spins(s, st, o, ot, p):
         o[k] = s[k]
     for k in range(N_TSTATE):
         ot[k] = st[k]
-    w2 = p[C.P_W2] + s[S_DW2]
-    return (p[C.P_RADIUS] * s[S_W] - p[C.P_R2] * w2) / p[C.P_R1], w2
+    w2 = p[W2] + s[S_DW2]
+    return (p[L.RADIUS] * s[S_W] - p[R2] * w2) / p[R1], w2
 
 
 @njit(cache=True, inline="always")
-def pair_forces(s, ot, o, p, ints, h, scratch, ext, alpha, amax, nx, nz, vx, vz, w1, w2, scheme):
+def pair_forces(s, ot, o, p, ints, h, scratch, ext, alpha, amax, nx, nz, vx, vz, w1, w2):
     """In contact along n: the normal force (dashpot on u.n, clipped at 0 without tension) and the tangential force
     from the slip u.t - (l1 w1 + l2 w2), t = (n_z, -n_x), l_i = R_i - lever d, by the law's Coulomb rule
     (friction.friction). Returns (F_n, F_t, F_s, F_el)."""
-    radius = p[C.P_RADIUS]
-    f_el, a = normal_step(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], radius, alpha, s[S_ALPHA],
-                          s[S_FEL], amax, s[S_HISTORY:S_HISTORY + NORMAL_HISTORY],
-                          o[S_HISTORY:S_HISTORY + NORMAL_HISTORY], ext)
-    c = p[C.P_DAMP_C0] * damping_power(alpha, p[C.P_DAMP_POWER]) if p[C.P_DAMP_C0] != 0.0 else 0.0
-    f_n = f_el - c * (vx * nx + vz * nz)
-    if f_n < 0.0 and ints[C.I_END] == C.END_FORCE:
-        f_n = 0.0
+    radius = p[L.RADIUS]
+    f_el, a = normal_step(ints[L.I_NORMAL], p, radius, alpha, s[S_ALPHA], s[S_FEL], amax,
+                          s[S_HISTORY:S_HISTORY + NORMAL_HISTORY], o[S_HISTORY:S_HISTORY + NORMAL_HISTORY], ext)
+    c = p[L.DAMPING_C0] * damping_power(alpha, p[L.DAMPING_POWER]) if p[L.DAMPING_C0] != 0.0 else 0.0
+    f_n = end_clip(ints[L.I_END], p, f_el - c * (vx * nx + vz * nz))
     f_t, f_s = 0.0, 0.0
-    code = ints[C.I_TANGENTIAL]
+    code = ints[L.I_TANGENTIAL]
     if code != TANGENTIAL_NONE:
-        c_slip = p[C.P_LEVER]
-        slip = (vx * nz - vz * nx) - ((p[C.P_R1] - c_slip * alpha) * w1 + (p[C.P_R2] - c_slip * alpha) * w2)
-        f_t, f_s = friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, True, scheme, ints[C.I_COULOMB], radius)
+        c_slip = p[L.LEVER]
+        slip = (vx * nz - vz * nx) - ((p[R1] - c_slip * alpha) * w1 + (p[R2] - c_slip * alpha) * w2)
+        f_t, f_s = friction(s, ot, p, ints, code, h, scratch, alpha, a, f_n, slip, True, False, radius)
     return f_n, f_t, f_s, f_el
 
 
@@ -57,25 +59,24 @@ def step_verlet_pair(s, st, o, ot, p, ints, h, scratch, ext):
     the normal n = r/|r|, which turns as the spheres pass each other; slip u.t - (l1 w1 + l2 w2) along t = (n_z, -n_x)
     with levers l_i = R_i - lever d, torques -(R_i - torque d) F_t on each; the tangential history kept along t at
     its length; the law's Coulomb rule (friction.friction); contact while the overlap is > 0. Returns the overlap."""
-    m, radius = p[C.P_MASS], p[C.P_RADIUS]
-    r1, r2, inv1, inv2 = p[C.P_R1], p[C.P_R2], p[C.P_INV_I1], p[C.P_INV_I2]
-    c_torque = p[C.P_TORQUE_LEVER]
-    centres = radius + p[C.P_BIG_R]
+    m, radius = p[L.MASS], p[L.RADIUS]
+    r1, r2, inv1, inv2 = p[R1], p[R2], p[INV_I1], p[INV_I2]
+    c_torque = p[L.TORQUE_LEVER]
+    centres = radius + p[OFFSET]
     w1, w2 = carry_and_spins(s, st, o, ot, p)
     vx = s[S_VX] + 0.5 * h * (s[S_FN] * s[S_NX] + s[S_FT] * s[S_NZ]) / m
     vz = s[S_VZ] + 0.5 * h * (s[S_FN] * s[S_NZ] - s[S_FT] * s[S_NX]) / m
     w1 -= 0.5 * h * (r1 - c_torque * s[S_ALPHA]) * s[S_FT] * inv1
     w2 -= 0.5 * h * (r2 - c_torque * s[S_ALPHA]) * s[S_FT] * inv2
     x, z = s[S_X] + h * vx, s[S_Z] + h * vz
-    dist = math.sqrt(x * x + (z + p[C.P_BIG_R]) * (z + p[C.P_BIG_R]))
+    dist = math.sqrt(x * x + (z + p[OFFSET]) * (z + p[OFFSET]))
     alpha = centres - dist
     amax = s[S_AMAX]
     f_n, f_t, f_s, f_el, nx, nz = 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
-    reset_history(ints[C.I_NORMAL], o)
+    reset_history(ints[L.I_NORMAL], o)
     if alpha > 0.0:
-        nx, nz = x / dist, (z + p[C.P_BIG_R]) / dist
-        f_n, f_t, f_s, f_el = pair_forces(s, ot, o, p, ints, h, scratch, ext, alpha, amax, nx, nz, vx, vz, w1, w2,
-                                          C.INTEGRATOR_VELOCITY_VERLET)
+        nx, nz = x / dist, (z + p[OFFSET]) / dist
+        f_n, f_t, f_s, f_el = pair_forces(s, ot, o, p, ints, h, scratch, ext, alpha, amax, nx, nz, vx, vz, w1, w2)
     else:
         for k in range(N_TSTATE):
             ot[k] = 0.0
@@ -83,7 +84,7 @@ def step_verlet_pair(s, st, o, ot, p, ints, h, scratch, ext):
     w2 -= 0.5 * h * (r2 - c_torque * alpha) * f_t * inv2
     o[S_VX] = vx + 0.5 * h * (f_n * nx + f_t * nz) / m
     o[S_VZ] = vz + 0.5 * h * (f_n * nz - f_t * nx) / m
-    o[S_W], o[S_DW2] = (r1 * w1 + r2 * w2) / radius, w2 - p[C.P_W2]
+    o[S_W], o[S_DW2] = (r1 * w1 + r2 * w2) / radius, w2 - p[W2]
     o[S_X], o[S_Z], o[S_ALPHA], o[S_AMAX] = x, z, alpha, alpha if alpha > amax else amax
     o[S_FN], o[S_FT], o[S_FS], o[S_FEL], o[S_NOLD], o[S_NX], o[S_NZ] = f_n, f_t, f_s, f_el, abs(f_n), nx, nz
     ot[T_STEP] = h
@@ -93,14 +94,14 @@ def step_verlet_pair(s, st, o, ot, p, ints, h, scratch, ext):
 @njit(cache=True, inline="always")
 def leapfrog_kick_drift(s, o, p, h, fx, fz, torque, w1, w2, x, alpha, amax):
     """The leapfrog's closing half: u += h F/m*, spins -= h (R_i - torque d) T/I_i, r += h u, into the output."""
-    m = p[C.P_MASS]
+    m = p[L.MASS]
     vx, vz = s[S_VX] + h * fx / m, s[S_VZ] + h * fz / m
-    c_torque = p[C.P_TORQUE_LEVER]
-    w1 -= h * (p[C.P_R1] - c_torque * alpha) * torque * p[C.P_INV_I1]
-    w2 -= h * (p[C.P_R2] - c_torque * alpha) * torque * p[C.P_INV_I2]
+    c_torque = p[L.TORQUE_LEVER]
+    w1 -= h * (p[R1] - c_torque * alpha) * torque * p[INV_I1]
+    w2 -= h * (p[R2] - c_torque * alpha) * torque * p[INV_I2]
     o[S_VX], o[S_VZ] = vx, vz
     o[S_X], o[S_Z] = x + h * vx, s[S_Z] + h * vz
-    o[S_W], o[S_DW2] = (p[C.P_R1] * w1 + p[C.P_R2] * w2) / p[C.P_RADIUS], w2 - p[C.P_W2]
+    o[S_W], o[S_DW2] = (p[R1] * w1 + p[R2] * w2) / p[L.RADIUS], w2 - p[W2]
     o[S_ALPHA], o[S_AMAX] = alpha, amax
 
 
@@ -114,13 +115,13 @@ def step_leapfrog_pair(s, st, o, ot, p, ints, h, scratch, ext):
     (S -= S x (n_old x n)) and incremented by -k_s slip h t (k_s not reduced as it falls); normal force
     clipped at 0, the spring capped at mu F_n, else the dashpot -c_s slip t added; torques -(R_i - d/2) (n x F)_y on
     each. Contact while d >= 0; the first negative overlap applies no force and ends it (returns -1)."""
-    radius = p[C.P_RADIUS]
-    r1, r2 = p[C.P_R1], p[C.P_R2]
-    c_slip = p[C.P_LEVER]
-    centres = radius + p[C.P_BIG_R]
+    radius = p[L.RADIUS]
+    r1, r2 = p[R1], p[R2]
+    c_slip = p[L.LEVER]
+    centres = radius + p[OFFSET]
     w1, w2 = carry_and_spins(s, st, o, ot, p)
     vx, vz = s[S_VX], s[S_VZ]
-    x, z = s[S_X], s[S_Z] + p[C.P_BIG_R]
+    x, z = s[S_X], s[S_Z] + p[OFFSET]
     dist = math.sqrt(x * x + z * z)
     alpha = centres - dist
     amax = s[S_AMAX] if s[S_AMAX] > alpha else alpha
@@ -132,27 +133,25 @@ def step_leapfrog_pair(s, st, o, ot, p, ints, h, scratch, ext):
         if s[S_NX] != 0.0 or s[S_NZ] != 0.0:
             axis = s[S_NZ] * nx - s[S_NX] * nz            # y component of n_old x n
             sx, sz = s[S_SX] + axis * s[S_SZ], s[S_SZ] - axis * s[S_SX]
-        f_el, a = normal_step(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], radius, alpha, s[S_ALPHA],
-                              s[S_FEL], amax, s[S_HISTORY:S_HISTORY + NORMAL_HISTORY],
-                              o[S_HISTORY:S_HISTORY + NORMAL_HISTORY], ext)
-        noratch = 1.0 if p[C.P_SLIP_R1] == 0.0 else (p[C.P_SLIP_R1] + radius) / (p[C.P_SLIP_R1] + radius - alpha)
-        c = p[C.P_DAMP_C0] * damping_power(alpha, p[C.P_DAMP_POWER]) if p[C.P_DAMP_C0] != 0.0 else 0.0
-        f_n = f_el - c * (vx * nx + vz * nz)
-        if f_n < 0.0 and ints[C.I_END] == C.END_FORCE:
-            f_n = 0.0
-        code = ints[C.I_TANGENTIAL]
+        f_el, a = normal_step(ints[L.I_NORMAL], p, radius, alpha, s[S_ALPHA], s[S_FEL], amax,
+                              s[S_HISTORY:S_HISTORY + NORMAL_HISTORY], o[S_HISTORY:S_HISTORY + NORMAL_HISTORY], ext)
+        noratch = 1.0 if p[L.SLIP_RADIUS] == 0.0 else (p[L.SLIP_RADIUS] + radius) / (p[L.SLIP_RADIUS] + radius - alpha)
+        c = p[L.DAMPING_C0] * damping_power(alpha, p[L.DAMPING_POWER]) if p[L.DAMPING_C0] != 0.0 else 0.0
+        f_n = end_clip(ints[L.I_END], p, f_el - c * (vx * nx + vz * nz))
+        code = ints[L.I_TANGENTIAL]
         tx, tz = nz, -nx
         if code != TANGENTIAL_NONE:
             slip = noratch * (vx * tx + vz * tz) - ((r1 - c_slip * alpha) * w1 + (r2 - c_slip * alpha) * w2)
-            k_s = tangential_stiffness(code, p[C.P_T1], a)
+            k_s = tangential_stiffness(code, p, a)
             sx, sz = sx - k_s * slip * h * tx, sz - k_s * slip * h * tz
-            limit = p[C.P_MU] * abs(f_n)
+            limit = p[L.MU] * abs(f_n)
             if sx * sx + sz * sz > limit * limit:
                 ratio = limit / math.sqrt(sx * sx + sz * sz)
                 sx, sz = sx * ratio, sz * ratio
                 fx, fz = sx, sz
             else:
-                c_s = p[C.P_TDAMP] * math.sqrt(k_s) if p[C.P_TDAMP] != 0.0 else 0.0
+                damping = p[L.TANGENTIAL_DAMPING_PREFACTOR]
+                c_s = damping * math.sqrt(k_s) if damping != 0.0 else 0.0
                 fx, fz = sx - c_s * slip * tx, sz - c_s * slip * tz
             torque = nz * fx - nx * fz                    # (n x F)_y: the normal force has no moment
             f_t = fx * tx + fz * tz
@@ -160,7 +159,7 @@ def step_leapfrog_pair(s, st, o, ot, p, ints, h, scratch, ext):
     else:
         for k in range(N_TSTATE):
             ot[k] = 0.0
-        reset_history(ints[C.I_NORMAL], o)
+        reset_history(ints[L.I_NORMAL], o)
     leapfrog_kick_drift(s, o, p, h, fx, fz, torque, w1, w2, x, alpha, amax)
     o[S_FN], o[S_FT], o[S_FS], o[S_FEL], o[S_NOLD] = f_n, f_t, math.sqrt(sx * sx + sz * sz), f_el, abs(f_n)
     o[S_NX], o[S_NZ], o[S_SX], o[S_SZ] = nx, nz, sx, sz
@@ -175,24 +174,23 @@ def step_leapfrog_scalar_pair(s, st, o, ot, p, ints, h, scratch, ext):
     r += h u. Overlap R1 + R2 - |r|, normal n = r/|r|; slip u.t - (l1 w1 + l2 w2) along t = (n_z, -n_x) with levers
     l_i = R_i - lever d, torques -(R_i - torque d) F_t on each; the law's Coulomb rule (friction.friction); contact
     while the overlap is >= 0 (touch 'overlap': forces from overlap > 0); the first negative overlap ends it."""
-    radius = p[C.P_RADIUS]
+    radius = p[L.RADIUS]
     w1, w2 = carry_and_spins(s, st, o, ot, p)
     vx, vz = s[S_VX], s[S_VZ]
-    x, z = s[S_X], s[S_Z] + p[C.P_BIG_R]
+    x, z = s[S_X], s[S_Z] + p[OFFSET]
     dist = math.sqrt(x * x + z * z)
-    alpha = radius + p[C.P_BIG_R] - dist
+    alpha = radius + p[OFFSET] - dist
     amax = s[S_AMAX] if s[S_AMAX] > alpha else alpha
     touching = alpha >= 0.0
-    in_contact = touching and (alpha > 0.0 or ints[C.I_TOUCH] == C.TOUCH_GAP)
+    in_contact = touch_contact(ints[L.I_TOUCH], p, alpha)
     f_n, f_t, f_s, f_el, nx, nz = 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
     if in_contact:
         nx, nz = x / dist, z / dist
-        f_n, f_t, f_s, f_el = pair_forces(s, ot, o, p, ints, h, scratch, ext, alpha, amax, nx, nz, vx, vz, w1, w2,
-                                          C.INTEGRATOR_LEAPFROG)
+        f_n, f_t, f_s, f_el = pair_forces(s, ot, o, p, ints, h, scratch, ext, alpha, amax, nx, nz, vx, vz, w1, w2)
     else:
         for k in range(N_TSTATE):
             ot[k] = 0.0
-        reset_history(ints[C.I_NORMAL], o)
+        reset_history(ints[L.I_NORMAL], o)
     leapfrog_kick_drift(s, o, p, h, f_n * nx + f_t * nz, f_n * nz - f_t * nx, f_t, w1, w2, x, alpha, amax)
     o[S_FN], o[S_FT], o[S_FS], o[S_FEL], o[S_NOLD], o[S_NX], o[S_NZ] = f_n, f_t, f_s, f_el, abs(f_n), nx, nz
     ot[T_STEP] = h

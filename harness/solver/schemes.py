@@ -1,17 +1,21 @@
 """One step of each integrator: the paper scheme (velocity Verlet on the normal momentum u = m alpha_dot + D(alpha),
 linearised implicit-midpoint drift, second order and unconditionally stable in the dashpot), velocity Verlet with
-forces from the half-step velocities, leapfrog, and leapfrog against a stand-in sphere; and the paper scheme's first
-touch."""
+forces from the half-step velocities, leapfrog, and leapfrog against a stand-in sphere, each step_<stepper>
+(switches.py dispatches on them); and the first-touch forces of the paper and velocity-Verlet steppers,
+first_touch_<stepper>."""
 import math
 
 from numba import njit
 
 from ..jit import compiled
+from ..submodels.coulomb import clip
+from ..submodels.integrator.paper import drift
 from ..submodels.tangential.state import N_TSTATE, T_HELD
-from . import codes as C
-from .dispatch import NORMAL_HISTORY, TANGENTIAL_NONE, normal_force, normal_kink, normal_step, tangential_stiffness
+from ..submodels.tangential.viscous import friction as viscous_friction
+from . import layout as L
+from .dispatch import (END_PULLS, NORMAL_HISTORY, TANGENTIAL_NONE, TANGENTIAL_VISCOUS, coulomb_first_touch, end_clip,
+                       normal_force, normal_kink, normal_step, tangential_stiffness, touch_contact)
 from .friction import friction, slip_velocity, tangential_update
-from .spring import cap
 from .state import (N_STATE, S_ALPHA, S_AMAX, S_C, S_FEL, S_FN, S_FS, S_FT, S_HISTORY, S_NOLD, S_NX, S_NZ, S_SX,
                     S_SZ, S_U, S_VX, S_VZ, S_W, S_X, S_Z, reset_history)
 
@@ -31,43 +35,32 @@ def damping_power(alpha, power):
 
 
 @compiled
-def drift(alpha, rate0, c_alpha, h):
-    """Linearised implicit midpoint for alpha' = (u_half - D(alpha))/m, u frozen: D(mid) = D(alpha_n) + c_n (x - alpha)/2
-    gives x = alpha + h rate0 / (1 + h c_n/(2m)); c_alpha = h c_n/(2m). Unconditionally stable, O(h^3) locally."""
-    return alpha + h * rate0 / (1.0 + c_alpha)
-
-
-@compiled
 def step_leapfrog(s, st, o, ot, p, ints, h, scratch, ext):
     """Leapfrog: forces from the overlap at x(t) and the half-step velocities v(t - h/2), then
     v(t + h/2) = v(t - h/2) + h F/m and x(t + h) = x(t) + h v(t + h/2). A contact exists while the overlap is
     >= 0 (a sphere placed touching starts in contact with zero force; with touch 'overlap' no force acts until the
     overlap is > 0); the first step with a negative overlap applies no force and ends it (returns -1)."""
-    m, inertia, radius, g = p[C.P_MASS], p[C.P_INERTIA], p[C.P_RADIUS], p[C.P_GRAVITY]
+    m, inertia, radius, g = p[L.MASS], p[L.INERTIA], p[L.RADIUS], p[L.GRAVITY]
     alpha = s[S_ALPHA]
     amax = s[S_AMAX] if s[S_AMAX] > alpha else alpha
     touching = alpha >= 0.0
-    in_contact = touching and (alpha > 0.0 or ints[C.I_TOUCH] == C.TOUCH_GAP)
+    in_contact = touch_contact(ints[L.I_TOUCH], p, alpha)
     f_n, a = 0.0, 0.0
     for k in range(NORMAL_HISTORY):
         o[S_HISTORY + k] = s[S_HISTORY + k]
     if in_contact:                                    # from overlap 0: a constant dashpot acts at first touch
-        f_el, a = normal_step(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], radius, alpha, s[S_ALPHA],
-                              s[S_FEL], amax, s[S_HISTORY:S_HISTORY + NORMAL_HISTORY],
-                              o[S_HISTORY:S_HISTORY + NORMAL_HISTORY], ext)
-        c = p[C.P_DAMP_C0] * damping_power(alpha, p[C.P_DAMP_POWER]) if p[C.P_DAMP_C0] != 0.0 else 0.0
-        f_n = f_el - c * s[S_VZ]
-        if f_n < 0.0 and ints[C.I_END] == C.END_FORCE:
-            f_n = 0.0
+        f_el, a = normal_step(ints[L.I_NORMAL], p, radius, alpha, s[S_ALPHA], s[S_FEL], amax,
+                              s[S_HISTORY:S_HISTORY + NORMAL_HISTORY], o[S_HISTORY:S_HISTORY + NORMAL_HISTORY], ext)
+        c = p[L.DAMPING_C0] * damping_power(alpha, p[L.DAMPING_POWER]) if p[L.DAMPING_C0] != 0.0 else 0.0
+        f_n = end_clip(ints[L.I_END], p, f_el - c * s[S_VZ])
     for k in range(N_TSTATE):
         ot[k] = st[k]
-    code = ints[C.I_TANGENTIAL]
+    code = ints[L.I_TANGENTIAL]
     f_t, f_s = 0.0, 0.0
-    lever = radius - p[C.P_LEVER] * alpha
+    lever = radius - p[L.LEVER] * alpha
     if code != TANGENTIAL_NONE:
         slip = slip_velocity(p, alpha, s[S_VX], s[S_W], lever)
-        f_t, f_s = friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, in_contact, C.INTEGRATOR_LEAPFROG,
-                            ints[C.I_COULOMB], lever)
+        f_t, f_s = friction(s, ot, p, ints, code, h, scratch, alpha, a, f_n, slip, in_contact, False, lever)
     vz = s[S_VZ] + h * (f_n / m - g)
     o[S_VZ], o[S_FN], o[S_AMAX] = vz, f_n, amax
     o[S_VX] = s[S_VX] + h * f_t / m
@@ -78,20 +71,20 @@ def step_leapfrog(s, st, o, ot, p, ints, h, scratch, ext):
 
 
 @compiled
-def step(s, st, o, ot, p, ints, h, scratch, ext):
+def step_paper(s, st, o, ot, p, ints, h, scratch, ext):
     """Advance state (s, st) by h into (o, ot); returns the end-of-contact indicator (contact while > 0).
 
     Normal direction in u = m alpha_dot + D(alpha), u' = -F_el(alpha) + m g (Strang splitting: kick, midpoint
     drift, kick), which stays second order although c(alpha) = c0 alpha^p is singular at first touch.
     """
-    m, radius, g = p[C.P_MASS], p[C.P_RADIUS], p[C.P_GRAVITY]
-    c0, power = p[C.P_DAMP_C0], p[C.P_DAMP_POWER]
+    m, radius, g = p[L.MASS], p[L.RADIUS], p[L.GRAVITY]
+    c0, power = p[L.DAMPING_C0], p[L.DAMPING_POWER]
     u_shift = -0.5 * h * (s[S_FEL] - m * g)
     alpha = drift(s[S_ALPHA], -s[S_VZ] + u_shift / m, 0.5 * h * s[S_C] / m, h)
     amax = s[S_AMAX]
     c, d_pot = 0.0, 0.0
     if alpha > 0.0:
-        f_el, a = normal_force(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], radius, alpha, amax, ext)
+        f_el, a = normal_force(ints[L.I_NORMAL], p, radius, alpha, amax, ext)
         if c0 != 0.0:
             q = damping_power(alpha, power)
             c, d_pot = c0 * q, c0 * alpha * q / (power + 1.0)
@@ -101,14 +94,14 @@ def step(s, st, o, ot, p, ints, h, scratch, ext):
     alpha_dot = (u - d_pot) / m
     f_n = f_el + c * alpha_dot
     indicator = alpha
-    if alpha > 0.0 and ints[C.I_END] == C.END_FORCE:
+    tension = END_PULLS[ints[L.I_END]]
+    if alpha > 0.0 and not tension:
         indicator = f_n if f_n < alpha else alpha
     if alpha <= 0.0:
         f_n = 0.0
     o[S_ALPHA], o[S_VZ], o[S_FN], o[S_U], o[S_FEL], o[S_C] = alpha, -alpha_dot, f_n, u, f_el, c
     o[S_AMAX] = alpha if alpha > amax else amax
-    tangential_update(s, st, o, ot, p, ints, h, scratch, alpha, a, f_n,
-                      f_n > 0.0 or (alpha > 0.0 and ints[C.I_END] == C.END_ALPHA), C.INTEGRATOR_PAPER)
+    tangential_update(s, st, o, ot, p, ints, h, scratch, alpha, a, f_n, f_n > 0.0 or (alpha > 0.0 and tension), True)
     return indicator
 
 
@@ -119,23 +112,20 @@ def step_velocity_verlet(s, st, o, ot, p, ints, h, scratch, ext):
     The normal dashpot and the tangential increment see v(t + h/2); the tangential dashpot follows the Coulomb rule
     (friction.friction); the contact ends at the first step with alpha <= 0.
     """
-    m, radius, g = p[C.P_MASS], p[C.P_RADIUS], p[C.P_GRAVITY]
+    m, radius, g = p[L.MASS], p[L.RADIUS], p[L.GRAVITY]
     vz_half = s[S_VZ] + 0.5 * h * (s[S_FN] / m - g)
     alpha = s[S_ALPHA] - h * vz_half
     amax = s[S_AMAX]
     f_n, f_el, a = 0.0, 0.0, 0.0
-    reset_history(ints[C.I_NORMAL], o)                      # history cleared when out of contact
+    reset_history(ints[L.I_NORMAL], o)                      # history cleared when out of contact
     if alpha > 0.0:
-        f_el, a = normal_step(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], radius, alpha, s[S_ALPHA],
-                              s[S_FEL], amax, s[S_HISTORY:S_HISTORY + NORMAL_HISTORY],
-                              o[S_HISTORY:S_HISTORY + NORMAL_HISTORY], ext)
-        c = p[C.P_DAMP_C0] * damping_power(alpha, p[C.P_DAMP_POWER]) if p[C.P_DAMP_C0] != 0.0 else 0.0
-        f_n = f_el - c * vz_half
-        if f_n < 0.0 and ints[C.I_END] == C.END_FORCE:
-            f_n = 0.0
+        f_el, a = normal_step(ints[L.I_NORMAL], p, radius, alpha, s[S_ALPHA], s[S_FEL], amax,
+                              s[S_HISTORY:S_HISTORY + NORMAL_HISTORY], o[S_HISTORY:S_HISTORY + NORMAL_HISTORY], ext)
+        c = p[L.DAMPING_C0] * damping_power(alpha, p[L.DAMPING_POWER]) if p[L.DAMPING_C0] != 0.0 else 0.0
+        f_n = end_clip(ints[L.I_END], p, f_el - c * vz_half)
     o[S_ALPHA], o[S_VZ], o[S_FN], o[S_FEL] = alpha, vz_half + 0.5 * h * (f_n / m - g), f_n, f_el
     o[S_AMAX] = alpha if alpha > amax else amax
-    tangential_update(s, st, o, ot, p, ints, h, scratch, alpha, a, f_n, alpha > 0.0, C.INTEGRATOR_VELOCITY_VERLET)
+    tangential_update(s, st, o, ot, p, ints, h, scratch, alpha, a, f_n, alpha > 0.0, False)
     return alpha
 
 
@@ -144,7 +134,7 @@ def step_leapfrog_sphere(s, st, o, ot, p, ints, h, scratch, ext):
     """Leapfrog against a fixed sphere of radius R_big standing in for the wall (geometry stand-in-sphere): overlap
     (R_big + R) - |x2 - x1|, normal along x2 - x1, contact point in the middle of the overlap, shear force rotated
     with the normal (S -= S x (n_old x n)), forces and torque from the contact-point branch."""
-    m, inertia, radius, big = p[C.P_MASS], p[C.P_INERTIA], p[C.P_RADIUS], p[C.P_BIG_R]
+    m, inertia, radius, big = p[L.MASS], p[L.INERTIA], p[L.RADIUS], p[L.GEOMETRY_STAND_IN_SPHERE_RADIUS]
     dx, dz = s[S_X], s[S_Z] + big
     norm = math.sqrt(dx * dx + 0.0 + dz * dz)
     delt = (big + radius) - norm
@@ -162,19 +152,19 @@ def step_leapfrog_sphere(s, st, o, ot, p, ints, h, scratch, ext):
             sx, sz = sx + axis * sz, sz - axis * sx
         else:
             sx, sz = 0.0, 0.0
-        f_hys, _ = normal_step(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], radius, delt, s[S_ALPHA],
-                               s[S_FEL], s[S_AMAX], s[S_HISTORY:S_HISTORY + NORMAL_HISTORY],
-                               o[S_HISTORY:S_HISTORY + NORMAL_HISTORY], ext)
+        f_hys, _ = normal_step(ints[L.I_NORMAL], p, radius, delt, s[S_ALPHA], s[S_FEL], s[S_AMAX],
+                               s[S_HISTORY:S_HISTORY + NORMAL_HISTORY], o[S_HISTORY:S_HISTORY + NORMAL_HISTORY], ext)
         reach = big - 0.5 * delt                      # contact point: big sphere centre + reach n
         cx, cz = reach * nx - s[S_X], (-big + reach * nz) - s[S_Z]
         wy = s[S_W]
         rvx, rvz = -(s[S_VX] + wy * cz), -(s[S_VZ] - wy * cx)
         vn = nx * rvx + nz * rvz
         svx, svz = rvx - vn * nx, rvz - vn * nz
-        sx, sz = sx + p[C.P_T1] * h * svx, sz + p[C.P_T1] * h * svz
-        g0 = p[C.P_DAMP_C0]
+        k_s = p[L.TANGENTIAL_LINEAR_K_T]          # a linear shear spring (0 where no tangential model runs)
+        sx, sz = sx + k_s * h * svx, sz + k_s * h * svz
+        g0 = p[L.DAMPING_C0]
         normal = f_hys + g0 * vn
-        max_fs = normal * normal * p[C.P_MU] * p[C.P_MU]
+        max_fs = normal * normal * p[L.MU] * p[L.MU]
         visc_x, visc_z = 0.0, 0.0
         if sx * sx + sz * sz > max_fs:
             ratio = math.sqrt(max_fs) / math.sqrt(sx * sx + sz * sz)
@@ -203,22 +193,43 @@ def step_leapfrog_sphere(s, st, o, ot, p, ints, h, scratch, ext):
 def loading_kink(p, ints, ext):
     """Overlap at which the loading curve bends (yield of Stronge and Thornton, d_lim of the peak-limited hysteresis);
     0 for the smooth curves."""
-    return normal_kink(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], ext)
+    return normal_kink(ints[L.I_NORMAL], p, ext)
 
 
 @compiled
-def paper_first_touch(s, st, p, ints, ext):
+def first_touch_paper(s, st, p, ints, ext):
     """The paper scheme's tangential force at first touch with a tangential dashpot: -c_t V_s capped by mu F_n
     (finite where both start finite: a constant normal dashpot and a constant k_t), and whether spring and dashpot
     start on the Coulomb cone, judged at a tiny overlap where both rise from 0 (Tsuji's c ~ alpha^1/4 against
     Mindlin's c_t ~ alpha^1/4): a contact that slides from first touch starts with margin 0 and gets the exact
     friction impulse (sliding_kick) from its first step, where the trapezoid of a force ~ t^p loses an order."""
-    code, radius, mu = ints[C.I_TANGENTIAL], p[C.P_RADIUS], p[C.P_MU]
-    slip0 = p[C.P_VX0] - radius * p[C.P_W0]
-    v_n = -p[C.P_VZ0]
-    s[S_FT] = cap(-p[C.P_TDAMP] * math.sqrt(tangential_stiffness(code, p[C.P_T1], 0.0)) * slip0, mu * abs(s[S_FN]))
-    alpha = ONSET_OVERLAP * v_n * p[C.P_DT]
-    f_el, a = normal_force(ints[C.I_NORMAL], p[C.P_N1], p[C.P_N2], p[C.P_N3], p[C.P_N4], radius, alpha, alpha, ext)
-    f_n = f_el + p[C.P_DAMP_C0] * damping_power(alpha, p[C.P_DAMP_POWER]) * v_n
-    if p[C.P_TDAMP] * math.sqrt(tangential_stiffness(code, p[C.P_T1], a)) * abs(slip0) > mu * f_n:
+    code, radius, mu = ints[L.I_TANGENTIAL], p[L.RADIUS], p[L.MU]
+    if p[L.TANGENTIAL_DAMPING_PREFACTOR] == 0.0 or code == TANGENTIAL_NONE or TANGENTIAL_VISCOUS[code]:
+        return
+    slip0 = p[L.VX0] - radius * p[L.W0]
+    v_n = -p[L.VZ0]
+    s[S_FT] = clip(-p[L.TANGENTIAL_DAMPING_PREFACTOR] * math.sqrt(tangential_stiffness(code, p, 0.0)) * slip0,
+                   mu * abs(s[S_FN]))
+    alpha = ONSET_OVERLAP * v_n * p[L.DT]
+    f_el, a = normal_force(ints[L.I_NORMAL], p, radius, alpha, alpha, ext)
+    f_n = f_el + p[L.DAMPING_C0] * damping_power(alpha, p[L.DAMPING_POWER]) * v_n
+    if p[L.TANGENTIAL_DAMPING_PREFACTOR] * math.sqrt(tangential_stiffness(code, p, a)) * abs(slip0) > mu * f_n:
         st[T_HELD] = 0.0
+
+
+@compiled
+def first_touch_velocity_verlet(s, st, p, ints, ext):
+    """Velocity Verlet against a wall, where the touch rule puts a sphere at gap 0 in contact: the setup force,
+    the tangential dashpot alone on its empty spring, as the Coulomb rule takes it at first touch (coulomb
+    first_touch; viscous friction capped at mu |F_n|)."""
+    code = ints[L.I_TANGENTIAL]
+    if code == TANGENTIAL_NONE or not touch_contact(ints[L.I_TOUCH], p, 0.0):
+        return
+    slip0 = p[L.VX0] - p[L.RADIUS] * p[L.W0]
+    limit = p[L.MU] * abs(s[S_FN])
+    damping = p[L.TANGENTIAL_DAMPING_PREFACTOR]
+    if TANGENTIAL_VISCOUS[code]:
+        s[S_FT] = viscous_friction(tangential_stiffness(code, p, 0.0), damping, slip0, limit)
+    else:
+        s[S_FT] = coulomb_first_touch(ints[L.I_COULOMB], p,
+                                      -damping * math.sqrt(tangential_stiffness(code, p, 0.0)) * slip0, limit)

@@ -9,6 +9,7 @@ from ..kinematics import rebound_quantities
 from ..results import impact_frame
 from .stability import UnstableTimeStep
 from . import codes as C
+from . import layout as L
 from .adaptive import integrate_adaptive, stepper_names, supports
 from .extension import table as extension_table
 from .kernel import integrate
@@ -79,8 +80,8 @@ def graded_rows(law, scene, e_n, n, span, rows):
     (alpha^(1/4), alpha^(1/2), alpha^(3/2)) become smooth in the step and the error expands in powers of 1/n.
     The stability limit is checked at the largest graded step."""
     batch = batch_at(law, scene, e_n, FixedTimeStep(float(np.max(graded_largest_step(n, span)))), bounded=False)
-    batch.params[:, C.P_GRADE_T] = span
-    batch.params[:, C.P_GRADE_N] = n
+    batch.params[:, L.GRADE_T] = span
+    batch.params[:, L.GRADE_N] = n
     return run_kernel(batch, rows=rows)
 
 

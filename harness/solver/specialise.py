@@ -11,9 +11,8 @@ from pathlib import Path
 from numba.core import config
 
 from ..files import write_text
-from ..submodels.generate import source
+from ..submodels.generate import dispatch_source, switches_source
 from ..submodels.registry import code_of, kernels
-from .switches import STEPPERS
 
 SOLVER = os.path.dirname(os.path.abspath(__file__))
 _LOADING = threading.Lock()
@@ -25,7 +24,7 @@ COMPILED_ALONE = ("mindlin-deresiewicz", "walton-braun")   # tangential kernels 
 
 
 def specialised(module, stepper, normal=None, tangential=None):
-    """`module` (kernel or adaptive) of the solver specialised to one stepper (switches.STEPPERS) and, given a
+    """`module` (kernel or adaptive) of the solver specialised to one stepper (submodels/stepping.py) and, given a
     normal kernel, to it and either its tangential kernel (one of COMPILED_ALONE) or all the cheap ones: the package
     `harness.solver_<stepper>[_n<normal>[_t<tangential>]]`, a copy of the solver's modules with its own switches.py
     and dispatch.py, written under numba's cache directory (named by the compiled sources). numba names a cache by
@@ -45,11 +44,11 @@ def specialised(module, stepper, normal=None, tangential=None):
 def generated(stepper, kept_normal, kept_tangential):
     """The modules a specialised copy writes in place of the solver's: switches.py, dispatch.py, and extension.py,
     which re-exports the solver's own (its empty slot is compiled when imported: once is enough)."""
-    flags = "".join(f"{name} = {name == stepper}\n" for name in STEPPERS) + f"STEPPERS = {STEPPERS!r}\n"
     extension = ('"""The solver\'s extension table and calls."""\n'
                  "from ..solver.extension import BELOW, FORCE, KINK, RESIDUAL, SIGNATURE, SLOPE, call, missing, table  "
                  "# noqa: F401\n")
-    return {"switches.py": flags, "dispatch.py": source(kept_normal, kept_tangential), "extension.py": extension}
+    return {"switches.py": switches_source(stepper), "dispatch.py": dispatch_source(kept_normal, kept_tangential),
+            "extension.py": extension}
 
 
 def load(label, generate, module):

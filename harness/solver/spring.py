@@ -1,19 +1,9 @@
-"""The tangential spring's pieces every kernel shares: the Coulomb cap, the mean contact radius of a step and the
-trial spring force from the registered kernels (dispatch.tangential_spring)."""
+"""The tangential spring's pieces every kernel shares: the mean contact radius of a step and the trial spring force
+from the registered kernels (dispatch.tangential_spring)."""
 
 from ..jit import compiled
 from ..submodels.tangential.state import T_AOLD
 from .dispatch import tangential_spring
-
-
-@compiled
-def cap(force, limit):
-    """Coulomb cap |F_t| <= mu F_n."""
-    if force > limit:
-        return limit
-    if force < -limit:
-        return -limit
-    return force
 
 
 @compiled
@@ -27,11 +17,11 @@ def mean_radius(a_old, a):
 
 
 @compiled
-def spring_force(code, f_s, dd, a, p1, mu, n_new, n_old, st, scratch, midpoint):
+def spring_force(code, p, f_s, dd, a, mu, n_new, n_old, st, scratch, midpoint):
     """Trial spring force after the increment dd, before the Coulomb cap; updates the history `st`. `a` is the
     contact radius at the end of the step, st[T_AOLD] the one at its start; with `midpoint` (the paper scheme) the
     kernels use the step's mean radius, engines the current one."""
     a_old = st[T_AOLD]
     a_mid = mean_radius(a_old, a) if midpoint else a
     st[T_AOLD] = a
-    return tangential_spring(code, f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, scratch, midpoint)
+    return tangential_spring(code, p, f_s, dd, a_mid, a, a_old, mu, n_new, n_old, st, scratch, midpoint)

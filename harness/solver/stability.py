@@ -10,7 +10,7 @@ import math
 from dataclasses import dataclass
 
 from ..errors import UserError
-from ..submodels.registry import kernel_code, kernel_of, python_point
+from ..submodels.registry import code_of, kernel_code, kernel_of, python_point
 
 
 @dataclass(frozen=True)
@@ -46,7 +46,7 @@ class UnstableTimeStep(UserError):
 def stability_limit(law, scene, e_n, tangential=True):
     """Limit for `law` at target e_n, from its normal model's peak stiffness, its dashpots and its tangential spring;
     the tangential mode counts when some impact of the batch has friction and tangential motion."""
-    contact, explicit = scene.contact, law.integrator != "paper"
+    contact, explicit = scene.contact, kernel_of("integrator", code_of("integrator", law.integrator)).explicit
     k_n, alpha = law.normal.peak(contact, e_n, scene.speed)
     dashpot = law.damping.dashpot(law.normal, contact, e_n, scene.speed, law.end)
     c_n = dashpot.c0 * (alpha ** dashpot.power if dashpot.power else 1.0)
@@ -55,11 +55,11 @@ def stability_limit(law, scene, e_n, tangential=True):
     code = kernel_code(law.tangential)
     if tangential and scene.mu > 0.0:
         k_lin = law.normal.parameters(contact, e_n, scene.speed).linear_stiffness
-        p1 = law.tangential.parameter(contact, k_lin)
+        slot = law.tangential.parameter(contact, k_lin)
         prefactor = law.tangential_damping.prefactor(contact, dashpot, k_lin,
-                                                     p1 if law.tangential.constant_stiffness else None, e_n)
+                                                     slot if law.tangential.constant_stiffness else None, e_n)
         stiffness = python_point("tangential", code, "stiffness")
-        k_t = abs(stiffness(p1, math.sqrt(contact.radius * alpha)))                 # |k_s| = |nu| k_n for k_t/k_n = nu
+        k_t = abs(stiffness(slot, math.sqrt(contact.radius * alpha)))               # |k_s| = |nu| k_n for k_t/k_n = nu
         c_t = abs(prefactor) * math.sqrt(k_t)                                       # CundallStrack with nu < 0
         m_t = 1.0 / (1.0 / mass + contact.radius ** 2 / contact.inertia)
         spring = 0.0 if kernel_of("tangential", code).viscous else k_t

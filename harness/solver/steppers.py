@@ -6,7 +6,7 @@ import numpy as np
 from numba import njit
 
 from ..jit import compiled
-from . import codes as C
+from . import layout as L
 from .contact_ode import A_FN, M_TANGENTIAL, N_Y, STICK, Y_ALPHA, Y_FS, coulomb_cone, evaluate, spring_w_of
 from .dispatch import TANGENTIAL_IMPLICIT
 
@@ -84,7 +84,7 @@ def solves_for_w(ints, mode, y, w):
     W_SWITCH, where F_s' ~ x^(1/3) has a steep slope) or from first touch (mu N = 0: F_s does not tell x). Away
     from the cone F_s itself is the unknown: there F_s = -d mu N (1 - (1 - d sigma*) w^3) would tie F_s's
     precision to mu N's, lost as mu N -> 0 at the release."""
-    return (TANGENTIAL_IMPLICIT[ints[C.I_TANGENTIAL]] and mode[M_TANGENTIAL] == STICK
+    return (TANGENTIAL_IMPLICIT[ints[L.I_TANGENTIAL]] and mode[M_TANGENTIAL] == STICK
             and (w < W_SWITCH or y[Y_ALPHA] <= 0.0))
 
 
@@ -232,7 +232,7 @@ def sdirk_step(p, ints, y, w, mode, h, k, y_new, work, jac, lu, pivot, aux, scal
     for i in range(N_Y):
         y_new[i] = ys[i]
         k[6, i] = fs[i]
-    spring[0] = z[Y_FS] if use_w else spring_w_of(ints[C.I_TANGENTIAL], y_new, mode, coulomb_cone(p, ints, aux[A_FN]))
+    spring[0] = z[Y_FS] if use_w else spring_w_of(ints[L.I_TANGENTIAL], y_new, mode, coulomb_cone(p, ints, aux[A_FN]))
     evaluations += jacobian(p, ints, z, mode, use_w, scale, jac[J_END, 0], jac[J_END, 1], work, aux, ext)
     jac[J_END, 2, 0, 0], jac[J_END, 2, 0, 1] = 1.0, use_w
     newton_matrix(jac, J_END, hg, lu, pivot)

@@ -1,15 +1,15 @@
-"""What every sub-model declares: its name, the compiled kernel it runs on (a module of njit functions the
-registry numbers), its parameters for one contact and the capabilities the integrators read."""
+"""What every sub-model class declares: its name, the compiled kernel it runs on (a kernel module the registry
+numbers), and its parameters for one contact."""
 from dataclasses import dataclass
 
 
-N_SLOTS = 4                 # the compiled normal kernels' parameter slots p1..p4
+N_SLOTS = 4                 # the most parameter slots a normal kernel declares (the normal block's columns)
 
 
 @dataclass(frozen=True)
 class NormalParameters:
-    """The kernel's parameters by the slot names its module declares (SLOTS, in order: at most N_SLOTS), k_n for
-    linear tangential springs, and a contact-time estimate for the time step."""
+    """The kernel's parameters by the slot names its module declares (SLOTS, in order), k_n for linear tangential
+    springs, and a contact-time estimate for the time step."""
     slots: tuple                # ((slot name, value), ...)
     linear_stiffness: float
     contact_time: float
@@ -28,8 +28,8 @@ class NormalParameters:
 
     @property
     def values(self):
-        """The positional slots p1..p4 the compiled kernels take, the unused ones 0."""
-        return tuple(value for _, value in self.slots) + (0.0,) * (N_SLOTS - len(self.slots))
+        """The values in their slots' order (the kernel row's normal block)."""
+        return tuple(value for _, value in self.slots)
 
 
 class SubModel:
@@ -56,9 +56,9 @@ class NormalModel(SubModel):
 
 
 class TangentialModel(SubModel):
-    """A tangential sub-model: the spring (or friction law) and its stiffness parameter p1 for a contact."""
+    """A tangential sub-model: the spring (or friction law) and the value of its kernel's one slot for a contact."""
     family = "tangential"
-    constant_stiffness = False      # k_t is the constant p1 (what the tangential dashpot's k_t-ratio rules need)
+    constant_stiffness = False      # k_t is the slot's constant (what the tangential dashpot's k_t-ratio rules need)
 
     def parameter(self, contact, k_n):
         raise NotImplementedError

@@ -1,13 +1,14 @@
 """The registration table: every sub-model by name (what `--with` and the named laws take) and every compiled kernel
-numbered (what the integrators dispatch on). solver/dispatch.py is generated from it (`python -m
+module numbered in its family (what the integrators dispatch on), one line each, appended so that the existing codes
+keep their numbers. solver/dispatch.py and solver/layout.py are generated from it (`python -m
 harness.submodels.generate`); a normal kernel registered at run time (`register_normal`) is reached through the
 extension table the integrators carry, without recompiling them."""
 import importlib
 from dataclasses import dataclass
 
 from ..errors import UserError
-from . import stepping
 from .base import N_SLOTS
+from .families import FAMILIES, check_module
 from .damping.kuwabara_kono import KuwabaraKonoDashpot
 from .damping.linear import LinearDashpot
 from .damping.none import NoDamping
@@ -34,129 +35,99 @@ from .tangential.viscous import ViscousTangential
 from .tangential.walton_braun import WaltonBraunTangential
 
 
+
+
 @dataclass(frozen=True)
 class Kernel:
-    """A compiled kernel: its family and name, its module, the function each dispatch point calls there, and what
-    the integrators must know of it."""
+    """A kernel module: its family and name, its import path, the dispatch points it defines, its slots, its
+    summary and its capabilities ((NAME, value), ...), read as lower-case attributes (kernel.adaptive)."""
     family: str
     name: str
     module: str
-    functions: tuple            # ((dispatch point, attribute of the module), ...)
-    adaptive: bool = False      # the adaptive integrator covers it (it has the ODE's functions)
-    history_reset: tuple = ()   # normal: an incremental law's history at first touch and after a contact
-    viscous: bool = False       # tangential: no spring, F = -min(c_t |V_s|, mu F_n) sign V_s
-    implicit: bool = False      # tangential: stiff, integrated implicitly in its hidden variable, with reversal events
-    log_rate: int = 0           # tangential: F_s a'/a in the ODE: 0 never, 1 while a shrinks (eq. 18b), 2 always
-    slots: tuple = ()           # normal: the names of its parameter slots p1.. (NormalParameters' names)
+    functions: tuple            # the dispatch points the module defines
+    slots: tuple = ()
+    summary: str = ""
+    capabilities: tuple = ()
+
+    def __getattr__(self, name):
+        for key, value in self.__dict__.get("capabilities", ()):
+            if key.lower() == name:
+                return value
+        raise AttributeError(name)
 
 
-NORMAL_POINTS = ("force", "below", "slope", "residual", "kink", "step")
-TANGENTIAL_POINTS = ("stiffness", "spring", "after_cap", "force_from_w", "w_from_force", "edge_w", "onset_w")
-IMPLICIT_POINTS = ("force_from_w", "w_from_force", "edge_w", "onset_w")
 SUBMODELS = "harness.submodels"
 
 
-def normal_kernel(module):
-    """The Kernel of a normal kernel module (NAME, ADAPTIVE, SLOTS, HISTORY_RESET and the dispatch points it
-    defines), refused with what is missing (check_normal_module)."""
+def kernel_module(family, module):
+    """The Kernel of kernel module `module` (an import path) of `family`, refused with what it lacks
+    (families.check_module)."""
     m = importlib.import_module(module)
-    check_normal_module(m, module)
-    return Kernel("normal", m.NAME, module, tuple((p, p) for p in NORMAL_POINTS if hasattr(m, p)),
-                  adaptive=m.ADAPTIVE, history_reset=tuple(getattr(m, "HISTORY_RESET", ())), slots=tuple(m.SLOTS))
+    spec = FAMILIES[family]
+    check_module(spec, m, module)
+    return Kernel(family, m.NAME, module, tuple(p.name for p in spec.points if hasattr(m, p.name)), tuple(m.SLOTS),
+                  m.SUMMARY, tuple((c, getattr(m, c, default)) for c, (_, default) in spec.capabilities.items()))
 
 
-def tangential_kernel(name, module, adaptive=False, **functions_and_capabilities):
-    """The Kernel of tangential kernel `name` in submodels/tangential/<module>.py: the dispatch points it answers
-    (point=attribute), its capabilities (viscous, implicit, log_rate), refused with what is missing
-    (check_tangential_module)."""
-    capabilities = {k: functions_and_capabilities.pop(k) for k in ("viscous", "implicit", "log_rate")
-                    if k in functions_and_capabilities}
-    path = f"{SUBMODELS}.tangential.{module}" if "." not in module else module
-    unknown = sorted(set(functions_and_capabilities) - set(TANGENTIAL_POINTS))
-    if unknown:
-        raise UserError(f"tangential kernel {name!r}: no dispatch point {', '.join(unknown)}; the points are "
-                        f"{', '.join(TANGENTIAL_POINTS)}")
-    kernel = Kernel("tangential", name, path, tuple((p, functions_and_capabilities[p]) for p in TANGENTIAL_POINTS
-                                                    if p in functions_and_capabilities),
-                    adaptive=adaptive, **capabilities)
-    check_tangential_module(kernel, importlib.import_module(path))
-    return kernel
+def registered(family, modules):
+    """The Kernels of submodels/<family>/<module>.py for each module, in order: their codes."""
+    return tuple(kernel_module(family, f"{SUBMODELS}.{family}.{module}") for module in modules)
 
 
-def missing_names(m, names):
-    return [n for n in names if not callable(getattr(m, n, None))]
+NO_TANGENTIAL = Kernel("tangential", "none", "", (), (), "no tangential model: a normal impact without spin, or mu = 0",
+                       (("ADAPTIVE", True), ("VISCOUS", False), ("IMPLICIT", False), ("LOG_RATE", 0)))
 
-
-def check_normal_module(m, module):
-    """A normal kernel module declares NAME (str), ADAPTIVE (bool) and SLOTS (at most four distinct names of its
-    parameters p1..p4) and defines `force` (or, incremental, `step` with HISTORY_RESET); with ADAPTIVE, `slope` (the
-    adaptive integrator's). below, residual and kink are optional: no force below contact, no dent, no kink."""
-    problems = [f"constant {c}" for c, kind in (("NAME", str), ("ADAPTIVE", bool), ("SLOTS", tuple))
-                if not isinstance(getattr(m, c, None), kind)]
-    slots = getattr(m, "SLOTS", ())
-    if isinstance(slots, tuple) and (len(slots) > N_SLOTS or len(set(slots)) != len(slots)
-                                     or not all(isinstance(s, str) and s.isidentifier() for s in slots)):
-        problems.append(f"SLOTS as at most {N_SLOTS} distinct names, got {slots!r}")
-    if hasattr(m, "step") or hasattr(m, "HISTORY_RESET"):
-        problems += [f"function {n}" for n in missing_names(m, ("step",))]
-        if not isinstance(getattr(m, "HISTORY_RESET", None), tuple):
-            problems.append("constant HISTORY_RESET (its history at first touch)")
-    else:
-        problems += [f"function {n}" for n in missing_names(m, ("force",))]
-    if getattr(m, "ADAPTIVE", False) is True:
-        problems += [f"function {n} (ADAPTIVE)" for n in missing_names(m, ("force", "slope"))]
-    problems += [f"function {n} (defined but not callable)" for n in ("below", "residual", "kink")
-                 if hasattr(m, n) and not callable(getattr(m, n))]
-    if problems:
-        raise UserError(f"normal kernel module {module} lacks {', '.join(problems)}")
-
-
-def check_tangential_module(kernel, m):
-    """A tangential kernel answers `stiffness`; a spring (not viscous) `spring`; an implicit one its four event
-    points (IMPLICIT_POINTS); every attribute it names is a function of its module."""
-    points = dict(kernel.functions)
-    required = ["stiffness"] + ([] if kernel.viscous else ["spring"]) + (list(IMPLICIT_POINTS) if kernel.implicit
-                                                                          else [])
-    problems = [f"dispatch point {p}" for p in required if p not in points]
-    problems += [f"function {a} (its {p})" for p, a in kernel.functions if not callable(getattr(m, a, None))]
-    if problems:
-        raise UserError(f"tangential kernel {kernel.name!r} ({kernel.module}) lacks {', '.join(problems)}")
-
-
-def check_parameters(model, parameters):
-    """The parameters a normal model gives, named as its kernel's SLOTS (UserError naming both otherwise)."""
-    slots = kernels("normal")[code_of("normal", model.kernel)].slots
-    if parameters.names != slots:
-        raise UserError(f"the {model.name} normal model gives parameters {', '.join(parameters.names) or 'none'}; "
-                        f"its kernel {model.kernel} takes {', '.join(slots) or 'none'}")
-    return parameters.values
-
-
-NORMAL_KERNELS = tuple(normal_kernel(f"{SUBMODELS}.normal.{m}") for m in (
-    "linear", "hertz", "walton_braun", "thornton", "stronge", "luding_peak", "thornton_ning",
-    "luding_incremental"))
-
-TANGENTIAL_KERNELS = (
-    Kernel("tangential", "none", "", (), adaptive=True),   # normal impact without spin, or mu = 0: no tangential model
-    tangential_kernel("linear", "linear", True, stiffness="stiffness", spring="spring"),
-    tangential_kernel("mindlin:incremental", "mindlin", True, stiffness="stiffness", spring="incremental"),
-    tangential_kernel("mindlin:rescale", "mindlin", True, stiffness="stiffness", spring="rescale", log_rate=1),
-    tangential_kernel("mindlin:total", "mindlin", True, stiffness="stiffness", spring="total",
-                      after_cap="total_after_cap", log_rate=2),
-    tangential_kernel("mindlin-deresiewicz", "mindlin_deresiewicz", stiffness="stiffness", spring="spring"),
-    tangential_kernel("walton-braun", "walton_braun", True, stiffness="stiffness", spring="spring",
-                      force_from_w="force_from_w", w_from_force="w_from_force", edge_w="edge_w", onset_w="onset_w",
-                      implicit=True),
-    tangential_kernel("viscous:linear", "viscous", stiffness="linear_stiffness", viscous=True),
-    tangential_kernel("viscous:mindlin", "viscous", stiffness="mindlin_stiffness", viscous=True),
-    tangential_kernel("mindlin:total-rescale", "mindlin_wall_coefficient", stiffness="stiffness",
-                      spring="total_rescale", after_cap="total_after_cap"),
-    tangential_kernel("mindlin:force-rescale", "mindlin_wall_coefficient", stiffness="stiffness",
-                      spring="force_rescale"),
-    tangential_kernel("contact-radius-spring", "contact_radius_spring", stiffness="stiffness", spring="spring",
-                      after_cap="after_cap"),
-    tangential_kernel("mindlin-unloading", "mindlin_unloading", stiffness="stiffness", spring="spring"),
-)
+NORMAL_KERNELS = registered("normal", (
+    "linear",
+    "hertz",
+    "walton_braun",
+    "thornton",
+    "stronge",
+    "luding_peak",
+    "thornton_ning",
+    "luding_incremental",
+))
+END_KERNELS = registered("end", (
+    "tension",
+    "no_tension",
+))
+TANGENTIAL_KERNELS = (NO_TANGENTIAL,) + registered("tangential", (
+    "linear",
+    "mindlin_incremental",
+    "mindlin_rescale",
+    "mindlin_total",
+    "mindlin_deresiewicz",
+    "walton_braun",
+    "viscous_linear",
+    "viscous_mindlin",
+    "mindlin_total_rescale",
+    "mindlin_force_rescale",
+    "contact_radius_spring",
+    "mindlin_unloading",
+))
+INTEGRATOR_KERNELS = registered("integrator", (
+    "paper",
+    "velocity_verlet",
+    "leapfrog",
+))
+COULOMB_KERNELS = registered("coulomb", (
+    "spring",
+    "total",
+    "total_cases",
+))
+GEOMETRY_KERNELS = registered("geometry", (
+    "wall",
+    "stand_in_sphere",
+    "pair",
+    "pair_vector",
+))
+TOUCH_KERNELS = registered("touch", (
+    "gap",
+    "overlap",
+))
+BUILT_IN = {"normal": NORMAL_KERNELS, "end": END_KERNELS, "tangential": TANGENTIAL_KERNELS,
+            "integrator": INTEGRATOR_KERNELS, "coulomb": COULOMB_KERNELS, "geometry": GEOMETRY_KERNELS,
+            "touch": TOUCH_KERNELS}
 
 # sub-models by the name --with takes; engine dialects' own sub-models are listed apart (engines name them)
 NORMAL_MODELS = {cls.name: cls for cls in (LinearSpring, Hertz, WaltonBraun, PartiallyLatchingSpring, Thornton, Stronge)}
@@ -167,17 +138,19 @@ TANGENTIAL_MODELS = {cls.name: cls for cls in (LinearTangential, Mindlin, Mindli
 ENGINE_TANGENTIAL_MODELS = {cls.name: cls for cls in (MindlinWallCoefficient, MindlinPairCoefficient,
                                                        ContactRadiusSpring, MindlinUnloading)}
 DAMPING_MODELS = {cls.name: cls for cls in (NoDamping, LinearDashpot, TsujiDashpot, KuwabaraKonoDashpot)}
-INTEGRATORS = {s.name: s for s in stepping.INTEGRATORS}          # stepping sub-models: the codes the steppers take
-COULOMB_RULES = {s.name: s for s in stepping.COULOMB_RULES}
-GEOMETRIES = {s.name: s for s in stepping.GEOMETRIES}
-TOUCHES = {s.name: s for s in stepping.TOUCHES}
+INTEGRATORS = {k.name: k for k in INTEGRATOR_KERNELS}     # stepping sub-models by the name a law gives
+COULOMB_RULES = {k.name: k for k in COULOMB_KERNELS}
+GEOMETRIES = {k.name: k for k in GEOMETRY_KERNELS}
+TOUCHES = {k.name: k for k in TOUCH_KERNELS}
+ENDS = {k.name: k for k in END_KERNELS}
 
 EXTENSION_SLOTS = 4         # normal kernels registered at run time, beyond the generated dispatch
 EXTENSIONS = []             # their Kernels, in registration order
 
 
 def kernels(family):
-    return NORMAL_KERNELS + tuple(EXTENSIONS) if family == "normal" else TANGENTIAL_KERNELS
+    """Every kernel of `family` by code (normal: the built-in ones, then those registered at run time)."""
+    return BUILT_IN[family] + (tuple(EXTENSIONS) if family == "normal" else ())
 
 
 def code_of(family, name):
@@ -197,22 +170,34 @@ def kernel_of(family, code):
     return kernels(family)[code]
 
 
+def check_parameters(model, parameters):
+    """The parameters a normal model gives, named as its kernel's SLOTS (UserError naming both otherwise)."""
+    slots = kernels("normal")[code_of("normal", model.kernel)].slots
+    if parameters.names != slots:
+        raise UserError(f"the {model.name} normal model gives parameters {', '.join(parameters.names) or 'none'}; "
+                        f"its kernel {model.kernel} takes {', '.join(slots) or 'none'}")
+    return parameters.values
+
+
 def python_point(family, code, point):
     """A kernel's dispatch point as plain Python (its compiled function's source, run by the interpreter): for the
     few evaluations outside the integrators, where compiling would cost more than it saves. Leaf functions only."""
     kernel = kernel_of(family, code)
-    return getattr(importlib.import_module(kernel.module), dict(kernel.functions)[point]).py_func
+    return getattr(importlib.import_module(kernel.module), point).py_func
 
 
 def register_normal(model, module):
     """Register a normal sub-model class and the module of its compiled functions at run time: one call where a
-    built-in is one registry line. The module defines NAME, ADAPTIVE, SLOTS and `extension(point, p1, p2, p3, p4,
-    radius, alpha, alpha_max, x, y)` with the signature solver.extension.SIGNATURE, answering each of its points
-    (force, below, slope, residual, kink) with a pair of floats; the class is a normal model of that kernel."""
+    built-in is one registry line. The module declares NAME, SUMMARY, ADAPTIVE and SLOTS (at most N_SLOTS) and
+    defines `extension(point, slots, radius, alpha, alpha_max, x, y)` with the signature solver.extension.SIGNATURE
+    (slots: the normal family's block of the kernel row, its SLOTS first), answering each of its points (force,
+    below, slope, residual, kink) with a pair of floats; the class is a normal model of that kernel."""
     m = importlib.import_module(module)
-    problems = [f"constant {c}" for c, kind in (("NAME", str), ("ADAPTIVE", bool), ("SLOTS", tuple))
+    problems = [f"constant {c}" for c, kind in (("NAME", str), ("SUMMARY", str), ("ADAPTIVE", bool), ("SLOTS", tuple))
                 if not isinstance(getattr(m, c, None), kind)]
-    problems += [f"function {n}" for n in missing_names(m, ("extension",))]
+    if isinstance(getattr(m, "SLOTS", None), tuple) and len(m.SLOTS) > N_SLOTS:
+        problems.append(f"SLOTS as at most {N_SLOTS} names")
+    problems += [f"function {n}" for n in ("extension",) if not callable(getattr(m, n, None))]
     if problems:
         raise UserError(f"normal kernel module {module} lacks {', '.join(problems)}")
     if getattr(model, "family", "") != "normal" or getattr(model, "kernel", None) != m.NAME or not model.name:
@@ -222,6 +207,6 @@ def register_normal(model, module):
         raise UserError(f"a normal kernel named {m.NAME!r} is registered already")
     if len(EXTENSIONS) >= EXTENSION_SLOTS:
         raise UserError(f"at most {EXTENSION_SLOTS} normal kernels can be registered at run time")
-    EXTENSIONS.append(Kernel("normal", m.NAME, module, (("extension", "extension"),), adaptive=m.ADAPTIVE,
-                             slots=m.SLOTS))
+    EXTENSIONS.append(Kernel("normal", m.NAME, module, ("extension",), m.SLOTS, m.SUMMARY,
+                             (("ADAPTIVE", m.ADAPTIVE), ("HISTORY_RESET", ()))))
     NORMAL_MODELS[model.name] = model

@@ -7,7 +7,8 @@ from ..errors import UserError
 RULES = ("none", "normal-ratio", "normal-coefficient", "proportional", "beta", "reversed-beta", "classical")
 CONES = ("spring-first", "total")        # the paper scheme's Coulomb test: the spring's first, or the sum's
 MASSES = ("mass", "sphere-mass")         # m_t: the sphere's mass m, or its tangential effective mass
-CONE_CODES = {"spring-first": 0.0, "total": 1.0}      # solver.codes.P_TCONE
+CONE_CODES = {"spring-first": 0.0, "total": 1.0}      # the cone slot's values
+SLOTS = ("prefactor", "cone")      # c_t = prefactor sqrt(k_t), and CONE_CODES: its columns of the kernel rows
 
 
 class TangentialDashpot:

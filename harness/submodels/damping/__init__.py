@@ -2,6 +2,8 @@
 dispatch for them (c0 and power are parameters)."""
 from dataclasses import dataclass
 
+SLOTS = ("c0", "power")     # every dashpot's c(alpha) = c0 alpha^power: its columns of the kernel rows
+
 
 @dataclass(frozen=True)
 class Dashpot:

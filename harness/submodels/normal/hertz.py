@@ -7,8 +7,9 @@ from ..base import NormalModel, NormalParameters
 from .hertz_shapes import hertz, hertz_slope
 
 NAME = "hertz"
+SUMMARY = "F = 4/3 E* R^1/2 alpha^3/2 (paper eq. 1)"
 ADAPTIVE = True
-SLOTS = ("E_star",)         # kernel slots p1..
+SLOTS = ("E_star",)
 
 
 def hertz_peak_overlap(contact, speed):
@@ -33,11 +34,11 @@ class Hertz(NormalModel):
 
 
 @compiled
-def force(p1, p2, p3, p4, radius, alpha, alpha_max):
+def force(E_star, radius, alpha, alpha_max):
     """Hertz F = 4/3 E* R^1/2 alpha^3/2, a = sqrt(R alpha)."""
-    return hertz(p1, radius, alpha)
+    return hertz(E_star, radius, alpha)
 
 
 @compiled
-def slope(p1, p2, p3, p4, radius, alpha, loading, f, a):
-    return hertz_slope(p1, f, a)
+def slope(E_star, radius, alpha, loading, f, a):
+    return hertz_slope(E_star, f, a)

@@ -8,8 +8,9 @@ from .. import calibration as cal
 from ..base import NormalModel, NormalParameters
 
 NAME = "linear"
+SUMMARY = "F = k_n alpha, a = sqrt(R alpha)"
 ADAPTIVE = True
-SLOTS = ("k_n",)            # kernel slots p1..
+SLOTS = ("k_n",)
 
 
 class LinearSpring(NormalModel):
@@ -43,18 +44,18 @@ class LinearSpring(NormalModel):
 
 
 @compiled
-def force(p1, p2, p3, p4, radius, alpha, alpha_max):
+def force(k_n, radius, alpha, alpha_max):
     """F = k_n alpha, a = sqrt(R alpha)."""
-    return p1 * alpha, math.sqrt(radius * alpha)
+    return k_n * alpha, math.sqrt(radius * alpha)
 
 
 @compiled
-def below(p1, p2, p3, p4, alpha):
+def below(k_n, alpha):
     """At alpha <= 0 the spring pulls: F = k_n alpha (the force that ends a contact with tension)."""
-    return p1 * alpha
+    return k_n * alpha
 
 
 @compiled
-def slope(p1, p2, p3, p4, radius, alpha, loading, f, a):
+def slope(k_n, radius, alpha, loading, f, a):
     """dF/dalpha = k_n; a = sqrt(R alpha): d(ln a)/dalpha = 1/(2 alpha)."""
-    return p1, 0.5 / alpha
+    return k_n, 0.5 / alpha

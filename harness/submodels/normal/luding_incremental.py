@@ -6,8 +6,9 @@ from ..base import NormalParameters
 from .luding_peak import LudingPeak
 
 NAME = "luding-incremental"
+SUMMARY = "Luding's hysteretic spring, its plastic overlap carried step to step (Luding 2008)"
 ADAPTIVE = False
-SLOTS = ("k1", "kp", "delt_p_max", "delt_p_null")   # kernel slots p1..
+SLOTS = ("k1", "kp", "delt_p_max", "delt_p_null")
 DELT_MAX, DELT_NULL, DELT_PREV = 0, 1, 2            # its history: largest, plastic and previous overlap
 HISTORY_RESET = (0.0, 0.0, 0.0)
 
@@ -67,9 +68,9 @@ def luding(k1, kp, delt_p_max, delt_p_null, delt, delt_max, delt_null, delt_prev
 
 
 @compiled
-def step(p1, p2, p3, p4, radius, alpha, alpha_old, f_old, alpha_max, history, new_history):
+def step(k1, kp, delt_p_max, delt_p_null, radius, alpha, alpha_old, f_old, alpha_max, history, new_history):
     """One step of the incremental Luding law at overlap alpha: (F, 0) and its history after the step."""
-    f, new_history[DELT_MAX], new_history[DELT_NULL] = luding(p1, p2, p3, p4, alpha, history[DELT_MAX],
+    f, new_history[DELT_MAX], new_history[DELT_NULL] = luding(k1, kp, delt_p_max, delt_p_null, alpha, history[DELT_MAX],
                                                               history[DELT_NULL], history[DELT_PREV])
     new_history[DELT_PREV] = alpha
     return f, 0.0

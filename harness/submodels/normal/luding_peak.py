@@ -7,8 +7,9 @@ from .. import calibration as cal
 from ..base import NormalModel, NormalParameters
 
 NAME = "luding-peak"
+SUMMARY = "k1 alpha loading, unloading stiffness growing with the peak overlap up to d_lim (Luding 2008)"
 ADAPTIVE = False
-SLOTS = ("k1", "k2_max", "d_lim")           # kernel slots p1..
+SLOTS = ("k1", "k2_max", "d_lim")
 
 
 class LudingPeak(NormalModel):
@@ -33,18 +34,18 @@ class LudingPeak(NormalModel):
 
 
 @compiled
-def force(p1, p2, p3, p4, radius, alpha, alpha_max):
+def force(k1, k2_max, d_lim, radius, alpha, alpha_max):
     """min(k1 d, k2 (d - d_max) + k1 d_max), k2 = k1 + (k2max - k1) d_max/d_lim; beyond d_lim the line
     k2max (d - d_lim) + k1 d_lim."""
     d_max = alpha if alpha > alpha_max else alpha_max
-    if d_max >= p3:
-        return p2 * (alpha - p3) + p1 * p3, math.sqrt(radius * alpha)
-    k2 = p1 + (p2 - p1) * d_max / p3
-    f = k2 * (alpha - d_max) + p1 * d_max
-    return (p1 * alpha if f >= p1 * alpha else f), math.sqrt(radius * alpha)
+    if d_max >= d_lim:
+        return k2_max * (alpha - d_lim) + k1 * d_lim, math.sqrt(radius * alpha)
+    k2 = k1 + (k2_max - k1) * d_max / d_lim
+    f = k2 * (alpha - d_max) + k1 * d_max
+    return (k1 * alpha if f >= k1 * alpha else f), math.sqrt(radius * alpha)
 
 
 @compiled
-def kink(p1, p2, p3, p4):
+def kink(k1, k2_max, d_lim):
     """The loading curve becomes a straight line at d_lim."""
-    return p3
+    return d_lim

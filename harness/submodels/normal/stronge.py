@@ -7,8 +7,9 @@ from .hertz_shapes import FOUR_THIRDS, hertz, hertz_slope
 from .thornton import Thornton
 
 NAME = "stronge"
+SUMMARY = "Hertz to alpha_y, F_y (2 alpha/alpha_y - 1), Hertzian unloading with R_c [provisional reconstruction]"
 ADAPTIVE = True
-SLOTS = ("E_star", "alpha_y", "f_y")         # kernel slots p1..
+SLOTS = ("E_star", "alpha_y", "f_y")
 
 
 class Stronge(Thornton):
@@ -33,40 +34,40 @@ def unloading(E_star, alpha_y, f_y, radius, alpha_max):
 
 
 @compiled
-def force(p1, p2, p3, p4, radius, alpha, alpha_max):
+def force(E_star, alpha_y, f_y, radius, alpha, alpha_max):
     """Hertz to alpha_y, F_y (2 alpha/alpha_y - 1), Hertz unloading with R_c (slots E*, alpha_y, F_y)."""
-    a_y = math.sqrt(radius * p2)
+    a_y = math.sqrt(radius * alpha_y)
     if alpha >= alpha_max:
-        if alpha <= p2:
-            return hertz(p1, radius, alpha)
-        f = p3 * (2.0 * alpha / p2 - 1.0)
-        return f, a_y * math.sqrt(f / p3)
-    if alpha_max <= p2:
-        return hertz(p1, radius, alpha)
-    r_c, dent = unloading(p1, p2, p3, radius, alpha_max)
+        if alpha <= alpha_y:
+            return hertz(E_star, radius, alpha)
+        f = f_y * (2.0 * alpha / alpha_y - 1.0)
+        return f, a_y * math.sqrt(f / f_y)
+    if alpha_max <= alpha_y:
+        return hertz(E_star, radius, alpha)
+    r_c, dent = unloading(E_star, alpha_y, f_y, radius, alpha_max)
     delta = alpha - dent
     if delta <= 0.0:
         return delta, 0.0
-    return hertz(p1, r_c, delta)
+    return hertz(E_star, r_c, delta)
 
 
 @compiled
-def residual(p1, p2, p3, p4, radius, alpha_max):
-    if alpha_max > p2:
-        return unloading(p1, p2, p3, radius, alpha_max)[1]
+def residual(E_star, alpha_y, f_y, radius, alpha_max):
+    if alpha_max > alpha_y:
+        return unloading(E_star, alpha_y, f_y, radius, alpha_max)[1]
     return 0.0
 
 
 @compiled
-def kink(p1, p2, p3, p4):
+def kink(E_star, alpha_y, f_y):
     """The loading curve bends at alpha_y."""
-    return p2
+    return alpha_y
 
 
 @compiled
-def slope(p1, p2, p3, p4, radius, alpha, loading, f, a):
+def slope(E_star, alpha_y, f_y, radius, alpha, loading, f, a):
     """2 F_y/alpha_y on the plastic line, where a = a_y (F/F_y)^1/2; Hertzian elsewhere."""
-    if loading and alpha >= p2:
-        plastic = 2.0 * p3 / p2
+    if loading and alpha >= alpha_y:
+        plastic = 2.0 * f_y / alpha_y
         return plastic, plastic / (2.0 * f)
-    return hertz_slope(p1, f, a)
+    return hertz_slope(E_star, f, a)

@@ -9,8 +9,9 @@ from .hertz import Hertz
 from .hertz_shapes import FOUR_THIRDS, hertz, hertz_slope
 
 NAME = "thornton"
+SUMMARY = "Hertz to alpha_y, F_y + pi p_y R (alpha - alpha_y), Hertzian unloading with R_p (Thornton 1997)"
 ADAPTIVE = True
-SLOTS = ("E_star", "p_y", "alpha_y", "f_y")   # kernel slots p1..
+SLOTS = ("E_star", "p_y", "alpha_y", "f_y")
 
 
 def yield_point(E_star, p_y, radius):
@@ -67,38 +68,38 @@ def unloading(E_star, p_y, alpha_y, f_y, radius, alpha_max):
 
 
 @compiled
-def force(p1, p2, p3, p4, radius, alpha, alpha_max):
+def force(E_star, p_y, alpha_y, f_y, radius, alpha, alpha_max):
     """Hertz to alpha_y, F_y + pi p_y R (alpha - alpha_y), Hertz unloading with R_p (slots E*, p_y, alpha_y, F_y)."""
     if alpha >= alpha_max:
-        if alpha <= p3:
-            return hertz(p1, radius, alpha)
-        return p4 + math.pi * p2 * radius * (alpha - p3), math.sqrt(radius * alpha)
-    if alpha_max <= p3:
-        return hertz(p1, radius, alpha)
-    r_p, dent = unloading(p1, p2, p3, p4, radius, alpha_max)
+        if alpha <= alpha_y:
+            return hertz(E_star, radius, alpha)
+        return f_y + math.pi * p_y * radius * (alpha - alpha_y), math.sqrt(radius * alpha)
+    if alpha_max <= alpha_y:
+        return hertz(E_star, radius, alpha)
+    r_p, dent = unloading(E_star, p_y, alpha_y, f_y, radius, alpha_max)
     delta = alpha - dent
     if delta <= 0.0:
         return delta, 0.0          # negative: below the residual indentation, the force has ended
-    return hertz(p1, r_p, delta)
+    return hertz(E_star, r_p, delta)
 
 
 @compiled
-def residual(p1, p2, p3, p4, radius, alpha_max):
+def residual(E_star, p_y, alpha_y, f_y, radius, alpha_max):
     """The dent alpha_p of the unloading curve (0 below yield)."""
-    if alpha_max > p3:
-        return unloading(p1, p2, p3, p4, radius, alpha_max)[1]
+    if alpha_max > alpha_y:
+        return unloading(E_star, p_y, alpha_y, f_y, radius, alpha_max)[1]
     return 0.0
 
 
 @compiled
-def kink(p1, p2, p3, p4):
+def kink(E_star, p_y, alpha_y, f_y):
     """The loading curve bends at alpha_y."""
-    return p3
+    return alpha_y
 
 
 @compiled
-def slope(p1, p2, p3, p4, radius, alpha, loading, f, a):
+def slope(E_star, p_y, alpha_y, f_y, radius, alpha, loading, f, a):
     """pi p_y R on the plastic line (a = sqrt(R alpha)), Hertzian elsewhere."""
-    if loading and alpha >= p3:
-        return math.pi * p2 * radius, 0.5 / alpha
-    return hertz_slope(p1, f, a)
+    if loading and alpha >= alpha_y:
+        return math.pi * p_y * radius, 0.5 / alpha
+    return hertz_slope(E_star, f, a)

@@ -5,8 +5,9 @@ from ...jit import compiled
 from .thornton import Thornton
 
 NAME = "thornton-ning"
+SUMMARY = "incremental dF = 2E* a dd, plastic beyond a_y (Thornton & Ning 1998)"
 ADAPTIVE = False
-SLOTS = ("E_star", "a_y")                   # kernel slots p1..
+SLOTS = ("E_star", "a_y")
 F_MAX, YIELDED, DETACHED_AT = 0, 1, 2       # its history: peak force, yielded (1), overlap where it detached (< 0: no)
 HISTORY_RESET = (0.0, 0.0, -1.0)            # history at first touch and after the contact ends
 
@@ -45,8 +46,8 @@ def increment(E_star, a_y, radius, alpha, alpha_old, f_old, alpha_max, f_max, yi
 
 
 @compiled
-def step(p1, p2, p3, p4, radius, alpha, alpha_old, f_old, alpha_max, history, new_history):
+def step(E_star, a_y, radius, alpha, alpha_old, f_old, alpha_max, history, new_history):
     """One step of the incremental law: (F, a) and the history after it (new_history)."""
     f, a, new_history[YIELDED], new_history[DETACHED_AT], new_history[F_MAX] = increment(
-        p1, p2, radius, alpha, alpha_old, f_old, alpha_max, history[F_MAX], history[YIELDED], history[DETACHED_AT])
+        E_star, a_y, radius, alpha, alpha_old, f_old, alpha_max, history[F_MAX], history[YIELDED], history[DETACHED_AT])
     return f, a

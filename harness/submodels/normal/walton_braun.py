@@ -7,8 +7,9 @@ from .. import calibration as cal
 from ..base import NormalModel, NormalParameters
 
 NAME = "walton-braun"
+SUMMARY = "K1 alpha loading, K2 (alpha - alpha0) unloading, alpha0 = alpha_max (1 - K1/K2) (Walton & Braun 1986)"
 ADAPTIVE = True
-SLOTS = ("k1", "k2")        # kernel slots p1..: loading and unloading stiffness
+SLOTS = ("k1", "k2")
 
 
 class WaltonBraun(NormalModel):
@@ -31,21 +32,21 @@ class WaltonBraun(NormalModel):
 
 
 @compiled
-def force(p1, p2, p3, p4, radius, alpha, alpha_max):
+def force(k1, k2, radius, alpha, alpha_max):
     """Loading K1 alpha; unloading K2 (alpha - alpha0), alpha0 = alpha_max (1 - K1/K2) (Walton & Braun 1986)."""
     if alpha >= alpha_max:
-        return p1 * alpha, math.sqrt(radius * alpha)
-    alpha0 = alpha_max * (1.0 - p1 / p2)
-    return p2 * (alpha - alpha0), math.sqrt(radius * alpha)
+        return k1 * alpha, math.sqrt(radius * alpha)
+    alpha0 = alpha_max * (1.0 - k1 / k2)
+    return k2 * (alpha - alpha0), math.sqrt(radius * alpha)
 
 
 @compiled
-def residual(p1, p2, p3, p4, radius, alpha_max):
+def residual(k1, k2, radius, alpha_max):
     """The dent alpha_max (1 - K1/K2) where the unloading force returns to 0."""
-    return alpha_max * (1.0 - p1 / p2)
+    return alpha_max * (1.0 - k1 / k2)
 
 
 @compiled
-def slope(p1, p2, p3, p4, radius, alpha, loading, f, a):
+def slope(k1, k2, radius, alpha, loading, f, a):
     """K1 loading, K2 unloading; a = sqrt(R alpha)."""
-    return (p1 if loading else p2), 0.5 / alpha
+    return (k1 if loading else k2), 0.5 / alpha

@@ -4,11 +4,12 @@ next step scales the capped force by a once more (docs/laws.md#tangential-laws).
 from ...errors import UserError
 from ...jit import compiled
 from ..base import TangentialModel
-from .linear import stiffness  # noqa: F401  (k: the constant p1, what the tangential dashpot's c_t = g sqrt(k) takes)
 from .ratio import parse_ratio, ratio_label, ratio_value
 from .state import T_AUX1
 
 NAME = "contact-radius-spring"
+SUMMARY = "F = -k a xi on the total displacement, xi = -F/k after the cap"
+SLOTS = ("k",)
 
 
 class ContactRadiusSpring(TangentialModel):
@@ -33,13 +34,19 @@ class ContactRadiusSpring(TangentialModel):
 
 
 @compiled
-def spring(f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, scratch, midpoint):
-    """xi + dd; F = -k a xi."""
-    st[T_AUX1] += dd
-    return -p1 * a * st[T_AUX1]
+def stiffness(k, a):
+    """k itself (what the tangential dashpot's c_t = g sqrt(k) and the stability limit take)."""
+    return k
 
 
 @compiled
-def after_cap(f_s, p1, a, st):
+def spring(k, f_s, dd, a_mid, a, a_old, mu, n_new, n_old, st, scratch, midpoint):
+    """xi + dd; F = -k a xi."""
+    st[T_AUX1] += dd
+    return -k * a * st[T_AUX1]
+
+
+@compiled
+def after_cap(k, f_s, a, st):
     """xi = -F/k for a capped force F (not -F/(k a))."""
-    st[T_AUX1] = -f_s / p1 if p1 > 0.0 else 0.0
+    st[T_AUX1] = -f_s / k if k > 0.0 else 0.0

@@ -5,6 +5,9 @@ from ..base import TangentialModel
 from .ratio import parse_ratio, ratio_label, ratio_value
 
 NAME = "linear"
+SUMMARY = "dF_t = -k_t V_s dt, k_t constant"
+SLOTS = ("k_t",)
+ADAPTIVE = True
 
 
 class LinearTangential(TangentialModel):
@@ -22,12 +25,12 @@ class LinearTangential(TangentialModel):
 
 
 @compiled
-def stiffness(p1, a):
-    """k_t: the constant p1."""
-    return p1
+def stiffness(k_t, a):
+    """k_t: constant."""
+    return k_t
 
 
 @compiled
-def spring(f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, scratch, midpoint):
+def spring(k_t, f_s, dd, a_mid, a, a_old, mu, n_new, n_old, st, scratch, midpoint):
     """F_s - k_t dd."""
-    return f_s - p1 * dd
+    return f_s - k_t * dd

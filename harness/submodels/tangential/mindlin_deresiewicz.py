@@ -6,6 +6,8 @@ from .mindlin import Mindlin, stiffness
 from .state import N_TSTATE, T_AUX1, T_AUX2, T_DIR, T_MODE
 
 NAME = "mindlin-deresiewicz"
+SUMMARY = "Thornton & Yin (1991): dT = 8 G a theta_k dd + (-1)^k mu dN (1 - theta_k)"
+SLOTS = ("G",)
 
 
 class MindlinDeresiewicz(Mindlin):
@@ -62,9 +64,9 @@ def mindlin_deresiewicz(f_s, dd, k_t, mu, n_new, n_old, st, t_eval):
 
 
 @compiled
-def spring(f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, scratch, midpoint):
+def spring(G, f_s, dd, a_mid, a, a_old, mu, n_new, n_old, st, scratch, midpoint):
     """A predictor-corrector on T: the increment at the mid-step T."""
     for k in range(N_TSTATE):
         scratch[k] = st[k]
-    predicted = mindlin_deresiewicz(f_s, dd, stiffness(p1, a_mid), mu, n_new, n_old, scratch, f_s)
-    return mindlin_deresiewicz(f_s, dd, stiffness(p1, a_mid), mu, n_new, n_old, st, 0.5 * (f_s + predicted))
+    predicted = mindlin_deresiewicz(f_s, dd, stiffness(G, a_mid), mu, n_new, n_old, scratch, f_s)
+    return mindlin_deresiewicz(f_s, dd, stiffness(G, a_mid), mu, n_new, n_old, st, 0.5 * (f_s + predicted))

@@ -5,6 +5,8 @@ from ..base import TangentialModel
 from .mindlin import stiffness  # noqa: F401  (its dispatch point: k_t = 8 G* a)
 
 NAME = "mindlin-unloading"
+SUMMARY = "F_s a/a_old - 8 G a dd while a falls, F_s - 8 G a dd otherwise"
+SLOTS = ("G",)
 
 
 class MindlinUnloading(TangentialModel):
@@ -17,8 +19,8 @@ class MindlinUnloading(TangentialModel):
 
 
 @compiled
-def spring(f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, scratch, midpoint):
+def spring(G, f_s, dd, a_mid, a, a_old, mu, n_new, n_old, st, scratch, midpoint):
     """F_s a/a_old - 8 G* a dd while a falls (a/a_old = sqrt(delta/delta_old)), F_s - 8 G* a dd otherwise."""
     if a < a_old:
-        return f_s * (a / a_old) - 8.0 * p1 * a * dd
-    return f_s - 8.0 * p1 * a * dd
+        return f_s * (a / a_old) - 8.0 * G * a * dd
+    return f_s - 8.0 * G * a * dd

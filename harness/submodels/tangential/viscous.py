@@ -28,16 +28,6 @@ class ViscousTangential(TangentialModel):
 
 
 @compiled
-def linear_stiffness(p1, a):
-    return p1
-
-
-@compiled
-def mindlin_stiffness(p1, a):
-    return 8.0 * p1 * a
-
-
-@compiled
 def friction(k_t, c_factor, slip, limit):
     """F = -sign(V_s) min(c_t |V_s|, mu F_n), c_t = c_factor sqrt(k_t)."""
     c_t = c_factor * math.sqrt(k_t)

@@ -10,6 +10,10 @@ from .ratio import ratio_label
 from .state import N_TSTATE, T_AUX1, T_DIR
 
 NAME = "walton-braun"
+SUMMARY = "k_t = k_t0 x^1/3, x the spring's mobilisation from its last reversal, T* scaled with N (Walton & Braun 1986)"
+SLOTS = ("k_t0",)
+ADAPTIVE = True
+IMPLICIT = True             # stiff at full mobilisation: integrated implicitly in w = x^1/3, with reversal events
 
 
 class WaltonBraunTangential(LinearTangential):
@@ -21,9 +25,9 @@ class WaltonBraunTangential(LinearTangential):
 
 
 @compiled
-def stiffness(p1, a):
+def stiffness(k_t0, a):
     """k_t0 (the initial stiffness; the kernel's spring lowers it towards full mobilisation)."""
-    return p1
+    return k_t0
 
 
 @compiled
@@ -100,14 +104,14 @@ def walton_braun_implicit(f_s, dd, k_t0, mu, n_new, n_old, st):
 
 
 @compiled
-def spring(f_s, dd, a_mid, a, a_old, p1, mu, n_new, n_old, st, scratch, midpoint):
+def spring(k_t0, f_s, dd, a_mid, a, a_old, mu, n_new, n_old, st, scratch, midpoint):
     """The paper scheme's implicit trapezoid in x (midpoint), or the engines' predictor-corrector on T."""
     if midpoint:
-        return walton_braun_implicit(f_s, dd, p1, mu, n_new, n_old, st)
+        return walton_braun_implicit(f_s, dd, k_t0, mu, n_new, n_old, st)
     for k in range(N_TSTATE):
         scratch[k] = st[k]
-    predicted = walton_braun(f_s, dd, p1, mu, n_new, n_old, scratch, f_s)
-    return walton_braun(f_s, dd, p1, mu, n_new, n_old, st, 0.5 * (f_s + predicted))
+    predicted = walton_braun(f_s, dd, k_t0, mu, n_new, n_old, scratch, f_s)
+    return walton_braun(f_s, dd, k_t0, mu, n_new, n_old, st, 0.5 * (f_s + predicted))
 
 
 @compiled
@@ -134,7 +138,7 @@ def edge_w(d, star, sign):
 
 
 @compiled
-def onset_w(p1, v_s, rise):
+def onset_w(k_t0, v_s, rise):
     """w at first touch where mu N rises from 0 at the rate `rise`: 1 - x = beta x^(1/3), beta = k_t0 |V_s|/rise,
     i.e. w^3 + beta w = 1 (0 where mu N does not rise: the spring rides the cone)."""
-    return cubic_root(p1 * abs(v_s) / rise, 1.0) if rise > 0.0 else 0.0
+    return cubic_root(k_t0 * abs(v_s) / rise, 1.0) if rise > 0.0 else 0.0

@@ -1,0 +1,90 @@
+"""Generated from harness/submodels/registry.py by `python -m harness.submodels.generate`: do not edit.
+
+The columns of a kernel row (docs/design.md): the impact's own, then each family's block, in which a
+kernel's SLOTS take the first columns, named FAMILY_KERNEL_SLOT.
+"""
+
+MASS = 0    # the sphere's (or the pair's reduced) mass
+INERTIA = 1    # its moment of inertia
+RADIUS = 2    # its (or the pair's equivalent) radius R
+DT = 3    # the time step
+GRAVITY = 4    # gravity towards the wall
+MU = 5    # the friction coefficient
+VZ0 = 6    # incident velocity along the normal (< 0 approaching)
+VX0 = 7    # incident tangential velocity
+W0 = 8    # initial spin omega_y
+MAX_STEPS = 9    # the step cap
+GRADE_T = 10    # graded steps: their span T (0: uniform steps)
+GRADE_N = 11    # graded steps: how many over T
+LEVER = 12    # c of the slip's lever arm R - c alpha (paper 0)
+TORQUE_LEVER = 13    # c of the torque's lever R - c alpha (R_i - c alpha between two spheres)
+SLIP_RADIUS = 14    # slip form: 0 -> V_t - lever omega; r1 > 0 -> (r1 + R)/(r1 + R - d) V_t - R omega
+DAMPING_C0 = 15    # the normal dashpot c = c0 alpha^power
+DAMPING_POWER = 16
+TANGENTIAL_DAMPING_PREFACTOR = 17    # the tangential dashpot c_t = prefactor sqrt(k_t)
+TANGENTIAL_DAMPING_CONE = 18    # the paper scheme's Coulomb test (CONE_CODES)
+NORMAL_LINEAR_K_N = 19
+NORMAL_HERTZ_E_STAR = 19
+NORMAL_WALTON_BRAUN_K1 = 19
+NORMAL_WALTON_BRAUN_K2 = 20
+NORMAL_THORNTON_E_STAR = 19
+NORMAL_THORNTON_P_Y = 20
+NORMAL_THORNTON_ALPHA_Y = 21
+NORMAL_THORNTON_F_Y = 22
+NORMAL_STRONGE_E_STAR = 19
+NORMAL_STRONGE_ALPHA_Y = 20
+NORMAL_STRONGE_F_Y = 21
+NORMAL_LUDING_PEAK_K1 = 19
+NORMAL_LUDING_PEAK_K2_MAX = 20
+NORMAL_LUDING_PEAK_D_LIM = 21
+NORMAL_THORNTON_NING_E_STAR = 19
+NORMAL_THORNTON_NING_A_Y = 20
+NORMAL_LUDING_INCREMENTAL_K1 = 19
+NORMAL_LUDING_INCREMENTAL_KP = 20
+NORMAL_LUDING_INCREMENTAL_DELT_P_MAX = 21
+NORMAL_LUDING_INCREMENTAL_DELT_P_NULL = 22
+TANGENTIAL_LINEAR_K_T = 23
+TANGENTIAL_MINDLIN_INCREMENTAL_G = 23
+TANGENTIAL_MINDLIN_RESCALE_G = 23
+TANGENTIAL_MINDLIN_TOTAL_G = 23
+TANGENTIAL_MINDLIN_DERESIEWICZ_G = 23
+TANGENTIAL_WALTON_BRAUN_K_T0 = 23
+TANGENTIAL_VISCOUS_LINEAR_K_T = 23
+TANGENTIAL_VISCOUS_MINDLIN_G = 23
+TANGENTIAL_MINDLIN_TOTAL_RESCALE_G = 23
+TANGENTIAL_MINDLIN_FORCE_RESCALE_G = 23
+TANGENTIAL_CONTACT_RADIUS_SPRING_K = 23
+TANGENTIAL_MINDLIN_UNLOADING_G = 23
+GEOMETRY_STAND_IN_SPHERE_RADIUS = 24
+GEOMETRY_PAIR_CENTRES_LESS_RADIUS = 24
+GEOMETRY_PAIR_R1 = 25
+GEOMETRY_PAIR_R2 = 26
+GEOMETRY_PAIR_INV_I1 = 27
+GEOMETRY_PAIR_INV_I2 = 28
+GEOMETRY_PAIR_W2 = 29
+GEOMETRY_PAIR_VECTOR_CENTRES_LESS_RADIUS = 24
+GEOMETRY_PAIR_VECTOR_R1 = 25
+GEOMETRY_PAIR_VECTOR_R2 = 26
+GEOMETRY_PAIR_VECTOR_INV_I1 = 27
+GEOMETRY_PAIR_VECTOR_INV_I2 = 28
+GEOMETRY_PAIR_VECTOR_W2 = 29
+
+NORMAL_BLOCK, NORMAL_BLOCK_END = 19, 23
+END_BLOCK, END_BLOCK_END = 23, 23
+TANGENTIAL_BLOCK, TANGENTIAL_BLOCK_END = 23, 24
+INTEGRATOR_BLOCK, INTEGRATOR_BLOCK_END = 24, 24
+COULOMB_BLOCK, COULOMB_BLOCK_END = 24, 24
+GEOMETRY_BLOCK, GEOMETRY_BLOCK_END = 24, 30
+TOUCH_BLOCK, TOUCH_BLOCK_END = 30, 30
+BLOCKS = {'normal': 19, 'end': 23, 'tangential': 23, 'integrator': 24, 'coulomb': 24, 'geometry': 24, 'touch': 30}
+N_PARAMS = 30
+
+I_NORMAL = 0
+I_END = 1
+I_TANGENTIAL = 2
+I_INTEGRATOR = 3
+I_COULOMB = 4
+I_GEOMETRY = 5
+I_TOUCH = 6
+I_STEPPER = 7    # the row's stepper (submodels/stepping.py STEPPERS)
+N_INTS = 8
