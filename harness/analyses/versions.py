@@ -3,13 +3,15 @@ release to the next, by how much and at which impact, and the ingredient of thei
 switched alone (the pair attribution of the two dialects)."""
 import pandas as pd
 
+from ..releases import in_release_order
+
 MOVED = 1e-6        # a metric that changes less between two builds did not move (round-off between builds ~1e-13)
 
 
 def releases(engines):
-    """{engine: [its builds, in the order they ran]} for every engine with two or more builds among `engines`."""
+    """{engine: [its builds, in release order]} for every engine with two or more builds among `engines`."""
     out = {}
-    for name in engines:
+    for name in in_release_order(engines):
         code, at, _ = name.partition("@")
         if at:
             out.setdefault(code, []).append(name)
@@ -28,26 +30,47 @@ def strongest(attribution, metric):
     return f"{row.ingredient} ({row.dialect} -> {row.target}: {row[column]:+.4g})"
 
 
+IDENTICAL = "none: the dialects are identical, the binaries differ"
+
+
+def differing(attribution, a, b):
+    """(the ingredients the dialects of builds a and b differ in, 'key: a's -> b's; ...', IDENTICAL when none does,
+    'unknown: ...' when no attribution between them was measured; the attribution of a's dialect switched towards
+    b's, or None): from the attribution measured either way."""
+    forward, backward = attribution.get(f"{a} dialect -> {b} dialect"), attribution.get(f"{b} dialect -> {a} dialect")
+    if forward is not None:
+        pairs = [(r.ingredient, r.dialect, r.target) for r in forward.itertuples()]
+    elif backward is not None:
+        pairs = [(r.ingredient, r.target, r.dialect) for r in backward.itertuples()]
+    else:
+        return f"unknown: no attribution between {a}'s and {b}'s dialects was measured", None
+    text = "; ".join(f"{ingredient}: {ours} -> {theirs}" for ingredient, ours, theirs in pairs)
+    return text or IDENTICAL, forward
+
+
 def version_changes(cross, attribution, engines):
-    """One row per metric that moved between consecutive builds of an engine (or one row saying none did): the
-    two versions, the largest signed change and where, the ingredients their dialects differ in, and the one that
-    alone moves the metric most."""
+    """One row per metric that moved between consecutive builds of an engine, in release order (or one row saying
+    none did): the two versions, the largest signed change and where, the ingredients their dialects differ in, and
+    the one that alone moves the metric most; `flagged` where a metric moved between identical dialects (only the
+    binaries differ, which no ingredient of harness explains)."""
     rows = []
     for code, names in releases(engines).items():
         for a, b in zip(names, names[1:]):
             table = cross.get((a, b), pd.DataFrame())
-            attributed = attribution.get(f"{a} dialect -> {b} dialect")
-            differ = ("; ".join(f"{r.ingredient}: {r.dialect} -> {r.target}" for r in attributed.itertuples())
-                      if attributed is not None and not attributed.empty else "none")
+            differ, attributed = differing(attribution, a, b)
             pair = {"engine": code, "from_version": a.partition("@")[2], "to_version": b.partition("@")[2]}
             moved = table[table.max_abs_diff > MOVED] if not table.empty else table
             if moved.empty:
                 rows.append({**pair, "metric": "", "change": 0.0, "e_n_target": None, "theta_deg": None,
-                             "ingredients_differing": differ, "attributed_to": f"no metric moved by more than {MOVED:g}"})
+                             "ingredients_differing": differ,
+                             "attributed_to": f"no metric moved by more than {MOVED:g}", "flagged": False})
                 continue
             for metric, group in moved.groupby("metric", sort=False):
                 worst = group.loc[group.max_abs_diff.idxmax()]
+                cause = ("the binaries: the dialects are identical" if differ == IDENTICAL else
+                         strongest(attributed, metric) if attributed is not None else
+                         f"not attributed: no attribution from {a}'s dialect towards {b}'s was measured")
                 rows.append({**pair, "metric": metric, "change": float(worst.signed),
                              "e_n_target": float(worst.e_n_target), "theta_deg": float(worst.theta_deg),
-                             "ingredients_differing": differ, "attributed_to": strongest(attributed, metric)})
+                             "ingredients_differing": differ, "attributed_to": cause, "flagged": differ == IDENTICAL})
     return pd.DataFrame(rows)

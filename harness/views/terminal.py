@@ -72,8 +72,8 @@ def print_summary(record, comparison, written):
 
 
 def print_versions(versions):
-    """Between consecutive builds of an engine, one line each: the metrics that moved, the largest change of each,
-    and the ingredients that alone move them most."""
+    """Between consecutive builds of an engine (in release order), one line each: the metrics that moved, the largest
+    change of each, and the ingredients that alone move them most; FLAGGED where the dialects are identical."""
     if versions.empty:
         return
     print("between versions (engine runs, same scene and dt):")
@@ -83,6 +83,10 @@ def print_versions(versions):
             continue
         moved = ", ".join(f"{r.metric} {r.change:+.3g} (e_n {r.e_n_target:g}, {r.theta_deg:g} deg)"
                           for r in rows.itertuples())
+        if rows.flagged.iloc[0]:
+            print(wrapped(f"  {engine} {a} -> {b}: {moved}; FLAGGED: the dialects are identical, the binaries differ "
+                          "(no ingredient of harness explains it)", indent=6))
+            continue
         causes = sorted({r.attributed_to.split(" (")[0] for r in rows.itertuples() if r.attributed_to})
         print(wrapped(f"  {engine} {a} -> {b}: {moved}; ingredients that differ: {rows.ingredients_differing.iloc[0]};"
                       f" moving them most: {', '.join(causes) or 'no single ingredient'}", indent=6))
