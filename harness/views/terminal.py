@@ -314,7 +314,8 @@ def print_calibration(calibration):
     print(f"calibrate {c.law.name} for {c.engine} {c.version}: e_n {', '.join(f'{e:g}' for e in scene.e_n)} x "
           f"{len(c.frame[c.frame.dialect == 'paper']) // max(len(scene.e_n), 1)} impacts, {c.steps} steps per contact")
     print(wrapped(f"options: {c.chosen.label} (nearest the paper law of {len(c.alternatives)} choices)"
-                  + "".join(f"; not in this build: {name}" for name, _ in c.refused if "exists from" in _)))
+                  + "".join(f"; not in this build: {name}" for name, _ in c.refused
+                          if "releases harness checked" in _)))
     for row in c.inputs.itertuples():
         if row.input_e != row.input_e:          # NaN: no input reaches it
             print(wrapped(f"  e_n {row.e_n_target:g}: no input reaches it ({row.note})", indent=4))
