@@ -69,7 +69,7 @@ class Comparison:
     @cached_property
     def versions(self):
         """What moved between consecutive builds of one engine, and which ingredient moves it (analyses.versions)."""
-        return version_changes(self.cross, self.attribution, self.engines)
+        return version_changes(self.results, self.cross, self.attribution, self.engines)
 
     @cached_property
     def findings(self):

@@ -77,8 +77,8 @@ def test_deck_holds_only_the_expected_commands_and_numbers():
     commands = {line.split()[0] for line in text.splitlines() if line and not line.startswith("#")}
     assert commands <= {"units", "atom_style", "atom_modify", "boundary", "newton", "comm_modify", "region",
                         "create_box", "neighbor", "neigh_modify", "pair_style", "pair_coeff", "timestep", "fix",
-                        "create_atoms", "set", "thermo_style", "thermo", "thermo_modify", "variable", "label", "run",
-                        "if", "next", "jump", "print", "write_dump"}
+                        "create_atoms", "set", "compute", "thermo_style", "thermo", "thermo_modify", "variable", "label",
+                        "run", "if", "next", "jump", "print", "write_dump"}
     assert f"hertz/material {scene.E!r} 0.5 {scene.nu!r} damping tsuji tangential mindlin NULL" in text
 
 

@@ -27,6 +27,9 @@ def test_builds_sort_by_their_release_numbers_not_by_spelling_or_place():
                                        "lammps@2025.7.22.4", "yade@2023.02a", "yade@unknown"]
 
 
+NO_ROWS = pd.DataFrame(columns=["engine", "dialect", "e_n_target", "theta_deg", "status"])
+
+
 def moved_table(metric, change):
     return pd.DataFrame([{"metric": metric, "max_abs_diff": abs(change), "signed": change, "e_n_target": 0.5,
                           "theta_deg": 30.0}])
@@ -36,8 +39,8 @@ def test_a_metric_moved_between_identical_dialects_is_flagged_not_called_explain
     """Two builds whose dialects do not differ (their attribution was measured and found no ingredient) cannot move a
     metric through harness' ingredients: the row says the binaries differ and is flagged."""
     a, b = "lammps@2023.8.2.3", "lammps@2024.8.29.3"
-    rows = version_changes({(a, b): moved_table("e_t", 0.39)}, {f"{a} dialect -> {b} dialect": pd.DataFrame()},
-                           [b, a])
+    rows = version_changes(NO_ROWS, {(a, b): moved_table("e_t", 0.39)},
+                           {f"{a} dialect -> {b} dialect": pd.DataFrame()}, [b, a])
     assert rows.to_dict("records") == [
         {"engine": "lammps", "from_version": "2023.8.2.3", "to_version": "2024.8.29.3", "metric": "e_t",
          "change": 0.39, "e_n_target": 0.5, "theta_deg": 30.0, "ingredients_differing": IDENTICAL,
@@ -46,7 +49,7 @@ def test_a_metric_moved_between_identical_dialects_is_flagged_not_called_explain
 
 def test_a_metric_moved_without_a_measured_attribution_says_so():
     a, b = "lammps@2022.6.23.4", "lammps@2023.8.2.3"
-    row = version_changes({(a, b): moved_table("e_t", 0.09)}, {}, [a, b]).iloc[0]
+    row = version_changes(NO_ROWS, {(a, b): moved_table("e_t", 0.09)}, {}, [a, b]).iloc[0]
     assert row.ingredients_differing == f"unknown: no attribution between {a}'s and {b}'s dialects was measured"
     assert not row.flagged
 
@@ -54,7 +57,7 @@ def test_a_metric_moved_without_a_measured_attribution_says_so():
 def test_an_attribution_measured_the_other_way_still_names_the_ingredients_oldest_first():
     a, b = "lammps@2022.6.23.4", "lammps@2023.8.2.3"
     backward = pd.DataFrame([{"ingredient": "touch", "dialect": "overlap", "target": "gap", "d_e_t": -0.05}])
-    row = version_changes({(a, b): moved_table("e_t", 0.09)}, {f"{b} dialect -> {a} dialect": backward},
+    row = version_changes(NO_ROWS, {(a, b): moved_table("e_t", 0.09)}, {f"{b} dialect -> {a} dialect": backward},
                           [a, b]).iloc[0]
     assert row.ingredients_differing == "touch: gap -> overlap"
     assert row.attributed_to == f"not attributed: no attribution from {a}'s dialect towards {b}'s was measured"
@@ -137,3 +140,18 @@ def test_builds_finishing_in_a_scrambled_order_show_in_release_order_in_every_vi
     assert at == sorted(at)
     agree = [lines.index(f"{n} agrees") for n in names]
     assert agree == sorted(agree)
+
+
+def test_a_release_whose_impacts_become_nan_says_so_beside_the_ingredients():
+    """A status that changes between two releases (ok in one, non-finite in the next) is a change no metric's
+    difference shows: it has its own row, with the ingredients the two dialects differ in."""
+    a, b = "lammps@2022.6.23.4", "lammps@2023.8.2.3"
+    results = pd.DataFrame([{"engine": name, "dialect": name, "e_n_target": e, "theta_deg": theta,
+                             "status": "non-finite" if (name == b and e == 1.0) else "ok"}
+                            for name in (a, b) for e in (1.0, 0.5) for theta in (0.0, 40.0)])
+    attributed = pd.DataFrame([{"ingredient": "tangential", "dialect": "linear", "target": "contact-radius-spring"}])
+    rows = version_changes(results, {(a, b): pd.DataFrame()}, {f"{a} dialect -> {b} dialect": attributed}, [a, b])
+    (row,) = rows.to_dict("records")
+    assert (row["metric"], row["e_n_target"], row["theta_deg"]) == ("status", 1.0, 0.0)
+    assert row["attributed_to"] == "2 impacts ok in 2022.6.23.4, non-finite in 2023.8.2.3"
+    assert row["ingredients_differing"] == "tangential: linear -> contact-radius-spring" and not row["flagged"]

@@ -48,21 +48,34 @@ def differing(attribution, a, b):
     return text or IDENTICAL, forward
 
 
-def version_changes(cross, attribution, engines):
-    """One row per metric that moved between consecutive builds of an engine, in release order (or one row saying
-    none did): the two versions, the largest signed change and where, the ingredients their dialects differ in, and
-    the one that alone moves the metric most; `flagged` where a metric moved between identical dialects (only the
-    binaries differ, which no ingredient of harness explains)."""
+def status_changes(results, a, b):
+    """(status in a, status in b, impacts, first impact) of each change of status between the engine rows of builds
+    a and b at the same impacts (e.g. ok -> non-finite), which no metric's difference shows."""
+    keys = ["e_n_target", "theta_deg"]
+    rows = [results[(results.engine == name) & (results.dialect == name)][keys + ["status"]] for name in (a, b)]
+    pairs = rows[0].merge(rows[1], on=keys, suffixes=("_a", "_b"))
+    changed = pairs[pairs.status_a != pairs.status_b]
+    return [(sa, sb, len(group), group.iloc[0]) for (sa, sb), group in changed.groupby(["status_a", "status_b"],
+                                                                                          sort=False)]
+
+
+def version_changes(results, cross, attribution, engines):
+    """One row per metric that moved between consecutive builds of an engine, in release order, and per change of
+    status (metric 'status', e.g. 3 impacts ok in one and non-finite in the next), or one row saying nothing did: the
+    two versions, the largest signed change and where, the ingredients their dialects differ in, and the one that
+    alone moves the metric most; `flagged` where something changed between identical dialects (only the binaries
+    differ, which no ingredient of harness explains)."""
     rows = []
     for code, names in releases(engines).items():
         for a, b in zip(names, names[1:]):
             table = cross.get((a, b), pd.DataFrame())
             differ, attributed = differing(attribution, a, b)
-            pair = {"engine": code, "from_version": a.partition("@")[2], "to_version": b.partition("@")[2]}
-            moved = table[table.max_abs_diff > MOVED] if not table.empty else table
-            if moved.empty:
+            pair = {"engine": code, "from_version": a.partition("@")[2], "to_version": b.partition("@")[2],
+                    "ingredients_differing": differ, "flagged": differ == IDENTICAL}
+            moved = table[table.max_abs_diff > MOVED] if not table.empty else pd.DataFrame(columns=["metric"])
+            statuses = status_changes(results, a, b)
+            if moved.empty and not statuses:
                 rows.append({**pair, "metric": "", "change": 0.0, "e_n_target": None, "theta_deg": None,
-                             "ingredients_differing": differ,
                              "attributed_to": f"no metric moved by more than {MOVED:g}", "flagged": False})
                 continue
             for metric, group in moved.groupby("metric", sort=False):
@@ -72,5 +85,12 @@ def version_changes(cross, attribution, engines):
                          f"not attributed: no attribution from {a}'s dialect towards {b}'s was measured")
                 rows.append({**pair, "metric": metric, "change": float(worst.signed),
                              "e_n_target": float(worst.e_n_target), "theta_deg": float(worst.theta_deg),
-                             "ingredients_differing": differ, "attributed_to": cause, "flagged": differ == IDENTICAL})
-    return pd.DataFrame(rows)
+                             "attributed_to": cause})
+            for before, after, count, first in statuses:
+                rows.append({**pair, "metric": "status", "change": float("nan"),
+                             "e_n_target": float(first.e_n_target), "theta_deg": float(first.theta_deg),
+                             "attributed_to": f"{count} impacts {before} in {a.partition('@')[2]}, {after} in "
+                                              f"{b.partition('@')[2]}"})
+    columns = ["engine", "from_version", "to_version", "metric", "change", "e_n_target", "theta_deg",
+               "ingredients_differing", "attributed_to", "flagged"]
+    return pd.DataFrame(rows, columns=columns)

@@ -81,13 +81,16 @@ def print_versions(versions):
         if not rows.metric.iloc[0]:
             print(f"  {engine} {a} -> {b}: {rows.attributed_to.iloc[0]}")
             continue
-        moved = ", ".join(f"{r.metric} {r.change:+.3g} (e_n {r.e_n_target:g}, {r.theta_deg:g} deg)"
+        moved = ", ".join(f"status: {r.attributed_to} (first at e_n {r.e_n_target:g}, {r.theta_deg:g} deg)"
+                          if r.metric == "status" else
+                          f"{r.metric} {r.change:+.3g} (e_n {r.e_n_target:g}, {r.theta_deg:g} deg)"
                           for r in rows.itertuples())
         if rows.flagged.iloc[0]:
             print(wrapped(f"  {engine} {a} -> {b}: {moved}; FLAGGED: the dialects are identical, the binaries differ "
                           "(no ingredient of harness explains it)", indent=6))
             continue
-        causes = sorted({r.attributed_to.split(" (")[0] for r in rows.itertuples() if r.attributed_to})
+        causes = sorted({r.attributed_to.split(" (")[0] for r in rows.itertuples()
+                         if r.attributed_to and r.metric != "status"})
         print(wrapped(f"  {engine} {a} -> {b}: {moved}; ingredients that differ: {rows.ingredients_differing.iloc[0]};"
                       f" moving them most: {', '.join(causes) or 'no single ingredient'}", indent=6))
 

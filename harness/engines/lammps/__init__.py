@@ -26,6 +26,10 @@ class Lammps(Engine):
         ("linear-spring-dashpot", "e_n off target"):
             f"the paper's dashpot is calibrated for a force clipped at 0; LAMMPS ({checked()}) does not clip "
             "(docs/lammps-dialect.md)",
+        **{(law, "non-finite"): f"LAMMPS' {style} wall ({releases_of('classic-spring', 'contact-radius')}) takes "
+           "x_gamma_t = gamma_t/gamma_n, 0/0 without normal damping (granular_model.cpp, define_classic_model): "
+           "its force is NaN from the first contact step (docs/lammps-dialect.md)"
+           for law, style in HISTORY_STYLES.items()},
     }
     COLOUR, DASHES = "tab:purple", "-."
     read_batch = staticmethod(read_batch)
