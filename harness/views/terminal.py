@@ -89,10 +89,11 @@ def print_versions(versions):
             print(wrapped(f"  {engine} {a} -> {b}: {moved}; FLAGGED: the dialects are identical, the binaries differ "
                           "(no ingredient of harness explains it)", indent=6))
             continue
-        causes = sorted({r.attributed_to.split(" (")[0] for r in rows.itertuples()
-                         if r.attributed_to and r.metric != "status"})
-        print(wrapped(f"  {engine} {a} -> {b}: {moved}; ingredients that differ: {rows.ingredients_differing.iloc[0]};"
-                      f" moving them most: {', '.join(causes) or 'no single ingredient'}", indent=6))
+        metrics = rows[rows.metric != "status"]
+        causes = sorted({cause.split(" (")[0] for cause in metrics.attributed_to if cause})
+        most = f"; moving them most: {', '.join(causes) or 'no single ingredient'}" if len(metrics) else ""
+        print(wrapped(f"  {engine} {a} -> {b}: {moved}; ingredients that differ: {rows.ingredients_differing.iloc[0]}"
+                      + most, indent=6))
 
 
 def physics_phrase(physics):
