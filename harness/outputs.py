@@ -46,7 +46,8 @@ def _write_run(out_dir, comparison, partial):
          "skipped": comparison.skipped, "engine_options": comparison.engine_options,
          "arithmetic": comparison.arithmetic, "builds": comparison.builds,
          "requested": comparison.requested, "command": comparison.command, "date": comparison.date,
-         "tolerances": comparison.tolerances.as_dict(), "partial": partial}, indent=1))
+         "tolerances": comparison.tolerances.as_dict(), "partial": partial,
+         "attributions": list(comparison.attribution)}, indent=1))
 
 
 def save_comparison(out_dir, comparison):
@@ -138,6 +139,8 @@ def load_comparison(out_dir):
     attributions = {name: table.drop(columns="comparison").dropna(axis=1, how="all")
                     for name, table in attribution_table.groupby("comparison", sort=False)} \
         if not attribution_table.empty else {}
+    for name in run.get("attributions") or ():      # measured, and no ingredient differs: no row in the table
+        attributions.setdefault(name, pd.DataFrame(columns=["ingredient", "dialect", "target"]))
     history_table = _read(out_dir, HISTORIES)
     histories = {e: group[["t", "overlap", "f_n", "f_t"]].to_numpy()[None, :, :]
                  for e, group in history_table.groupby("e_n_target", sort=False)} if not history_table.empty else None

@@ -57,7 +57,8 @@ def findings(frame, gravity=0.0, cause=no_cause):
     failed = frame[frame.status != "ok"]
     for (engine, dialect, status), group in failed.groupby(["engine", "dialect", "status"], sort=False):
         out.append({"engine": engine, "dialect": dialect, "kind": status,
-                    "detail": f"{len(group)} impacts: {group.message.iloc[0]}"})
+                    "detail": f"{len(group)} impacts: {group.message.iloc[0]}"
+                              + _because(group.iloc[0], status, cause)})
     return pd.DataFrame(out, columns=["engine", "dialect", "kind", "detail"])
 
 

@@ -55,6 +55,11 @@ class Law:
                                                                                      f"R - {self.lever:g} d"),
                 "slip": self.slip, "torque": self.torque, "touch": self.touch}
 
+    def undefined(self, contact, e_n, speed):
+        """Why this composition's contact force is not a number at target e_n (a sub-model's 0/0), '' when it is one:
+        every impact then ends not finite."""
+        return self.tangential.undefined(self.damping.dashpot(self.normal, contact, e_n, speed, self.end))
+
     @property
     def provisional(self):
         return self.normal.name in ("stronge", "partially-latching-spring")

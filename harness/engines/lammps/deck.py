@@ -127,7 +127,7 @@ def read_batch(scene, spec, directory, observe=False):
 def read_outputs(directory, spec, radius, observe):
     """Rebound velocities and separation from the final dump in `directory`; with `observe` also t_contact, f_n_max
     and overlap_max from the observe dump."""
-    final = rebound(read_final(os.path.join(directory, "final.dump"), spec.impacts, "LAMMPS"), radius, "LAMMPS")
+    final = rebound(read_final(os.path.join(directory, "final.dump"), spec.impacts, "LAMMPS"), radius)
     if observe:
         final.update(read_observed(os.path.join(directory, OBSERVE_DUMP), spec.impacts, radius, spec.dt, "LAMMPS"))
     return final

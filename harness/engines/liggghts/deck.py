@@ -170,16 +170,11 @@ def run_inputs(liggghts, count, timeout_s, workdir):
                           env={**os.environ, "OMP_NUM_THREADS": "1"})
 
 
-def final_state(state, radius, log_tail=""):
-    """Rebound velocities and separation from the final dump's (z, vx, vz, omegay) (see dumps.rebound)."""
-    return rebound(state, radius, "LIGGGHTS", log_tail)
-
-
 def read_batch(scene, spec, directory, observe=False):
     """The final state of one run's spec (harness.plan.RunSpec) run in `directory` (and what observe mode saw)."""
     if scene.spheres:
         return read_pair_batch(directory, scene, spec, observe, "LIGGGHTS", OBSERVE_DUMP)
-    final = final_state(read_dump(os.path.join(directory, "final.dump"), spec.impacts), scene.radius)
+    final = rebound(read_dump(os.path.join(directory, "final.dump"), spec.impacts), scene.radius)
     if observe:
         final.update(read_observation(os.path.join(directory, OBSERVE_DUMP), spec.impacts, scene.radius, spec.dt))
     return final

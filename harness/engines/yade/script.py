@@ -153,7 +153,7 @@ def read_batch(scene, spec, directory, observe=False):
     n = spec.impacts
     if scene.spheres:
         rows = read_result(os.path.join(directory, "result.txt"), n, columns=PAIR_COLUMNS)
-        final = pair_rebound(rows.reshape(2 * n, 5), scene, "YADE")
+        final = pair_rebound(rows.reshape(2 * n, 5), scene)
     else:
         final = final_of(read_result(os.path.join(directory, "result.txt"), n))
     if observe:
