@@ -14,6 +14,7 @@ class Stepping:
     code: int
     summary: str
     pair: bool = False          # geometry: two spheres in their relative motion (the pair steppers' parameters)
+    brief: str = ""             # what it does in a few words, where its name does not say it
 
 
 INTEGRATOR_PAPER, INTEGRATOR_VELOCITY_VERLET, INTEGRATOR_LEAPFROG = 0, 1, 2
@@ -33,14 +34,17 @@ COULOMB_RULES = (
     Stepping("coulomb", "spring-first", COULOMB_SPRING_FIRST,
              "the spring tested alone: beyond mu |F_n| it is capped and is the whole force; below it the tangential "
              "dashpot is added and the sum clipped to mu |F_n| (the paper's; its scheme's dashpot option 'total' "
-             "holds the spring within the cone first)"),
+             "holds the spring within the cone first)", brief="spring first, then spring + dashpot clipped"),
     Stepping("coulomb", "spring", COULOMB_SPRING,
-             "the spring capped at mu |F_n|; the tangential dashpot added only below the cap, the sum not clipped"),
+             "the spring capped at mu |F_n|; the tangential dashpot added only below the cap, the sum not clipped",
+             brief="tangential dashpot unclipped"),
     Stepping("coulomb", "total", COULOMB_TOTAL,
-             "spring plus dashpot capped together at mu |F_n|; a capped total leaves the spring F_t + c_t V_s"),
+             "spring plus dashpot capped together at mu |F_n|; a capped total leaves the spring F_t + c_t V_s",
+             brief="spring + dashpot clipped together"),
     Stepping("coulomb", "total-cases", COULOMB_TOTAL_CASES,
              "spring plus dashpot capped together at mu |F_n|; a spring beyond mu |F_n| on the total's side is cut to "
-             "it (the dashpot dropped), else the dashpot alone is shortened and the spring kept"),
+             "it (the dashpot dropped), else the dashpot alone is shortened and the spring kept",
+             brief="spring + dashpot clipped by four cases"),
 )
 GEOMETRIES = (
     Stepping("geometry", "wall", GEOMETRY_WALL, "a sphere against a flat wall: the normal fixed, scalar shear"),
