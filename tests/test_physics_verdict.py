@@ -161,7 +161,7 @@ def test_each_cause_is_named_with_the_share_of_the_miss_it_closes():
     assert failed["ingredient"] == ("Coulomb rule (tangential dashpot unclipped) 65%, end of contact (tension) 60%, "
                                     "Coulomb rule with normal damping 97%")
     assert failed["cause"] == (
-        "switched to the paper's, each closes this share of the miss over the 1 failing impacts: Coulomb rule (spring: "
+        "switched to the paper's, each closes this share of the miss over the 1 failing impact: Coulomb rule (spring: "
         "tangential dashpot unclipped -> spring-first) 65%, end of contact (tension -> no-tension) 60%, Coulomb rule "
         "with normal damping (a -> b) 97%")
 
@@ -186,7 +186,7 @@ def test_without_a_cause_of_a_tenth_the_verdict_says_so():
     (failed,) = [c for c in physics(frame, attribution=TABLE, rows=switched_rows(scene, left))["checks"]
                  if not c["passed"]]
     assert failed["causes"] == [] and failed["ingredient"] == ""
-    assert failed["cause"] == "no ingredient alone or in a pair closes 10% of the miss over the 1 failing impacts"
+    assert failed["cause"] == "no ingredient alone or in a pair closes 10% of the miss over the 1 failing impact"
 
 
 def test_the_damping_calibration_and_the_end_rule_are_also_one_cause_together():

@@ -179,7 +179,7 @@ def explained(check, pairs, frame, attribution, rows, tolerances, gravity):
     check["causes"] = found
     if attribution is None or rows is None:
         return
-    over = f"over the {check['failing']} failing impacts"
+    over = f"over the {check['failing']} failing impact{'' if check['failing'] == 1 else 's'}"
     if not found:
         check["ingredient"] = ""
         check["cause"] = f"no ingredient alone or in a pair closes {MENTION:.0%} of the miss {over}"
