@@ -201,6 +201,22 @@ def test_the_damping_calibration_and_the_end_rule_are_also_one_cause_together():
     assert failed["cause"].endswith("; none explains 90% of it, alone or the strongest with another")
 
 
+def test_a_report_rebuilt_from_the_files_names_the_same_causes(tmp_path):
+    """compare saves the attribution's rows of every impact (attribution-rows.csv): the comparison read back from the
+    directory (what `harness report DIR` shows) has the same grades, causes and shares."""
+    from harness.outputs import load_comparison, save_comparison
+    from harness.results import write_csv
+    scene, frame = made_up(faster_slide, at=10.0)
+    left = {"damping": 0.7, "end": 0.4, "lever": 0.95, "integrator+coulomb": 0.35, "coulomb": 0.35,
+            "damping+coulomb": 0.03}
+    made = Comparison(compose("hertz-mindlin"), scene, frame, attribution={"fake dialect -> paper": TABLE},
+                      attribution_rows={"fake": switched_rows(scene, left)})
+    write_csv(frame, str(tmp_path / "results.csv"))
+    save_comparison(str(tmp_path), made)
+    read = load_comparison(str(tmp_path))
+    assert read.physics == made.physics and read.physics["fake"]["checks"][0]["causes"]
+
+
 @pytest.mark.parametrize("times, failing, impacts, expected", [
     (10.0, 10, 100, "marginal"), (10.01, 1, 100, "deviates"), (2.0, 11, 100, "deviates"), (7.6, 4, 180, "marginal"),
     (14.2, 162, 180, "deviates")])
