@@ -77,7 +77,8 @@ def saved(tmp_path_factory):
 
 
 NUMBER_COLUMNS = ("e_n_target", "t", "e_n", "err_max", "d_e_n")
-HEADERS = {"precision.csv": "engine,against,e_n_target,dt", "attribution.csv": "ingredient,dialect,target,d_e_n,comparison",
+HEADERS = {"precision.csv": "engine,against,e_n_target,dt",
+           "attribution.csv": "ingredient,dialect,target,d_e_n,comparison",
            "attribution-rows.csv": "engine,switched,model,e_n_target,theta_deg,v_n0,v_t0,omega0,mu,radius,E,nu,rho,"
                                    "v_n1,v_t1,omega1,e_n,ke_ratio,t_contact,status"}
 

@@ -157,9 +157,9 @@ def combinations_tried(table, laws, paper, tolerances, gravity, run):
     def share(check):
         out = {}
         for name in list(laws) + list(tried):
-            found = measured(name) if name != BASE else None
-            if found is not None:
-                out[name] = closed_share(base[check][0][failing[check]], found[check][0][failing[check]])
+            misses_of = measured(name) if name != BASE else None
+            if misses_of is not None:
+                out[name] = closed_share(base[check][0][failing[check]], misses_of[check][0][failing[check]])
         return out
     for check in failing:
         if explained_alone(units(table, share(check))):
@@ -167,9 +167,9 @@ def combinations_tried(table, laws, paper, tolerances, gravity, run):
         for keys in COUPLED:
             if all(k in set(table.ingredient) for k in keys) and switched_name(keys) not in tried:
                 tried[switched_name(keys)] = run(list(keys))
-        found = units(table, share(check))
-        best = strongest(found)
-        for other in found if best is not None else ():
+        candidates = units(table, share(check))
+        best = strongest(candidates)
+        for other in candidates if best is not None else ():
             name = switched_name(combined(best, other))
             if name not in laws and name not in tried:
                 tried[name] = run(sorted(combined(best, other)))

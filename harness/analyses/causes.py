@@ -16,8 +16,8 @@ COUPLED = (("damping", "end"),)     # tried together too: a damping calibration 
 BASE = "dialect"         # the attribution rows of the dialect itself, nothing switched
 WORDS = {"normal": "normal spring", "damping": "normal damping", "end": "end of contact",
          "tangential": "tangential spring", "tangential-damping": "tangential dashpot", "integrator": "integrator",
-         "coulomb": "Coulomb rule", "geometry": "geometry", "lever": "lever arm", "slip": "slip", "torque": "torque lever",
-         "touch": "touch rule"}      # each ingredient in words
+         "coulomb": "Coulomb rule", "geometry": "geometry", "lever": "lever arm", "slip": "slip",
+         "torque": "torque lever", "touch": "touch rule"}      # each ingredient in words
 GLOSS = {("coulomb", rule.name): rule.brief for rule in COULOMB_RULES if rule.brief}
 
 
@@ -36,7 +36,7 @@ def units(table, share):
     """[{ingredients, with, switched, share}]: each attribution row measured, its share its own (a row switched with
     others it needs is credited with what it closes beyond them, where they were measured without it), and each
     COUPLED set measured."""
-    found = []
+    candidates = []
     for row in table.itertuples():
         name = row.switched
         if name not in share:
@@ -44,26 +44,26 @@ def units(table, share):
         carried = [k for k in name.split("+") if k != row.ingredient]
         rest = "+".join(carried)
         beyond = bool(carried) and rest in share
-        found.append({"ingredients": [row.ingredient], "with": carried, "switched": name, "beyond": beyond,
+        candidates.append({"ingredients": [row.ingredient], "with": carried, "switched": name, "beyond": beyond,
                       "share": share[name] - share[rest] if beyond else share[name],
                       "labels": {row.ingredient: (row.dialect, row.target)}})
-    labels = {k: v for u in found for k, v in u["labels"].items()}
+    labels = {k: v for u in candidates for k, v in u["labels"].items()}
     for keys in COUPLED:
         name = "+".join(keys)
         if name in share and all(k in labels for k in keys):
-            found.append({"ingredients": list(keys), "with": [], "switched": name, "beyond": False,
+            candidates.append({"ingredients": list(keys), "with": [], "switched": name, "beyond": False,
                           "share": share[name], "labels": {k: labels[k] for k in keys}})
-    return found
+    return candidates
 
 
-def strongest(found):
+def strongest(candidates):
     """The unit that closes most of the miss, or None where none closes any."""
-    closing = [u for u in found if np.isfinite(u["share"]) and u["share"] > 0.0]
+    closing = [u for u in candidates if np.isfinite(u["share"]) and u["share"] > 0.0]
     return max(closing, key=lambda u: u["share"]) if closing else None
 
 
-def explained_alone(found):
-    return any(np.isfinite(u["share"]) and u["share"] >= EXPLAINS for u in found)
+def explained_alone(candidates):
+    return any(np.isfinite(u["share"]) and u["share"] >= EXPLAINS for u in candidates)
 
 
 def combined(best, other):
@@ -86,15 +86,16 @@ def check_causes(check, failing, table, rows, paper, tolerances, gravity=0.0):
         return []
     base = miss.pop(BASE)
     share = {name: closed_share(base, values) for name, values in miss.items()}
-    found = units(table, share)
-    named = [cause(u) for u in sorted((u for u in found if np.isfinite(u["share"]) and u["share"] >= MENTION),
+    candidates = units(table, share)
+    named = [cause(u) for u in sorted((u for u in candidates if np.isfinite(u["share"]) and u["share"] >= MENTION),
                                       key=lambda u: -u["share"])[:NAMED]]
-    best = strongest(found)
-    if best is None or explained_alone(found):
+    best = strongest(candidates)
+    if best is None or explained_alone(candidates):
         return named
     measured = {frozenset(name.split("+")): name for name in share}
-    together = [(share[measured[keys]], other) for other in found if other is not best
-                for keys in [frozenset(combined(best, other))] if keys in measured and share[measured[keys]] >= EXPLAINS]
+    together = [(share[measured[keys]], other) for other in candidates if other is not best
+                for keys in [frozenset(combined(best, other))]
+                if keys in measured and share[measured[keys]] >= EXPLAINS]
     if together:
         s, other = max(together, key=lambda pair: (-len(pair[1]["ingredients"]), pair[0]))
         shown = {k for c in named for k in c["ingredients"]}
