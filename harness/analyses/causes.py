@@ -45,14 +45,14 @@ def units(table, share):
         rest = "+".join(carried)
         beyond = bool(carried) and rest in share
         candidates.append({"ingredients": [row.ingredient], "with": carried, "switched": name, "beyond": beyond,
-                      "share": share[name] - share[rest] if beyond else share[name],
-                      "labels": {row.ingredient: (row.dialect, row.target)}})
+                           "share": share[name] - share[rest] if beyond else share[name],
+                           "labels": {row.ingredient: (row.dialect, row.target)}})
     labels = {k: v for u in candidates for k, v in u["labels"].items()}
     for keys in COUPLED:
         name = "+".join(keys)
         if name in share and all(k in labels for k in keys):
             candidates.append({"ingredients": list(keys), "with": [], "switched": name, "beyond": False,
-                          "share": share[name], "labels": {k: labels[k] for k in keys}})
+                               "share": share[name], "labels": {k: labels[k] for k in keys}})
     return candidates
 
 
@@ -63,6 +63,7 @@ def strongest(candidates):
 
 
 def explained_alone(candidates):
+    """Whether one unit alone closes EXPLAINS of the miss."""
     return any(np.isfinite(u["share"]) and u["share"] >= EXPLAINS for u in candidates)
 
 
