@@ -175,11 +175,11 @@ def print_comparison(comparison, written):
     """Every table of the comparison (--verbose), then where its files are."""
     frame, law = comparison.results, comparison.law
     print(f"{law.name}: paper law on the reference engine, {sum(frame.engine == 'reference')} rows")
+    print("\n".join(summary_lines(frame[(frame.engine == "reference") & (frame.dialect == "paper")])))
     if comparison.compared:
-        print("does each engine reproduce the paper law on this scene? (causes: the share of the miss each closes)")
+        print("\ndoes each engine reproduce the paper law on this scene? (causes: the share of the miss each closes)")
         for engine, physics in comparison.physics.items():
             print(wrapped(f"  {engine} {physics_phrase(physics)}", indent=6))
-    print("\n".join(summary_lines(frame[(frame.engine == "reference") & (frame.dialect == "paper")])))
     if comparison.sliding is not None:
         print("\nsliding throughout (paper law: the smallest Psi1* found, and the condition derived for it):")
         print(text_table(comparison.sliding, ["e_n_target", "simulated", "derived", "difference", "formula"],
