@@ -28,6 +28,7 @@ class Comparison:
     skipped: list = field(default_factory=list)          # (engine, reason)
     failures: list = field(default_factory=list)         # FailedRun
     attribution: dict = field(default_factory=dict)      # comparison name -> attribution table
+    attribution_rows: dict = field(default_factory=dict)  # engine -> its attribution's rows of every impact
     sliding: pd.DataFrame | None = None
     precision: dict | None = None
     histories: dict | None = None
@@ -80,12 +81,13 @@ class Comparison:
     def physics(self):
         """{engine: its physics verdict}: does it reproduce the paper law on this scene (harness.analyses.physics)."""
         return {e: engine_physics(self.results, e, self.tolerances, self.attribution.get(f"{e} dialect -> paper"),
-                                  self.scene.gravity) for e in self.engines}
+                                  self.scene.gravity, self.attribution_rows.get(e)) for e in self.engines}
 
     @property
     def reproduces(self):
         """The physics verdict: 'reproduces' when every engine checked reproduces the paper law, 'deviates' when one
-        does not, 'not checked' when none was."""
+        deviates, 'marginal' when the worst misses it narrowly (analyses.physics.grade), 'not checked' when none
+        was."""
         return overall([p["state"] for p in self.physics.values()])
 
     @property

@@ -86,7 +86,8 @@ def test_from_2024_coeff_restitution_reaches_every_target(tmp_path, capfd, monke
 @needs("yade")
 def test_liggghts_calibration_removes_the_coulomb_excess_and_yade_keeps_it(tmp_path, capfd):
     """LIGGGHTS as given exceeds mu J_n (its tangential dashpot uncapped); its own switches (limitForce, tangential
-    damping) bring it within the bound. YADE has no such switch: the excess remains, attributed to its stepping."""
+    damping) bring it within the bound. YADE has no such switch: the excess remains, caused by its Coulomb rule (its
+    tangential dashpot added unclipped)."""
     for engine in ("liggghts", "yade"):
         assert main(["calibrate", "--model", "hertz-mindlin", "--engine", engine, "--en", "0.25,0.75", *SCENE,
                      "-o", str(tmp_path / engine)]) == 0
@@ -97,7 +98,7 @@ def test_liggghts_calibration_removes_the_coulomb_excess_and_yade_keeps_it(tmp_p
     assert stages["liggghts"][("engine, calibrated",) + excess] < 1e-3
     assert stages["yade"][("engine, calibrated",) + excess] > 0.5
     said = capfd.readouterr().out
-    assert "what no input fixes" in said and "integrator (leapfrog -> paper)" in " ".join(said.split())
+    assert "what no input fixes" in said and "Coulomb rule (tangential dashpot unclipped)" in " ".join(said.split())
 
 
 @needs("liggghts")

@@ -6,7 +6,7 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 import pandas as pd
 
-from ..analyses.attribution import attribution
+from ..analyses.attribution import attribute
 from ..analyses.calibration import score, stage_table
 from ..analyses.cost import relative_errors
 from ..analyses.physics import IMPACT, Tolerances, engine_physics
@@ -77,7 +77,8 @@ def calibrate(engine, law, scene, steps=1000, tolerances=None, timestep_toleranc
                            "worst velocity / tolerance": s["score"][3], "chosen": i == best}
                           for i, s in enumerate(scores)])
     frame = pd.concat([paper, given, chosen.rows], ignore_index=True)
-    remaining = attribution(law, chosen.dialect, scene, lambda l, s: simulate(l, s, steps_per_contact=steps)[0])
+    remaining, remaining_rows = attribute(law, chosen.dialect, scene,
+                                          lambda l, s: simulate(l, s, steps_per_contact=steps)[0], tolerances)
     advice = advise(chosen.dialect, scene, chosen.inputs, timestep_tolerance)
     failures, agreement, confirmed, skipped = [], None, None, ""
     status = engine.status(law.name, chosen.options)
@@ -91,8 +92,8 @@ def calibrate(engine, law, scene, steps=1000, tolerances=None, timestep_toleranc
     elif run_engine:
         skipped = status.reason
     stages = [GIVEN, CALIBRATED] + ([RUN] if (frame.engine == RUN).any() else [])
-    physics = {s: engine_physics(frame, s, tolerances, remaining if s != GIVEN else None, scene.gravity)
-               for s in stages}
+    physics = {s: engine_physics(frame, s, tolerances, None if s == GIVEN else remaining, scene.gravity,
+                                 None if s == GIVEN else remaining_rows) for s in stages}
     return Calibration(engine.NAME, law, scene, steps, tolerances, timestep_tolerance, frame, table, chosen,
                        inputs_table(chosen), stage_table(frame, stages, scene.gravity), physics, remaining,
                        agreement, advice, confirmed, variation(chosen.dialect, scene, steps),

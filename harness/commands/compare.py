@@ -6,7 +6,7 @@ import sys
 
 import pandas as pd
 
-from ..analyses.physics import DEVIATES
+from ..analyses.physics import DEVIATES, MARGINAL
 from ..analyses.verdict import DISAGREE, NOT_COMPARED, verdict
 from ..api import compare_request
 from ..campaign.store import RunCache, Store
@@ -80,9 +80,10 @@ def command_line():
 
 
 def exit_code(record, reference_only, require=None):
-    """1 when an engine disagrees (or, with require="paper", deviates from the paper law); 3 when an engine asked
-    for did not run, a run failed, or nothing was compared (unless the reference alone was asked for); else 0."""
-    if record["verdict"] == DISAGREE or (require == "paper" and record["physics"] == DEVIATES):
+    """1 when an engine disagrees (or, with require="paper", misses the paper law: deviates or marginal, the
+    tolerances being the bound); 3 when an engine asked for did not run, a run failed, or nothing was compared
+    (unless the reference alone was asked for); else 0."""
+    if record["verdict"] == DISAGREE or (require == "paper" and record["physics"] in (DEVIATES, MARGINAL)):
         return EXIT_DISAGREE
     if record["unavailable"] or record["failed"] or (record["verdict"] == NOT_COMPARED and not reference_only):
         return EXIT_ENGINE

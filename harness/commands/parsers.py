@@ -59,8 +59,8 @@ def compare_parser(sub, describe):
                                       "incident speed, default 0.01), e_n= (absolute, 0.01), coulomb= (fraction of "
                                       "mu J_n, 0.001), energy= (fraction of the kinetic energy, 1e-6)")
     verdict_options.add_argument("--require", choices=("paper",), default=None,
-                                 help="--require paper: exit 1 also when an engine deviates from the paper law "
-                                      "(by default the exit code is the agreement verdict alone)")
+                                 help="--require paper: exit 1 also when an engine misses the paper law, "
+                                      "marginally or not (by default the exit code is the agreement verdict alone)")
     add_output_options(p, json=True, verbose=True)
     p.set_defaults(func=runs("compare"))
 

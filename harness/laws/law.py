@@ -33,7 +33,8 @@ class Law:
     tangential: object
     tangential_damping: TangentialDashpot = TangentialDashpot("none")
     integrator: str = "paper"            # time stepping: 'paper' (second order), 'velocity-verlet', 'leapfrog'
-    coulomb: str = "spring"              # what the Coulomb cap bounds: the spring ('spring'), or spring + dashpot
+    coulomb: str = "spring-first"        # the Coulomb rule (submodels/stepping.py): the spring tested first, then
+                                         # spring + dashpot ('spring-first'), the spring alone, or their sum
     geometry: str = "wall"               # a wall, a stand-in sphere, or two spheres (submodels/stepping.py)
     lever: float = 0.0                   # lever arm R - lever * alpha for slip and torque (paper 0)
     slip: str = "lever"                  # slip V_t - lever omega, or the noRatch form with the wall's reference

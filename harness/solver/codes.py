@@ -1,6 +1,7 @@
 """The kernel rows' layout: parameter and integer slots, end rules, outputs and statuses (the sub-models' kernel
 codes are the registry's: solver/dispatch.py; the stepping codes submodels/stepping.py's)."""
-from ..submodels.stepping import (COULOMB_SPRING, COULOMB_TOTAL, COULOMB_TOTAL_CASES,  # noqa: F401
+from ..submodels.stepping import (COULOMB_SPRING, COULOMB_SPRING_FIRST, COULOMB_TOTAL,  # noqa: F401
+                                  COULOMB_TOTAL_CASES,
                                   GEOMETRY_PAIR, GEOMETRY_PAIR_VECTOR, GEOMETRY_STAND_IN_SPHERE, GEOMETRY_WALL, INTEGRATOR_LEAPFROG, INTEGRATOR_PAPER,
                                   INTEGRATOR_VELOCITY_VERLET, TOUCH_GAP, TOUCH_OVERLAP)
 

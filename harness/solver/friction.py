@@ -17,8 +17,8 @@ from .state import S_ALPHA, S_FEL, S_FS, S_FT, S_NOLD, S_U, S_VX, S_VZ, S_W
 def friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, in_contact, scheme, coulomb, lever):
     """Tangential force for this step and the spring force kept in history: spring increment from the slip,
     Coulomb cap, tangential dashpot. The paper scheme's dashpot is implicit and capped again; the explicit schemes'
-    is added after the Coulomb test only (Coulomb rule 'spring') or capped with the spring (rule 'total'). History
-    cleared out of contact."""
+    is added after the Coulomb test only (Coulomb rule 'spring'), capped with the spring (rule 'total', 'total-cases')
+    or added to a spring within the cone and capped again (rule 'spring-first'). History cleared out of contact."""
     paper = scheme == C.INTEGRATOR_PAPER
     f_t, f_s = 0.0, 0.0
     if TANGENTIAL_VISCOUS[code] and alpha > 0.0:
@@ -33,6 +33,8 @@ def friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, in_contact, scheme
             f_t, f_s = capped_total(ot, p, code, a, f_s, slip, limit)
         elif (LEAPFROG or LEAPFROG_SCALAR_PAIR) and coulomb == C.COULOMB_TOTAL_CASES:
             f_t, f_s = capped_cases(ot, p, code, a, f_s, slip, limit)
+        elif (VELOCITY_VERLET or VERLET_PAIR or LEAPFROG or LEAPFROG_SCALAR_PAIR) and coulomb == C.COULOMB_SPRING_FIRST:
+            f_t, f_s = capped_spring_first(ot, p, code, a, f_s, slip, limit)
         elif abs(f_s) > limit:
             f_s = cap(f_s, limit)
             tangential_after_cap(code, f_s, p[C.P_T1], a, ot)
@@ -59,6 +61,19 @@ def capped_total(ot, p, code, a, f_s, slip, limit):
     f_s = f_t + c_t * slip
     tangential_after_cap(code, f_s, p[C.P_T1], a, ot)
     return f_t, f_s
+
+
+@njit(cache=True, inline="always")
+def capped_spring_first(ot, p, code, a, f_s, slip, limit):
+    """Coulomb rule 'spring-first' of an explicit scheme: a spring beyond mu |F_n| is capped and is the whole force;
+    a spring within it gets the dashpot, F_s - c_t V_s, and the sum is capped at mu |F_n|. Returns (F_t, F_s)."""
+    if abs(f_s) > limit:
+        f_s = cap(f_s, limit)
+        tangential_after_cap(code, f_s, p[C.P_T1], a, ot)
+        return f_s, f_s
+    if p[C.P_TDAMP] == 0.0:
+        return f_s, f_s
+    return cap(f_s - p[C.P_TDAMP] * math.sqrt(tangential_stiffness(code, p[C.P_T1], a)) * slip, limit), f_s
 
 
 @njit(cache=True, inline="always")

@@ -27,6 +27,7 @@ from .mesh import PEAK_POINTS, graded_step, parabola_peak, polynomial_peak
 from .pair import step_leapfrog_pair, step_leapfrog_scalar_pair, step_verlet_pair
 from .schemes import paper_first_touch, step, step_leapfrog, step_leapfrog_sphere, step_velocity_verlet
 from .specialise import specialised
+from .spring import cap
 from .state import N_STATE, S_ALPHA, S_C, S_FN, S_FT, S_U, S_VX, S_VZ, S_W, S_Z, reset_history
 from .threads import in_threads
 
@@ -71,7 +72,7 @@ def integrate_rows(first, last, params, ints, out, history, stride, ext, work):
         setup = scheme == C.INTEGRATOR_VELOCITY_VERLET and geometry == C.GEOMETRY_WALL and touch_gap
         if VELOCITY_VERLET and setup and row_ints[C.I_TANGENTIAL] != TANGENTIAL_NONE:
             # the setup force at first touch (gap 0 counts as contact): the tangential dashpot alone; the Coulomb
-            # rule 'total' drops it when it exceeds mu |F_n|, its spring being empty
+            # rule 'total' drops it when it exceeds mu |F_n|, its spring being empty, 'spring-first' caps it there
             code = row_ints[C.I_TANGENTIAL]
             slip0 = p[C.P_VX0] - p[C.P_RADIUS] * p[C.P_W0]
             if TANGENTIAL_VISCOUS[code]:
@@ -81,6 +82,8 @@ def integrate_rows(first, last, params, ints, out, history, stride, ext, work):
                 s[S_FT] = -p[C.P_TDAMP] * math.sqrt(tangential_stiffness(code, p[C.P_T1], 0.0)) * slip0
             if row_ints[C.I_COULOMB] == C.COULOMB_TOTAL and abs(s[S_FT]) > p[C.P_MU] * abs(s[S_FN]):
                 s[S_FT] = 0.0
+            elif row_ints[C.I_COULOMB] == C.COULOMB_SPRING_FIRST:
+                s[S_FT] = cap(s[S_FT], p[C.P_MU] * abs(s[S_FN]))
         elif (PAPER and paper and p[C.P_TDAMP] != 0.0
               and row_ints[C.I_TANGENTIAL] != TANGENTIAL_NONE and not TANGENTIAL_VISCOUS[row_ints[C.I_TANGENTIAL]]):
             paper_first_touch(s, st, p, row_ints, ext)

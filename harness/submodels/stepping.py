@@ -14,10 +14,11 @@ class Stepping:
     code: int
     summary: str
     pair: bool = False          # geometry: two spheres in their relative motion (the pair steppers' parameters)
+    brief: str = ""             # what it does in a few words, where its name does not say it
 
 
 INTEGRATOR_PAPER, INTEGRATOR_VELOCITY_VERLET, INTEGRATOR_LEAPFROG = 0, 1, 2
-COULOMB_SPRING, COULOMB_TOTAL, COULOMB_TOTAL_CASES = 0, 1, 2
+COULOMB_SPRING, COULOMB_TOTAL, COULOMB_TOTAL_CASES, COULOMB_SPRING_FIRST = 0, 1, 2, 3
 GEOMETRY_WALL, GEOMETRY_STAND_IN_SPHERE, GEOMETRY_PAIR, GEOMETRY_PAIR_VECTOR = 0, 1, 2, 3
 TOUCH_GAP, TOUCH_OVERLAP = 0, 1
 
@@ -30,13 +31,20 @@ INTEGRATORS = (
              "forces at x(t) from v(t - h/2), then v(t + h/2), then x(t + h); contact while the overlap is >= 0"),
 )
 COULOMB_RULES = (
+    Stepping("coulomb", "spring-first", COULOMB_SPRING_FIRST,
+             "the spring tested alone: beyond mu |F_n| it is capped and is the whole force; below it the tangential "
+             "dashpot is added and the sum clipped to mu |F_n| (the paper's; its scheme's dashpot option 'total' "
+             "holds the spring within the cone first)", brief="spring first, then spring + dashpot clipped"),
     Stepping("coulomb", "spring", COULOMB_SPRING,
-             "the spring capped at mu |F_n|; the tangential dashpot added only below the cap"),
+             "the spring capped at mu |F_n|; the tangential dashpot added only below the cap, the sum not clipped",
+             brief="tangential dashpot unclipped"),
     Stepping("coulomb", "total", COULOMB_TOTAL,
-             "spring plus dashpot capped together at mu |F_n|; a capped total leaves the spring F_t + c_t V_s"),
+             "spring plus dashpot capped together at mu |F_n|; a capped total leaves the spring F_t + c_t V_s",
+             brief="spring + dashpot clipped together"),
     Stepping("coulomb", "total-cases", COULOMB_TOTAL_CASES,
              "spring plus dashpot capped together at mu |F_n|; a spring beyond mu |F_n| on the total's side is cut to "
-             "it (the dashpot dropped), else the dashpot alone is shortened and the spring kept"),
+             "it (the dashpot dropped), else the dashpot alone is shortened and the spring kept",
+             brief="spring + dashpot clipped by four cases"),
 )
 GEOMETRIES = (
     Stepping("geometry", "wall", GEOMETRY_WALL, "a sphere against a flat wall: the normal fixed, scalar shear"),
@@ -58,13 +66,13 @@ TOUCHES = (
 )
 
 STEPPERS = {      # (integrator, geometry) -> the stepper that computes it (solver/switches.py) and its Coulomb rules
-    ("paper", "wall"): ("PAPER", ("spring",)),
-    ("velocity-verlet", "wall"): ("VELOCITY_VERLET", ("spring", "total")),
-    ("leapfrog", "wall"): ("LEAPFROG", ("spring", "total", "total-cases")),
+    ("paper", "wall"): ("PAPER", ("spring-first",)),
+    ("velocity-verlet", "wall"): ("VELOCITY_VERLET", ("spring", "total", "spring-first")),
+    ("leapfrog", "wall"): ("LEAPFROG", ("spring", "total", "total-cases", "spring-first")),
     ("leapfrog", "stand-in-sphere"): ("LEAPFROG_SPHERE", ("spring",)),
-    ("velocity-verlet", "pair"): ("VERLET_PAIR", ("spring", "total")),
+    ("velocity-verlet", "pair"): ("VERLET_PAIR", ("spring", "total", "spring-first")),
     ("leapfrog", "pair-vector"): ("LEAPFROG_PAIR", ("spring",)),
-    ("leapfrog", "pair"): ("LEAPFROG_SCALAR_PAIR", ("spring", "total", "total-cases")),
+    ("leapfrog", "pair"): ("LEAPFROG_SCALAR_PAIR", ("spring", "total", "total-cases", "spring-first")),
 }
 TOUCH_STEPPERS = {("velocity-verlet", "wall"): ("gap", "overlap"), ("leapfrog", "wall"): ("gap", "overlap"),
                   ("leapfrog", "pair"): ("gap", "overlap")}     # the others apply 'gap' only

@@ -5,7 +5,7 @@ import os
 import numpy as np
 import pandas as pd
 
-from ..analyses.physics import CHECK_WORDS, Tolerances
+from ..analyses.physics import CHECK_WORDS, MARGINAL_SHARE, MARGINAL_TIMES, Tolerances
 from ..analyses.published import published_distances
 from ..analyses.verdict import verdict
 from ..digitised import points_of, published_curves_apply
@@ -209,12 +209,14 @@ def compare_context(comparison, files=()):
     precision = pd.DataFrame([comparison.precision]) if comparison.precision else None
     distances = published_distances(paper) if published else None
     record = verdict(comparison)
-    checks = pd.DataFrame([{"engine": e["engine"], "check": CHECK_WORDS[c["check"]], "passed": c["passed"],
-                            "tolerance": c["tolerance"], "worst": c.get("worst"), "impacts": c["impacts"],
-                            "beyond": c["failing"], "worst case": c.get("text", ""), "attribution": c.get("cause", "")}
+    checks = pd.DataFrame([{"engine": e["engine"], "check": CHECK_WORDS[c["check"]],
+                            "grade": c.get("grade", "holds" if c["passed"] else ""), "tolerance": c["tolerance"],
+                            "worst": c.get("worst"), "x tolerance": c.get("times_tolerance"), "impacts": c["impacts"],
+                            "beyond": c["failing"], "worst case": c.get("text", ""), "causes": c.get("cause", "")}
                            for e in record["engines"] for c in e["physics"]["checks"]])
     return dict(law=law, submodels=law.describe(), scene=scene_facts(scene), figures=figures,
                 tolerance_words=Tolerances.of(record["tolerances"]).describe(), check_words=CHECK_WORDS,
+                marginal_times=f"{MARGINAL_TIMES:g}", marginal_share=f"{MARGINAL_SHARE:.0%}",
                 verdict=record, command=comparison.command, date=comparison.date, files=files,
                 partial=comparison.partial,
                 summary=records(summary), skipped=comparison.skipped, rows=len(frame),

@@ -1,6 +1,7 @@
 """The terminal view: fixed-width tables and what compare, check, cost and paper print."""
 from ..analyses.cost import (METRICS, NOT_RESOLVED, RAYLEIGH_FRACTION, WITHIN_NOISE, convergence_orders, per_rung,
                               rayleigh_time, recommendations, step_times, verdict)
+from ..analyses.causes import MENTION
 from ..analyses.physics import CHECK_WORDS, Tolerances
 from ..analyses.published import GOAL, meets_goal
 
@@ -97,16 +98,24 @@ def print_versions(versions):
 
 
 def physics_phrase(physics):
-    """'reproduces ...', 'DEVIATES <worst case of each failed check>; attributed to <ingredients>' or 'not checked
-    (why)'."""
+    """'reproduces ...', 'MARGINAL' or 'DEVIATES' with the worst case of each failed check, its size and the
+    ingredients that close its miss with their shares, or 'not checked (why)'."""
     if physics["state"] == "reproduces":
         return f"{'reproduces':12s} every check holds on {physics['impacts']} impacts"
-    if physics["state"] != "deviates":
+    if physics["state"] not in ("marginal", "deviates"):
         return f"{'not checked':12s} {physics['reason']}"
     failed = [c for c in physics["checks"] if not c["passed"]]
-    causes = list(dict.fromkeys(c["ingredient"] for c in failed if c.get("ingredient")))
-    return (f"{'DEVIATES':12s} " + "; ".join(c["short"] for c in failed)
-            + (f"; attributed to {', '.join(causes)}" if causes else ""))
+    return f"{physics['state'].upper():12s} " + "; ".join(failed_phrase(c) for c in failed)
+
+
+def failed_phrase(check):
+    """'|J_t| 1.587 mu J_n at e_n 0.25, 71 deg (126 of 180 impacts, 587x the tolerance): Coulomb rule (tangential
+    dashpot unclipped) 64%, ...': the worst case, its size, and its causes with the share of the miss each closes."""
+    if "ingredient" not in check:
+        return check["short"]
+    if not check["ingredient"]:
+        return f"{check['short']}; no ingredient alone or in a pair closes {MENTION:.0%} of it"
+    return f"{check['short']}: {check['ingredient']}"
 
 
 FOLDED = {"Coulomb bound": "coulomb", "Coulomb bound from below": "coulomb", "e_n off target": "e_n",
@@ -159,9 +168,10 @@ def verdict_line(record, reference_only=False):
 
 
 def physics_words(record):
-    """'paper law: reproduced by A; deviates in B, C', or '' when no engine was checked."""
+    """'paper law: reproduced by A; marginal in B; deviates in C, D', or '' when no engine was checked."""
     parts = []
-    for state, words in (("reproduces", "reproduced by"), ("deviates", "deviates in"), ("not checked", "not checked in")):
+    for state, words in (("reproduces", "reproduced by"), ("marginal", "marginal in"), ("deviates", "deviates in"),
+                         ("not checked", "not checked in")):
         engines = [e["engine"] for e in record["engines"] if e["physics"]["state"] == state]
         if engines:
             parts.append(f"{words} {', '.join(engines)}")
@@ -174,6 +184,10 @@ def print_comparison(comparison, written):
     frame, law = comparison.results, comparison.law
     print(f"{law.name}: paper law on the reference engine, {sum(frame.engine == 'reference')} rows")
     print("\n".join(summary_lines(frame[(frame.engine == "reference") & (frame.dialect == "paper")])))
+    if comparison.compared:
+        print("\ndoes each engine reproduce the paper law on this scene? (causes: the share of the miss each closes)")
+        for engine, physics in comparison.physics.items():
+            print(wrapped(f"  {engine} {physics_phrase(physics)}", indent=6))
     if comparison.sliding is not None:
         print("\nsliding throughout (paper law: the smallest Psi1* found, and the condition derived for it):")
         print(text_table(comparison.sliding, ["e_n_target", "simulated", "derived", "difference", "formula"],
@@ -196,7 +210,8 @@ def print_comparison(comparison, written):
         for name, table in comparison.attribution.items():
             print(f"\nattribution ({name}, one ingredient at a time; max change per metric):")
             cols = [c for c in table.columns if c.startswith("d_")]
-            print(text_table(table, ["ingredient", "dialect", "target", *cols, "note"], {c: "{:+.4g}" for c in cols}))
+            shown = ["ingredient", "dialect", "target", *(["switched"] if "switched" in table else []), *cols, "note"]
+            print(text_table(table, shown, {c: "{:+.4g}" for c in cols}))
     precision = comparison.precision
     if precision:
         gaps = ", ".join(f"{k} {v:.1e}" for k, v in precision.items() if k in ("v_n1", "v_t1", "omega1"))
@@ -335,7 +350,7 @@ def print_calibration(calibration):
     elif c.skipped:
         print(wrapped(f"the engine did not run: {c.skipped}"))
     final = c.physics.get("engine, calibrated") or c.physics.get("formulas, calibrated")
-    if final and final["state"] == "deviates":
+    if final and final["state"] in ("marginal", "deviates"):
         causes = [f"{check['short']} ({check['ingredient'] or 'no single ingredient'})"
                   for check in final["checks"] if not check["passed"]]
         print(wrapped("what no input fixes: " + "; ".join(causes)))

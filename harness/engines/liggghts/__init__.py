@@ -29,8 +29,9 @@ class Liggghts(Engine):
         ("thornton", "Coulomb bound"): "thornton_ning's tangential damping has the wrong sign: it pushes "
                                        "(docs/liggghts-dialect.md)",
         **{(model, "Coulomb bound"):
-           "its formulas in the reference do the same; its velocity-Verlet step is the largest part: the paper scheme "
-           "alone cuts the worst excess on the hard cases from 170-270% to 31% (docs/findings.md)"
+           "its formulas in the reference do the same: its tangential dashpot added unclipped below the spring's cap "
+           "(Coulomb rule spring) and the cap following |F_n| while the contact pulls (end tension); the physics "
+           "verdict gives the share of each (docs/findings.md)"
            for model in STEPPING},
     }
     COLOUR, DASHES = "tab:orange", "--"

@@ -29,8 +29,9 @@ class Yade(Engine):
             "ViscEl uses the reduced mass m/2 against a wall; CundallStrack has no damping (docs/yade-dialect.md)",
         ("linear-spring-dashpot", "energy gain"): "CundallStrack's k_s = nu k_n is negative for nu < 0",
         **{(model, "Coulomb bound"):
-           "its formulas in the reference do the same; with its leapfrog step alone switched to the paper scheme the "
-           "bound holds (docs/findings.md)" for model in LEAPFROG},
+           "its formulas in the reference do the same: its tangential dashpot added unclipped below the spring's cap "
+           "(Coulomb rule spring); with the paper's rule alone the bound holds (docs/findings.md)"
+           for model in LEAPFROG},
     }
     COLOUR, DASHES = "tab:green", ":"
     STARTUP_S, SPHERE_STEP_S = 1.2, 2.0e-6
