@@ -67,10 +67,10 @@ def series_plot(frame, title, x, ys, thresholds=None, published=None):
     beyond = {}
     if paper:
         beyond = frame[frame.psi1_star > PSI1_RANGE[1]].groupby("e_n_target").theta_deg.nunique().to_dict()
-        frame = in_window(frame)
-    groups = list(frame.groupby("e_n_target", sort=False))
+    groups = list(frame.groupby("e_n_target", sort=False))    # a panel per e_n, even one whose impacts all lie beyond
     fig, axes = plt.subplots(1, len(groups), figsize=(3.4 * len(groups), 3.6), squeeze=False, layout="constrained")
     for ax, (e_n, group) in zip(axes[0], groups):
+        group = in_window(group) if paper else group
         for (engine, dialect), series in group.groupby(["engine", "dialect"], sort=False):
             series = series.sort_values(x)
             for y, marker in zip(ys, ("", "o")):
