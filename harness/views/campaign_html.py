@@ -14,7 +14,7 @@ from ..citation import doc_link
 from ..files import write_text
 from .drawing import draw_all
 from .figure_files import filed
-from .pieces import figure_svg
+from .pieces import figure_svg, legend_below
 
 def figures_folder(path):
     """The folder, beside the page, of its figures' files: STORE-figures for STORE.html."""
@@ -78,7 +78,7 @@ def metric_figure(table, parameter, label, metric, metric_label):
                 ax.set_xticks(range(len(ticks)), ticks)
         ax.set(xlabel=label, ylabel=metric_label, title=f"e_n = {e_n:g}")
         ax.grid(alpha=0.3)
-    axes[-1].legend(fontsize=6.5)
+    legend_below(fig, fontsize=6.5)
     svg = figure_svg(fig)
     plt.close(fig)
     return svg
@@ -100,7 +100,7 @@ def deviation_figure(table, parameter, label):
         ax.set(xlabel=label, title=words)
         ax.grid(alpha=0.3)
     axes[0].set_ylabel("worst over the other dimensions")
-    axes[-1].legend(fontsize=6.5)
+    legend_below(fig, fontsize=6.5)
     svg = figure_svg(fig)
     plt.close(fig)
     return svg

@@ -8,7 +8,7 @@ from ..verification import chung_ooi as suite
 from ..verification.chung_ooi_cases import TESTS
 from ..version import __version__
 from .figure_files import one
-from .pieces import figure_svg, records
+from .pieces import figure_svg, legend_below, records
 from .style import colour
 
 CSV, PAGE = "chung-ooi.csv", "chung-ooi.html"
@@ -46,7 +46,7 @@ def sliding_figure(table, test):
     ax.set(xlabel="impact angle from the normal [deg]", ylabel="rebound tangential velocity [m/s]",
            title="gross sliding: simulated (markers) and rigid-body line (dashed)")
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=7)
+    legend_below(fig)
     svg = figure_svg(fig)
     plt.close(fig)
     return svg

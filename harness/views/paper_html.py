@@ -15,7 +15,7 @@ from ..version import __version__
 from .drawing import draw_all
 from .figure_files import filed
 from .paper_axes import PAPER_PANELS, draw_published, draw_rigid_body, set_paper_axes
-from .pieces import figure_svg, records
+from .pieces import figure_svg, legend_below, records
 
 OBLIQUE, NORMAL, SLIDING, PUBLISHED = "paper.csv", "paper-normal.csv", "paper-sliding.csv", "paper-published.csv"
 PAGE = "paper.html"
@@ -49,7 +49,7 @@ def law_figure(oblique, sliding, name):
         ax.plot(elastic.psi1_star, elastic[column], color="0.3", ls=":", lw=1.4, label="elastic Hertz-Mindlin")
         draw_rigid_body(ax, column)
         set_paper_axes(ax, column, label)
-    axes[-1].legend(fontsize=7, loc="lower right")
+    legend_below(fig)
     fig.suptitle(f"{name}{' (provisional)' if LAWS[name].provisional else ''}: dotted, where it slides throughout")
     svg = figure_svg(fig)
     plt.close(fig)
@@ -70,7 +70,7 @@ def normal_figure(normal):
         ax.axhline(1.0, color="k", lw=0.8)
         ax.set(xlabel="target e_n", ylabel=label)
         ax.grid(alpha=0.3)
-    axes[0].legend(fontsize=7)
+    legend_below(fig)
     fig.suptitle("normal impact at 5 m/s (dashed: provisional laws)")
     svg = figure_svg(fig)
     plt.close(fig)
