@@ -153,3 +153,17 @@ def test_gross_sliding_changes_from_2022_to_2023_and_each_dialect_follows(use):
     assert (after["lammps"] > before["lammps"] + 0.02).all()
     for measured in (before, after):
         assert np.allclose(measured["reference"], measured["lammps"], atol=1e-6)
+
+
+@pytest.mark.parametrize("release", [installed("2025.7.22.4")])
+@pytest.mark.parametrize("asked", ["lammps@2025.7.22", "lammps@2025.7.22.4"])
+def test_render_of_a_release_by_its_prefix_follows_the_engine_options(release, asked, tmp_path, capfd):
+    """`render --engine lammps@2025.7.22` is the build lammps@2025.7.22.4: its deck carries the --engine-option
+    asked for (mindlin_rescale, not the default mindlin) in both the pair and the wall command, as the full name's."""
+    from harness.commands import main
+    assert main(["render", "--model", "hertz-mindlin", "--engine", asked, "--engine-option",
+                 "lammps:tangential=mindlin_rescale", "--en", "0.5", "-o", str(tmp_path)]) == 0
+    deck = (tmp_path / f"lammps@{release}-hertz-mindlin-en0.5.in").read_text()
+    commands = [line for line in deck.splitlines() if line.startswith(("pair_coeff", "fix wall"))]
+    assert len(commands) == 2 and all(" tangential mindlin_rescale " in line for line in commands), commands
+    assert capfd.readouterr().out.strip().endswith(f"wrote 1 lammps@{release} input(s) to {tmp_path}")

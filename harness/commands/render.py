@@ -23,8 +23,8 @@ def main(args):
         raise UserError(f"{args.engine} has no counterpart of {request.law.name}")
     check_output_directory(args.output)
     texts = [engine.render(run) for run in engine_runs(engine, request.law, request.scene, request.resolution,
-                                                       options_for(request, args.engine))]
-    return write_inputs(args, texts, args.engine)
+                                                       options_for(request, engine.NAME))]
+    return write_inputs(args, texts, engine.NAME)
 
 
 def write_inputs(args, texts, engine):
