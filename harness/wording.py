@@ -23,6 +23,6 @@ def verb(count, singular):
     return singular[:-2] if singular.endswith(("sses", "ches", "shes", "xes")) else singular[:-1]
 
 
-def more_or_less(amount, digits=3):
-    """A signed difference as an amount and a direction: 0.006 -> '0.006 more', -0.19 -> '0.19 less'."""
-    return f"{abs(amount):.{digits}g} {'less' if amount < 0 else 'more'}"
+def more_or_less(amount, unit="", digits=3):
+    """A signed difference as an amount and a direction: 0.006 -> '0.006 more', (-19, '%') -> '19% less'."""
+    return f"{abs(amount):.{digits}g}{unit} {'less' if amount < 0 else 'more'}"

@@ -166,4 +166,4 @@ def test_render_of_a_release_by_its_prefix_follows_the_engine_options(release, a
     deck = (tmp_path / f"lammps@{release}-hertz-mindlin-en0.5.in").read_text()
     commands = [line for line in deck.splitlines() if line.startswith(("pair_coeff", "fix wall"))]
     assert len(commands) == 2 and all(" tangential mindlin_rescale " in line for line in commands), commands
-    assert capfd.readouterr().out.strip().endswith(f"wrote 1 lammps@{release} input(s) to {tmp_path}")
+    assert capfd.readouterr().out.strip().endswith(f"wrote 1 lammps@{release} input to {tmp_path}")

@@ -6,6 +6,7 @@ from dataclasses import asdict, dataclass, fields
 import numpy as np
 
 from ..errors import UserError
+from ..wording import counted, more_or_less
 from .findings import tangential_energy_ratio
 from .invariants import FRICTIONLESS_TOLERANCE, coulomb_impulses
 
@@ -91,10 +92,9 @@ def _check(name, excess, tolerance, pairs, describe, allowance=0.0, brief=None):
     if measured.any():
         worst = int(np.nanargmax(excess))
         record.update(worst=float(excess[worst]), row=worst, **_where(pairs, worst))
-        record["text"] = describe(worst) + (f"; {record['failing']} of {record['impacts']} impacts beyond the "
-                                            f"tolerance" if failing.any() else "")
-        record["short"] = (f"{brief(worst)} at {_at(_where(pairs, worst))} ({record['failing']} of "
-                           f"{record['impacts']} impacts)")
+        of_all = f"{record['failing']} of {counted(record['impacts'], 'impact')}"
+        record["text"] = describe(worst) + (f"; {of_all} beyond the tolerance" if failing.any() else "")
+        record["short"] = f"{brief(worst)} at {_at(_where(pairs, worst))} ({of_all})"
     return record
 
 
@@ -148,9 +148,10 @@ def coulomb_check(pairs, tolerance, gravity=0.0):
 
     def describe(i):
         if ratio[i] < 1.0:
-            return (f"tangential impulse {ratio[i]:.4g} x mu J_n where the paper law slides throughout "
-                    f"({1.0 - ratio[i]:.3g} below Coulomb's bound) at {_at(_where(pairs, i))}")
-        return (f"tangential impulse {ratio[i]:.4g} x mu J_n ({excess[i]:+.3g} beyond Coulomb's bound) "
+            where = " where the paper law slides throughout" if slides[i] else ""
+            return (f"tangential impulse {ratio[i]:.4g} x mu J_n{where} ({1.0 - ratio[i]:.3g} below Coulomb's bound) "
+                    f"at {_at(_where(pairs, i))}")
+        return (f"tangential impulse {ratio[i]:.4g} x mu J_n ({ratio[i] - 1.0:.3g} beyond Coulomb's bound) "
                 f"at {_at(_where(pairs, i))}")
     record = _check("coulomb", excess, tolerance, pairs, describe, allowance,
                     brief=lambda i: f"|J_t| {ratio[i]:.4g} mu J_n")
@@ -167,7 +168,8 @@ def energy_check(pairs, tolerance):
 
     def describe(i):
         which = "tangential and rotational" if tangential[i] > total[i] else "total"
-        return f"ends with {excess[i]:.3g} more {which} kinetic energy than it began with at {_at(_where(pairs, i))}"
+        return (f"ends with {more_or_less(100.0 * excess[i], '%')} {which} kinetic energy than it began with at "
+                f"{_at(_where(pairs, i))}")
     return _check("energy", excess, tolerance, pairs, describe, brief=lambda i: f"energy gain {excess[i]:.3g}")
 
 

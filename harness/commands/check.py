@@ -7,6 +7,7 @@ from ..errors import UserError
 from ..views.progress import Progress
 from ..views.terminal import text_table, wrapped
 from ..views import strict_json
+from ..wording import counted
 from .options import EXIT_DISAGREE, EXIT_OK, engines_from
 
 
@@ -67,5 +68,5 @@ def main_update(args):
     if not args.quiet:
         for line in skipped:
             print(f"skipped {line}")
-    print(f"wrote {len(frame)} rows to {baseline}")
+    print(f"wrote {counted(len(frame), 'row')} to {baseline}")
     return EXIT_OK

@@ -8,6 +8,7 @@ from ..errors import UserError
 from ..files import write_text
 from ..plan import engine_runs
 from ..request import Request
+from ..wording import counted
 from .options import EXIT_OK, check_entries, check_output_directory, keywords
 
 
@@ -35,7 +36,7 @@ def write_inputs(args, texts, engine):
         write_text(os.path.join(args.output, name), text)
     if not args.quiet:
         print("\n".join(os.path.join(args.output, name) for name, _ in texts))
-    print(f"wrote {len(texts)} {engine} input(s) to {args.output}")
+    print(f"wrote {counted(len(texts), engine + ' input')} to {args.output}")
     return EXIT_OK
 
 

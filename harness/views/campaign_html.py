@@ -15,6 +15,7 @@ from ..files import write_text
 from .drawing import draw_all
 from .figure_files import filed
 from .pieces import figure_svg, legend_below
+from ..wording import counted
 
 def figures_folder(path):
     """The folder, beside the page, of its figures' files: STORE-figures for STORE.html."""
@@ -143,9 +144,10 @@ def write_campaign_report(table, path, name, data=None, store=""):
     failed = table[table.status == "failed"]
     agreement, maps = (data.agreement, data.maps) if data is not None else (None, [])
     parts = [f"<h1>Campaign {html.escape(name)}</h1>",
-             f"<p>{len(table)} rows, {table.task_key.nunique()} tasks; "
+             f"<p>{counted(len(table), 'row')}, {counted(table.task_key.nunique(), 'task')}; "
              f"laws: {', '.join(sorted(table.model.unique()))}; "
-             f"engines: {', '.join(sorted(table.engine.unique()))}; {failed.task_key.nunique()} failed tasks "
+             f"engines: {', '.join(sorted(table.engine.unique()))}; "
+             f"{counted(failed.task_key.nunique(), 'failed task')} "
              f"(what each part shows: {doc_link('campaigns.md')}).</p>",
              "<p>Swept: " + (", ".join(html.escape(s.label) for s in data.sweeps) if data is not None and data.sweeps
                              else "no scene parameter") + ".</p>",

@@ -10,6 +10,7 @@ from ..version import __version__
 from .figure_files import one
 from .pieces import figure_svg, legend_below, records
 from .style import colour
+from ..wording import counted, verb
 
 CSV, PAGE = "chung-ooi.csv", "chung-ooi.html"
 
@@ -58,7 +59,8 @@ def headline(ok, passed, checked):
         return "No check was made."
     if ok:
         return f"Every check passes: {passed} of {checked}."
-    return f"{checked - passed} of {checked} checks fail; {passed} pass."
+    return (f"{checked - passed} of {counted(checked, 'check')} {verb(checked - passed, 'fails')}; {passed} "
+            f"{verb(passed, 'passes')}.")
 
 
 def write_chung_ooi_report(out_dir, table, command):

@@ -3,6 +3,7 @@ from ..analyses.cost import (METRICS, NOT_RESOLVED, RAYLEIGH_FRACTION, WITHIN_NO
                               rayleigh_time, recommendations, step_times, verdict)
 from ..analyses.physics import CHECK_WORDS, Tolerances
 from ..analyses.published import GOAL, meets_goal
+from ..wording import counted
 
 
 def summary_lines(frame):
@@ -38,7 +39,7 @@ def print_summary(record, comparison, written):
     names = [e["engine"] if "@" in e["engine"] else f"{e['engine']} {e['version']}" for e in engines]
     ran = " and ".join(filter(None, [", ".join(names[:-1]), names[-1]])) if names else "no engine"
     print(wrapped(f"{record['model']}: the paper law against {ran}; {len(record['e_n'])} e_n x "
-                  f"{record['impacts'] // max(len(record['e_n']), 1)} impacts"))
+                  f"{counted(record['impacts'] // max(len(record['e_n']), 1), 'impact')}"))
     if engines:
         width = max(18, *(len(name) for name in names))
         tolerances = Tolerances.of(record["tolerances"]).describe()
@@ -92,7 +93,7 @@ def physics_phrase(physics):
     """'reproduces ...', 'DEVIATES <worst case of each failed check>; attributed to <ingredients>' or 'not checked
     (why)'."""
     if physics["state"] == "reproduces":
-        return f"{'reproduces':12s} every check holds on {physics['impacts']} impacts"
+        return f"{'reproduces':12s} every check holds on {counted(physics['impacts'], 'impact')}"
     if physics["state"] != "deviates":
         return f"{'not checked':12s} {physics['reason']}"
     failed = [c for c in physics["checks"] if not c["passed"]]
@@ -211,7 +212,8 @@ def print_cost(table, uncertainty, law, scene, ladder, skipped, failures, verbos
     def say(text):
         import textwrap
         print(textwrap.fill(text, width=width, subsequent_indent="    ", break_long_words=False))
-    say(f"{law.name}: accuracy against cost, {len(scene.e_n)} e_n x {len(scene.impacts(scene.e_n[0])[0])} impacts; "
+    say(f"{law.name}: accuracy against cost, {len(scene.e_n)} e_n x "
+        f"{counted(len(scene.impacts(scene.e_n[0])[0]), 'impact')}; "
         f"ladder {','.join(map(str, ladder))} steps/contact and {RAYLEIGH_FRACTION:.0%} of the Rayleigh time "
         f"(dt {RAYLEIGH_FRACTION * t_r:.3g} s)")
     say("worst metric's error against the converged reference of the same dialect; time per impact = impact-steps "
@@ -308,8 +310,9 @@ def print_calibration(calibration):
     paper law before and after, what the engine run confirmed, what remains and why, and the time-step advice."""
     c, scene = calibration, calibration.scene
     print(f"calibrate {c.law.name} for {c.engine} {c.version}: e_n {', '.join(f'{e:g}' for e in scene.e_n)} x "
-          f"{len(c.frame[c.frame.dialect == 'paper']) // max(len(scene.e_n), 1)} impacts, {c.steps} steps per contact")
-    print(wrapped(f"options: {c.chosen.label} (nearest the paper law of {len(c.alternatives)} choices)"
+          f"{counted(len(c.frame[c.frame.dialect == 'paper']) // max(len(scene.e_n), 1), 'impact')}, {c.steps} steps "
+          "per contact")
+    print(wrapped(f"options: {c.chosen.label} (nearest the paper law of {counted(len(c.alternatives), 'choice')})"
                   + "".join(f"; not in this build: {name}" for name, _ in c.refused if "exists from" in _)))
     for row in c.inputs.itertuples():
         if row.input_e != row.input_e:          # NaN: no input reaches it
