@@ -16,13 +16,17 @@ def summary_lines(frame):
     return lines
 
 
-def text_table(frame, columns, formats=None):
-    """A plain fixed-width table for the terminal."""
+def text_table(frame, columns, formats=None, missing=None):
+    """A plain fixed-width table for the terminal; an empty (NaN) number is shown as `missing` says for its column."""
     if frame.empty:
         return "  (none)"
-    formats = formats or {}
-    cells = [[formats.get(c, "{}").format(row[c]) if not isinstance(row[c], float) or c not in formats
-              else formats[c].format(row[c]) for c in columns] for _, row in frame.iterrows()]
+    formats, missing = formats or {}, missing or {}
+
+    def cell(value, column):
+        if isinstance(value, float) and value != value and column in missing:
+            return missing[column]
+        return formats.get(column, "{}").format(value)
+    cells = [[cell(row[c], c) for c in columns] for _, row in frame.iterrows()]
     widths = [max(len(c), *(len(r[i]) for r in cells)) for i, c in enumerate(columns)]
     def line(values):
         return "  " + "  ".join(v.ljust(w) if c == "note" else v.rjust(w)
@@ -289,6 +293,18 @@ def cost_tables(table, uncertainty):
     print("\ntime per impact-step of each curve (its timing run):")
     for row in step_times(table).itertuples():
         print(wrapped(f"  {row.engine} ({row.dialect}): {row.s_per_impact_step:.3g} s: {row.message}", indent=4))
+
+
+def sliding_summary(sliding, psi_max):
+    """`harness paper`'s first table: where each law slides throughout, from simulation and from its derived
+    condition, each empty cell said in words."""
+    table = text_table(sliding, ["model", "e_n_target", "simulated", "derived", "difference"],
+                       {"simulated": "{:.4f}", "derived": "{:.4f}", "difference": "{:+.1e}"},
+                       {"simulated": f"none <= {psi_max:g}", "derived": "no condition", "difference": "-"})
+    heading = wrapped(f"where each law slides throughout (|F_t| = mu F_n the whole contact): the smallest Psi1* found "
+                      f"by simulation, the condition derived for it (docs/laws.md#sliding-throughout) and their "
+                      f"difference; 'none <= {psi_max:g}': no Psi1* up to {psi_max:g} slides throughout:")
+    return f"{heading}\n{table}"
 
 
 def published_summary(published):
