@@ -135,7 +135,8 @@ def test_each_deviation_map_has_a_colour_key_from_zero_to_its_largest_value(tmp_
     page = (tmp_path / "store.html")
     write_campaign_report(table, str(page), "small", data, "store")
     text = page.read_text()
-    cells = dict((float(v), c) for c, v in re.findall(r'<td style="background: (rgb\([0-9,]+\))">([0-9.e-]+)</td>', text))
+    shaded = re.findall(r'<td style="background: (rgb\([0-9,]+\))">([0-9.e-]+)</td>', text)
+    cells = {float(value): colour for colour, value in shaded}
     key = re.search(r'<p class="key">(.*?)</p>', text)
     assert key, "no colour key under the map"
     swatches = re.findall(r'background: (rgb\([0-9,]+\))">([0-9.e-]+)</span>', key.group(1))
