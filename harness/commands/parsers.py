@@ -209,4 +209,7 @@ def query_parser(sub, describe):
 
 def cite_parser(sub, describe):
     p = describe(sub, "cite", "harness cite > harness.bib")
+    p.add_argument("directory", metavar="DIR", nargs="?",
+                   help="a compare's results directory: cite the engines and versions it ran (default: every engine "
+                        "installed here, with its versions)")
     p.set_defaults(func=runs("cite"))
