@@ -58,3 +58,13 @@ def test_impacts_short_of_the_coulomb_bound_are_counted_with_their_verb(angles):
     one = len(angles) == 1
     assert detail.startswith(f"{len(angles)} impact{'' if one else 's'} the paper law slides throughout "
                              f"transmit{'s' if one else ''} less than mu J_n")
+
+
+def test_compare_verbose_prints_no_nan(tmp_path, capfd):
+    """Hertz-Mindlin has no derived sliding condition (docs/laws.md#sliding-throughout): its cells say '-' under a
+    heading that says what '-' means, never 'nan'."""
+    from harness.commands import main
+    assert main(["compare", "--model", "hertz-mindlin", "--engines", "reference", "--en", "0.5", "--angles", "0,30",
+                 "--steps-per-contact", "200", "--verbose", "-o", str(tmp_path / "out")]) == 0
+    out = capfd.readouterr().out
+    assert "nan" not in out.lower() and "'-': none found, or no condition derived" in " ".join(out.split())

@@ -17,14 +17,15 @@ def summary_lines(frame):
 
 
 def text_table(frame, columns, formats=None, missing=None):
-    """A plain fixed-width table for the terminal; an empty (NaN) number is shown as `missing` says for its column."""
+    """A plain fixed-width table for the terminal; an empty (NaN) number is shown as `missing` says for its column,
+    else as '-', never as nan."""
     if frame.empty:
         return "  (none)"
     formats, missing = formats or {}, missing or {}
 
     def cell(value, column):
-        if isinstance(value, float) and value != value and column in missing:
-            return missing[column]
+        if isinstance(value, float) and value != value:
+            return missing.get(column, "-")
         return formats.get(column, "{}").format(value)
     cells = [[cell(row[c], c) for c in columns] for _, row in frame.iterrows()]
     widths = [max(len(c), *(len(r[i]) for r in cells)) for i, c in enumerate(columns)]
@@ -172,7 +173,8 @@ def print_comparison(comparison, written):
     print(f"{law.name}: paper law on the reference engine, {sum(frame.engine == 'reference')} rows")
     print("\n".join(summary_lines(frame[(frame.engine == "reference") & (frame.dialect == "paper")])))
     if comparison.sliding is not None:
-        print("\nsliding throughout (paper law: the smallest Psi1* found, and the condition derived for it):")
+        print("\n" + wrapped("sliding throughout (paper law: the smallest Psi1* found, and the condition derived for "
+                             "it; '-': none found, or no condition derived):"))
         print(text_table(comparison.sliding, ["e_n_target", "simulated", "derived", "difference", "formula"],
                          {"simulated": "{:.5f}", "derived": "{:.5f}", "difference": "{:+.1e}"}))
     for name, reason in comparison.skipped:
