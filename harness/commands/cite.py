@@ -9,8 +9,8 @@ from .options import EXIT_OK
 
 def installed():
     """{engine: [versions]} of every external engine with a build here."""
-    found = {code: [build.version() for build in builds(ENGINES[code])] for code in EXTERNAL}
-    return {code: versions for code, versions in found.items() if versions}
+    every = {code: [build.version() for build in builds(ENGINES[code])] for code in EXTERNAL}
+    return {code: versions for code, versions in every.items() if versions}
 
 
 def ran(directory):
@@ -31,7 +31,7 @@ def main(args):
         versions, how = installed(), "installed here (harness engines)"
     else:
         versions, how = ran(args.directory), f"as run by harness compare in {args.directory}"
-    entries = [engine_entry(code, ENGINES[code].CITATION, found, how) for code, found in versions.items()
+    entries = [engine_entry(code, ENGINES[code].CITATION, listed, how) for code, listed in versions.items()
                if code in ENGINES and ENGINES[code].CITATION]
     print(bibliography(entries), end="")
     return EXIT_OK
