@@ -55,7 +55,7 @@ def main(args):
             print(text_table(failures, list(failures.columns), {"baseline": "{:.10g}", "now": "{:.10g}",
                                                                 "rel_diff": "{:.2e}", "tolerance": "{:.0e}"}))
     print("check: every metric within tolerance" if failures.empty else
-          f"check: {len(failures)} metric(s) outside tolerance")
+          f"check: {counted(len(failures), 'metric')} outside tolerance")
     return code
 
 
