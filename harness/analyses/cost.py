@@ -6,6 +6,8 @@ import math
 import numpy as np
 import pandas as pd
 
+from ..wording import counted
+
 LADDER = (5, 10, 20, 50, 100, 200, 500, 1000, 5000)
 METRICS = ("e_n", "e_t", "omega_star", "t_contact", "f_n_max")
 TOLERANCES = (1e-2, 1e-3, 1e-4)
@@ -183,7 +185,8 @@ def step_time_row(law_name, engine, dialect, e_n, rung, copies, impacts, steps, 
     net = wall[0] - start[0]
     noise = float(np.nansum([wall[1], start[1]]))
     ok = resolved(net, noise)
-    why = (f"{impacts} impacts ({copies} copies of the scene's) at rung {rung['rung']}, fastest of the timings; "
+    why = (f"{counted(impacts, 'impact')} ({counted(copies, 'copy', 'copies')} of the scene's) at rung {rung['rung']}, "
+           "fastest of the timings; "
            f"net {net:.3g} s, noise {noise:.2g} s (resolved: >= {RESOLVE_RATIO:g}x noise and >= {MIN_NET_S:g} s); "
            f"impacts tried: {rounds}")
     return {"model": law_name, "engine": engine, "dialect": dialect, "e_n_target": e_n, "rung": PER_STEP,

@@ -11,6 +11,7 @@ from ..errors import UserError
 from .causes import EXPLAINS, MENTION, check_causes, phrase
 from .misses import IMPACT  # noqa: F401 (the calibration imports it from here)
 from .misses import VELOCITIES, coulomb_miss, e_n_miss, energy_miss, velocity_miss, with_paper
+from ..wording import counted, more_or_less
 
 REPRODUCES, MARGINAL, DEVIATES, NOT_CHECKED = "reproduces", "marginal", "deviates", "not checked"
 MARGINAL_TIMES = 10.0      # a failed check is marginal when its worst miss is at most this many times its tolerance
@@ -96,7 +97,7 @@ def severity(record):
     """'126 of 180 impacts, 587x the tolerance'."""
     times = record["times_tolerance"]
     size = "a tolerance of 0" if math.isinf(times) else f"{times:.0f}x" if times >= 100 else f"{times:.2g}x"
-    return f"{record['failing']} of {record['impacts']} impacts, {size}{'' if math.isinf(times) else ' the tolerance'}"
+    return f"{record['failing']} of {counted(record['impacts'], 'impact')}, {size}{'' if math.isinf(times) else ' the tolerance'}"
 
 
 def _check(name, excess, tolerance, pairs, describe, allowance=0.0, brief=None):
@@ -113,7 +114,7 @@ def _check(name, excess, tolerance, pairs, describe, allowance=0.0, brief=None):
         record["times_tolerance"] = record["worst"] / tolerance if tolerance > 0 else math.inf
         record["text"] = describe(worst) + (f"; {severity(record)}" if failing.any() else "")
         record["short"] = (f"{brief(worst)} at {_at(_where(pairs, worst))} ("
-                           + (severity(record) if failing.any() else f"0 of {record['impacts']} impacts") + ")")
+                           + (severity(record) if failing.any() else f"0 of {counted(record['impacts'], 'impact')}") + ")")
     if failing.any():
         record["grade"] = grade(record["worst"], tolerance, record["failing"], record["impacts"])
         record["failing_at"] = failing
@@ -150,13 +151,14 @@ def e_n_check(pairs, tolerance):
 def coulomb_check(pairs, tolerance, gravity=0.0):
     """Coulomb's bound both ways: |J_t| / (mu J_n) - 1 where mu > 0, and, where the paper law slides throughout,
     1 - |J_t| / (mu J_n) too (misses.coulomb_miss); the invariants' round-off allowance at tiny mu added."""
-    excess, ratio, allowance, _ = coulomb_miss(pairs, tolerance, gravity)
+    excess, ratio, allowance, slides = coulomb_miss(pairs, tolerance, gravity)
 
     def describe(i):
         if ratio[i] < 1.0:
-            return (f"tangential impulse {ratio[i]:.4g} x mu J_n where the paper law slides throughout "
-                    f"({1.0 - ratio[i]:.3g} below Coulomb's bound) at {_at(_where(pairs, i))}")
-        return (f"tangential impulse {ratio[i]:.4g} x mu J_n ({excess[i]:+.3g} beyond Coulomb's bound) "
+            where = " where the paper law slides throughout" if slides[i] else ""
+            return (f"tangential impulse {ratio[i]:.4g} x mu J_n{where} ({1.0 - ratio[i]:.3g} below Coulomb's bound) "
+                    f"at {_at(_where(pairs, i))}")
+        return (f"tangential impulse {ratio[i]:.4g} x mu J_n ({ratio[i] - 1.0:.3g} beyond Coulomb's bound) "
                 f"at {_at(_where(pairs, i))}")
     return _check("coulomb", excess, tolerance, pairs, describe, allowance,
                   brief=lambda i: f"|J_t| {ratio[i]:.4g} mu J_n")
@@ -168,7 +170,8 @@ def energy_check(pairs, tolerance):
 
     def describe(i):
         which = "tangential and rotational" if tangential[i] > total[i] else "total"
-        return f"ends with {excess[i]:.3g} more {which} kinetic energy than it began with at {_at(_where(pairs, i))}"
+        return (f"ends with {more_or_less(100.0 * excess[i], '%')} {which} kinetic energy than it began with at "
+                f"{_at(_where(pairs, i))}")
     return _check("energy", excess, tolerance, pairs, describe, brief=lambda i: f"energy gain {excess[i]:.3g}")
 
 

@@ -10,6 +10,7 @@ from ..request import Request
 from ..views.calibration_html import write_calibration_report
 from ..views.terminal import print_calibration
 from ..views.figure_files import FIGURES
+from ..wording import counted
 from .options import EXIT_ENGINE, EXIT_OK, check_entries, check_output_directory, keywords
 
 
@@ -28,5 +29,5 @@ def main(args):
     report = write_calibration_report(calibration, args.output, [name for name, _ in texts])
     if not args.quiet:
         print_calibration(calibration)
-    print(f"calibrate: wrote {record_path}, the tables, {len(texts)} {engine.code} input(s) and {report}")
+    print(f"calibrate: wrote {record_path}, the tables, {counted(len(texts), engine.code + ' input')} and {report}")
     return EXIT_ENGINE if calibration.skipped or calibration.failures else EXIT_OK

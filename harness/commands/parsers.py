@@ -197,8 +197,10 @@ def campaign_parser(sub, describe):
 def query_parser(sub, describe):
     p = describe(sub, "query", "harness query campaign-store \"SELECT engine, max(abs(e_t)) FROM results GROUP BY "
                  "engine\"")
-    p.add_argument("store", metavar="STORE")
-    p.add_argument("sql", metavar="SQL", help="one SELECT (or WITH, DESCRIBE, SHOW, SUMMARIZE); nothing that writes, "
+    p.add_argument("store", metavar="STORE", help="a campaign store (the directory `harness campaign -o` wrote)")
+    p.add_argument("sql", metavar="SQL", help="one SELECT (or WITH, DESCRIBE, SHOW, SUMMARIZE) over the view results "
+                   "(one row per impact: the columns of results.csv, docs/results.md, and task_key, log_tail, material, "
+                   "wall, target, speed; `DESCRIBE results` lists them) or the views deviations, agreement, deviation_map (docs/campaigns.md); nothing that writes, "
                    "reads other files, attaches or installs")
     p.add_argument("--csv", action="store_true", help="print CSV instead of a table")
     p.add_argument(DROP, action="store_true", help=DROP_HELP)
@@ -207,4 +209,7 @@ def query_parser(sub, describe):
 
 def cite_parser(sub, describe):
     p = describe(sub, "cite", "harness cite > harness.bib")
+    p.add_argument("directory", metavar="DIR", nargs="?",
+                   help="a compare's results directory: cite the engines and versions it ran (default: every engine "
+                        "installed here, with its versions)")
     p.set_defaults(func=runs("cite"))

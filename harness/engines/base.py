@@ -34,6 +34,7 @@ class Engine:
     WITH = {}                   # (sub-model key, label) of `--with` -> the engine options whose inputs compute it
     KNOWN_CAUSES = {}           # (law, finding kind) -> the documented cause, printed with the finding
     COLOUR = None               # of its curves in every figure (matplotlib colour)
+    CITATION = {}               # the BibTeX fields of the publication its developers ask users to cite (harness cite)
     DASHES = None               # of the curves of its dialect (matplotlib line style)
     VERIFIED = ()               # versions (their start, as `harness engines` prints them) its dialects were checked on
     STARTUP_S = 1.0             # campaign --dry-run estimate: seconds per process start

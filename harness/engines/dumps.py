@@ -4,6 +4,7 @@ import os
 
 import numpy as np
 
+from ..wording import counted
 from .runner import EngineFailure
 
 DUMP_HEADER_LINES = 9           # TIMESTEP, NUMBER OF ATOMS, BOX BOUNDS (3 lines) and ATOMS items
@@ -31,7 +32,8 @@ def read_final(path, n_atoms, engine, columns=5):
         raise EngineFailure(f"{engine} final dump is cut short: {complete} complete rows of {declared}"
                             + ("" if ended else ", the last unterminated"))
     if rows.ndim != 2 or rows.shape[1] != columns or len(rows) != declared:
-        raise EngineFailure(f"{engine} final dump is malformed: {len(rows)} rows where its header says {declared}")
+        raise EngineFailure(f"{engine} final dump is malformed: {counted(len(rows), 'row')} where its header says "
+                            f"{declared}")
     if declared != n_atoms:
         raise EngineFailure(f"{engine} final dump holds {declared} spheres where the deck made {n_atoms}")
     rows = rows[np.argsort(rows[:, 0])]

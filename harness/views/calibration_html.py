@@ -10,7 +10,7 @@ from ..files import write_text
 from ..render import environment
 from ..version import __version__
 from .figure_files import filed, one
-from .pieces import figure_svg, records
+from .pieces import figure_svg, legend_below, records
 
 STAGE_STYLES = {"paper": ("black", "-", "paper law"), "formulas, e as given": ("tab:red", ":", None),
                 "formulas, calibrated": ("tab:blue", "--", None), "engine, calibrated": ("tab:blue", "-", None)}
@@ -33,7 +33,7 @@ def paper_figure(frame, column, label):
                         else 1.3, alpha=0.6 if stage.startswith("engine") else 1.0, label=name or stage)
         ax.set(xlabel="Psi1*", ylabel=label, title=f"e_n {target:g}")
         ax.grid(alpha=0.3)
-    axes[0][0].legend(fontsize=7)
+    legend_below(fig)
     svg = figure_svg(fig)
     plt.close(fig)
     return svg
@@ -51,7 +51,7 @@ def variation_figure(variation):
     ax.plot(lims, lims, color="0.6", lw=0.8, ls=":", label="input = target")
     ax.set(xlabel="target e_n", ylabel="e to give the engine", title="calibrated input against the scene")
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=7)
+    legend_below(fig)
     svg = figure_svg(fig)
     plt.close(fig)
     return svg

@@ -3,7 +3,7 @@ import numpy as np
 
 from . import style
 from .drawing import draw_all
-from .pieces import figure_svg, number, records
+from .pieces import figure_svg, legend_below, number, records
 from ..analyses.cost import (ADAPTIVE, EXTRAPOLATED, METRICS, NOT_RESOLVED, TOLERANCES, convergence_orders, ladder_rows,
                              per_rung, recommendations, step_times, verdict)
 from ..outputs import COST, COST_RUN, COST_TRUTH
@@ -39,7 +39,6 @@ def cost_figure(cost, x_column, x_label, metrics):
     from matplotlib.ticker import LogLocator, NullFormatter
     fig, axes = plt.subplots(1, len(metrics), figsize=(3.9 * len(metrics) + 0.6, 4.2), squeeze=False,
                              layout="constrained")
-    handles = {}
     for ax, metric in zip(axes[0], metrics):
         column, missing = f"err_{metric}", []
         for engine, dialect, ladder, rayleigh, converged in _curves(cost):
@@ -50,7 +49,6 @@ def cost_figure(cost, x_column, x_label, metrics):
                 continue
             line, = ax.plot(data[x_column], data[column], label=style.label(engine, dialect),
                             **curve_style(engine, dialect))
-            handles.setdefault(line.get_label(), line)
             for row in rayleigh.itertuples():
                 if getattr(row, column) > 0 and getattr(row, x_column) > 0:
                     ax.plot(getattr(row, x_column), getattr(row, column), "D", ms=7, mfc="none", color=line.get_color())
@@ -77,8 +75,7 @@ def cost_figure(cost, x_column, x_label, metrics):
     axes[0][0].set_ylabel("relative error (worst e_n)")
     marks = [plt.Line2D([], [], marker="D", mfc="none", color="k", ls="none", label="20% of the Rayleigh time"),
              plt.Line2D([], [], marker="*", color="k", ls="none", label="converged mode")]
-    fig.legend(handles=[*handles.values(), *marks], loc="outside lower center", ncols=min(4, len(handles) + 2),
-               fontsize=7, frameon=False)
+    legend_below(fig, marks)
     svg = figure_svg(fig)
     plt.close(fig)
     return svg

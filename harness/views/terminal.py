@@ -4,6 +4,7 @@ from ..analyses.cost import (METRICS, NOT_RESOLVED, RAYLEIGH_FRACTION, WITHIN_NO
 from ..analyses.causes import MENTION
 from ..analyses.physics import CHECK_WORDS, Tolerances
 from ..analyses.published import GOAL, meets_goal
+from ..wording import counted
 
 
 def summary_lines(frame):
@@ -16,13 +17,18 @@ def summary_lines(frame):
     return lines
 
 
-def text_table(frame, columns, formats=None):
-    """A plain fixed-width table for the terminal."""
+def text_table(frame, columns, formats=None, missing=None):
+    """A plain fixed-width table for the terminal; an empty (NaN) number is shown as `missing` says for its column,
+    else as '-', never as nan."""
     if frame.empty:
         return "  (none)"
-    formats = formats or {}
-    cells = [[formats.get(c, "{}").format(row[c]) if not isinstance(row[c], float) or c not in formats
-              else formats[c].format(row[c]) for c in columns] for _, row in frame.iterrows()]
+    formats, missing = formats or {}, missing or {}
+
+    def cell(value, column):
+        if isinstance(value, float) and value != value:
+            return missing.get(column, "-")
+        return formats.get(column, "{}").format(value)
+    cells = [[cell(row[c], c) for c in columns] for _, row in frame.iterrows()]
     widths = [max(len(c), *(len(r[i]) for r in cells)) for i, c in enumerate(columns)]
     def line(values):
         return "  " + "  ".join(v.ljust(w) if c == "note" else v.rjust(w)
@@ -39,7 +45,7 @@ def print_summary(record, comparison, written):
     names = [e["engine"] if "@" in e["engine"] else f"{e['engine']} {e['version']}" for e in engines]
     ran = " and ".join(filter(None, [", ".join(names[:-1]), names[-1]])) if names else "no engine"
     print(wrapped(f"{record['model']}: the paper law against {ran}; {len(record['e_n'])} e_n x "
-                  f"{record['impacts'] // max(len(record['e_n']), 1)} impacts"))
+                  f"{counted(record['impacts'] // max(len(record['e_n']), 1), 'impact')}"))
     if engines:
         width = max(18, *(len(name) for name in names))
         tolerances = Tolerances.of(record["tolerances"]).describe()
@@ -101,7 +107,7 @@ def physics_phrase(physics):
     """'reproduces ...', 'MARGINAL' or 'DEVIATES' with the worst case of each failed check, its size and the
     ingredients that close its miss with their shares, or 'not checked (why)'."""
     if physics["state"] == "reproduces":
-        return f"{'reproduces':12s} every check holds on {physics['impacts']} impacts"
+        return f"{'reproduces':12s} every check holds on {counted(physics['impacts'], 'impact')}"
     if physics["state"] not in ("marginal", "deviates"):
         return f"{'not checked':12s} {physics['reason']}"
     failed = [c for c in physics["checks"] if not c["passed"]]
@@ -189,7 +195,8 @@ def print_comparison(comparison, written):
         for engine, physics in comparison.physics.items():
             print(wrapped(f"  {engine} {physics_phrase(physics)}", indent=6))
     if comparison.sliding is not None:
-        print("\nsliding throughout (paper law: the smallest Psi1* found, and the condition derived for it):")
+        print("\n" + wrapped("sliding throughout (paper law: the smallest Psi1* found, and the condition derived for "
+                             "it; '-': none found, or no condition derived):"))
         print(text_table(comparison.sliding, ["e_n_target", "simulated", "derived", "difference", "formula"],
                          {"simulated": "{:.5f}", "derived": "{:.5f}", "difference": "{:+.1e}"}))
     for name, reason in comparison.skipped:
@@ -234,7 +241,8 @@ def print_cost(table, uncertainty, law, scene, ladder, skipped, failures, verbos
     def say(text):
         import textwrap
         print(textwrap.fill(text, width=width, subsequent_indent="    ", break_long_words=False))
-    say(f"{law.name}: accuracy against cost, {len(scene.e_n)} e_n x {len(scene.impacts(scene.e_n[0])[0])} impacts; "
+    say(f"{law.name}: accuracy against cost, {len(scene.e_n)} e_n x "
+        f"{counted(len(scene.impacts(scene.e_n[0])[0]), 'impact')}; "
         f"ladder {','.join(map(str, ladder))} steps/contact and {RAYLEIGH_FRACTION:.0%} of the Rayleigh time "
         f"(dt {RAYLEIGH_FRACTION * t_r:.3g} s)")
     say("worst metric's error against the converged reference of the same dialect; time per impact = impact-steps "
@@ -312,6 +320,18 @@ def cost_tables(table, uncertainty):
         print(wrapped(f"  {row.engine} ({row.dialect}): {row.s_per_impact_step:.3g} s: {row.message}", indent=4))
 
 
+def sliding_summary(sliding, psi_max):
+    """`harness paper`'s first table: where each law slides throughout, from simulation and from its derived
+    condition, each empty cell said in words."""
+    table = text_table(sliding, ["model", "e_n_target", "simulated", "derived", "difference"],
+                       {"simulated": "{:.4f}", "derived": "{:.4f}", "difference": "{:+.1e}"},
+                       {"simulated": f"none <= {psi_max:g}", "derived": "no condition", "difference": "-"})
+    heading = wrapped(f"where each law slides throughout (|F_t| = mu F_n the whole contact): the smallest Psi1* found "
+                      f"by simulation, the condition derived for it (docs/laws.md#sliding-throughout) and their "
+                      f"difference; 'none <= {psi_max:g}': no Psi1* up to {psi_max:g} slides throughout:")
+    return f"{heading}\n{table}"
+
+
 def published_summary(published):
     """The distances from the paper's published points (analyses/published.py) as a table, and the goal's verdict."""
     table = text_table(published, ["model", "e_n_target", "quantity", "points", "rms", "worst", "psi1_star_at_worst",
@@ -331,8 +351,9 @@ def print_calibration(calibration):
     paper law before and after, what the engine run confirmed, what remains and why, and the time-step advice."""
     c, scene = calibration, calibration.scene
     print(f"calibrate {c.law.name} for {c.engine} {c.version}: e_n {', '.join(f'{e:g}' for e in scene.e_n)} x "
-          f"{len(c.frame[c.frame.dialect == 'paper']) // max(len(scene.e_n), 1)} impacts, {c.steps} steps per contact")
-    print(wrapped(f"options: {c.chosen.label} (nearest the paper law of {len(c.alternatives)} choices)"
+          f"{counted(len(c.frame[c.frame.dialect == 'paper']) // max(len(scene.e_n), 1), 'impact')}, {c.steps} steps "
+          "per contact")
+    print(wrapped(f"options: {c.chosen.label} (nearest the paper law of {counted(len(c.alternatives), 'choice')})"
                   + "".join(f"; not in this build: {name}" for name, _ in c.refused
                           if "releases harness checked" in _)))
     for row in c.inputs.itertuples():

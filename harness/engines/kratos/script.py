@@ -10,6 +10,7 @@ import numpy as np
 
 from ...render import render
 from ...version import __version__
+from ...wording import counted
 from ..dumps import pair_rebound, rebound
 from ..runner import EngineFailure, read_tail, run_engine
 from .dialect import COUNTERPARTS
@@ -115,7 +116,7 @@ def read_outputs(scene, spec, directory, observe):
     except (KeyError, TypeError, ValueError):
         raise EngineFailure("Kratos result file is malformed") from None
     if rows.shape != (per_impact * spec.impacts, 5):
-        raise EngineFailure(f"Kratos result file holds {len(rows)} spheres for {per_impact * spec.impacts}")
+        raise EngineFailure(f"Kratos result file holds {counted(len(rows), 'sphere')} for {per_impact * spec.impacts}")
     final = pair_rebound(rows, scene) if scene.spheres else rebound(rows[:, 1:], scene.radius)
     if observe:
         final.update(read_observation(os.path.join(directory, OBSERVED), spec))

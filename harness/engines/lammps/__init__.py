@@ -32,6 +32,14 @@ class Lammps(Engine):
            for law, style in HISTORY_STYLES.items()},
     }
     COLOUR, DASHES = "tab:purple", "-."
+    CITATION = {"key": "thompson2022", "type": "article",
+                "title": "LAMMPS - a flexible simulation tool for particle-based materials modeling at the atomic, "
+                         "meso, and continuum scales",
+                "author": "Thompson, A. P. and Aktulga, H. M. and Berger, R. and Bolintineanu, D. S. and Brown, W. M. "
+                          "and Crozier, P. S. and in 't Veld, P. J. and Kohlmeyer, A. and Moore, S. G. and Nguyen, "
+                          "T. D. and Shan, R. and Stevens, M. J. and Tranchida, J. and Trott, C. and Plimpton, S. J.",
+                "journal": "Computer Physics Communications", "volume": "271", "pages": "108171", "year": "2022",
+                "doi": "10.1016/j.cpc.2021.108171"}
     read_batch = staticmethod(read_batch)
 
     def run_inputs(self, flavour, count, timeout_s, workdir):

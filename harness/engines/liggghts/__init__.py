@@ -35,6 +35,11 @@ class Liggghts(Engine):
            for model in STEPPING},
     }
     COLOUR, DASHES = "tab:orange", "--"
+    CITATION = {"key": "kloss2012", "type": "article",
+                "title": "Models, algorithms and validation for opensource DEM and CFD-DEM",
+                "author": "Kloss, Christoph and Goniva, Christoph and Hager, Alice and Amberger, Stefan and Pirker, "
+                          "Stefan", "journal": "Progress in Computational Fluid Dynamics", "volume": "12",
+                "number": "2/3", "pages": "140--152", "year": "2012", "doi": "10.1504/PCFD.2012.047457"}
     STARTUP_S, SPHERE_STEP_S = 0.5, 0.05e-6
     render_batch = staticmethod(render_batch)
     read_batch = staticmethod(read_batch)

@@ -34,6 +34,9 @@ class Yade(Engine):
            for model in LEAPFROG},
     }
     COLOUR, DASHES = "tab:green", ":"
+    CITATION = {"key": "smilauer2021", "type": "book", "title": "Yade Documentation",
+                "author": "{\\v{S}}milauer, V{\\'a}clav and others", "edition": "3rd",
+                "publisher": "The Yade Project", "year": "2021", "doi": "10.5281/zenodo.5705394"}
     STARTUP_S, SPHERE_STEP_S = 1.2, 2.0e-6
     render_batch, run_inputs = staticmethod(render_batch), staticmethod(run_inputs)
     read_batch = staticmethod(read_batch)

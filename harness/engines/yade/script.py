@@ -7,6 +7,7 @@ import numpy as np
 
 from ...version import __version__
 from ...render import render
+from ...wording import counted
 from ..dumps import pair_rebound
 from ..runner import EngineFailure, remove_engine_tmpdir, run_engine
 from .dialect import COUNTERPARTS
@@ -104,7 +105,7 @@ def read_result(path, n_spheres, what="result file", columns=5):
     except ValueError:
         raise EngineFailure(f"YADE {what} is malformed") from None
     if len(rows) > n_spheres:
-        raise EngineFailure(f"YADE {what} holds {len(rows)} rows for {n_spheres} spheres")
+        raise EngineFailure(f"YADE {what} holds {counted(len(rows), 'row')} for {counted(n_spheres, 'sphere')}")
     if rows.shape != (n_spheres, columns) or not np.array_equal(rows[:, 0], np.arange(n_spheres)):
         raise EngineFailure(f"YADE {what} is truncated: {len(rows)} of {n_spheres} spheres")
     return rows[:, 1:]
