@@ -439,3 +439,12 @@ def test_strict_json_writes_null_for_nan_and_infinity():
     from harness.views.strict_json import dumps
     assert strict_json(dumps({"a": float("nan"), "b": [np.inf, np.float64(-np.inf), np.int64(3)]})) == \
         {"a": None, "b": [None, None, 3]}
+
+
+def test_cost_writes_to_its_own_folder_by_default():
+    """Not the quick start's harness-out, where `compare` writes its results and report."""
+    from harness.commands import build_parser
+    parser = build_parser()
+    compare = parser.parse_args(["compare", "--model", "hertz-mindlin"]).output
+    cost = parser.parse_args(["cost", "--model", "hertz-mindlin"]).output
+    assert cost == "harness-cost" and cost != compare
