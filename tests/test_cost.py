@@ -448,3 +448,22 @@ def test_cost_writes_to_its_own_folder_by_default():
     compare = parser.parse_args(["compare", "--model", "hertz-mindlin"]).output
     cost = parser.parse_args(["cost", "--model", "hertz-mindlin"]).output
     assert cost == "harness-cost" and cost != compare
+
+
+def test_the_legend_of_a_one_panel_figure_lies_inside_it(monkeypatch):
+    """The worst-metric figure is one panel wide: its legend takes as many columns as fit, so that matplotlib's
+    tight box of everything drawn lies within the figure (a legend wider than the figure is cut at its edges)."""
+    import harness.views.cost_html as cost_html
+    table, _, _ = cost_table(compose("hertz-mindlin"), Scene(e_n=(0.5,), angles_deg=(10.0, 40.0)), {},
+                             ladder=(20, 50))
+    drawn = []
+
+    def measured(fig):                          # before the figure is closed, on the canvas it was drawn on
+        fig.canvas.draw()
+        drawn.append((fig.get_tightbbox(), fig.bbox_inches, [len(legend.get_texts()) for legend in fig.legends]))
+    monkeypatch.setattr(cost_html, "figure_svg", measured)
+    cost_html.cost_figure(table, "n", "steps/contact", ("max",))
+    tight, whole, legends = drawn[0]
+    assert legends == [4]                       # paper law, its converged mode, the Rayleigh and converged marks
+    assert tight.x0 >= whole.x0 - 0.01 and tight.x1 <= whole.x1 + 0.01, (tight, whole)
+    assert tight.y0 >= whole.y0 - 0.01, (tight, whole)

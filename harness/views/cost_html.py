@@ -20,6 +20,13 @@ def curve_style(engine, dialect):
     return {**style.curve(engine, dialect), "marker": "o" if engine == "reference" else "s", "ms": 3}
 
 
+def curve_label(engine, dialect):
+    """The legend's words for a curve: the converged mode's rungs as the paper law's (views.style otherwise)."""
+    if engine == "reference" and dialect in (EXTRAPOLATED, ADAPTIVE):
+        return f"paper law, {dialect.split(', ')[1]} (converged mode)"
+    return style.label(engine, dialect)
+
+
 def _curves(cost):
     """(engine, dialect, ladder rows aggregated over e_n, Rayleigh row, converged row) per curve."""
     for (engine, dialect), per_curve in per_rung(cost).groupby(["engine", "dialect"], sort=False):
@@ -46,9 +53,9 @@ def cost_figure(cost, x_column, x_label, metrics):
             data = ladder[np.isfinite(ladder[column]) & (ladder[column] > 0) & (ladder[x_column] > 0)]
             if data.empty:
                 if not ladder.empty:
-                    missing.append(style.label(engine, dialect))
+                    missing.append(curve_label(engine, dialect))
                 continue
-            line, = ax.plot(data[x_column], data[column], label=style.label(engine, dialect),
+            line, = ax.plot(data[x_column], data[column], label=curve_label(engine, dialect),
                             **curve_style(engine, dialect))
             handles.setdefault(line.get_label(), line)
             for row in rayleigh.itertuples():
@@ -77,11 +84,20 @@ def cost_figure(cost, x_column, x_label, metrics):
     axes[0][0].set_ylabel("relative error (worst e_n)")
     marks = [plt.Line2D([], [], marker="D", mfc="none", color="k", ls="none", label="20% of the Rayleigh time"),
              plt.Line2D([], [], marker="*", color="k", ls="none", label="converged mode")]
-    fig.legend(handles=[*handles.values(), *marks], loc="outside lower center", ncols=min(4, len(handles) + 2),
-               fontsize=7, frameon=False)
+    legend_inside(fig, [*handles.values(), *marks])
     svg = figure_svg(fig)
     plt.close(fig)
     return svg
+
+
+def legend_inside(fig, handles, most=4):
+    """One legend below the panels, in as many columns (at most `most`) as the figure's width holds."""
+    renderer = fig.canvas.get_renderer()
+    for ncols in range(min(most, len(handles)), 0, -1):
+        legend = fig.legend(handles=handles, loc="outside lower center", ncols=ncols, fontsize=7, frameon=False)
+        if ncols == 1 or legend.get_window_extent(renderer).width <= fig.bbox.width:
+            return legend
+        legend.remove()
 
 
 def timing_cells(cost):
