@@ -3,7 +3,8 @@ import os
 
 import pandas as pd
 
-from ..analyses.cost import COLUMNS, LADDER, convergence_orders, recommendations, step_times, verdict
+from ..analyses.cost import COLUMNS, LADDER, MEASURE, convergence_orders, step_times
+from ..analyses.cost_answer import answers, notes, recommendations, verdict
 from ..api import able_engines
 from ..campaign.store import RunCache, Store
 from ..cost_plan import check_ladder, cost_table
@@ -52,10 +53,12 @@ def main(args):
     asked = set(request.engines or ()) - {"reference"}
     code = EXIT_ENGINE if failures or asked & {name for name, _ in skipped} else EXIT_OK
     if args.json:
+        found = answers(table)
         print(strict_json.dumps({
-            "model": law.name, "exit_code": code, "verdict": verdict(table).to_dict("records"),
+            "model": law.name, "exit_code": code, "measure": MEASURE,
+            "verdict": verdict(table, found).to_dict("records"), "notes": notes(found),
             "step_times": step_times(table).to_dict("records"),
-            "recommendations": recommendations(table).to_dict("records"),
+            "recommendations": recommendations(table, found).to_dict("records"),
             "orders": convergence_orders(table).to_dict("records"), "skipped": skipped,
             "failed": [{"engine": f.engine, "e_n": f.e_n, "message": f.message} for f in failures],
             "files": {"cost": os.path.join(args.output, COST), "report": report}}, indent=1, default=str))

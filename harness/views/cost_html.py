@@ -4,12 +4,13 @@ import numpy as np
 from . import style
 from .drawing import draw_all
 from .pieces import figure_svg, number, records
-from ..analyses.cost import (ADAPTIVE, EXTRAPOLATED, METRICS, NOT_RESOLVED, TOLERANCES, convergence_orders, ladder_rows,
-                             per_rung, recommendations, step_times, verdict)
+from ..analyses.cost import (ADAPTIVE, EXTRAPOLATED, MEASURE, METRICS, NOT_RESOLVED, TOLERANCES, convergence_orders,
+                             ladder_rows, per_rung, step_times)
+from ..analyses.cost_answer import answers, notes, recommendations, steps_text, verdict
 from ..outputs import COST, COST_RUN, COST_TRUTH
 
-LABELS = {"e_n": "e_n", "e_t": "e_t", "omega_star": "Omega*", "t_contact": "contact time", "f_n_max": "peak force",
-          "max": "worst metric"}
+LABELS = {"v_n1": "v_n1 (of V)", "v_t1": "v_t1 (of V)", "omega1": "R omega1 (of V)",
+          "t_contact": "contact time (of its largest)", "f_n_max": "peak force (of its largest)", "max": "worst metric"}
 
 
 def curve_style(engine, dialect):
@@ -81,7 +82,7 @@ def cost_figure(cost, x_column, x_label, metrics):
             axis.set_major_locator(LogLocator(base=10, numticks=5))
             axis.set_minor_formatter(NullFormatter())
         ax.grid(alpha=0.3, which="major")
-    axes[0][0].set_ylabel("relative error (worst e_n)")
+    axes[0][0].set_ylabel("error (worst impact and e_n)")
     marks = [plt.Line2D([], [], marker="D", mfc="none", color="k", ls="none", label="20% of the Rayleigh time"),
              plt.Line2D([], [], marker="*", color="k", ls="none", label="converged mode")]
     legend_inside(fig, [*handles.values(), *marks])
@@ -91,11 +92,14 @@ def cost_figure(cost, x_column, x_label, metrics):
 
 
 def legend_inside(fig, handles, most=4):
-    """One legend below the panels, in as many columns (at most `most`) as the figure's width holds."""
+    """One legend below the panels, in as many columns (at most `most`) as the figure's width holds; the figure
+    grows by its height, so that the panels keep theirs."""
     renderer = fig.canvas.get_renderer()
     for ncols in range(min(most, len(handles)), 0, -1):
         legend = fig.legend(handles=handles, loc="outside lower center", ncols=ncols, fontsize=7, frameon=False)
-        if ncols == 1 or legend.get_window_extent(renderer).width <= fig.bbox.width:
+        extent = legend.get_window_extent(renderer)
+        if ncols == 1 or extent.width <= fig.bbox.width:
+            fig.set_figheight(fig.get_figheight() + extent.height / fig.dpi)
             return legend
         legend.remove()
 
@@ -109,13 +113,17 @@ def timing_cells(cost):
     return records(shown.rename(columns={"s_per_impact_step": "s per impact-step", "message": "timed on"}))
 
 
-def verdict_cells(cost):
-    """The verdict box's rows (analyses.cost.verdict), a time not resolved said as such."""
-    verdicts = verdict(cost)
+def verdict_cells(cost, found):
+    """The verdict box's rows (analyses.cost_answer.verdict), a time not resolved said as such, the steps marked as
+    the terminal marks them (analyses.cost_answer.steps_text)."""
+    verdicts = verdict(cost, found)
     if verdicts.empty:
         return None
     verdicts["s/impact-step"] = [number(v) if v == v else NOT_RESOLVED for v in verdicts["s/impact-step"]]
-    return records(verdicts.drop(columns=["timing"]))
+    for key in ("1%", "0.1%"):
+        verdicts[f"steps/contact for {key}"] = [steps_text(v, how) for v, how in
+                                                zip(verdicts[f"steps/contact for {key}"], verdicts[f"how for {key}"])]
+    return records(verdicts.drop(columns=["timing", "how for 1%", "how for 0.1%"]))
 
 
 def cost_section(cost, uncertainty, run):
@@ -130,10 +138,13 @@ def cost_section(cost, uncertainty, run):
         (f"{model}: error of each metric against steps per contact (the adaptive curve: force evaluations)",
          f"{model}-errors-vs-steps-per-contact", (cost_figure, (cost, "n", "steps or evaluations/contact", METRICS))))
     figures = list(zip(titles, draw_all(list(calls)), names))
+    found = answers(cost)
     refused = cost[cost.status == "refused"].drop_duplicates(["engine", "dialect", "rung"])
     times = step_times(cost)
-    return {"figures": figures, "recommendations": records(recommendations(cost)),
-            "verdict": verdict_cells(cost), "timings": timing_cells(cost),
+    return {"figures": figures, "recommendations": records(recommendations(cost, found)),
+            "verdict": verdict_cells(cost, found), "notes": notes(found, TOLERANCES[:2], verdict_only=True),
+            "all_notes": notes(found), "measure": MEASURE,
+            "timings": timing_cells(cost),
             "unresolved": list(times[times.timing == NOT_RESOLVED].engine), "files": (COST, COST_TRUTH, COST_RUN),
             "orders": records(convergence_orders(cost)),
             "refused": records(refused[["engine", "dialect", "rung", "message"]]),
