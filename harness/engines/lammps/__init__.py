@@ -26,6 +26,7 @@ class Lammps(Engine):
             "the paper's dashpot is calibrated for a force clipped at 0; LAMMPS does not clip (docs/lammps-dialect.md)",
     }
     COLOUR, DASHES = "tab:purple", "-."
+    STARTUP_S, SPHERE_STEP_S = 0.4, 0.1e-6      # harness cost: start-ups of 0.32-0.42 s, 9.6e-8 s per impact-step
     read_batch = staticmethod(read_batch)
 
     def run_inputs(self, flavour, count, timeout_s, workdir):
