@@ -27,7 +27,7 @@ FIRST_IMPACTS = 256              # on copies of the scene's impacts of its first
 GROWTH = 16                      # this many times more while the net time is not resolved (or as many as it needs):
 MAX_TIMING_STEPS = 2 ** 16       # steps per contact up to this many (an engine's start-up does not grow with them),
 MAX_TIMING_IMPACTS = 4096        # then impacts up to this many (an engine's start-up grows with them),
-MAX_TIMING_ROUNDS = 5            # in at most this many rounds
+MAX_TIMING_ROUNDS = 6            # in at most this many rounds
 
 
 def truth_rows(rows, law_name, dialect, truth):
