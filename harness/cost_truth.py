@@ -51,8 +51,9 @@ def truth_of(law, scene, cache=None):
     truth, changes, finer = refined(law, scene, fine, changes, steps, cache)
     said = f"{steps} steps/contact"
     if finer:
-        said += (f"; {len(finer[0][1])} impacts changing by more than {TRUTH_TARGET:.0e} refined, up to "
-                 f"{finer[-1][0]}")
+        count = len(finer[0][1])
+        said += (f"; {count} impact{'s' if count > 1 else ''} changing by more than {TRUTH_TARGET:.0e} refined, up "
+                 f"to {finer[-1][0]}")
     return Truth(truth, per_e_n(changes, truth, said), levels + finer)
 
 

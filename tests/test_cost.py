@@ -294,7 +294,8 @@ def test_an_interrupted_study_keeps_its_rows_and_reports(tmp_path, monkeypatch):
                  "--ladder", "20,100", "-o", str(out)])
     assert code == 130
     table = pd.read_csv(out / "cost.csv", dtype={"rung": str})
-    assert set(table.rung) == {"20", "100", "rayleigh", "converged", "per impact-step"}   # the paper's dashpot:
+    assert set(table.rung) == {"20", "100", "rayleigh", "converged", "per impact-step", "truth 32768",
+                               "truth 65536"}                           # the paper's dashpot:
     assert set(table.dialect) == {"paper", EXTRAPOLATED}                 # the ladder's rungs start at 20 and 100 too
     assert set(table.engine) == {"reference"}
     assert "what accuracy costs in time" in Path(rebuild(str(out))).read_text()

@@ -76,6 +76,7 @@ def main(args):
         return code
     if not args.quiet:
         print_cost(table, uncertainty, law, scene, ladder, skipped, failures, verbose=args.verbose)
-    print(f"wrote {COST} and {os.path.basename(report)} in {args.output} after {took / 60:.1f} min (estimated "
-          f"{estimate / 60:.1f})" + ("" if args.verbose or args.quiet else " (every table: --verbose)"))
+        print(f"took {took / 60:.1f} min (estimated {estimate / 60:.1f} min)")
+    print(f"wrote {COST} and {os.path.basename(report)} in {args.output}" + (
+        "" if args.verbose or args.quiet else " (every table: --verbose)"))
     return code

@@ -264,9 +264,10 @@ def verdict_table(table, found=None):
 def cost_tables(table, uncertainty, found=None):
     """The cost study's tables (--verbose): errors and times per rung, recommended time steps, orders of
     convergence, each curve's time per impact-step."""
-    print(f"\n{MEASURE}; net_wall_s: the fastest of repeated timings, summed over e_n, engine start-up (timed the "
-          f"same way) excluded; '{WITHIN_NOISE}' where that is not above the timings' spread; rungs 'truth N': the "
-          f"levels of the converged reference")
+    print()
+    print(wrapped(f"{MEASURE}; net_wall_s: the fastest of repeated timings, summed over e_n, engine start-up (timed "
+                  f"the same way) excluded; '{WITHIN_NOISE}' where that is not above the timings' spread; rungs "
+                  f"'truth N': the levels of the converged reference"))
     for curve, per_e in uncertainty.items():
         worst = max(errs["err_max"] for errs in per_e.values())
         truth = next(iter(per_e.values())).get("truth", "")
