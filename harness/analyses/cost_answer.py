@@ -106,7 +106,7 @@ def answer(curve, tol, agreement=np.nan):
         if found is not None and missed < found.steps <= chosen.n:
             return replace(found, note=f"{found.note}, between {missed:.0f} (missed) and {chosen.n:.0f} (met)")
         return Answer(chosen.n, chosen["dt"], chosen.per_impact, "at most",
-                      f"met there, missed at {missed:.0f}, not measured between ({orders_said})")
+                      f"met there and missed at {missed:.0f}, not measured between; {orders_said}")
     found = _extrapolated(curve, tol, order)
     if found is not None:
         return replace(found, note=f"{found.note}, beyond its finest rung")
@@ -123,15 +123,15 @@ def _order(curve):
     own = curve[curve.ok & curve.ladder & ~curve.borrowed & (curve.err > RESOLVED_ABOVE * curve.truth)
                 & (curve.err > 0)]
     if len(own) < 3:
-        return np.nan, f"its order is not resolved (fewer than 3 rungs above {RESOLVED_ABOVE:g}x its truth's " \
-                       f"uncertainty)"
+        return np.nan, f"its order is not resolved: fewer than 3 rungs above {RESOLVED_ABOVE:g}x its truth's " \
+                       f"uncertainty"
     last = own.iloc[-3:]
     n, err = np.log(last.n.to_numpy()), np.log(last.err.to_numpy())
     local = -np.diff(err) / np.diff(n)
     said = (f"local orders {local[0]:.2f} and {local[1]:.2f} over {last.n.iloc[0]:.0f}..{last.n.iloc[-1]:.0f} "
             f"steps/contact")
     if local.min() < MIN_ORDER or abs(local[0] - local[1]) > ORDER_SPREAD * local.max():
-        return np.nan, f"its order is not resolved ({said}; resolved: both above {MIN_ORDER:g}, within " \
+        return np.nan, f"its order is not resolved: {said} (resolved: both above {MIN_ORDER:g}, within " \
                        f"{ORDER_SPREAD:.0%})"
     return float(-np.polyfit(n, err, 1)[0]), said
 
@@ -174,8 +174,8 @@ def notes(found, tolerances=TOLERANCES, verdict_only=False):
         for tol in tolerances:
             a = per_tol[tol]
             if a.note:
-                steps = "" if a.steps != a.steps else f"{'at most ' if a.how == 'at most' else ''}{a.steps:.0f} " \
-                                                      f"steps/contact "
+                steps = ("" if a.steps != a.steps else f"at most {a.steps:.0f} steps/contact, " if a.how == "at most"
+                         else f"{a.steps:.0f} steps/contact ")
                 said.setdefault(steps + a.note, []).append(key(tol))
         out += [f"{name} {' and '.join(keys)}: {note}" for note, keys in said.items()]
     return out
