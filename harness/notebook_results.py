@@ -73,7 +73,7 @@ class CostStudy:
     @property
     def recommendations(self):
         """Per curve: the largest time step within each tolerance, its steps per contact and wall time."""
-        from .analyses.cost import recommendations
+        from .analyses.cost_answer import recommendations
         return recommendations(self.table)
 
     @property

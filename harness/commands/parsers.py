@@ -90,7 +90,7 @@ def cost_parser(sub, describe):
     add_scene_options(p, resolution=False)
     p.add_argument("--ladder", default=None, metavar="LIST",
                    help="steps per contact to try (default 5,10,20,50,100,200,500,1000,5000)")
-    p.add_argument("-o", "--output", default="harness-out", metavar="DIR",
+    p.add_argument("-o", "--output", default="harness-cost", metavar="DIR",
                    help="output directory (default %(default)s)")
     p.add_argument("--store", metavar="STORE", help="a campaign store: the converged truths' runs are taken from it "
                                                     "or added to it (timed runs never are)")

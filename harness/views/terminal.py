@@ -1,6 +1,7 @@
 """The terminal view: fixed-width tables and what compare, check, cost and paper print."""
-from ..analyses.cost import (METRICS, NOT_RESOLVED, RAYLEIGH_FRACTION, WITHIN_NOISE, convergence_orders, per_rung,
-                              rayleigh_time, recommendations, step_times, verdict)
+from ..analyses.cost import (MEASURE, METRICS, NOT_RESOLVED, RAYLEIGH_FRACTION, TOLERANCES, WITHIN_NOISE,
+                              convergence_orders, per_rung, rayleigh_time, step_times)
+from ..analyses.cost_answer import answers, key, notes, recommendations, steps_text, verdict
 from ..analyses.causes import MENTION
 from ..analyses.physics import CHECK_WORDS, Tolerances
 from ..analyses.published import GOAL, meets_goal
@@ -234,8 +235,9 @@ def print_comparison(comparison, written):
 
 
 def print_cost(table, uncertainty, law, scene, ladder, skipped, failures, verbose=False):
-    """What a person reads after cost (at most 40 lines of 120 columns): the verdict per engine against the paper
-    scheme, then skipped, refused and failed runs; with `verbose` every table too (cost_tables)."""
+    """What a person reads after cost (at most 40 lines of 120 columns): the measure, the verdict per engine against
+    the paper scheme and how each number was found, then skipped, refused and failed runs; with `verbose` every
+    table too (cost_tables)."""
     t_r = rayleigh_time(scene)
     width = 118
     def say(text):
@@ -245,14 +247,15 @@ def print_cost(table, uncertainty, law, scene, ladder, skipped, failures, verbos
         f"{counted(len(scene.impacts(scene.e_n[0])[0]), 'impact')}; "
         f"ladder {','.join(map(str, ladder))} steps/contact and {RAYLEIGH_FRACTION:.0%} of the Rayleigh time "
         f"(dt {RAYLEIGH_FRACTION * t_r:.3g} s)")
-    say("worst metric's error against the converged reference of the same dialect; time per impact = impact-steps "
-        "x the curve's time per impact-step, timed on copies of the scene's impacts until resolved:")
-    print(verdict_table(table))
+    say(f"{MEASURE}, its uncertainty ('truth +-') added; time per impact = impact-steps x the curve's time per "
+        f"impact-step, timed on copies of the scene's impacts until resolved:")
+    found = answers(table)
+    print(verdict_table(table, found))
+    for note in notes(found, TOLERANCES[:2], verdict_only=True):
+        say(f"  {note}")
     times = step_times(table)
     for row in times[times.timing == NOT_RESOLVED].itertuples():
         say(f"  {row.engine} ({row.dialect}): time per impact-step NOT RESOLVED: {row.message}")
-    truths = ", ".join(f"{curve} {max(e['err_max'] for e in per_e.values()):.1e}" for curve, per_e in uncertainty.items())
-    say(f"converged references' uncertainty (errors below it are not resolved): {truths}")
     for name, reason in skipped:
         say(f"skipped {name}: {reason}")
     refused = table[table.status == "refused"].drop_duplicates(["engine", "dialect", "rung"])
@@ -264,34 +267,38 @@ def print_cost(table, uncertainty, law, scene, ladder, skipped, failures, verbos
         if verbose:
             print(failure.log_tail)
     if verbose:
-        cost_tables(table, uncertainty)
+        cost_tables(table, uncertainty, found)
 
 
-def verdict_table(table):
-    """The verdict (analyses.cost.verdict) as a fixed-width table of at most 120 columns."""
-    verdicts = verdict(table)
+def verdict_table(table, found=None):
+    """The verdict (analyses.cost_answer.verdict) as a fixed-width table of at most 120 columns."""
+    verdicts = verdict(table, found)
     if verdicts.empty:
         return "  (no curve ran)"
-    finest = max((int(r) for r in table.rung.dropna() if str(r).isdigit()), default=0)
     shown = verdicts.assign(**{"s/impact-step": [f"{v:.3g}" if v == v else NOT_RESOLVED
-                                                for v in verdicts["s/impact-step"]]})
-    for column in ("steps/contact for 1%", "steps/contact for 0.1%"):
-        shown[column] = [f"{v:.0f}" if v == v else f">{finest}" for v in shown[column]]
+                                                for v in verdicts["s/impact-step"]],
+                               "truth uncertainty": [f"{v:.1e}" if v == v else "-"
+                                                     for v in verdicts["truth uncertainty"]]})
+    for key in ("1%", "0.1%"):
+        shown[f"steps/contact for {key}"] = [steps_text(v, how) for v, how in zip(shown[f"steps/contact for {key}"],
+                                                                                   shown[f"how for {key}"])]
     for column in ("s/impact for 1%", "x paper for 1%", "s/impact for 0.1%", "x paper for 0.1%", "20% T_R error"):
         shown[column] = [f"{v:.3g}" if v == v else "-" for v in shown[column]]
-    names = {"engine": "curve", "s/impact-step": "s/impact-step", "steps/contact for 1%": "1%: steps",
-             "s/impact for 1%": "s/impact", "x paper for 1%": "x paper", "steps/contact for 0.1%": "0.1%: steps",
-             "s/impact for 0.1%": "s/impact ", "x paper for 0.1%": "x paper ", "20% T_R error": "20% T_R error"}
+    names = {"engine": "curve", "s/impact-step": "s/impact-step", "truth uncertainty": "truth +-",
+             "steps/contact for 1%": "1%: steps", "s/impact for 1%": "s/impact", "x paper for 1%": "x paper",
+             "steps/contact for 0.1%": "0.1%: steps", "s/impact for 0.1%": "s/impact ", "x paper for 0.1%": "x paper ",
+             "20% T_R error": "20% T_R error"}
     shown = shown.rename(columns=names)
     return text_table(shown, list(names.values()))
 
 
-def cost_tables(table, uncertainty):
+def cost_tables(table, uncertainty, found=None):
     """The cost study's tables (--verbose): errors and times per rung, recommended time steps, orders of
     convergence, each curve's time per impact-step."""
-    print("\nerrors: max over impacts |x - x*| / max |x*| against the converged reference of the same dialect; "
-          "net_wall_s: the fastest of repeated timings, summed over e_n, engine start-up (timed the same way) "
-          f"excluded; '{WITHIN_NOISE}' where that is not above the timings' spread")
+    print()
+    print(wrapped(f"{MEASURE}; net_wall_s: the fastest of repeated timings, summed over e_n, engine start-up (timed "
+                  f"the same way) excluded; '{WITHIN_NOISE}' where that is not above the timings' spread; rungs "
+                  f"'truth N': the levels of the converged reference"))
     for curve, per_e in uncertainty.items():
         worst = max(errs["err_max"] for errs in per_e.values())
         truth = next(iter(per_e.values())).get("truth", "")
@@ -302,22 +309,25 @@ def cost_tables(table, uncertainty):
                           for wall, timing in zip(rows.net_wall_s, rows.timing)]
     refused = table[table.status == "refused"].drop_duplicates(["engine", "dialect", "rung"])
     print()
-    print(text_table(rows, ["engine", "dialect", "rung", "steps_per_contact", "dt", "net_wall_s", "err_e_n", "err_e_t",
-                            "err_omega_star", "err_t_contact", "err_f_n_max"],
+    print(text_table(rows, ["engine", "dialect", "rung", "steps_per_contact", "dt", "net_wall_s",
+                            *(f"err_{m}" for m in METRICS)],
                      {"steps_per_contact": "{:.4g}", "dt": "{:.3g}", **{f"err_{m}": "{:.1e}" for m in METRICS}}))
     for _, r in refused.iterrows():
         print(f"  refused: {r.engine}/{r.dialect} at {r.rung}: {r.message}")
-    print("\nrecommended time step (coarsest rung within tolerance at every e_n, worst metric, and every finer rung too):")
-    rec = recommendations(table)
+    print("\nrecommended time step (coarsest rung within tolerance at every e_n, worst metric with its truth's "
+          "uncertainty, and every finer rung too; how: f its formulas beyond its ladder, ~ extrapolated, <= a bound):")
+    rec = recommendations(table, found)
+    for tol in TOLERANCES:
+        column = f"steps/contact for {key(tol)}"
+        rec[column] = [steps_text(v, how) for v, how in zip(rec[column], rec[f"how for {key(tol)}"])]
     cols = [c for c in rec.columns if c.startswith("dt for") or c.startswith("steps/contact")] + ["error at 20% Rayleigh"]
-    print(text_table(rec, ["engine", "dialect", *cols], {c: "{:.3g}" for c in cols}))
+    print(text_table(rec, ["engine", "dialect", *cols], {c: "{:.3g}" for c in cols if not c.startswith("steps")}))
+    for note in notes(found if found is not None else answers(table)):
+        print(wrapped(note, indent=4))
     print("\norder of convergence (slope of log error against log steps per contact, rungs >= 20; the adaptive "
           "curve: against force evaluations per contact):")
     orders = convergence_orders(table)
     print(text_table(orders, ["engine", "dialect", *METRICS], {m: "{:.2f}" for m in METRICS}))
-    print("\ntime per impact-step of each curve (its timing run):")
-    for row in step_times(table).itertuples():
-        print(wrapped(f"  {row.engine} ({row.dialect}): {row.s_per_impact_step:.3g} s: {row.message}", indent=4))
 
 
 def sliding_summary(sliding, psi_max):

@@ -40,6 +40,7 @@ class Lammps(Engine):
                           "T. D. and Shan, R. and Stevens, M. J. and Tranchida, J. and Trott, C. and Plimpton, S. J.",
                 "journal": "Computer Physics Communications", "volume": "271", "pages": "108171", "year": "2022",
                 "doi": "10.1016/j.cpc.2021.108171"}
+    STARTUP_S, SPHERE_STEP_S = 0.4, 0.1e-6      # harness cost: start-ups of 0.32-0.42 s, 9.6e-8 s per impact-step
     read_batch = staticmethod(read_batch)
 
     def run_inputs(self, flavour, count, timeout_s, workdir):
