@@ -39,7 +39,7 @@ LONG = {   # command as shown (without .venv/bin/) -> why it does not run here
                      "committed file to what it generates)",
     "harness baseline --update": "rewrites the committed baseline on purpose, running every engine "
                                  "(tests/test_engine_builds.py updates one in a temporary directory)",
-    "harness cost --model hertz-mindlin": "a cost study with every engine: minutes (tests/test_cost.py)",
+    "harness cost --model hertz-mindlin --verbose": "a cost study with every engine: minutes (tests/test_cost.py)",
     "python benchmarks/bench_commands.py": "times the commands cold and warm, several times each: minutes "
                                            "(tests/test_benchmarks.py runs its --smoke size)",
     "python tools/signals_under_load.py --runs 50": "fifty interrupted compares with both cores busy: minutes "
