@@ -5,7 +5,8 @@ import glob
 import os
 
 from ..base import Engine, split_submodels
-from .deck import BINARY_VARIABLE, OBSERVE_DUMP, TEMPLATES, deck, read_batch, render_batch, run_inputs, settings
+from .deck import (BINARY_VARIABLE, OBSERVE_DUMP, TEMPLATES, deck, read_batch, render_batch, run_inputs, settings,
+                   typed)
 from .dialect import (COUNTERPARTS, DIALECTS, HISTORY_STYLES, INGREDIENTS, OPTIONS, PAIR_DIALECTS, check_options,
                       dialect, ingredients, walls, words)
 from .versions import dialect_note, release
@@ -26,6 +27,7 @@ class Lammps(Engine):
             "the paper's dashpot is calibrated for a force clipped at 0; LAMMPS does not clip (docs/lammps-dialect.md)",
     }
     COLOUR, DASHES = "tab:purple", "-."
+    CONTACT_LINES = ("pair_style", "pair_coeff", "fix wall ")
     read_batch = staticmethod(read_batch)
 
     def run_inputs(self, flavour, count, timeout_s, workdir):
@@ -48,6 +50,9 @@ class Lammps(Engine):
         found = glob.glob(os.path.join(os.path.dirname(os.path.dirname(binary)), "lib", "python3*", "site-packages",
                                        "lammps", "lmp"))
         return found[0] if found else binary
+
+    def typed_inputs(self, lines):
+        return typed(lines)
 
     def dialect_note(self):
         """'' where the chosen binary's release was checked against its dialect, else the one-line reason."""
