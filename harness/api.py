@@ -37,8 +37,10 @@ def run_request(request, on_frame=None, progress=None):
     return with_bodies(table, request.scene) if request.scene.spheres else table
 
 
-def calibrate_request(request, engine, tolerances=None, timestep_tolerance=1e-2):
-    """calibrate() of a validated request: one line for what a calibration cannot take."""
+def calibrate_request(request, tolerances=None, timestep_tolerance=1e-2):
+    """calibrate() of a validated request naming one engine build: one line for what a calibration cannot take, before
+    anything runs (a --with its inputs cannot follow is refused by compare's own check, options_for)."""
+    engine = calibration_engine(request.engines)
     scene = request.scene
     if scene.psi1_star is not None:
         raise UserError("calibrate sweeps impact angles or tangential speeds (--angles, --vt), not --psi: an "
@@ -51,8 +53,26 @@ def calibrate_request(request, engine, tolerances=None, timestep_tolerance=1e-2)
     if not engine.supports(request.law.name):
         raise UserError(f"{engine.NAME} has no counterpart of {request.law.name}")
     check_timestep_tolerance(timestep_tolerance)
+    fixed = options_for(request, engine.NAME)
+    (status,) = statuses(request)
+    if not status.available and status.reason != engine.status(request.law.name, fixed).reason:
+        raise UserError(f"{engine.NAME} cannot be calibrated on this scene: {status.reason}")   # not a missing engine
     return run_calibration(engine, request.law, scene, int(request.resolution), tolerances or request.tolerances,
-                           timestep_tolerance)
+                           timestep_tolerance, fixed=fixed)
+
+
+def calibration_engine(names):
+    """The one engine build a calibration is for, from the engines a request names: the reference solver, which
+    computes the paper law itself, and several builds (ENGINE@all) are refused in one line."""
+    names = tuple(names or ())
+    if "reference" in names:
+        raise UserError(f"calibrate finds the inputs of an engine ({', '.join(EXTERNAL)}); the reference solver "
+                        f"computes the paper law itself and has none to calibrate")
+    if len(names) != 1:
+        code = names[0].partition("@")[0] if names else "ENGINE"
+        raise UserError(f"calibrate takes one engine build, and {len(names)} were named ({', '.join(names)}): "
+                        f"calibrate each with --engine {code}@VERSION")
+    return ENGINES[names[0]]
 
 
 def check_timestep_tolerance(value):

@@ -79,7 +79,7 @@ def calibrate_parser(sub, describe):
                         "force against the engine's own formulas at a vanishing step (default 0.01)")
     p.add_argument("-o", "--output", default="calibrated", metavar="DIR",
                    help="output directory (default %(default)s)")
-    add_output_options(p)
+    add_output_options(p, json=True)
     p.set_defaults(func=runs("calibrate"))
 
 

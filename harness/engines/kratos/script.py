@@ -26,6 +26,22 @@ RESULT, OBSERVED = "result.json", "observe.json"
 CLEARANCE = 1e-12
 
 
+def typed(lines):
+    """[(name, value)] of a script's contact lines: each material's numbers ("ball YOUNG_MODULUS") and the relation's
+    (COEFFICIENT_OF_RESTITUTION, the frictions, the constitutive law), as Kratos names them."""
+    import re
+    out, material = [], ""
+    for line in lines:
+        opened = re.match(r'\s*"(\w+)": \{', line)
+        if opened:
+            material = opened.group(1) + " "
+        elif line.startswith("RELATION"):
+            material = ""
+        out += [(material + name, value.strip('"')) for name, value in
+                re.findall(r'"([A-Z_]+)": ("[^"]*"|[^,}\s]+)', line)]
+    return out
+
+
 def wall_spheres(scene, spec):
     """Every impact's sphere touching the plane z = 0 (CLEARANCE), 4R apart, each over its own square of the wall (3R
     wide); the materials of the sphere and the wall."""

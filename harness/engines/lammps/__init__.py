@@ -5,7 +5,8 @@ import glob
 import os
 
 from ..base import Engine, split_submodels
-from .deck import BINARY_VARIABLE, OBSERVE_DUMP, TEMPLATES, deck, read_batch, render_batch, run_inputs, settings
+from .deck import (BINARY_VARIABLE, OBSERVE_DUMP, TEMPLATES, deck, read_batch, render_batch, run_inputs, settings,
+                   typed)
 from .dialect import (COUNTERPARTS, DIALECTS, HISTORY_STYLES, INGREDIENTS, OPTIONS, PAIR_DIALECTS, check_options,
                       dialect, ingredients, releases_of, walls, words)
 from .versions import checked, dialect_note, release
@@ -41,6 +42,7 @@ class Lammps(Engine):
                 "journal": "Computer Physics Communications", "volume": "271", "pages": "108171", "year": "2022",
                 "doi": "10.1016/j.cpc.2021.108171"}
     STARTUP_S, SPHERE_STEP_S = 0.4, 0.1e-6      # harness cost: start-ups of 0.32-0.42 s, 9.6e-8 s per impact-step
+    CONTACT_LINES = ("pair_style", "pair_coeff", "fix wall ")
     read_batch = staticmethod(read_batch)
 
     def run_inputs(self, flavour, count, timeout_s, workdir):
@@ -63,6 +65,9 @@ class Lammps(Engine):
         found = glob.glob(os.path.join(os.path.dirname(os.path.dirname(binary)), "lib", "python3*", "site-packages",
                                        "lammps", "lmp"))
         return found[0] if found else binary
+
+    def typed_inputs(self, lines):
+        return typed(lines)
 
     def dialect_note(self):
         """'' where the chosen binary's release was checked against its dialect, else the one-line reason."""

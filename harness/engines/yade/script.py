@@ -72,6 +72,18 @@ def script(law, scene, spec, linear="viscel", observe=False):
                   ip2="Ip2_FrictMat_FrictMat_MindlinPhys", ip2_args=[("en", e_n), ("es", e_n)])
 
 
+def typed(lines):
+    """[(name, value)] of a script's contact lines: the material's class and each number it or the physics functor
+    takes (as YADE names them), and the functors."""
+    import re
+    out = []
+    for line in lines:
+        out += [("material", m) for m in re.findall(r"= (\w+Mat)\(", line)]
+        out += [(name, value) for name, value in re.findall(r"(\w+)=Real\(\"([^\"]+)\"\)", line)]
+        out += [(name.split("_")[0], name) for name in re.findall(r"\b((?:Ip2|Law2)_\w+)\(", line)]
+    return out
+
+
 def pair_script(scene, e_n, v_n0, v_t0, omega0, common):
     """The batched script of two-sphere impacts (Mindlin): every projectile touching its own target below it (at
     rest, fixed or free, its own material and spin), their relative velocity the impact's; omega0 is the equivalent
