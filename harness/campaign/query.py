@@ -74,6 +74,7 @@ def connection(store):
         raise UserError(f"store {store.path}: its fragments' columns do not agree ({first_line(exc)})") from None
     db = duckdb.connect(":memory:", config=LOCKED)
     db.execute("SET enable_progress_bar = false")     # not settable at connect; nothing else runs before the lock
+    page_views.register_release_order(db)
     db.execute("SET lock_configuration = true")
     whole = [paths[name] for name, keys in copies.items() if keys == store.held[name]]
     parts = []
