@@ -13,7 +13,8 @@ import time
 import numpy as np
 
 from harness.analyses.cost import relative_errors
-from harness.cost_plan import startup_seconds, truth_of
+from harness.cost_plan import startup_seconds
+from harness.cost_truth import truth_of
 from harness.engines import ENGINES, EXTERNAL
 from harness.execute import execute
 from harness.laws import compose
@@ -69,7 +70,7 @@ def main(smoke=False):
         SCENE, TARGET = Scene(e_n=(0.5,), angles_deg=(10.0, 40.0, 70.0)), 1e-2
     simulate(LAW, SCENE, steps_per_contact=20)                      # compile outside the timing
     results = {}
-    truth, _ = truth_of(LAW, SCENE)
+    truth = truth_of(LAW, SCENE).frame
     n, wall, error = reference_cost(LAW, truth)
     results["reference (paper law)"] = (n, wall, 0.0, error)
     start = time.perf_counter()
@@ -81,7 +82,7 @@ def main(smoke=False):
         if not adapter.available():
             print(f"{name}: not installed, skipped")
             continue
-        dialect_truth, _ = truth_of(adapter.dialect(LAW.name), SCENE)
+        dialect_truth = truth_of(adapter.dialect(LAW.name), SCENE).frame
         results[name] = engine_cost(name, dialect_truth)
     base = results["reference (paper law)"][1]
     print(f"cost of max e_t error <= {TARGET:g} over a {len(SCENE.angles_deg)}-angle hertz-mindlin sweep at e_n 0.5 "

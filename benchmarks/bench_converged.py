@@ -22,7 +22,7 @@ import time
 import numpy as np
 
 from harness.analyses.cost import relative_errors
-from harness.cost_plan import truth_of
+from harness.cost_truth import truth_of
 from harness.laws import LAWS, compose
 from harness.scene import Scene
 from harness.solver import simulate as simulation
@@ -35,7 +35,7 @@ def truth_of_bench(law):
     """The adaptive integrator at tol 1e-12, and its worst difference from the 2^16-step uniform runs."""
     truth = simulate_adaptive(law, SCENE, 1e-12)
     assert (truth.status == "ok").all(), truth.message[truth.status != "ok"].tolist()
-    return truth, worst_error(truth_of(law, SCENE)[0], truth)
+    return truth, worst_error(truth_of(law, SCENE).frame, truth)
 
 
 def worst_error(frame, truth):

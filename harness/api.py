@@ -4,7 +4,7 @@ from dataclasses import replace
 
 import pandas as pd
 
-from .analyses.attribution import attribution
+from .analyses.attribution import attribute, attribution, law_key
 from .analyses.precision import precision_gap
 from .analyses.sliding import threshold_table
 from .comparison import Comparison
@@ -37,8 +37,10 @@ def run_request(request, on_frame=None, progress=None):
     return with_bodies(table, request.scene) if request.scene.spheres else table
 
 
-def calibrate_request(request, engine, tolerances=None, timestep_tolerance=1e-2):
-    """calibrate() of a validated request: one line for what a calibration cannot take."""
+def calibrate_request(request, tolerances=None, timestep_tolerance=1e-2):
+    """calibrate() of a validated request naming one engine build: one line for what a calibration cannot take, before
+    anything runs (a --with its inputs cannot follow is refused by compare's own check, options_for)."""
+    engine = calibration_engine(request.engines)
     scene = request.scene
     if scene.psi1_star is not None:
         raise UserError("calibrate sweeps impact angles or tangential speeds (--angles, --vt), not --psi: an "
@@ -51,8 +53,26 @@ def calibrate_request(request, engine, tolerances=None, timestep_tolerance=1e-2)
     if not engine.supports(request.law.name):
         raise UserError(f"{engine.NAME} has no counterpart of {request.law.name}")
     check_timestep_tolerance(timestep_tolerance)
+    fixed = options_for(request, engine.NAME)
+    (status,) = statuses(request)
+    if not status.available and status.reason != engine.status(request.law.name, fixed).reason:
+        raise UserError(f"{engine.NAME} cannot be calibrated on this scene: {status.reason}")   # not a missing engine
     return run_calibration(engine, request.law, scene, int(request.resolution), tolerances or request.tolerances,
-                           timestep_tolerance)
+                           timestep_tolerance, fixed=fixed)
+
+
+def calibration_engine(names):
+    """The one engine build a calibration is for, from the engines a request names: the reference solver, which
+    computes the paper law itself, and several builds (ENGINE@all) are refused in one line."""
+    names = tuple(names or ())
+    if "reference" in names:
+        raise UserError(f"calibrate finds the inputs of an engine ({', '.join(EXTERNAL)}); the reference solver "
+                        f"computes the paper law itself and has none to calibrate")
+    if len(names) != 1:
+        code = names[0].partition("@")[0] if names else "ENGINE"
+        raise UserError(f"calibrate takes one engine build, and {len(names)} were named ({', '.join(names)}): "
+                        f"calibrate each with --engine {code}@VERSION")
+    return ENGINES[names[0]]
 
 
 def check_timestep_tolerance(value):
@@ -133,8 +153,9 @@ def compare_request(request, on_frame=None, progress=None, partial=None):
             progress.advance(f"{run_.engine} ({run_.dialect.dialect} formulas) e_n {run_.e_n:g}"
                              + "".join(f" {k} {v}" for k, v in run_.options))
     done = run_all(plan + extra, finished, partial,
-                   meanwhile=lambda: measured.append(measurements(law, scene, engines, engine_resolution)))
-    attributions, sliding, histories = measured[0]
+                   meanwhile=lambda: measured.append(measurements(law, scene, engines, engine_resolution,
+                                                                  request.tolerances)))
+    attributions, rows, sliding, histories = measured[0]
     if progress:
         progress.advance("attribution, sliding threshold, force histories")
     results = pd.concat([frame for frame, _ in done[:len(plan)]], ignore_index=True)
@@ -148,25 +169,33 @@ def compare_request(request, on_frame=None, progress=None, partial=None):
                       arithmetic=arithmetic_of(request.engine_options),
                       builds={e.NAME: {**e.build(), "note": e.dialect_note()} for e in engines},
                       requested=request.engines, skipped=[(s.name, s.reason) for s in found if not s.available],
-                      failures=failures, attribution=attributions, sliding=sliding, precision=precision,
+                      failures=failures, attribution=attributions, attribution_rows=rows, sliding=sliding,
+                      precision=precision,
                       histories=histories, tolerances=request.tolerances)
 
 
-def measurements(law, scene, engines, steps):
+def measurements(law, scene, engines, steps, tolerances):
     """What a comparison measures beside the runs: the attribution of each engine's difference from the paper law
-    and of each pair of engines, the paper law's sliding-throughout threshold, its normal force histories."""
-    def simulate_at(l, s):
-        return simulate(l, s, steps_per_contact=steps)[0]
+    (with its rows of every impact, and pairs where the physics checks with `tolerances` need them) and of each pair
+    of engines, the paper law's sliding-throughout threshold, its normal force histories."""
+    done = {}
+
+    def simulate_at(l, s):                  # each law once: the paper law and a switched law serve every engine
+        key = law_key(l)
+        if key not in done:
+            done[key] = simulate(l, s, steps_per_contact=steps)[0]
+        return done[key]
 
     dialects = {engine.NAME: engine.dialect(law.name, options, target_of(scene)) for engine, options in engines.items()}
-    attributions = {f"{name} dialect -> paper": attribution(law, dialect, scene, simulate_at)
-                    for name, dialect in dialects.items()}
+    attributions, rows = {}, {}
+    for name, dialect in dialects.items():
+        attributions[f"{name} dialect -> paper"], rows[name] = attribute(law, dialect, scene, simulate_at, tolerances)
     names = list(dialects)
     for i, a in enumerate(names):                      # every pair of engines: which ingredients make the difference
         for b in names[i + 1:]:
             attributions[f"{a} dialect -> {b} dialect"] = attribution(dialects[b], dialects[a], scene, simulate_at)
     sliding = threshold_table(law.name, sliding_thresholds(law, scene)) if scene.mu > 0 else None
-    return attributions, sliding, normal_histories(law, scene, steps)
+    return attributions, rows, sliding, normal_histories(law, scene, steps)
 
 
 def normal_histories(law, scene, steps):

@@ -1,6 +1,7 @@
 """How to cite harness and the sources it uses: BibTeX for harness itself (version and date of harness.version),
-for Thornton, Cummins & Cleary (2013), the paper its laws and figures follow, and for Chung & Ooi (2011), the
-benchmark `harness benchmark chung-ooi` runs; and the project's address, from which a shared report links the docs."""
+for Thornton, Cummins & Cleary (2013), the paper its laws and figures follow, for Chung & Ooi (2011), the benchmark
+`harness benchmark chung-ooi` runs, and for each engine (its Engine.CITATION) with the versions installed or run;
+and the project's address, from which a shared report links the docs."""
 from .version import RELEASED, __version__
 
 PROJECT_URL = "https://github.com/harness-dem/harness"
@@ -40,6 +41,11 @@ def bibtex(entry):
     return f"@{entry['type']}{{{entry['key']},\n{fields}\n}}\n"
 
 
-def bibliography():
-    """BibTeX of harness and of every source it uses."""
-    return "\n".join(bibtex(entry) for entry in (SOFTWARE, *SOURCES))
+def engine_entry(name, citation, versions, how):
+    """An engine's entry: its publication, with a note naming the engine, its versions and how they were used."""
+    return {**citation, "note": f"{name} {', '.join(versions)}, {how}"}
+
+
+def bibliography(engines=()):
+    """BibTeX of harness, of every source it uses, and of the engine entries given (engine_entry)."""
+    return "\n".join(bibtex(entry) for entry in (SOFTWARE, *SOURCES, *engines))

@@ -10,6 +10,7 @@ from .analyses.agreement import agreement, cross_deviations, deviation
 from .analyses.findings import findings
 from .analyses.physics import Tolerances, engine_physics, overall
 from .analyses.versions import version_changes
+from .releases import in_release_order
 
 
 @dataclass
@@ -27,6 +28,7 @@ class Comparison:
     skipped: list = field(default_factory=list)          # (engine, reason)
     failures: list = field(default_factory=list)         # FailedRun
     attribution: dict = field(default_factory=dict)      # comparison name -> attribution table
+    attribution_rows: dict = field(default_factory=dict)  # engine -> its attribution's rows of every impact
     sliding: pd.DataFrame | None = None
     precision: dict | None = None
     histories: dict | None = None
@@ -35,9 +37,19 @@ class Comparison:
     partial: bool = False               # interrupted before every run finished: the results so far
     tolerances: Tolerances = field(default_factory=Tolerances)    # of the physics verdict
 
+    def __post_init__(self):
+        """Its rows, builds and attributions in the order every view shows them (shown_order), however the runs
+        finished or were saved."""
+        self.results = shown_rows(self.results, self.requested)
+        ran = list(self.results.engine.unique()) if "engine" in self.results else []
+        order = shown_order(ran + list(self.builds) + [f.engine for f in self.failures], self.requested)
+        self.builds = {name: self.builds[name] for name in order if name in self.builds}
+        self.failures = sorted(self.failures, key=lambda failure: order.index(failure.engine))
+        self.attribution = dict(sorted(self.attribution.items(), key=lambda item: attribution_rank(item[0], order)))
+
     @property
     def engines(self):
-        """The engines that ran, in the order they ran."""
+        """The engines that ran, in the order every view shows them (shown_order)."""
         return [e for e in self.results.engine.unique() if e != "reference"]
 
     @cached_property
@@ -58,7 +70,7 @@ class Comparison:
     @cached_property
     def versions(self):
         """What moved between consecutive builds of one engine, and which ingredient moves it (analyses.versions)."""
-        return version_changes(self.cross, self.attribution, self.engines)
+        return version_changes(self.results, self.cross, self.attribution, self.engines)
 
     @cached_property
     def findings(self):
@@ -69,12 +81,13 @@ class Comparison:
     def physics(self):
         """{engine: its physics verdict}: does it reproduce the paper law on this scene (harness.analyses.physics)."""
         return {e: engine_physics(self.results, e, self.tolerances, self.attribution.get(f"{e} dialect -> paper"),
-                                  self.scene.gravity) for e in self.engines}
+                                  self.scene.gravity, self.attribution_rows.get(e)) for e in self.engines}
 
     @property
     def reproduces(self):
         """The physics verdict: 'reproduces' when every engine checked reproduces the paper law, 'deviates' when one
-        does not, 'not checked' when none was."""
+        deviates, 'marginal' when the worst misses it narrowly (analyses.physics.grade), 'not checked' when none
+        was."""
         return overall([p["state"] for p in self.physics.values()])
 
     @property
@@ -101,3 +114,33 @@ class Comparison:
         """Engines asked for by name that were skipped or whose runs failed."""
         failed = {f.engine for f in self.failures}
         return sorted(e for e in (self.requested or ()) if e != "reference" and (e not in self.engines or e in failed))
+
+
+def shown_order(names, requested=None):
+    """Engines in the order every view shows them: the reference, then the engines asked for in the order asked (when
+    none were named: the registry's order), each engine's builds in release order (harness.releases), whatever the
+    order their runs finished in."""
+    from .engines.names import EXTERNAL
+    names = list(dict.fromkeys(names))
+    asked = ["reference", *(requested if requested is not None else EXTERNAL)]
+    return in_release_order([n for n in asked if n in names] + [n for n in names if n not in asked])
+
+
+def shown_rows(results, requested=None):
+    """A results table with each engine's rows together, the engines in shown_order (each engine's rows in the order
+    they were)."""
+    if "engine" not in results or results.empty:
+        return results
+    order = shown_order(results.engine.unique(), requested)
+    rank = results.engine.map({name: i for i, name in enumerate(order)}).to_numpy()
+    return results.iloc[rank.argsort(kind="stable")].reset_index(drop=True)
+
+
+def attribution_rank(name, order):
+    """Where an attribution goes: every 'A dialect -> paper' first, then 'A dialect -> B dialect', by A, then B."""
+    first, _, second = name.partition(" dialect -> ")
+    second = second.removesuffix(" dialect")
+
+    def place(engine):
+        return order.index(engine) if engine in order else len(order)
+    return (second != "paper", place(first), place(second), name)

@@ -1,6 +1,6 @@
-"""The cost study's runs (`harness cost`): each dialect's converged truth, then per curve a ladder of runs at each
-resolution, timed; the engines' start-up runs; the converged mode's own rungs. Each rung's results go to
-analyses/cost.py as soon as they are run, which turns them into cost rows."""
+"""The cost study's runs (`harness cost`): each dialect's converged truth (harness.cost_truth) and its levels, then
+per curve a ladder of runs at each resolution, timed; the engines' start-up runs; the converged mode's own rungs.
+Each rung's results go to analyses/cost.py as soon as they are run, which turns them into cost rows."""
 import math
 from dataclasses import replace
 
@@ -8,17 +8,15 @@ import numpy as np
 import pandas as pd
 
 from .analyses.cost import (ADAPTIVE, ADAPTIVE_RUNGS, COLUMNS, EXTRAPOLATED, LADDER, MIN_NET_S, RAYLEIGH_FRACTION,
-                            RESOLVE_RATIO, Rows, converged_rows, fastest, measure, per_e_n, priced, rayleigh_time,
-                            refused, resolved, step_time_row, uncertainties)
+                            RESOLVE_RATIO, TRUTH_LEVEL, Rows, contact_steps, converged_rows, fastest, measure, per_e_n,
+                            priced, rayleigh_time, refused, resolved, step_time_row)
+from .cost_truth import covered, reference, truth_of
 from .execute import execute
-from .plan import MAX_STEPS_PER_CONTACT, FixedTimeStep, engine_runs, reference_runs
+from .plan import MAX_STEPS_PER_CONTACT, FixedTimeStep, engine_runs
 from .errors import UserError
-from .solver.simulate import CONVERGED_START, adaptive_batch, simulate, simulate_adaptive, simulate_extrapolated
+from .solver.simulate import CONVERGED_START, simulate, simulate_adaptive, simulate_extrapolated
 from .solver.stability import UnstableTimeStep
 
-TRUTH_STEPS = {"paper": 2 ** 16, "engine": 2 ** 18}   # the engines' schemes are first order: a finer truth
-TRUTH_SHARPEN = 1e-7             # a paper truth less certain than this is taken from the adaptive integrator ...
-TRUTH_TOLERANCE = 1e-11          # ... at this tolerance
 TIMING_REPEATS = 3               # each timed run and each start-up is timed this often: the fastest, and the spread
 LONG_RUN_S = 5.0                 # a run this long is timed once (the machine's noise is small beside it)
 STARTUP_STEPS = 1                # a start-up run's step cap: stopped after its first separation check
@@ -28,36 +26,25 @@ FIRST_IMPACTS = 256              # on copies of the scene's impacts of its first
 GROWTH = 16                      # this many times more while the net time is not resolved (or as many as it needs):
 MAX_TIMING_STEPS = 2 ** 16       # steps per contact up to this many (an engine's start-up does not grow with them),
 MAX_TIMING_IMPACTS = 4096        # then impacts up to this many (an engine's start-up grows with them),
-MAX_TIMING_ROUNDS = 5            # in at most this many rounds
+MAX_TIMING_ROUNDS = 6            # in at most this many rounds
 
 
-def truth_of(law, scene, cache=None):
-    """Converged reference of one dialect: the finest run and its uncertainty (change from half the steps, an
-    upper bound for first- and second-order schemes alike), per e_n, each naming its truth. Where that leaves the
-    paper scheme uncertain beyond TRUTH_SHARPEN (Walton-Braun's spring at grazing incidence: ~1e-5, order 1.5) and
-    the adaptive integrator covers the law, its run at TRUTH_TOLERANCE instead (uncertainty: the change from 10x
-    that tolerance; tests/test_adaptive_walton_braun.py checks it against the deep graded ladder). With a cache (a
-    campaign store), the two fine runs are taken from it when it holds them, and added to it when not."""
-    steps = TRUTH_STEPS["paper" if law.integrator == "paper" else "engine"]
-    fine, half = (reference(law, scene, n, cache) for n in (steps, steps // 2))
-    uncertainty = uncertainties(half, fine, f"{steps} steps/contact")
-    worst = max(errs["err_max"] for errs in uncertainty.values())
-    if law.integrator == "paper" and worst > TRUTH_SHARPEN and covered(law, scene):
-        fine = simulate_adaptive(law, scene, TRUTH_TOLERANCE)
-        coarse = simulate_adaptive(law, scene, 10 * TRUTH_TOLERANCE)
-        uncertainty = uncertainties(coarse, fine, f"adaptive at tol {TRUTH_TOLERANCE:.0e} ({steps} steps/contact: "
-                                                  f"{worst:.1e})")
-    return fine, uncertainty
-
-
-def reference(law, scene, resolution, cache=None):
-    """The reference solver's results of `law` at `resolution`, through the plan (and the cache, if given)."""
-    return execute(reference_runs(law, scene, resolution, law), cache=cache)[0]
-
-
-def covered(law, scene):
-    """The adaptive integrator covers every impact of the scene."""
-    return all(adaptive_batch(law, scene, e_n)[1].all() for e_n in scene.e_n)
+def truth_rows(rows, law_name, dialect, truth):
+    """The levels of a dialect's converged reference as rungs of its curve beyond the ladder ('truth N'), each
+    against the truth: at a refined level the impacts run there, the others at their truth."""
+    for steps, run, frame in truth.levels:
+        level = truth.frame.copy()
+        for column in frame.columns:
+            level.loc[level.index[run], column] = frame[column].to_numpy()
+        ran = per_e_n(frame)
+        for e_n, group in ran.items():                      # the level's resolution on every row of its e_n
+            resolution = group[["steps_per_contact", "dt"]].iloc[0].to_numpy()
+            level.loc[level.e_n_target == e_n, ["steps_per_contact", "dt"]] = resolution
+        measure(rows, law_name, "reference", dialect, f"{TRUTH_LEVEL}{steps}",
+                {e_n: group for e_n, group in per_e_n(level).items() if e_n in ran}, truth,
+                steps_per_impact={e_n: contact_steps(group) / len(group) for e_n, group in ran.items()},
+                timings={e_n: [float(group.wall_s.sum())] for e_n, group in ran.items()},
+                note=f"a level of the converged reference ({len(run)} impacts run at {steps} steps/contact)")
 
 
 def ladder_rungs(ladder, scene):
@@ -144,9 +131,11 @@ def copies(scene, e_n, count):
 
 
 def timing_rung(rows, engine, dialect, e_n):
-    """The curve's rung (a row) nearest TIMING_STEPS steps (or evaluations) per contact that ran, at `e_n`."""
+    """The curve's rung (a row) nearest TIMING_STEPS steps (or evaluations) per contact that ran, at `e_n` (a rung of
+    its ladder or tolerances, not 20% of the Rayleigh time nor a level of its converged reference)."""
     ran = [r for r in rows if r["engine"] == engine and r["dialect"] == dialect and r["e_n_target"] == e_n
-           and r.get("status") == "ok" and r["rung"] != "rayleigh" and r.get("steps", 0) > 0]
+           and r.get("status") == "ok" and r["rung"] != "rayleigh" and not r["rung"].startswith(TRUTH_LEVEL)
+           and r.get("steps", 0) > 0]
     return min(ran, key=lambda r: abs(math.log(r["steps_per_contact"] / TIMING_STEPS)), default=None)
 
 
@@ -270,9 +259,11 @@ def cost_table(law, scene, engines, ladder=LADDER, keep=None, progress=None, cac
     simulate(law, warm, steps_per_contact=10)                 # compile outside timing: the kernel,
     simulate(law, warm, converged=True)                       # and the adaptive integrator or graded ladder
     rows, failures, uncertainty = Rows(keep), [], {}
-    truth, uncertainty["paper"] = truth_of(law, scene, cache)
+    truth = truth_of(law, scene, cache)
+    uncertainty["paper"] = truth.uncertainty
     step(progress, "converged reference of the paper law")
     reference_curve(rows, law, scene, ladder, truth, progress=progress)
+    truth_rows(rows, law.name, law.dialect, truth)
     step_time(rows, law.name, "reference", law.dialect, scene, reference_timer(law), progress)
     adaptive = converged_curve(rows, law, scene, ladder, truth)
     step(progress, "the converged mode's own rungs")
@@ -282,9 +273,11 @@ def cost_table(law, scene, engines, ladder=LADDER, keep=None, progress=None, cac
     step(progress, "the converged mode")
     for name, (engine, options) in engines.items():
         dialect = engine.dialect(law.name, options)
-        dialect_truth, uncertainty[name] = truth_of(dialect, scene, cache)
+        dialect_truth = truth_of(dialect, scene, cache)
+        uncertainty[name] = dialect_truth.uncertainty
         step(progress, f"converged reference of {name}'s formulas")
         reference_curve(rows, dialect, scene, ladder, dialect_truth, progress=progress)
+        truth_rows(rows, law.name, dialect.dialect, dialect_truth)
         step_time(rows, law.name, "reference", dialect.dialect, scene, reference_timer(dialect), progress)
         engine_curve(rows, engine, law, dialect, scene, ladder, dialect_truth, options, failures, progress)
         step_time(rows, law.name, engine.NAME, dialect.dialect, scene, engine_timer(engine, law, options), progress)

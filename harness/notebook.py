@@ -72,11 +72,10 @@ def calibrate(model, engine, tolerances=None, timestep_tolerance=1e-2, **keyword
     the engine, and the time step that buys `timestep_tolerance` (harness calibrate): a Calibration, e.g.
     calibrate("hertz-mindlin", "lammps", en=[0.25, 0.5], angles=[10, 30, 60])."""
     from .api import calibrate_request
-    from .engines import get_engine
     as_text("engine", engine)
     as_real("timestep_tolerance", timestep_tolerance)
     request = Request.from_keywords(model, engines=[engine], tolerances=tolerances, **keywords)
-    return calibrate_request(request, get_engine(request.engines[0]), request.tolerances, timestep_tolerance)
+    return calibrate_request(request, request.tolerances, timestep_tolerance)
 
 
 @takes(SCENE, WITH, doc=SCENE_DOC)

@@ -9,6 +9,7 @@ from .keywords import as_path, as_text
 from .lock import exclusive
 from .results import write_csv
 from .views.notebook_html import block, short_text
+from .wording import counted, verb
 
 PAPER_COLUMNS = ("psi2_star", "omega_star", "e_t")     # drawn against Psi1* on the paper's axes
 
@@ -31,7 +32,7 @@ class Compared(Comparison):
 
     def _lines(self):
         skipped = "; ".join(f"{name} skipped ({why})" for name, why in self.skipped)
-        return [f"{self.law.name} on {len(self.results)} rows; engines: {', '.join(self.engines) or 'none'}",
+        return [f"{self.law.name} on {counted(len(self.results), 'row')}; engines: {', '.join(self.engines) or 'none'}",
                 f"ok {self.ok} (agreement); paper law: {self.reproduces}"] + ([skipped] if skipped else [])
 
     def __repr__(self):
@@ -72,7 +73,7 @@ class CostStudy:
     @property
     def recommendations(self):
         """Per curve: the largest time step within each tolerance, its steps per contact and wall time."""
-        from .analyses.cost import recommendations
+        from .analyses.cost_answer import recommendations
         return recommendations(self.table)
 
     @property
@@ -84,7 +85,8 @@ class CostStudy:
     def _lines(self):
         curves = self.table.groupby(["engine", "dialect"]).ngroups if not self.table.empty else 0
         rungs = sorted(self.table.steps_per_contact.dropna().unique()) if "steps_per_contact" in self.table else []
-        return [f"{self.law.name}: {curves} curves, {len(rungs)} rungs, {len(self.table)} rows; ok {self.ok}"] + [
+        return [f"{self.law.name}: {counted(curves, 'curve')}, {counted(len(rungs), 'rung')}, "
+                f"{counted(len(self.table), 'row')}; ok {self.ok}"] + [
             f"{name} skipped ({why})" for name, why in self.skipped]
 
     def __repr__(self):
@@ -173,7 +175,8 @@ class Benchmark:
         return verdict(self.table)[2]
 
     def _lines(self):
-        return [f"chung-ooi: {self.passed} of {self.checked} checks pass on {', '.join(self.engines)}; ok {self.ok}"]
+        return [f"chung-ooi: {self.passed} of {counted(self.checked, 'check')} {verb(self.passed, 'passes')} on "
+                f"{', '.join(self.engines)}; ok {self.ok}"]
 
     def __repr__(self):
         return short_text("Benchmark", self._lines() + [".table .report(dir)"])
@@ -211,7 +214,8 @@ class CampaignRun:
 
     def _lines(self):
         s = self.summary
-        return [f"{s.tasks} tasks, ran {s.ran}, {s.cached} cached, {s.failed} failed; store {self.store}"] + [
+        return [f"{counted(s.tasks, 'task')}, ran {s.ran}, {s.cached} cached, {s.failed} failed; "
+                f"store {self.store}"] + [
             f"{name} skipped ({why})" for name, why in s.skipped]
 
     def __repr__(self):

@@ -7,7 +7,7 @@ from dataclasses import asdict
 import numpy as np
 import pandas as pd
 
-from .analyses.attribution import METRICS as ATTRIBUTED
+from .analyses.attribution import KEPT as ATTRIBUTION_KEPT, METRICS as ATTRIBUTED
 from .analyses.cost import COLUMNS as COST_COLUMNS, METRICS as COST_METRICS
 from .analyses.physics import Tolerances
 from .comparison import Comparison
@@ -24,17 +24,18 @@ from .views import strict_json
 
 RUN, ATTRIBUTION, HISTORIES, FAILURES, PRECISION = ("run.json", "attribution.csv", "histories.csv", "failures.csv",
                                                     "precision.csv")
-SLIDING = "sliding.csv"
+SLIDING, ATTRIBUTION_ROWS = "sliding.csv", "attribution-rows.csv"
 COST, COST_RUN, COST_TRUTH = "cost.csv", "cost.json", "cost-truth.csv"
 COST_TEXT = ("model", "engine", "dialect", "rung", "timing", "status", "message")
 REPORT, RESULTS = "report.html", "results.csv"
-DIRECTORY_FILES = (RESULTS, RUN, ATTRIBUTION, HISTORIES, FAILURES, PRECISION, SLIDING, COST, COST_RUN, COST_TRUTH, REPORT)
+DIRECTORY_FILES = (RESULTS, RUN, ATTRIBUTION, ATTRIBUTION_ROWS, HISTORIES, FAILURES, PRECISION, SLIDING, COST, COST_RUN,
+                   COST_TRUTH, REPORT)
 
 
 def start_comparison(out_dir, comparison):
     """Before the runs: DIR/run.json describes the compare now running, marked partial, and the tables of an earlier
     compare are removed, so DIR never mixes two runs; an interrupted compare leaves a partial run `report` can show."""
-    for name in (ATTRIBUTION, HISTORIES, FAILURES, PRECISION, SLIDING, RESULTS):
+    for name in (ATTRIBUTION, ATTRIBUTION_ROWS, HISTORIES, FAILURES, PRECISION, SLIDING, RESULTS):
         _remove(out_dir, name)
     _write_run(out_dir, comparison, partial=True)
 
@@ -46,7 +47,8 @@ def _write_run(out_dir, comparison, partial):
          "skipped": comparison.skipped, "engine_options": comparison.engine_options,
          "arithmetic": comparison.arithmetic, "builds": comparison.builds,
          "requested": comparison.requested, "command": comparison.command, "date": comparison.date,
-         "tolerances": comparison.tolerances.as_dict(), "partial": partial}, indent=1))
+         "tolerances": comparison.tolerances.as_dict(), "partial": partial,
+         "attributions": list(comparison.attribution)}, indent=1))
 
 
 def save_comparison(out_dir, comparison):
@@ -54,6 +56,8 @@ def save_comparison(out_dir, comparison):
     _write_run(out_dir, comparison, partial=False)
     tables = [table.assign(comparison=name) for name, table in comparison.attribution.items()]
     _table(out_dir, ATTRIBUTION, pd.concat(tables, ignore_index=True) if tables else None)
+    rows = [table.assign(engine=name) for name, table in comparison.attribution_rows.items()]
+    _table(out_dir, ATTRIBUTION_ROWS, pd.concat(rows, ignore_index=True) if rows else None)
     rows = [pd.DataFrame(h[0][~np.isnan(h[0][:, 0])], columns=["t", "overlap", "f_n", "f_t"]).assign(e_n_target=e)
             for e, h in (comparison.histories or {}).items()]
     _table(out_dir, HISTORIES, pd.concat(rows, ignore_index=True) if rows else None)
@@ -79,7 +83,10 @@ def _remove(out_dir, name):
 
 TABLES = {   # a saved table -> (columns it must hold, its number columns, its text columns)
     ATTRIBUTION: (("ingredient", "dialect", "target", "comparison"), tuple(f"d_{m}" for m in ATTRIBUTED),
-                  ("ingredient", "dialect", "target", "note", "comparison")),
+                  ("ingredient", "dialect", "target", "switched", "note", "comparison")),
+    ATTRIBUTION_ROWS: (("engine", "switched", *ATTRIBUTION_KEPT),
+                       [c for c in ATTRIBUTION_KEPT if c not in ("model", "status")],
+                       ("engine", "switched", "model", "status")),
     HISTORIES: (("t", "overlap", "f_n", "f_t", "e_n_target"), ("t", "overlap", "f_n", "f_t", "e_n_target"), ()),
     FAILURES: (("engine", "e_n", "message", "log_tail"), ("e_n",), ("engine", "message", "log_tail")),
     PRECISION: (("engine", "against"), ("e_n_target", "dt", "v_n1", "v_t1", "omega1"),
@@ -138,6 +145,11 @@ def load_comparison(out_dir):
     attributions = {name: table.drop(columns="comparison").dropna(axis=1, how="all")
                     for name, table in attribution_table.groupby("comparison", sort=False)} \
         if not attribution_table.empty else {}
+    for name in run.get("attributions") or ():      # measured, and no ingredient differs: no row in the table
+        attributions.setdefault(name, pd.DataFrame(columns=["ingredient", "dialect", "target"]))
+    row_table = _read(out_dir, ATTRIBUTION_ROWS)
+    attribution_rows = {name: table.drop(columns="engine") for name, table in row_table.groupby("engine", sort=False)} \
+        if not row_table.empty else {}
     history_table = _read(out_dir, HISTORIES)
     histories = {e: group[["t", "overlap", "f_n", "f_t"]].to_numpy()[None, :, :]
                  for e, group in history_table.groupby("e_n_target", sort=False)} if not history_table.empty else None
@@ -156,6 +168,7 @@ def load_comparison(out_dir):
                       arithmetic=run.get("arithmetic") or arithmetic_of(engine_options),
                       builds=run.get("builds") or {}, requested=tuple(requested) if requested else None,
                       skipped=[tuple(s) for s in run.get("skipped", [])], failures=failures, attribution=attributions,
+                      attribution_rows=attribution_rows,
                       sliding=sliding if not sliding.empty else None,
                       precision=precision.iloc[0].to_dict() if not precision.empty else None, histories=histories,
                       command=run.get("command", ""), date=run.get("date", ""), partial=bool(run.get("partial")),

@@ -50,6 +50,7 @@ FIELDS = {   # field -> (what it must be, in words; its check)
     "builds": ("{engine: {version, binary, sha256, origin, note}}",
                lambda v: isinstance(v, dict) and all(isinstance(b, dict) and _string_map(b) for b in v.values())),
     "requested": ("a list of engine names or null", _names),
+    "attributions": ("a list of the attributions measured", lambda v: isinstance(v, list) and all(map(_strings, v))),
     "command": ("a string", _strings),
     "date": ("a string", _strings),
     "tolerances": ("{name: number}", _numbers),

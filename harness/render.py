@@ -7,6 +7,7 @@ from pathlib import Path
 import jinja2
 
 from .citation import doc_link
+from .wording import counted
 
 REPORT_TEMPLATES = Path(__file__).resolve().parent / "templates"     # the top-level templates/ (package data)
 WORD = re.compile(r"[A-Za-z0-9][A-Za-z0-9_/.-]*")
@@ -46,6 +47,7 @@ def environment(directory=REPORT_TEMPLATES, autoescape=False):
     env.filters["num"] = num
     env.filters["word"] = word
     env.filters["count"] = count
+    env.filters["counted"] = counted
     env.globals["doc"] = doc_link
     return env
 

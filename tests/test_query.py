@@ -151,3 +151,35 @@ def test_a_fragment_named_like_a_glob_reads_only_itself(tmp_path, store, capfd):
     os.rename(store / data, store / "data-*.parquet")
     assert main(["query", str(store), "SELECT count(*) AS n FROM results", "--csv"]) == 0
     assert capfd.readouterr().out.split() == ["n", "6"]
+
+
+@pytest.mark.parametrize("sql, words", [
+    ("SELECT * FROM store", "Table with name store does not exist"),
+    ("SELECT * FROM result", "Table with name result does not exist"),
+    ("SELECT e_tt FROM results", 'Referenced column "e_tt" not found'),
+])
+def test_a_table_or_column_that_does_not_exist_is_told_where_the_rows_are(store, capfd, sql, words):
+    """One line: DuckDB's reason, then that the store is the view results, how to list its columns, and the other
+    views."""
+    assert main(["query", str(store), sql]) == 2
+    lines = capfd.readouterr().err.strip().splitlines()
+    assert len(lines) == 1 and words in lines[0], lines
+    assert "the store is the view results" in lines[0] and "`DESCRIBE results` lists them" in lines[0]
+    assert "deviations, agreement and deviation_map" in lines[0]
+
+
+def test_query_help_names_the_views_and_the_columns_beyond_results_csv(store, capfd):
+    """--help names every view the store holds (as DuckDB's catalogue lists them) and every column of `results`
+    that results.csv does not have (as DESCRIBE lists them)."""
+    import harness
+    with pytest.raises(SystemExit):
+        main(["query", "--help"])
+    text = " ".join(capfd.readouterr().out.split())
+    assert main(["query", str(store), "SELECT table_name FROM information_schema.tables WHERE table_type = 'VIEW' "
+                 "AND table_name NOT LIKE 'store_%'", "--csv"]) == 0
+    views = capfd.readouterr().out.split()[1:]
+    assert sorted(views) == ["agreement", "deviation_map", "deviations", "results"]
+    assert "over the view results" in text and all(view in text for view in views)
+    assert main(["query", str(store), "SELECT column_name FROM (DESCRIBE results)", "--csv"]) == 0
+    extra = set(capfd.readouterr().out.split()[1:]) - set(harness.columns.index)
+    assert extra and all(column in text for column in extra), extra

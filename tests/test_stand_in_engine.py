@@ -1,6 +1,6 @@
 """A fourth engine added as its author would add it: a subclass of the Engine base class in its own package
-(tests/standin, a stand-in that declares itself as one) and one registry line; every command that runs engines runs
-it. Its agreement with its own dialect is exact (it runs that dialect in the reference's kernel), so any difference
+(tests/standin, a stand-in that declares itself as one), registered for each test alone (the registry's one
+entry); every command that runs engines runs it. Its agreement with its own dialect is exact (it runs that dialect in the reference's kernel), so any difference
 is the harness' plumbing."""
 import pandas as pd
 import pytest
@@ -78,3 +78,41 @@ def test_its_stored_runs_are_keyed_on_its_own_source(registered, tmp_path):
     before = source_digest(str(folder))
     (folder / "__init__.py").write_text((folder / "__init__.py").read_text() + "\n# changed\n")
     assert empty != before != source_digest(str(folder))
+
+
+def cells(line, header):
+    """A verdict row as {column: cell}: the table's columns are set apart by two spaces or more."""
+    import re
+    return dict(zip(re.split(r"\s{2,}", header.strip()), re.split(r"\s{2,}", line.strip())))
+
+
+def test_cost_says_how_long_before_it_starts_and_gives_each_tolerance_a_number_or_a_reason(registered, tmp_path,
+                                                                                           monkeypatch, capsys):
+    """One line on stderr before the study starts, naming each engine's share; then the stand-in's row: its
+    converged reference's uncertainty (cost-truth.csv's largest), and for 1% and 0.1% a number, with a sentence
+    saying how it was found unless it was measured on its own ladder, or '-' and the reason."""
+    import harness.commands.cost as command
+    import harness.cost_plan
+    monkeypatch.setattr(harness.cost_plan, "MAX_TIMING_ROUNDS", 1)    # its time is never resolved: one round
+    said_before = []
+    study = command.cost_table
+    def started(*args, **kwargs):
+        said_before.append(capsys.readouterr().err)
+        return study(*args, **kwargs)
+    monkeypatch.setattr(command, "cost_table", started)
+    assert main(["cost", "--model", "hertz-mindlin", "--engines", "stand-in", "--en", "0.5", "--angles", "10,40",
+                 "--ladder", "10,20", "-o", str(tmp_path)]) == 0
+    estimate = [line for line in said_before[0].splitlines() if line.startswith("harness: cost hertz-mindlin: about")]
+    assert len(estimate) == 1 and "stand-in" in estimate[0] and " min" in estimate[0], said_before
+    out = capsys.readouterr().out.splitlines()
+    header = next(line for line in out if "1%: steps" in line)
+    row = cells(next(line for line in out if line.strip().startswith("stand-in")), header)
+    truth = pd.read_csv(tmp_path / "cost-truth.csv")
+    assert float(row["truth +-"]) == pytest.approx(truth[truth.curve == "stand-in"].err_max.max(), rel=0.06)
+    for tolerance, column in (("1%", "1%: steps"), ("0.1%", "0.1%: steps")):
+        cell = row[column]
+        told = [line for line in out if line.strip().startswith("stand-in ") and f" {tolerance}" in line.split(":")[0]]
+        if cell.isdigit():
+            continue                            # measured on its own ladder
+        assert told, (tolerance, cell, out)     # a number marked f, ~ or <=, or '-': said why
+        assert cell == "-" or cell.rstrip("f").lstrip("~<=").isdigit(), cell

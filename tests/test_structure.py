@@ -48,7 +48,8 @@ def test_lower_layers_do_not_import_the_layers_above(layer):
     """Analyses and views read tables (the plan runs, analyses read its results, a view asks no engine or solver);
     sub-models, the solver and the laws know nothing of plans, engines or outputs."""
     running = ("harness.execute", "harness.plan", "harness.engines", "harness.solver.simulate", "harness.solver.batch",
-               "harness.cost_plan", "harness.sliding_search", "harness.paper")
+               "harness.cost_plan", "harness.cost_truth", "harness.cost_estimate", "harness.sliding_search",
+               "harness.paper")
     above = {"harness.analyses": ("harness.views", "harness.api", "harness.outputs") + running,
              "harness.views": ("harness.api",) + running,
              "harness.submodels": ("harness.plan", "harness.engines", "harness.analyses", "harness.views",

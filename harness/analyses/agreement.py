@@ -21,24 +21,33 @@ def relative_difference(value, reference, scale):
     return np.abs(value - reference) / np.maximum(np.abs(reference), 1e-9 * scale)
 
 
+UNDEFINED = "non-finite"        # the status of a row whose rebound is not a number (an engine's or its dialect's)
+
+
 def agreement(frame, engine):
-    """Per metric: max relative difference engine vs reference dialect at equal dt, where, and pass/fail."""
+    """Per metric: max relative difference engine vs reference dialect at equal dt, where, and pass/fail. An impact
+    not a number in both (status non-finite) agrees: the dialect predicts what the engine computes; not a number in
+    one of them alone is an infinite difference. `nan_in_both` counts the impacts not a number in both."""
     pairs = _pair(frame, {"engine": engine, "dialect": engine}, {"engine": "reference", "dialect": engine})
-    pairs = pairs[pairs.status == "ok"]
+    pairs = pairs[pairs.status.isin(("ok", UNDEFINED))]
+    both = ((pairs.status == UNDEFINED) & (pairs.status_ref == UNDEFINED)).to_numpy()
+    one = ((pairs.status == UNDEFINED) != (pairs.status_ref == UNDEFINED)).to_numpy()
     rows = []
     for metric in AGREEMENT_METRICS:
         if pairs.empty:
             rows.append({"engine": engine, "metric": metric, "max_rel_diff": np.nan, "e_n_target": np.nan,
-                         "theta_deg": np.nan, "tolerance": AGREEMENT_TOLERANCE, "pass": False})
+                         "theta_deg": np.nan, "tolerance": AGREEMENT_TOLERANCE, "pass": False, "nan_in_both": 0})
             continue
         scale = pairs.v_n0.abs().max() + pairs.v_t0.abs().max()
         if metric == "omega1":
             scale = scale / pairs.radius.iloc[0]
         diff = relative_difference(pairs[metric].to_numpy(), pairs[metric + "_ref"].to_numpy(), scale)
-        worst = int(np.nanargmax(diff))
+        diff = np.where(both, 0.0, np.where(one | np.isnan(diff), np.inf, diff))
+        worst = int(np.argmax(diff))
         rows.append({"engine": engine, "metric": metric, "max_rel_diff": float(diff[worst]),
                      "e_n_target": float(pairs.e_n_target.iloc[worst]), "theta_deg": float(pairs.theta_deg.iloc[worst]),
-                     "tolerance": AGREEMENT_TOLERANCE, "pass": bool(diff[worst] <= AGREEMENT_TOLERANCE)})
+                     "tolerance": AGREEMENT_TOLERANCE, "pass": bool(diff[worst] <= AGREEMENT_TOLERANCE),
+                     "nan_in_both": int(both.sum())})
     return pd.DataFrame(rows)
 
 

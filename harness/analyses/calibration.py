@@ -1,6 +1,7 @@
 """What a calibration changed: per stage (the engine's formulas with e as given, with the calibrated inputs, the
 engine itself with them) and quantity, the worst and RMS deviation from the paper law over the sweep (v_n1, v_t1
-and R omega1 as fractions of V, e_n absolute, the Coulomb ratio |J_t|/(mu J_n) above 1), and the physics checks."""
+and R omega1 as fractions of V, e_n absolute, the Coulomb ratio |J_t|/(mu J_n) above 1); each choice's price on the
+physics checks and the rule that chooses on it."""
 import numpy as np
 import pandas as pd
 
@@ -41,14 +42,41 @@ def stage_table(frame, stages, gravity=0.0):
     return pd.DataFrame(rows)
 
 
-def stage_physics(frame, stage, tolerances, attribution=None, gravity=0.0):
-    """The physics verdict of one stage's rows against the paper law (analyses.physics)."""
-    return engine_physics(frame, stage, tolerances, attribution, gravity)
+RULE = ("the most targets reached, then the fewest physics checks failed, then the fewest impacts beyond a check's "
+        "tolerance (counted once per check), then the smallest worst case of any check over its tolerance")
+CHECKS = ("velocity", "e_n", "coulomb", "energy")
 
 
-def score(frame, stage, tolerances, gravity=0.0):
-    """How far a stage is from the paper law, for choosing among alternatives: (failed checks, the worst case of
-    any check over its tolerance, the worst velocity deviation over its tolerance)."""
+def price(frame, stage, tolerances, gravity=0.0):
+    """What a stage's rows do to each physics check against the paper law (analyses.physics): [{check, passed,
+    failing (impacts beyond its tolerance), impacts, worst, tolerance, short (its worst case in a phrase)}]."""
     physics = engine_physics(frame, stage, tolerances, None, gravity)
-    worst = {c["check"]: c.get("worst", 0.0) / max(c["tolerance"], 1e-300) for c in physics["checks"]}
-    return len(physics["failing"]), max(worst.values(), default=0.0), worst.get("velocity", 0.0)
+    return [{"check": c["check"], "passed": c["passed"], "failing": c["failing"], "impacts": c["impacts"],
+             "worst": c.get("worst"), "tolerance": c["tolerance"], "short": c.get("short", "")}
+            for c in physics["checks"]]
+
+
+def rank(reached, checks):
+    """The key RULE orders choices by (the smallest first), from their targets reached and price."""
+    failed = [c for c in checks if not c["passed"]]
+    worst = max((c["worst"] / max(c["tolerance"], 1e-300) for c in checks if c["worst"] is not None), default=0.0)
+    return -reached, len(failed), sum(c["failing"] for c in checks), worst
+
+
+def choice_table(choices):
+    """One row per choice: its options, targets reached, the rule's counts and, per check, the impacts beyond its
+    tolerance and its worst case."""
+    rows = []
+    for choice in choices:
+        checks = {c["check"]: c for c in choice["price"]}
+        _, failed, beyond, worst = rank(choice["targets reached"], choice["price"])
+        row = {"options": choice["options"], "targets reached": choice["targets reached"], "failed checks": failed,
+               "impacts beyond": beyond, "worst check / tolerance": worst}
+        for name in CHECKS:
+            check = checks.get(name, {})
+            row[f"{name}: impacts beyond"] = check.get("failing")
+            row[f"{name}: worst"] = check.get("worst")
+        rows.append({**row, "price": "; ".join(f"{c['check']}: {c['short']}" for c in choice["price"]
+                                                if not c["passed"]) or "every check holds",
+                     "chosen": choice["chosen"]})
+    return pd.DataFrame(rows)

@@ -1,13 +1,21 @@
-"""What accuracy costs in time, from the cost study's results (harness.cost_plan runs it): errors of e_n, e_t,
-Omega*, t_c and F_max against the converged reference of the same dialect, per rung of each curve; timings, the
-recommended time steps and the orders of convergence."""
+"""What accuracy costs in time, from the cost study's results (harness.cost_plan runs it): per rung of each curve the
+errors of the rebound velocities, contact time and peak force against the converged reference of the same dialect;
+timings and the orders of convergence. What a tolerance costs per curve: analyses/cost_answer.py."""
 import math
 
 import numpy as np
 import pandas as pd
 
+from ..wording import counted
+
 LADDER = (5, 10, 20, 50, 100, 200, 500, 1000, 5000)
-METRICS = ("e_n", "e_t", "omega_star", "t_contact", "f_n_max")
+VELOCITIES = ("v_n1", "v_t1", "omega1")          # as a fraction of the impact's incident speed V (omega1: R omega1)
+SCALED = ("t_contact", "f_n_max")                # as a fraction of their largest value over the impacts
+METRICS = VELOCITIES + SCALED
+MEASURE = ("error: |x - x*| of the rebound velocities v_n1, v_t1 and R omega1 as a fraction of the impact's incident "
+           "speed V (the physics verdict's measure), of contact time and peak force as a fraction of their largest "
+           "value; the worst over the five, the impacts and the e_n, against the converged reference of the same "
+           "dialect")
 TOLERANCES = (1e-2, 1e-3, 1e-4)
 RAYLEIGH_FRACTION = 0.2
 WITHIN_NOISE = "within noise"    # the timing column of a rung whose net time is not above its spread
@@ -18,9 +26,10 @@ MIN_NET_S = 0.2                  # ... and at least this long
 EXTRAPOLATED = "paper, graded Richardson"       # the converged ladder's rungs as a curve of the reference
 ADAPTIVE = "paper, adaptive"                    # the adaptive integrator's tolerances as a curve of the reference
 ADAPTIVE_RUNGS = (1e-4, 1e-5, 1e-6, 1e-7, 1e-8)  # above the truth's own uncertainty (2^16 steps: ~1e-9)
+TRUTH_LEVEL = "truth "           # the rung label's prefix of a level of a dialect's converged reference: "truth 131072"
 COLUMNS = ("model", "engine", "dialect", "e_n_target", "rung", "steps_per_contact", "dt", "impacts", "steps",
            "wall_s", "wall_spread_s", "startup_s", "net_wall_s", "timing", "status", "message",
-           *(f"err_{m}" for m in METRICS), "err_max", "s_per_impact_step", "s_per_impact")
+           *(f"err_{m}" for m in METRICS), "err_max", "err_truth", "s_per_impact_step", "s_per_impact")
 
 
 def rayleigh_time(scene):
@@ -29,10 +38,57 @@ def rayleigh_time(scene):
     return math.pi * scene.radius * math.sqrt(scene.rho / shear) / (0.1631 * scene.nu + 0.8766)
 
 
-def relative_errors(values, truth):
-    """Per metric: max |x - x*| over the impacts / max |x*| (the sweep's scale; e_t and Omega* pass through 0)."""
+def impact_errors(values, truth, scales=None):
+    """Per impact (rows in the same order) and metric: |x - x*| / V of the rebound velocities (R |omega1 - omega1*| / V,
+    V = |(v_n0, v_t0)|), |x - x*| / scale of contact time and peak force, the scale their largest |x*| (or `scales`,
+    {metric: scale}, when the truth is a part of the impacts); NaN where the truth is not finite, inf where the
+    truth is and the value is not."""
+    speed = np.hypot(truth.v_n0.to_numpy(dtype=float), truth.v_t0.to_numpy(dtype=float))
+    radius = truth.radius.to_numpy(dtype=float)
     out = {}
     for metric in METRICS:
+        exact = truth[metric].to_numpy(dtype=float)
+        got = values[metric].to_numpy(dtype=float)
+        if metric in VELOCITIES:
+            scale = speed / (radius if metric == "omega1" else 1.0)
+        else:
+            usable = np.isfinite(exact)
+            scale = (scales or {}).get(metric, np.max(np.abs(exact[usable])) if usable.any() else np.nan)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            error = np.abs(got - exact) / scale
+        error[np.isfinite(exact) & ~np.isfinite(got)] = np.inf
+        error[~np.isfinite(exact)] = np.nan
+        out[metric] = error
+    return pd.DataFrame(out, index=truth.index)
+
+
+def rebound_errors(values, truth):
+    """Per metric (MEASURE) the largest impact error (impact_errors): inf where an impact is lost, NaN where no
+    impact reports the metric (an engine's contact time from a run that does not observe it); err_max the worst."""
+    per_impact = impact_errors(values, truth)
+    out = {}
+    for metric in METRICS:
+        error = per_impact[metric].to_numpy()
+        reported = np.isfinite(values[metric].to_numpy(dtype=float)).any()
+        out[f"err_{metric}"] = float(np.nanmax(error)) if reported and not np.isnan(error).all() else np.nan
+    finite = [v for v in out.values() if not np.isnan(v)]
+    out["err_max"] = max(finite) if finite else np.nan
+    return out
+
+
+def uncertainty_of(changes, truth):
+    """Per metric the largest of the impacts' last changes (impact_errors of a truth against its coarser level),
+    err_max the worst, and what the truth is."""
+    out = {f"err_{m}": float(np.nanmax(changes[m])) if not changes[m].isna().all() else np.nan for m in METRICS}
+    finite = [v for v in out.values() if not np.isnan(v)]
+    return {**out, "err_max": max(finite) if finite else np.nan, "truth": truth}
+
+
+def relative_errors(values, truth):
+    """Per metric of e_n, e_t, Omega*, t_c, F_max: max |x - x*| over the impacts / max |x*| (harness calibrate's
+    measure; e_t and Omega* pass through 0)."""
+    out = {}
+    for metric in ("e_n", "e_t", "omega_star", "t_contact", "f_n_max"):
         exact = truth[metric].to_numpy(dtype=float)
         got = values[metric].to_numpy(dtype=float)
         usable = np.isfinite(exact)
@@ -45,12 +101,6 @@ def relative_errors(values, truth):
     finite = [v for v in out.values() if not np.isnan(v)]
     out["err_max"] = max(finite) if finite else np.nan
     return out
-
-
-def uncertainties(coarse, fine, truth):
-    """Per e_n the errors of the coarser run against the truth, and what the truth is."""
-    return {e: {**relative_errors(group, fine[fine.e_n_target == e]), "truth": truth}
-            for e, group in coarse.groupby("e_n_target", sort=False)}
 
 
 def contact_steps(frame):
@@ -69,13 +119,15 @@ def fastest(walls):
 
 
 def measure(rows, law_name, engine, dialect, rung, frames_by_e, truth, startup=None, steps_per_impact=None,
-            timings=None):
-    """Cost rows of one rung: per e_n the errors against the truth, the fastest of its timings and their spread
-    (timings: {e_n: [wall seconds]}, else the frame's), the wall time without the engine's start-up (startup:
-    {e_n: (fastest, spread)}), said to be within noise where it is not above the two spreads, and contact steps (or
-    `steps_per_impact` times the impacts, for a rung made of several runs)."""
+            timings=None, note=""):
+    """Cost rows of one rung: per e_n the errors against the truth (a Truth: its frame and its uncertainty), the
+    fastest of its timings and their spread (timings: {e_n: [wall seconds]}, else the frame's), the wall time without
+    the engine's start-up (startup: {e_n: (fastest, spread)}), said to be within noise where it is not above the two
+    spreads, and contact steps (or `steps_per_impact` times the impacts: a rung made of several runs, {e_n: steps}
+    or one number); `note` the message of a rung that ran."""
     for e_n, frame in frames_by_e.items():
-        exact = truth[truth.e_n_target == e_n]
+        exact = truth.frame[truth.frame.e_n_target == e_n]
+        per_impact = steps_per_impact.get(e_n) if isinstance(steps_per_impact, dict) else steps_per_impact
         ok = frame.status == "ok"
         wall, spread = fastest((timings or {}).get(e_n, [float(frame.wall_s.sum())]))
         start, start_spread = (startup or {}).get(e_n, (0.0, 0.0))
@@ -84,12 +136,12 @@ def measure(rows, law_name, engine, dialect, rung, frames_by_e, truth, startup=N
         rows.append({"model": law_name, "engine": engine, "dialect": dialect, "e_n_target": e_n, "rung": rung,
                      "steps_per_contact": float(frame.steps_per_contact.mean()), "dt": float(frame.dt.mean()),
                      "impacts": len(frame), "wall_s": wall, "wall_spread_s": spread, "startup_s": start,
-                     "steps": contact_steps(frame) if steps_per_impact is None else steps_per_impact * len(frame),
+                     "steps": contact_steps(frame) if per_impact is None else per_impact * len(frame),
                      "net_wall_s": net if np.isfinite(net) else np.nan,
                      "timing": WITHIN_NOISE if np.isfinite(net) and net <= noise else "",
                      "status": "ok" if ok.all() else str(frame.status[~ok].iloc[0]),
-                     "message": "" if ok.all() else str(frame.message[~ok].iloc[0]),
-                     **relative_errors(frame, exact)})
+                     "message": note if ok.all() else str(frame.message[~ok].iloc[0]),
+                     **rebound_errors(frame, exact), "err_truth": truth.uncertainty[e_n]["err_max"]})
 
 
 def refused(rows, law_name, engine, dialect, rung, scene, message):
@@ -106,13 +158,13 @@ def per_e_n(frame):
 def converged_rows(rows, law, frame, truth):
     """The paper law in --converged mode (its results table): one point of cost and error per e_n."""
     for e_n, group in per_e_n(frame).items():
-        exact = truth[truth.e_n_target == e_n]
+        exact = truth.frame[truth.frame.e_n_target == e_n]
         rows.append({"model": law.name, "engine": "reference", "dialect": law.dialect, "e_n_target": e_n,
                      "rung": "converged", "steps_per_contact": float(group.steps_per_contact.max()),
                      "dt": float(group.dt.min()), "impacts": len(group), "steps": np.nan,
                      "wall_s": float(group.wall_s.sum()), "startup_s": 0.0, "net_wall_s": float(group.wall_s.sum()),
                      "timing": "", "status": "ok", "message": "converged mode",
-                     **relative_errors(group, exact)})
+                     **rebound_errors(group, exact), "err_truth": truth.uncertainty[e_n]["err_max"]})
 
 
 class Rows(list):
@@ -130,44 +182,12 @@ class Rows(list):
 
 def per_rung(cost):
     """Per curve and rung, over the e_n: worst error per metric, wall times and steps summed, finest dt."""
-    agg = {f"err_{m}": "max" for m in (*METRICS, "max")}
-    agg.update({"wall_s": "sum", "net_wall_s": "sum", "s_per_impact": "mean", "steps_per_contact": "min", "steps": "sum", "dt": "max",
+    agg = {f"err_{m}": "max" for m in (*METRICS, "max", "truth")}
+    agg.update({"wall_s": "sum", "net_wall_s": "sum", "s_per_impact": "mean", "steps_per_contact": "min",
+                "steps": "sum", "impacts": "sum", "dt": "max",
                 "timing": lambda t: WITHIN_NOISE if (t == WITHIN_NOISE).any() else ""})
     ran = cost[cost.status != "refused"].assign(timing=lambda c: c.timing.fillna(""))
     return ran.groupby(["engine", "dialect", "rung"], sort=False).agg(agg).reset_index()
-
-
-def recommendations(cost):
-    """Per curve (engine, dialect): the largest ladder dt whose error, and that of every finer rung, is within each
-    tolerance at every e_n (worst metric); with its steps per contact and wall time."""
-    out = []
-    ladder = cost[cost.rung.str.fullmatch(r"\d+")]
-    for (engine, dialect), curve in ladder.groupby(["engine", "dialect"], sort=False):
-        row = {"engine": engine, "dialect": dialect}
-        for tol in TOLERANCES:
-            chosen = None
-            for rung in sorted(curve.rung.unique(), key=int, reverse=True):
-                level = curve[curve.rung == rung]
-                if level.status.eq("ok").all() and (level.err_max <= tol).all():
-                    chosen = level
-                else:
-                    break
-            key = f"{tol:.0%}" if tol >= 0.01 else f"{tol * 100:g}%"
-            row[f"dt for {key} [s]"] = chosen.dt.min() if chosen is not None else np.nan
-            row[f"steps/contact for {key}"] = int(chosen.rung.iloc[0]) if chosen is not None else np.nan
-            row[f"wall for {key} [s]"] = chosen.wall_s.sum() if chosen is not None else np.nan
-            row[f"time/impact for {key} [s]"] = per_impact(chosen) if chosen is not None else np.nan
-        rayleigh = cost[(cost.engine == engine) & (cost.dialect == dialect) & (cost.rung == "rayleigh")]
-        row["error at 20% Rayleigh"] = rayleigh.err_max.max() if rayleigh.status.eq("ok").all() else np.nan
-        out.append(row)
-    return pd.DataFrame(out)
-
-
-def per_impact(level):
-    """Seconds per impact of one rung over its e_n: the impacts' modelled times (s_per_impact) averaged."""
-    if "s_per_impact" not in level or not np.isfinite(level.s_per_impact).all():
-        return np.nan
-    return float((level.s_per_impact * level.impacts).sum() / level.impacts.sum())
 
 
 def resolved(net, noise):
@@ -183,7 +203,8 @@ def step_time_row(law_name, engine, dialect, e_n, rung, copies, impacts, steps, 
     net = wall[0] - start[0]
     noise = float(np.nansum([wall[1], start[1]]))
     ok = resolved(net, noise)
-    why = (f"{impacts} impacts ({copies} copies of the scene's) at rung {rung['rung']}, fastest of the timings; "
+    why = (f"{counted(impacts, 'impact')} ({counted(copies, 'copy', 'copies')} of the scene's) at rung {rung['rung']}, "
+           "fastest of the timings; "
            f"net {net:.3g} s, noise {noise:.2g} s (resolved: >= {RESOLVE_RATIO:g}x noise and >= {MIN_NET_S:g} s); "
            f"impacts tried: {rounds}")
     return {"model": law_name, "engine": engine, "dialect": dialect, "e_n_target": e_n, "rung": PER_STEP,
@@ -218,42 +239,19 @@ def step_times(cost):
     return rows[["engine", "dialect", "s_per_impact_step", "impacts", "steps", "net_wall_s", "timing", "message"]]
 
 
-def verdict(cost):
-    """For the paper scheme and each engine: time per impact-step, and per tolerance of 1% and 0.1% the steps per
-    contact (worst metric, every e_n and every finer rung too) and the time per impact, and that time as a multiple of
-    the paper scheme's."""
-    rec = recommendations(cost)
-    if rec.empty:
-        return pd.DataFrame()
-    curves = rec[(rec.engine != "reference") | (rec.dialect == "paper")].set_index(["engine", "dialect"])
-    steps = step_times(cost).set_index(["engine", "dialect"])
-    out = []
-    for (engine, dialect), row in curves.iterrows():
-        line = {"engine": engine if engine != "reference" else "paper scheme",
-                "s/impact-step": steps.s_per_impact_step.get((engine, dialect), np.nan),
-                "timing": steps.timing.get((engine, dialect), NOT_RESOLVED)}
-        for key in ("1%", "0.1%"):
-            paper = curves.loc[("reference", "paper"), f"time/impact for {key} [s]"] \
-                if ("reference", "paper") in curves.index else np.nan
-            mine = row[f"time/impact for {key} [s]"]
-            line[f"steps/contact for {key}"] = row[f"steps/contact for {key}"]
-            line[f"s/impact for {key}"] = mine
-            line[f"x paper for {key}"] = mine / paper if np.isfinite(paper) and paper > 0 else np.nan
-        line["20% T_R error"] = row["error at 20% Rayleigh"]
-        out.append(line)
-    return pd.DataFrame(out)
-
-
-def ladder_rows(cost):
-    """Rows of the curves' rungs: steps per contact, or the adaptive integrator's tolerances."""
-    return cost[cost.rung.str.fullmatch(r"\d+") | cost.rung.str.startswith("tol ")]
+def ladder_rows(cost, levels=True):
+    """Rows of the curves' rungs: steps per contact, the adaptive integrator's tolerances, and (`levels`) the levels
+    of a dialect's converged reference beyond the ladder."""
+    rung = cost.rung.astype(str)
+    return cost[rung.str.fullmatch(r"\d+") | rung.str.startswith("tol ") | (levels & rung.str.startswith(TRUTH_LEVEL))]
 
 
 def convergence_orders(cost, floor=1e-12):
     """Per curve and metric: slope of -log(error) against log(steps per contact; force evaluations per contact for
-    the adaptive curve) over the rungs of 20+ whose error is above `floor` (least squares over every e_n)."""
+    the adaptive curve) over the rungs of 20+ whose error is above `floor` (least squares over every e_n); the levels
+    of the converged reference are not rungs here (the finest is the truth, the next its uncertainty)."""
     out = []
-    ladder = ladder_rows(cost)
+    ladder = ladder_rows(cost, levels=False)
     ladder = ladder[ladder.status == "ok"]
     for (engine, dialect), curve in ladder.groupby(["engine", "dialect"], sort=False):
         row = {"engine": engine, "dialect": dialect}

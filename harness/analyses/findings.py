@@ -3,6 +3,7 @@ status does not already say, failed runs."""
 import numpy as np
 import pandas as pd
 
+from ..wording import counted, verb
 from .invariants import ENERGY_TOLERANCE, coulomb_ratio, invariant_breaks
 
 SLIDING_TOLERANCE = 1e-3    # |J_t| = mu J_n within 0.1%: the paper law slides throughout (the physics verdict's bound)
@@ -41,7 +42,8 @@ def findings(frame, gravity=0.0, cause=no_cause):
         for (engine, dialect), group in gain.groupby(["engine", "dialect"], sort=False):
             worst = group.loc[group[column].idxmax()]
             out.append({"engine": engine, "dialect": dialect, "kind": kind,
-                        "detail": f"{len(group)} impacts end with more {what} than they began with; worst ratio "
+                        "detail": f"{counted(len(group), 'impact')} {verb(len(group), 'ends')} with more {what} than "
+                                  f"at the start; worst ratio "
                                   f"{worst[column]:.6f} at e_n = {worst.e_n_target:g}, angle {worst.theta_deg:g} deg "
                                   f"(v_t1 = {worst.v_t1:.4f} m/s from v_t0 = {worst.v_t0:.4f})"
                                   + _because(worst, "energy gain", cause)})
@@ -57,7 +59,8 @@ def findings(frame, gravity=0.0, cause=no_cause):
     failed = frame[frame.status != "ok"]
     for (engine, dialect, status), group in failed.groupby(["engine", "dialect", "status"], sort=False):
         out.append({"engine": engine, "dialect": dialect, "kind": status,
-                    "detail": f"{len(group)} impacts: {group.message.iloc[0]}"})
+                    "detail": f"{counted(len(group), 'impact')}: {group.message.iloc[0]}"
+                              + _because(group.iloc[0], status, cause)})
     return pd.DataFrame(out, columns=["engine", "dialect", "kind", "detail"])
 
 
@@ -75,7 +78,8 @@ def under_friction(frame, gravity=0.0, cause=no_cause):
     for (engine, dialect), group in under.groupby(["engine", "dialect"], sort=False):
         worst = group.loc[group.coulomb.idxmin()]
         out.append({"engine": engine, "dialect": dialect, "kind": "Coulomb bound from below",
-                    "detail": f"{len(group)} impacts the paper law slides throughout transmit less than mu J_n; "
+                    "detail": f"{counted(len(group), 'impact')} the paper law slides throughout "
+                              f"{verb(len(group), 'transmits')} less than mu J_n; "
                               f"worst |J_t| {worst.coulomb:.3f} mu J_n at e_n {worst.e_n_target:g}, "
                               f"{worst.theta_deg:g} deg" + _because(worst, "Coulomb bound from below", cause)})
     return out
@@ -87,24 +91,28 @@ def _break_detail(kind, group, rows):
         miss = (group.value - group.limit).abs() / group.limit
         worst = group.loc[miss.idxmax()]
         normal = bool((rows.v_t0 == 0).all())
-        return (f"{len(group)} {'normal ' if normal else ''}impacts end with e_n more than 1% from "
+        return (f"{counted(len(group), ('normal ' if normal else '') + 'impact')} {verb(len(group), 'ends')} with e_n "
+                f"more than 1% from "
                 f"{'the target' if normal else 'the paper law at the same impact'}; worst {worst.value:.4g} for "
                 f"{worst.limit:.4g} at e_n {worst.e_n_target:g}, {worst.theta_deg:g} deg")
     if kind == "long contact":
         worst = group.loc[(group.value / group.limit).idxmax()]
-        return (f"{len(group)} impacts stay in contact longer than the bound; worst {worst.value:.3g} s against "
+        return (f"{counted(len(group), 'impact')} {verb(len(group), 'stays')} in contact longer than the bound; worst "
+                f"{worst.value:.3g} s against "
                 f"{worst.limit:.3g} s at e_n = {worst.e_n_target:g}, angle {worst.theta_deg:g} deg")
     if kind == "Coulomb bound":
         excess = group.value / group.limit - 1.0
         worst = rows.loc[group.loc[excess.idxmax()].row]
-        return (f"{len(group)} impacts with |J_t| > mu J_n, worst by {100 * excess.max():.3g}% at e_n "
+        return (f"{counted(len(group), 'impact')} with |J_t| > mu J_n, worst by {100 * excess.max():.3g}% at e_n "
                 f"{worst.e_n_target:g}, {worst.theta_deg:g} deg (v_t1 {worst.v_t1:.4g} m/s from {worst.v_t0:.4g}, "
                 f"omega0 {worst.omega0:g} rad/s)")
     if kind == "friction at mu = 0":
         worst = rows.loc[group.loc[group.value.idxmax()].row]
-        return (f"{len(group)} impacts with mu = 0 change their tangential velocity or spin; worst v_t1 = "
+        return (f"{counted(len(group), 'impact')} with mu = 0 {verb(len(group), 'changes')} the tangential velocity "
+                f"or spin; worst v_t1 = "
                 f"{worst.v_t1:.6g} m/s from {worst.v_t0:.6g}, omega1 = {worst.omega1:.4g} rad/s at angle "
                 f"{worst.theta_deg:g} deg")
     worst = rows.iloc[0]
-    return (f"{len(group)} impacts end with non-finite values, first at e_n = {worst.e_n_target:g}, angle "
+    return (f"{counted(len(group), 'impact')} {verb(len(group), 'ends')} with non-finite values, first at e_n = "
+            f"{worst.e_n_target:g}, angle "
             f"{worst.theta_deg:g} deg")

@@ -1,6 +1,7 @@
 """An engine's alternative inputs for a law: every combination of the values of its declared options that its
-inputs accept for the law, one per distinct dialect (precision-only options give none), each given the restitution
-input that meets every target e_n, and its rows on the reference (its formulas in place of the engine)."""
+inputs accept for the law (with the options a --with fixes in each), one per distinct dialect (precision-only options
+give none), each given the restitution input that meets every target e_n, and its rows on the reference (its formulas
+in place of the engine)."""
 import itertools
 from dataclasses import dataclass, replace
 
@@ -10,7 +11,7 @@ from scipy.optimize import minimize_scalar
 from ..analyses.physics import IMPACT
 from ..errors import UserError
 from ..solver.simulate import simulate
-from .restitution import restitution_input
+from .restitution import SEARCHED, restitution_input
 
 
 @dataclass
@@ -24,20 +25,25 @@ class Alternative:
 
     @property
     def label(self):
-        return ", ".join(f"{k}={v}" for k, v in self.options.items()) or "default options"
+        """Its options as a user reads them: KEY=VALUE, the tangential damping ratio a --with sets named as such."""
+        return ", ".join(f"tangential damping ratio {float(v):.4g}" if k == TANGENTIAL_DAMPING and v != "none" else
+                         f"{k}={v}" for k, v in self.options.items()) or "default options"
 
     @property
     def reachable(self):
         return [i for i in self.inputs if i.value is not None]
 
 
-def alternatives(engine, law_name, target="wall"):
-    """[(options, dialect)] of every combination of the engine's option values that composes for the law, one per
-    distinct dialect, its default options first."""
-    keys = list(engine.OPTIONS)
+def alternatives(engine, law_name, target="wall", fixed=None):
+    """[(options, dialect)] of every combination of the engine's option values that composes for the law, each with
+    the options `fixed` (those a --with maps to, Engine.with_options), one per distinct dialect, its default options
+    first."""
+    fixed = dict(fixed or {})
+    keys = [k for k in engine.OPTIONS if k not in fixed]
     out, seen = [], set()
     for values in itertools.product(*(engine.OPTIONS[k].values for k in keys)):
         options = {k: v for k, v, o in zip(keys, values, (engine.OPTIONS[k] for k in keys)) if v != o.values[0]}
+        options.update(fixed)
         try:
             dialect = engine.dialect(law_name, options, target)
         except UserError:
@@ -68,8 +74,9 @@ RATIO_RANGE = (0.0, 1.5)
 
 def takes_ratio(engine, law_name, options, target="wall"):
     """Whether the engine's inputs follow a tangential damping ratio g_t of their own (an engine whose WITH maps the
-    tangential dashpot to the option `with:tangential-damping`, and whose law then carries it)."""
-    if not any(TANGENTIAL_DAMPING in mapped for mapped in engine.WITH.values()):
+    tangential dashpot to the option `with:tangential-damping`, and whose law then carries it) that `options` (a
+    --with) do not set already."""
+    if TANGENTIAL_DAMPING in options or not any(TANGENTIAL_DAMPING in mapped for mapped in engine.WITH.values()):
         return False
     try:
         dialect = engine.dialect(law_name, {**options, TANGENTIAL_DAMPING: "0.3"}, target)
@@ -116,7 +123,8 @@ def as_given(dialect, scene, steps, label):
     return simulate(dialect, scene, steps_per_contact=steps)[0].assign(engine=label, dialect=label)
 
 
-def evaluate(options, dialect, scene, steps, label, paper=None):
-    """The alternative with its restitution inputs (one per target) and its rows at them."""
-    inputs = [restitution_input(dialect, scene, target, steps) for target in scene.e_n]
+def evaluate(options, dialect, scene, steps, label, paper=None, searched=SEARCHED, ends=None):
+    """The alternative with its restitution inputs (one per target, searched over `searched`; `ends`: the e_n its
+    ends give, when known) and its rows at them."""
+    inputs = [restitution_input(dialect, scene, target, steps, searched, ends) for target in scene.e_n]
     return Alternative(options, dialect, inputs, rows_at(dialect, scene, inputs, steps, label), paper)

@@ -1,21 +1,23 @@
 """A calibration of one engine for one law on one scene: its alternatives on the reference (each option choice with
-its restitution inputs), the one nearest the paper law, the engine run with it (and at the advised time step) to
-confirm, what no input can fix and why (attribution), and how the calibrated input moves with e_n, speed and radius."""
+its restitution inputs and its price on the physics checks), the one a stated rule chooses, what to type into the
+engine for it, the engine run with it (and at the advised time step) to confirm, what no input can fix and why
+(attribution), and how the calibrated input moves with e_n, speed and radius."""
 from dataclasses import dataclass, field, replace
 
 import numpy as np
 import pandas as pd
 
-from ..analyses.attribution import attribution
-from ..analyses.calibration import score, stage_table
+from ..analyses.attribution import attribute
+from ..analyses.calibration import RULE, choice_table, price, rank, stage_table
 from ..analyses.cost import relative_errors
 from ..analyses.physics import IMPACT, Tolerances, engine_physics
 from ..execute import execute
 from ..plan import engine_runs
 from ..solver.simulate import simulate
 from .alternatives import alternatives, as_given, evaluate, refused, rows_at, takes_ratio, with_ratio
-from .restitution import restitution_input
+from .restitution import SEARCHED, reach, refuse_unreachable, restitution_input
 from .timestep import FINE, advise
+from .typed import typed
 
 GIVEN, CALIBRATED, RUN = "formulas, e as given", "formulas, calibrated", "engine, calibrated"
 SPEEDS, RADII = (0.5, 1.0, 2.0), (0.5, 1.0, 2.0)       # the scene's speed and radius times these: the variation
@@ -31,9 +33,10 @@ class Calibration:
     tolerances: Tolerances
     timestep_tolerance: float
     frame: pd.DataFrame                 # paper law, the stages of the chosen alternative, the engine run
-    alternatives: pd.DataFrame          # one row per option choice: its score before and after
+    choices: list                       # per option choice: options, targets reached, price, chosen (RULE)
     chosen: object                      # the Alternative chosen
     inputs: pd.DataFrame                # per target e_n: the input e, the e_n it gives, or why none does
+    typed: list                         # per target e_n reached: what to type (typed.Typed)
     stages: pd.DataFrame                # per stage and quantity: worst and RMS deviation from the paper law
     physics: dict                       # stage -> physics verdict
     attribution: pd.DataFrame           # what remains: the calibrated formulas against the paper law
@@ -45,6 +48,12 @@ class Calibration:
     failures: list = field(default_factory=list)
     skipped: str = ""                   # why the engine did not run, when it did not
     version: str = ""                   # of the engine build calibrated
+    rule: str = RULE                    # how the choice was made from the choices' prices
+
+    @property
+    def alternatives(self):
+        """The choices as a table (alternatives.csv)."""
+        return choice_table(self.choices)
 
     def __repr__(self):
         states = ", ".join(f"{stage}: {p['state']}" for stage, p in self.physics.items())
@@ -53,60 +62,63 @@ class Calibration:
                 + "\n .inputs .stages .physics .advice .confirmed .variation>")
 
 
-def calibrate(engine, law, scene, steps=1000, tolerances=None, timestep_tolerance=1e-2, run_engine=True):
-    """Calibrate `engine` (an Engine) for `law` on `scene` (angles or tangential speeds; one e_n per target)."""
+def calibrate(engine, law, scene, steps=1000, tolerances=None, timestep_tolerance=1e-2, run_engine=True, fixed=None):
+    """Calibrate `engine` (an Engine) for `law` on `scene` (angles or tangential speeds; one e_n per target), each
+    choice of its options with the options `fixed` (a --with's); targets no choice reaches are refused first."""
     tolerances = Tolerances.of(tolerances)
-    paper = simulate(law, scene, steps_per_contact=steps)[0]
     target = "sphere" if scene.spheres else "wall"
-    default_options, default_dialect = alternatives(engine, law.name, target)[0]
-    given = as_given(default_dialect, scene, steps, GIVEN)
-    tried, scores = [], []
-    for options, dialect in alternatives(engine, law.name, target):
-        evaluated = evaluate(options, dialect, scene, steps, CALIBRATED, paper)
-        if evaluated.rows is None:
-            continue
-        tuned = ([with_ratio(evaluated, engine, law.name, scene, steps, CALIBRATED)]
-                 if takes_ratio(engine, law.name, options) else [])
-        for alternative in [evaluated] + tuned:
-            tried_one(alternative, paper, tolerances, scene, tried, scores)
-    best = min(range(len(tried)), key=lambda i: (scores[i]["score"], i))
-
-    chosen = tried[best]
-    table = pd.DataFrame([{"options": s["options"], "targets reached": s["targets reached"],
-                           "failed checks": s["score"][1], "worst check / tolerance": s["score"][2],
-                           "worst velocity / tolerance": s["score"][3], "chosen": i == best}
-                          for i, s in enumerate(scores)])
+    searched = engine.restitution_inputs(law.name)
+    choices = alternatives(engine, law.name, target, fixed)
+    ends = [reach(dialect, scene, steps, searched) for _, dialect in choices]
+    status = engine.status(law.name, choices[0][0])
+    version = engine.version() if status.available else ""
+    refuse_unreachable(scene.e_n, ends, searched, f"{engine.code} {version}".strip(), law.name, scene, steps)
+    paper = simulate(law, scene, steps_per_contact=steps)[0]
+    given = as_given(choices[0][1], scene, steps, GIVEN)
+    table, chosen = choose(engine, law, scene, steps, tolerances, paper, choices, ends, searched)
     frame = pd.concat([paper, given, chosen.rows], ignore_index=True)
-    remaining = attribution(law, chosen.dialect, scene, lambda l, s: simulate(l, s, steps_per_contact=steps)[0])
+    remaining, remaining_rows = attribute(law, chosen.dialect, scene,
+                                          lambda l, s: simulate(l, s, steps_per_contact=steps)[0], tolerances)
     advice = advise(chosen.dialect, scene, chosen.inputs, timestep_tolerance)
+    to_type = typed(engine, law, scene, steps, chosen.options, [(i.target, i.value) for i in chosen.reachable])
     failures, agreement, confirmed, skipped = [], None, None, ""
     status = engine.status(law.name, chosen.options)
     if run_engine and status.available:
         ran, failures = run_at_inputs(engine, law, scene, chosen, steps)
         if not ran.empty:
             frame = pd.concat([frame, ran], ignore_index=True)
-            agreement = max_difference(ran, chosen.rows)
+            agreement = max_difference(ran[ran.status == "ok"], chosen.rows)
         if advice.steps is not None:
             confirmed = confirm(engine, law, scene, chosen, advice, failures)
     elif run_engine:
         skipped = status.reason
     stages = [GIVEN, CALIBRATED] + ([RUN] if (frame.engine == RUN).any() else [])
-    physics = {s: engine_physics(frame, s, tolerances, remaining if s != GIVEN else None, scene.gravity)
-               for s in stages}
+    physics = {s: engine_physics(frame, s, tolerances, None if s == GIVEN else remaining, scene.gravity,
+                                 None if s == GIVEN else remaining_rows) for s in stages}
     return Calibration(engine.NAME, law, scene, steps, tolerances, timestep_tolerance, frame, table, chosen,
-                       inputs_table(chosen), stage_table(frame, stages, scene.gravity), physics, remaining,
-                       agreement, advice, confirmed, variation(chosen.dialect, scene, steps),
-                       refused(engine, law.name, target), failures, skipped,
-                       engine.version() if status.available else "")
+                       inputs_table(chosen), to_type, stage_table(frame, stages, scene.gravity), physics, remaining,
+                       agreement, advice, confirmed, variation(chosen.dialect, scene, steps, searched),
+                       refused(engine, law.name, target), failures, skipped, version)
 
 
-def tried_one(alternative, paper, tolerances, scene, tried, scores):
-    """Score one alternative against the paper law (analyses.calibration.score) and keep it."""
-    frame = pd.concat([paper, alternative.rows], ignore_index=True)
-    reached = len(alternative.reachable)
-    scores.append({"options": alternative.label, "targets reached": reached,
-                   "score": (-reached,) + score(frame, CALIBRATED, tolerances, scene.gravity)})
-    tried.append(alternative)
+def choose(engine, law, scene, steps, tolerances, paper, choices, ends, searched):
+    """Every choice of options with its restitution inputs (and, where its inputs take one, the tangential damping
+    ratio tuned), priced on the physics checks against the paper law's rows: (their records, the one RULE puts
+    first)."""
+    tried, prices = [], []
+    for (options, dialect), end in zip(choices, ends):
+        evaluated = evaluate(options, dialect, scene, steps, CALIBRATED, paper, searched, end)
+        if evaluated.rows is None:
+            continue
+        tuned = ([with_ratio(evaluated, engine, law.name, scene, steps, CALIBRATED)]
+                 if takes_ratio(engine, law.name, options) else [])
+        for alternative in [evaluated] + tuned:
+            tried.append(alternative)
+            prices.append(price(pd.concat([paper, alternative.rows], ignore_index=True), CALIBRATED, tolerances,
+                                scene.gravity))
+    best = min(range(len(tried)), key=lambda i: (rank(len(tried[i].reachable), prices[i]), i))
+    return [{"options": a.label, "option values": a.options, "targets reached": len(a.reachable), "price": p,
+             "chosen": i == best} for i, (a, p) in enumerate(zip(tried, prices))], tried[best]
 
 
 def inputs_table(alternative):
@@ -128,10 +140,10 @@ def run_at_inputs(engine, law, scene, alternative, steps, observe=False, label=R
 
 
 def max_difference(engine_rows, formula_rows):
-    """max over v_n1, v_t1, R omega1 of |engine - its formulas| / V at the same impacts and inputs (NaN if none)."""
+    """max over v_n1, v_t1, R omega1 of |engine - its formulas| / V at the same impacts and inputs (None if none)."""
     pairs = engine_rows.merge(formula_rows, on=IMPACT, suffixes=("", "_f"))
     if pairs.empty:
-        return float("nan")
+        return None
     speed = np.hypot(pairs.v_n0, pairs.v_t0)
     diffs = [(pairs[m] - pairs[m + "_f"]).abs() * (pairs.radius if m == "omega1" else 1.0) / speed
              for m in ("v_n1", "v_t1", "omega1")]
@@ -152,14 +164,14 @@ def confirm(engine, law, scene, alternative, advice, failures):
     return {"steps_per_contact": advice.steps, **errors, "meets": bool(errors["err_max"] <= advice.tolerance)}
 
 
-def variation(dialect, scene, steps):
+def variation(dialect, scene, steps, searched=SEARCHED):
     """The input e for each target e_n at the scene's speed and radius times 0.5, 1 and 2 (the formulas alone)."""
     rows = []
     for speed in SPEEDS:
         for radius in RADII:
             varied = replace(scene, speed=scene.speed * speed, radius=scene.radius * radius)
             for target in scene.e_n:
-                needed = restitution_input(dialect, varied, target, steps)
+                needed = restitution_input(dialect, varied, target, steps, searched)
                 rows.append({"speed_m_s": varied.speed, "radius_m": varied.radius, "e_n_target": target,
                              "input_e": needed.value, "note": needed.reason})
     return pd.DataFrame(rows)

@@ -4,6 +4,7 @@ analyses.agreement computes it for one comparison) and `deviation_map` (per engi
 worst |engine - paper law| of each metric over the rest of the matrix), with the SQL that prints each of the page's
 tables from them."""
 from ..analyses.agreement import AGREEMENT_TOLERANCE
+from ..releases import release_text
 
 AGREEMENT, MAP = "agreement", "deviation_map"
 GROUP = ("model", "material", "wall", "target", "radius", "E", "nu", "rho", "mu", "omega0", "steps_per_contact",
@@ -33,6 +34,12 @@ MAP_SQL = (f"CREATE VIEW {MAP} AS SELECT engine, model, e_n_target, theta_deg, m
            "GROUP BY ALL")
 
 
+def register_release_order(db):
+    """The SQL function release_order(engine): text that sorts the builds of an engine in release order
+    (releases.release_text), so that every table of the page lists them as every other view does."""
+    db.create_function("release_order", release_text, ["VARCHAR"], "VARCHAR", side_effects=False)
+
+
 def create(db):
     """Add the views `agreement` and `deviation_map` to a connection that has `results` and `deviations`."""
     db.execute(AGREEMENT_SQL)
@@ -41,13 +48,14 @@ def create(db):
 
 def agreement_sql():
     """The page's agreement table: every row of the view, in order."""
-    return f"SELECT engine, {', '.join(GROUP)}, worst, agrees FROM {AGREEMENT} ORDER BY ALL"
+    return (f"SELECT engine, {', '.join(GROUP)}, worst, agrees FROM {AGREEMENT} ORDER BY release_order(engine), "
+            + ", ".join(GROUP))
 
 
 def failures_sql():
     """The page's failed tasks: each engine, law and e_n whose run failed, with its one-line reason."""
     return ("SELECT DISTINCT engine, model, e_n_target, message FROM results WHERE status = 'failed' "
-            "ORDER BY engine, model, e_n_target")
+            "ORDER BY release_order(engine), model, e_n_target")
 
 
 def quoted(word):
@@ -63,5 +71,5 @@ def map_sql(engine, law, angles, metric="e_t"):
 
 def maps_sql():
     """Which maps there are, and their angles: each engine and law with the impact angles it ran."""
-    return (f"SELECT engine, model, list(DISTINCT theta_deg ORDER BY theta_deg) AS angles FROM {MAP} GROUP BY ALL "
-            "ORDER BY ALL")
+    return (f"SELECT engine, model, list(DISTINCT theta_deg ORDER BY theta_deg) AS angles FROM {MAP} "
+            "GROUP BY engine, model ORDER BY release_order(engine), model")

@@ -74,6 +74,7 @@ def connection(store):
         raise UserError(f"store {store.path}: its fragments' columns do not agree ({first_line(exc)})") from None
     db = duckdb.connect(":memory:", config=LOCKED)
     db.execute("SET enable_progress_bar = false")     # not settable at connect; nothing else runs before the lock
+    page_views.register_release_order(db)
     db.execute("SET lock_configuration = true")
     whole = [paths[name] for name, keys in copies.items() if keys == store.held[name]]
     parts = []
@@ -130,14 +131,27 @@ def growth_within(extra):
         resource.setrlimit(resource.RLIMIT_AS, (soft, hard))
 
 
+TABLES = (f"the store is the view {VIEW} (one row per impact: the columns of results.csv, docs/results.md, and the "
+          f"task's; `DESCRIBE {VIEW}` lists them), beside the views {DEVIATIONS}, {page_views.AGREEMENT} and "
+          f"{page_views.MAP}")
+
+
 def refusal(exc):
-    """The one line for a query DuckDB stopped: over its time or memory limit, or failing."""
+    """The one line for a query DuckDB stopped: over its time or memory limit, or failing; a table or column that
+    does not exist is told where the store's rows are."""
     import duckdb
     text = first_line(exc)
     if isinstance(exc, duckdb.InterruptException) or text.startswith("INTERRUPT"):
         return UserError(f"the query ran longer than {MAX_QUERY_S:g} s and was stopped: narrow it")
     if isinstance(exc, duckdb.OutOfMemoryException) or text.startswith("Out of Memory"):
         return UserError(f"the query needs more than {QUERY_MEMORY_MB} MB of memory: narrow it")
+    if isinstance(exc, duckdb.CatalogException):
+        return UserError(f"query failed: {text.rstrip('!')}: {TABLES}")
+    if isinstance(exc, duckdb.BinderException) and "not found" in text:
+        lines = str(exc).strip().splitlines()
+        candidates = next((line.strip() for line in lines[1:] if line.startswith("Candidate")), "")
+        return UserError(f"query failed: {text.rstrip('!')}" + (f" ({candidates[:200]})" if candidates else "")
+                         + f": {TABLES}")
     return UserError(f"query failed: {text}")
 
 

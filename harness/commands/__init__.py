@@ -36,7 +36,8 @@ COMMANDS = {   # name -> (its module, its summary): the parser lists every comma
     "baseline": ("check", "rewrite the committed baseline matrix on purpose"),
     "campaign": ("campaign", "run a matrix of comparisons from a TOML file into a Parquet store that resumes"),
     "query": ("query", "one read-only SQL query over a campaign store (DuckDB; the store is the view `results`)"),
-    "cite": ("cite", "print BibTeX for harness, the paper it follows and the benchmark it runs"),
+    "cite": ("cite", "print BibTeX for harness, the paper it follows, the benchmark it runs and the engines, with "
+                     "their versions installed or run"),
 }
 
 

@@ -11,6 +11,7 @@ from ..views.figure_files import FIGURES
 from ..views.progress import Progress
 from ..views.terminal import text_table
 from ..views import strict_json
+from ..wording import counted, verb
 from .options import EXIT_DISAGREE, EXIT_ENGINE, EXIT_OK, check_entries, check_output_directory
 
 
@@ -48,6 +49,7 @@ def main(args):
         return code
     if not args.quiet:
         print(text_table(summary(table), ["engine", "passed", "failed", "checked", "not run", "why not"], {}))
-    print(f"chung-ooi: {passed} of {checked} checks pass, {checked - passed} fail -> {path}"
+    print(f"chung-ooi: {passed} of {counted(checked, 'check')} {verb(passed, 'passes')}, {checked - passed} "
+          f"{verb(checked - passed, 'fails')} -> {path}"
           + (f"; could not run: {', '.join(missing + failed)}" if missing or failed else ""))
     return code

@@ -18,6 +18,7 @@ from ..lock import exclusive
 from ..views.campaign_html import figures_folder, write_campaign_report
 from ..views.progress import Progress
 from ..views import strict_json
+from ..wording import counted
 from .options import EXIT_ENGINE, EXIT_OK, check_entries, check_output_directory
 
 
@@ -108,12 +109,14 @@ def report(args, summary, page, dry=False):
         return code
     if not args.quiet:
         for engine, entry in summary.per_engine.items():
-            print(f"  {engine:10s} " + (f"{entry['tasks']} tasks, {entry['cached']} cached, about "
-                                        f"{entry['estimated_s']:.0f} s to run" if dry else f"{entry} tasks run"))
+            print(f"  {engine:10s} " + (f"{counted(entry['tasks'], 'task')}, {entry['cached']} cached, about "
+                                        f"{entry['estimated_s']:.0f} s to run" if dry
+                                        else f"{counted(entry, 'task')} run"))
         for engine, reason in summary.skipped:
             print(f"skipped {engine}: {reason}")
     verb = "would run" if dry else "ran"
-    print(f"campaign: {summary.tasks} tasks, {verb} {summary.tasks - summary.cached if dry else summary.ran}, "
+    print(f"campaign: {counted(summary.tasks, 'task')}, {verb} "
+          f"{summary.tasks - summary.cached if dry else summary.ran}, "
           f"{summary.cached} cached, {summary.failed} failed; store {args.output}"
           + (f", report {page}" if page else ""))
     return code

@@ -7,6 +7,7 @@ from ..errors import UserError
 from ..views.progress import Progress
 from ..views.terminal import text_table, wrapped
 from ..views import strict_json
+from ..wording import counted
 from .options import EXIT_DISAGREE, EXIT_OK, engines_from
 
 
@@ -54,7 +55,7 @@ def main(args):
             print(text_table(failures, list(failures.columns), {"baseline": "{:.10g}", "now": "{:.10g}",
                                                                 "rel_diff": "{:.2e}", "tolerance": "{:.0e}"}))
     print("check: every metric within tolerance" if failures.empty else
-          f"check: {len(failures)} metric(s) outside tolerance")
+          f"check: {counted(len(failures), 'metric')} outside tolerance")
     return code
 
 
@@ -67,5 +68,5 @@ def main_update(args):
     if not args.quiet:
         for line in skipped:
             print(f"skipped {line}")
-    print(f"wrote {len(frame)} rows to {baseline}")
+    print(f"wrote {counted(len(frame), 'row')} to {baseline}")
     return EXIT_OK

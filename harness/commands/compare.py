@@ -6,11 +6,11 @@ import sys
 
 import pandas as pd
 
-from ..analyses.physics import DEVIATES
+from ..analyses.physics import DEVIATES, MARGINAL
 from ..analyses.verdict import DISAGREE, NOT_COMPARED, verdict
 from ..api import compare_request
 from ..campaign.store import RunCache, Store
-from ..comparison import Comparison
+from ..comparison import Comparison, shown_rows
 from ..files import discard
 from ..lock import exclusive
 from ..outputs import save_comparison, start_comparison
@@ -32,7 +32,8 @@ def main(args):
     results_path, report_path = os.path.join(args.output, "results.csv"), os.path.join(args.output, "report.html")
     frames = []
 
-    def keep(frame):                       # results.csv holds every finished run, whatever stops the compare
+    def keep(frame):                       # results.csv holds every finished run, whatever stops the compare, in the
+                                           # order every view shows (not the order the runs finished in)
         if not frames:                     # the first result replaces an earlier compare in DIR, never refused input;
             discard(report_path)           # its report goes first, so that none stands beside the new results
             start_comparison(args.output, Comparison(request.law, request.scene, pd.DataFrame(),
@@ -40,7 +41,7 @@ def main(args):
                                                      engine_options=request.engine_options, command=command_line(),
                                                      tolerances=request.tolerances))
         frames.append(frame)
-        write_csv(pd.concat(frames, ignore_index=True), results_path)
+        write_csv(shown_rows(pd.concat(frames, ignore_index=True), request.engines), results_path)
 
     with exclusive(args.output), Progress(f"compare {request.model}", quiet=args.quiet or args.json) as progress:
         partial = RunCache(Store(args.store, drop_damaged=args.drop_damaged)) if args.store else PartialRuns(args.output)
@@ -79,9 +80,10 @@ def command_line():
 
 
 def exit_code(record, reference_only, require=None):
-    """1 when an engine disagrees (or, with require="paper", deviates from the paper law); 3 when an engine asked
-    for did not run, a run failed, or nothing was compared (unless the reference alone was asked for); else 0."""
-    if record["verdict"] == DISAGREE or (require == "paper" and record["physics"] == DEVIATES):
+    """1 when an engine disagrees (or, with require="paper", misses the paper law: deviates or marginal, the
+    tolerances being the bound); 3 when an engine asked for did not run, a run failed, or nothing was compared
+    (unless the reference alone was asked for); else 0."""
+    if record["verdict"] == DISAGREE or (require == "paper" and record["physics"] in (DEVIATES, MARGINAL)):
         return EXIT_DISAGREE
     if record["unavailable"] or record["failed"] or (record["verdict"] == NOT_COMPARED and not reference_only):
         return EXIT_ENGINE

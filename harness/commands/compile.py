@@ -2,6 +2,7 @@
 import time
 
 from ..laws.table import LAWS, known_law
+from ..wording import counted
 from .options import EXIT_OK
 
 
@@ -13,6 +14,6 @@ def main(args):
     start = time.perf_counter()
     with Progress("compile", quiet=args.quiet, compiling=lambda: 0.0) as progress:    # every step compiles
         seconds = compile_laws(laws, progress)
-    print(f"compiled {len(laws)} law(s) in {time.perf_counter() - start:.0f} s ({sum(seconds.values()):.0f} s "
+    print(f"compiled {counted(len(laws), 'law')} in {time.perf_counter() - start:.0f} s ({sum(seconds.values()):.0f} s "
           f"compiling; nothing left to compile where that is 0) into {cache_base()}")
     return EXIT_OK

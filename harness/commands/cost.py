@@ -1,11 +1,15 @@
 """`harness cost`: the accuracy-against-cost ladder; its tables, DIR/cost.csv and the report."""
 import os
+import sys
+import time
 
 import pandas as pd
 
-from ..analyses.cost import COLUMNS, LADDER, convergence_orders, recommendations, step_times, verdict
+from ..analyses.cost import COLUMNS, LADDER, MEASURE, convergence_orders, step_times
+from ..analyses.cost_answer import answers, notes, recommendations, verdict
 from ..api import able_engines
 from ..campaign.store import RunCache, Store
+from ..cost_estimate import said, study_seconds
 from ..cost_plan import check_ladder, cost_table
 from ..errors import UserError
 from ..files import discard
@@ -40,6 +44,12 @@ def main(args):
     adapters, skipped = able_engines(request)                # bad options: exit 2 before anything runs
     overrides = dict(request.overrides)
     cache = RunCache(Store(args.store, drop_damaged=args.drop_damaged)) if args.store else None
+    parts = study_seconds(law, scene, adapters, ladder)
+    estimate = sum(parts.values())
+    if not (args.quiet or args.json):
+        print(f"harness: cost {law.name}: {said(parts, os.getloadavg()[0], os.cpu_count())}", file=sys.stderr,
+              flush=True)
+    start = time.perf_counter()
     with exclusive(args.output):
         discard(os.path.join(args.output, "report.html"))     # an earlier report never stands beside this study
         save_cost(args.output, pd.DataFrame(columns=COLUMNS), {}, law, scene, overrides, skipped, [])
@@ -49,19 +59,24 @@ def main(args):
                 progress=progress, cache=cache)
         save_cost(args.output, table, uncertainty, law, scene, overrides, skipped, failures)
         report = rebuild(args.output)
+    took = time.perf_counter() - start
     asked = set(request.engines or ()) - {"reference"}
     code = EXIT_ENGINE if failures or asked & {name for name, _ in skipped} else EXIT_OK
     if args.json:
+        found = answers(table)
         print(strict_json.dumps({
-            "model": law.name, "exit_code": code, "verdict": verdict(table).to_dict("records"),
+            "model": law.name, "exit_code": code, "measure": MEASURE,
+            "verdict": verdict(table, found).to_dict("records"), "notes": notes(found),
             "step_times": step_times(table).to_dict("records"),
-            "recommendations": recommendations(table).to_dict("records"),
+            "recommendations": recommendations(table, found).to_dict("records"),
             "orders": convergence_orders(table).to_dict("records"), "skipped": skipped,
             "failed": [{"engine": f.engine, "e_n": f.e_n, "message": f.message} for f in failures],
-            "files": {"cost": os.path.join(args.output, COST), "report": report}}, indent=1, default=str))
+            "files": {"cost": os.path.join(args.output, COST), "report": report},
+            "seconds": took, "estimated_seconds": estimate}, indent=1, default=str))
         return code
     if not args.quiet:
         print_cost(table, uncertainty, law, scene, ladder, skipped, failures, verbose=args.verbose)
+        print(f"took {took / 60:.1f} min (estimated {estimate / 60:.1f} min)")
     print(f"wrote {COST} and {os.path.basename(report)} in {args.output}" + (
         "" if args.verbose or args.quiet else " (every table: --verbose)"))
     return code

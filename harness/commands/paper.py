@@ -7,7 +7,8 @@ from ..paper import checked, figure_set
 from ..results import write_csv
 from ..views.paper_html import FILES, NORMAL, OBLIQUE, PUBLISHED, SLIDING, write_paper_report
 from ..views.progress import Progress
-from ..views.terminal import published_summary, text_table
+from ..sliding_search import PSI_MAX
+from ..views.terminal import published_summary, sliding_summary
 from ..views.figure_files import FIGURES
 from .options import EXIT_OK, check_entries, check_output_directory
 
@@ -28,8 +29,7 @@ def main(args):
         path = write_paper_report(args.output, oblique, normal, sliding, "harness " + " ".join(sys.argv[1:]),
                                   published)
     if not args.quiet:
-        print(text_table(sliding, ["model", "e_n_target", "simulated", "derived", "difference"],
-                         {"simulated": "{:.4f}", "derived": "{:.4f}", "difference": "{:+.1e}"}))
+        print(sliding_summary(sliding, PSI_MAX))
         if not published.empty:
             print(published_summary(published))
     print(f"wrote {path}")

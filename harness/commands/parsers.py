@@ -59,8 +59,8 @@ def compare_parser(sub, describe):
                                       "incident speed, default 0.01), e_n= (absolute, 0.01), coulomb= (fraction of "
                                       "mu J_n, 0.001), energy= (fraction of the kinetic energy, 1e-6)")
     verdict_options.add_argument("--require", choices=("paper",), default=None,
-                                 help="--require paper: exit 1 also when an engine deviates from the paper law "
-                                      "(by default the exit code is the agreement verdict alone)")
+                                 help="--require paper: exit 1 also when an engine misses the paper law, "
+                                      "marginally or not (by default the exit code is the agreement verdict alone)")
     add_output_options(p, json=True, verbose=True)
     p.set_defaults(func=runs("compare"))
 
@@ -79,7 +79,7 @@ def calibrate_parser(sub, describe):
                         "force against the engine's own formulas at a vanishing step (default 0.01)")
     p.add_argument("-o", "--output", default="calibrated", metavar="DIR",
                    help="output directory (default %(default)s)")
-    add_output_options(p)
+    add_output_options(p, json=True)
     p.set_defaults(func=runs("calibrate"))
 
 
@@ -90,7 +90,7 @@ def cost_parser(sub, describe):
     add_scene_options(p, resolution=False)
     p.add_argument("--ladder", default=None, metavar="LIST",
                    help="steps per contact to try (default 5,10,20,50,100,200,500,1000,5000)")
-    p.add_argument("-o", "--output", default="harness-out", metavar="DIR",
+    p.add_argument("-o", "--output", default="harness-cost", metavar="DIR",
                    help="output directory (default %(default)s)")
     p.add_argument("--store", metavar="STORE", help="a campaign store: the converged truths' runs are taken from it "
                                                     "or added to it (timed runs never are)")
@@ -197,8 +197,10 @@ def campaign_parser(sub, describe):
 def query_parser(sub, describe):
     p = describe(sub, "query", "harness query campaign-store \"SELECT engine, max(abs(e_t)) FROM results GROUP BY "
                  "engine\"")
-    p.add_argument("store", metavar="STORE")
-    p.add_argument("sql", metavar="SQL", help="one SELECT (or WITH, DESCRIBE, SHOW, SUMMARIZE); nothing that writes, "
+    p.add_argument("store", metavar="STORE", help="a campaign store (the directory `harness campaign -o` wrote)")
+    p.add_argument("sql", metavar="SQL", help="one SELECT (or WITH, DESCRIBE, SHOW, SUMMARIZE) over the view results "
+                   "(one row per impact: the columns of results.csv, docs/results.md, and task_key, log_tail, material, "
+                   "wall, target, speed; `DESCRIBE results` lists them) or the views deviations, agreement, deviation_map (docs/campaigns.md); nothing that writes, "
                    "reads other files, attaches or installs")
     p.add_argument("--csv", action="store_true", help="print CSV instead of a table")
     p.add_argument(DROP, action="store_true", help=DROP_HELP)
@@ -207,4 +209,7 @@ def query_parser(sub, describe):
 
 def cite_parser(sub, describe):
     p = describe(sub, "cite", "harness cite > harness.bib")
+    p.add_argument("directory", metavar="DIR", nargs="?",
+                   help="a compare's results directory: cite the engines and versions it ran (default: every engine "
+                        "installed here, with its versions)")
     p.set_defaults(func=runs("cite"))

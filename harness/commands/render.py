@@ -8,6 +8,7 @@ from ..errors import UserError
 from ..files import write_text
 from ..plan import engine_runs
 from ..request import Request
+from ..wording import counted
 from .options import EXIT_OK, check_entries, check_output_directory, keywords
 
 
@@ -23,8 +24,8 @@ def main(args):
         raise UserError(f"{args.engine} has no counterpart of {request.law.name}")
     check_output_directory(args.output)
     texts = [engine.render(run) for run in engine_runs(engine, request.law, request.scene, request.resolution,
-                                                       options_for(request, args.engine))]
-    return write_inputs(args, texts, args.engine)
+                                                       options_for(request, engine.NAME))]
+    return write_inputs(args, texts, engine.NAME)
 
 
 def write_inputs(args, texts, engine):
@@ -35,7 +36,7 @@ def write_inputs(args, texts, engine):
         write_text(os.path.join(args.output, name), text)
     if not args.quiet:
         print("\n".join(os.path.join(args.output, name) for name, _ in texts))
-    print(f"wrote {len(texts)} {engine} input(s) to {args.output}")
+    print(f"wrote {counted(len(texts), engine + ' input')} to {args.output}")
     return EXIT_OK
 
 

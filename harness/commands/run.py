@@ -1,4 +1,5 @@
 """`harness run`: one law over a scene on the reference solver; a results CSV."""
+from ..wording import counted
 from .options import EXIT_OK, check_output_file, keywords
 
 
@@ -13,5 +14,5 @@ def main(args):
         frame = run_request(request, progress=progress)
     write_csv(frame, args.output)
     bad = int((frame.status != "ok").sum())
-    print(f"{request.law.name}: {len(frame)} impacts -> {args.output}" + (f" ({bad} not ok)" if bad else ""))
+    print(f"{request.law.name}: {counted(len(frame), 'impact')} -> {args.output}" + (f" ({bad} not ok)" if bad else ""))
     return EXIT_OK

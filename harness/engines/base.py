@@ -11,7 +11,7 @@ from functools import lru_cache
 from ..errors import UserError
 from .builds import sha256
 from .executable import banner, chosen, missing, present
-from .protocol import Status, check_options as check_declared
+from .protocol import InputRange, Status, check_options as check_declared
 from .runner import EngineFailure, read_tail
 
 DOUBLE = "double (IEEE 754 binary64)"
@@ -34,9 +34,12 @@ class Engine:
     WITH = {}                   # (sub-model key, label) of `--with` -> the engine options whose inputs compute it
     KNOWN_CAUSES = {}           # (law, finding kind) -> the documented cause, printed with the finding
     COLOUR = None               # of its curves in every figure (matplotlib colour)
+    CITATION = {}               # the BibTeX fields of the publication its developers ask users to cite (harness cite)
     DASHES = None               # of the curves of its dialect (matplotlib line style)
     VERIFIED = ()               # versions (their start, as `harness engines` prints them) its dialects were checked on
     STARTUP_S = 1.0             # campaign --dry-run estimate: seconds per process start
+    RESTITUTION_INPUTS = InputRange(0.01)   # the e calibrate searches its inputs over (docs/calibrate.md)
+    CONTACT_LINES = ()          # how the lines of its input that set the contact law begin (calibrate prints them)
     SPHERE_STEP_S = 1e-6        # and per sphere-step (docs/performance.md)
 
     @property
@@ -201,6 +204,25 @@ class Engine:
         from ..laws import compose, replace_submodels
         wanted = replace_submodels(compose(law_name), {key: value}).describe()[key]
         return dialect.describe()[key] == wanted
+
+    def restitution_inputs(self, law_name):
+        """The restitution coefficients its inputs take for the law (InputRange), as calibrate searches them."""
+        return self.RESTITUTION_INPUTS
+
+    def contact_lines(self, text):
+        """The lines of a rendered input that set the contact law (those CONTACT_LINES begin, indented or not), each
+        with the lines that continue it until its brackets close: what a user pastes into an input of their own."""
+        lines, out, open_brackets = text.splitlines(), [], 0
+        for line in lines:
+            if open_brackets > 0 or (line.lstrip().startswith(self.CONTACT_LINES) and self.CONTACT_LINES):
+                out.append(line)
+                open_brackets = max(open_brackets + sum(line.count(c) for c in "([{")
+                                    - sum(line.count(c) for c in ")]}"), 0)
+        return out
+
+    def typed_inputs(self, lines):
+        """[(name, value)] of what its contact lines set, named as its manual names them."""
+        return []
 
     def precision_runs(self, law, scene, options):
         """Runs of the plan that check its own arithmetic beside a comparison (docs/engines.md), () when none."""

@@ -48,12 +48,18 @@ def failed_rows(engine, build, run, failure):
 
 
 def result_rows(engine, build, run, final, wall):
-    """The rows of a run that finished: each impact's rebound, whether it separated, its share of the wall time."""
+    """The rows of a run that finished: each impact's rebound, whether it separated, its share of the wall time; an
+    impact whose state is not a number is `non-finite`, with the reason where its dialect predicts it."""
     spec = run.spec
     observed = {name: final[name] for name in OBSERVED if run.observe}
+    finite = final.get("finite", np.ones(spec.impacts, dtype=bool))
+    reason = run.dialect.undefined(run.scene.contact, spec.e_n, run.scene.speed) if not finite.all() else ""
+    why = (f"non-finite, as its formulas predict: {reason}" if reason else
+           "non-finite: the engine returned values that are not numbers, which its formulas do not predict")
     return impact_frame(run.scene, spec, **identity_of(engine, build, run), v_n1=final["v_n1"],
                         v_t1=final["v_t1"], omega1=final["omega1"], wall_s=wall / spec.impacts,
-                        status=np.where(final["separated"], "ok", "no-separation"), message="", **observed)
+                        status=np.where(~finite, "non-finite", np.where(final["separated"], "ok", "no-separation")),
+                        message=np.where(finite, "", why), **observed)
 
 
 def run_grouped(engine, build, runs, input_name, render, group_of, run_inputs, read, deadline=None):

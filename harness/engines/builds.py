@@ -9,6 +9,7 @@ import shutil
 from functools import lru_cache
 
 from ..errors import EngineMissing, UserError
+from ..releases import release_key
 
 DIRECTORY_VARIABLE = "HARNESS_ENGINES_DIR"
 DEFAULT_DIRECTORY = "/opt/harness/engines"
@@ -65,8 +66,9 @@ def prefix_binaries(engine):
 
 
 def builds(engine):
-    """Every build of `engine` as its own Engine, in the order found."""
-    return [engine.at(binary, origin) for binary, origin in found(engine)]
+    """Every build of `engine` as its own Engine, in release order (harness.releases)."""
+    every = [engine.at(binary, origin) for binary, origin in found(engine)]
+    return sorted(every, key=lambda build: release_key(build.version()))
 
 
 def select(engine, selector):

@@ -4,6 +4,7 @@ import os
 
 import numpy as np
 
+from ..wording import counted
 from .runner import EngineFailure
 
 DUMP_HEADER_LINES = 9           # TIMESTEP, NUMBER OF ATOMS, BOX BOUNDS (3 lines) and ATOMS items
@@ -31,7 +32,8 @@ def read_final(path, n_atoms, engine, columns=5):
         raise EngineFailure(f"{engine} final dump is cut short: {complete} complete rows of {declared}"
                             + ("" if ended else ", the last unterminated"))
     if rows.ndim != 2 or rows.shape[1] != columns or len(rows) != declared:
-        raise EngineFailure(f"{engine} final dump is malformed: {len(rows)} rows where its header says {declared}")
+        raise EngineFailure(f"{engine} final dump is malformed: {counted(len(rows), 'row')} where its header says "
+                            f"{declared}")
     if declared != n_atoms:
         raise EngineFailure(f"{engine} final dump holds {declared} spheres where the deck made {n_atoms}")
     rows = rows[np.argsort(rows[:, 0])]
@@ -41,14 +43,14 @@ def read_final(path, n_atoms, engine, columns=5):
 
 
 
-def rebound(state, radius, engine, log_tail=""):
-    """Rebound velocities and separation from a final dump's (z, vx, vz, omegay); EngineFailure if not finite."""
+def rebound(state, radius):
+    """Rebound velocities, separation and whether each is finite, from a final dump's (z, vx, vz, omegay): a sphere
+    whose state is not a number is a result (a row `non-finite`), not a failed run."""
     z, vx, vz, omegay = state.T
-    if not np.all(np.isfinite(state)):
-        raise EngineFailure(f"{engine} returned non-finite velocities", log_tail)
-    return {"v_n1": vz, "v_t1": vx, "omega1": omegay, "separated": z > radius}
+    return {"v_n1": vz, "v_t1": vx, "omega1": omegay, "separated": z > radius,
+            "finite": np.isfinite(state).all(axis=1)}
 
-def pair_rebound(state, scene, engine):
+def pair_rebound(state, scene):
     """The equivalent impact's rebound from each pair's final (x, z, vx, vz, omegay): v_n1 = vz1 - vz2, v_t1 =
     vx1 - vx2, omega1 = (R1 w1 + R2 w2)/R* in the frame where the line of centres was z at first touch, separated
     when the centres are more than R1 + R2 apart."""
@@ -57,7 +59,7 @@ def pair_rebound(state, scene, engine):
     gap = np.hypot(one[:, 0] - two[:, 0], one[:, 1] - two[:, 1]) - (projectile.radius + target.radius)
     equivalent = np.column_stack([gap, one[:, 2] - two[:, 2], one[:, 3] - two[:, 3],
                                   (projectile.radius * one[:, 4] + target.radius * two[:, 4]) / scene.contact.radius])
-    out = rebound(equivalent, 0.0, engine)
+    out = rebound(equivalent, 0.0)
     out["separated"] = gap > 0.0
     return out
 
@@ -148,7 +150,7 @@ def read_observed(path, n_atoms, radius, dt, engine):
 def read_pair_batch(directory, scene, spec, observe, engine, observe_dump):
     """The equivalent impacts' rebounds of a two-sphere run in `directory` from its `final.dump` (id x z vx vz
     omegay, two atoms per impact) and, observed, contact time, peak force and overlap from `observe_dump`."""
-    final = pair_rebound(read_final(os.path.join(directory, "final.dump"), 2 * spec.impacts, engine, 6), scene, engine)
+    final = pair_rebound(read_final(os.path.join(directory, "final.dump"), 2 * spec.impacts, engine, 6), scene)
     if observe:
         projectile, target = scene.spheres
         final.update(read_observed_pairs(os.path.join(directory, observe_dump), spec.impacts,

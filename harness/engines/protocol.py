@@ -1,4 +1,5 @@
 """What an engine declares beside its hooks (base.Engine): the options it takes, and its status (docs/engines.md)."""
+import math
 from dataclasses import dataclass
 
 from ..errors import UserError
@@ -21,6 +22,23 @@ class Status:
     name: str
     available: bool
     reason: str = ""
+
+
+@dataclass(frozen=True)
+class InputRange:
+    """The restitution coefficients e an engine's inputs take: low < e <= high where low is excluded, else
+    low <= e <= high."""
+    low: float
+    high: float = 1.0
+    low_open: bool = False
+
+    @property
+    def lowest(self):
+        """The lowest e it takes: low, or the next double above it where low is excluded."""
+        return math.nextafter(self.low, math.inf) if self.low_open else self.low
+
+    def __str__(self):
+        return f"{'(' if self.low_open else '['}{self.low:g}, {self.high:g}]"
 
 
 def check_options(name, declared, options):

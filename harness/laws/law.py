@@ -33,7 +33,8 @@ class Law:
     tangential: object
     tangential_damping: TangentialDashpot = TangentialDashpot("none")
     integrator: str = "paper"            # time stepping: 'paper' (second order), 'velocity-verlet', 'leapfrog'
-    coulomb: str = "spring"              # what the Coulomb cap bounds: the spring ('spring'), or spring + dashpot
+    coulomb: str = "spring-first"        # the Coulomb rule (submodels/stepping.py): the spring tested first, then
+                                         # spring + dashpot ('spring-first'), the spring alone, or their sum
     geometry: str = "wall"               # a wall, a stand-in sphere, or two spheres (submodels/stepping.py)
     lever: float = 0.0                   # lever arm R - lever * alpha for slip and torque (paper 0)
     slip: str = "lever"                  # slip V_t - lever omega, or the noRatch form with the wall's reference
@@ -54,6 +55,11 @@ class Law:
                 "lever": {0.0: "R", 0.25: "R - d/4", 0.5: "R - d/2", 1.0: "R - d"}.get(self.lever,
                                                                                      f"R - {self.lever:g} d"),
                 "slip": self.slip, "torque": self.torque, "touch": self.touch}
+
+    def undefined(self, contact, e_n, speed):
+        """Why this composition's contact force is not a number at target e_n (a sub-model's 0/0), '' when it is one:
+        every impact then ends not finite."""
+        return self.tangential.undefined(self.damping.dashpot(self.normal, contact, e_n, speed, self.end))
 
     @property
     def provisional(self):

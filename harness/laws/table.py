@@ -6,7 +6,7 @@ from dataclasses import dataclass
 
 from ..errors import UserError
 
-PAPER_STEPPING = {"integrator": "paper", "coulomb": "spring", "geometry": "wall", "lever": "R", "slip": "lever",
+PAPER_STEPPING = {"integrator": "paper", "coulomb": "spring-first", "geometry": "wall", "lever": "R", "slip": "lever",
                   "torque": "lever", "touch": "gap"}     # what every named law integrates with (the paper's scheme)
 
 

@@ -32,6 +32,7 @@ from ..submodels.tangential import mindlin_unloading as tangential_mindlin_unloa
 from ..submodels.coulomb import spring as coulomb_spring
 from ..submodels.coulomb import total as coulomb_total
 from ..submodels.coulomb import total_cases as coulomb_total_cases
+from ..submodels.coulomb import spring_first as coulomb_spring_first
 from ..submodels.touch import gap as touch_gap
 from ..submodels.touch import overlap as touch_overlap
 from .extension import BELOW, FORCE, KINK, RESIDUAL, SLOPE, call
@@ -91,6 +92,7 @@ INTEGRATOR_ADAPTIVE = np.array([True, False, False], dtype=np.bool_)
 COULOMB_SPRING = 0
 COULOMB_TOTAL = 1
 COULOMB_TOTAL_CASES = 2
+COULOMB_SPRING_FIRST = 3
 GEOMETRY_WALL = 0
 GEOMETRY_STAND_IN_SPHERE = 1
 GEOMETRY_PAIR = 2
@@ -326,6 +328,8 @@ def coulomb_cap(code, p, f_s, damping, k_t, slip, limit):
         return coulomb_total.cap(f_s, damping, k_t, slip, limit)
     if code == 2:
         return coulomb_total_cases.cap(f_s, damping, k_t, slip, limit)
+    if code == 3:
+        return coulomb_spring_first.cap(f_s, damping, k_t, slip, limit)
     return math.nan, math.nan, False
 
 
@@ -335,6 +339,8 @@ def coulomb_first_touch(code, p, f_d, limit):
         return coulomb_total.first_touch(f_d, limit)
     if code == 2:
         return coulomb_total_cases.first_touch(f_d, limit)
+    if code == 3:
+        return coulomb_spring_first.first_touch(f_d, limit)
     return f_d
 
 

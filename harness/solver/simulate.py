@@ -295,7 +295,11 @@ def simulate(law, scene, steps_per_contact=1000, converged=False, history_points
     """Results table of `law` over every (e_n, impact) of `scene`; histories {e_n: array} if points are asked for."""
     frames, histories = [], {}
     for e_n in scene.e_n:
-        if converged:
+        reason = law.undefined(scene.contact, e_n, scene.speed)
+        if reason:
+            batch, out, steps, dt, messages, wall = undefined_batch(law, scene, e_n, reason, converged,
+                                                                    steps_per_contact)
+        elif converged:
             batch, out, steps, dt, messages, wall = converged_batch(law, scene, e_n, tolerance, extrapolate)
         else:
             batch = batch_at(law, scene, e_n, steps_per_contact)
@@ -308,3 +312,14 @@ def simulate(law, scene, steps_per_contact=1000, converged=False, history_points
             steps, dt = batch.steps_per_contact, batch.dt
         frames.append(results_frame(law, scene, batch, out, wall, steps, dt, messages))
     return pd.concat(frames, ignore_index=True), histories
+
+
+def undefined_batch(law, scene, e_n, reason, converged, steps_per_contact):
+    """Every impact of a composition whose contact force is not a number at e_n (law.undefined: a sub-model's 0/0):
+    not finite from the first contact step, so not stepped; (batch, out, steps per contact, dt, messages, wall)."""
+    steps = CONVERGED_START if converged else steps_per_contact
+    batch = batch_at(law, scene, e_n, steps, check_stability=False)
+    out = np.zeros((len(batch.v_n0), C.N_OUT))
+    out[:, KEPT] = np.nan
+    out[:, C.O_STATUS] = C.STATUS_NONFINITE
+    return batch, out, batch.steps_per_contact, batch.dt, [f"non-finite: {reason}"] * len(out), 0.0

@@ -62,3 +62,8 @@ class TangentialModel(SubModel):
 
     def parameter(self, contact, k_n):
         raise NotImplementedError
+
+    def undefined(self, dashpot):
+        """Why the contact force is not a number with this spring beside the normal `dashpot` (a 0/0 of its own
+        arithmetic), '' when it is one."""
+        return ""

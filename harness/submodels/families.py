@@ -76,7 +76,7 @@ TANGENTIAL = Family("tangential", (
 COULOMB = Family("coulomb", (
     Point("cap", "f_s, damping, k_t, slip, limit", "math.nan, math.nan, False"),
     Point("first_touch", "f_d, limit", "f_d"),
-), {}, 4, lambda m: {"cap": ""})
+), {"BRIEF": (str, "")}, 4, lambda m: {"cap": ""})
 
 END = Family("end", (Point("clip", "f_n", "math.nan"),), {"PULLS": (bool, REQUIRED)}, 4, lambda m: {"clip": ""})
 

@@ -114,6 +114,7 @@ COULOMB_KERNELS = registered("coulomb", (
     "spring",
     "total",
     "total_cases",
+    "spring_first",
 ))
 GEOMETRY_KERNELS = registered("geometry", (
     "wall",

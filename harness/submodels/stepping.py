@@ -5,7 +5,7 @@ and touch, numbered by the registry."""
 EVERY = "every registered rule"     # a stepper that applies the Coulomb rule through its dispatch takes every one
 
 STEPPERS = {      # (integrator, geometry) -> the stepper that computes it (solver/switches.py) and its Coulomb rules
-    ("paper", "wall"): ("PAPER", ("spring",)),
+    ("paper", "wall"): ("PAPER", ("spring-first",)),
     ("velocity-verlet", "wall"): ("VELOCITY_VERLET", EVERY),
     ("leapfrog", "wall"): ("LEAPFROG", EVERY),
     ("leapfrog", "stand-in-sphere"): ("LEAPFROG_SPHERE", ("spring",)),

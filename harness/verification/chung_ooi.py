@@ -16,6 +16,7 @@ from ..execute import run_all
 from ..laws import compose
 from ..plan import FixedTimeStep, engine_runs, reference_runs
 from ..two_spheres import with_bodies
+from ..wording import counted
 from .chung_ooi_cases import cases, published_e
 
 LAW = "hertz-mindlin"
@@ -68,7 +69,7 @@ def restitution(case, engine, table, quantity="e_n achieved"):
     """The impact whose rebound e_n is furthest from the suite's e, against it (test 3: e_out = e_in)."""
     e = published_e(case)
     worst = table.iloc[int((table.e_n - e).abs().fillna(math.inf).to_numpy().argmax())]
-    note = "e_out = e_in" if case.test == 3 else f"the suite's e, worst of {len(table)} impact(s)"
+    note = "e_out = e_in" if case.test == 3 else f"the suite's e, worst of {counted(len(table), 'impact')}"
     cause = (f"{damping_of(engine, case)} returns e_n {worst.e_n:.4g} for {e:g}" if worst.status == "ok" else
              f"the run's status is {worst.status} ({worst.message})")
     return row(case, engine, quantity, worst.e_n, e, 1.0, RESTITUTION_TOLERANCE, note, cause)

@@ -1,6 +1,7 @@
-"""The calibration report: a verdict box (before and after, per stage), the paper law's figures with the engine's
-formulas as given, calibrated and the engine run with the calibrated inputs, the inputs to type, the time-step
-ladder, how the input moves with the scene, and links to calibration.json, the CSVs and the engine's inputs."""
+"""The calibration report: a verdict box (before and after, per stage; what did not run and why), what to type per
+target e_n (every value, the lines to paste), the paper law's figures on the paper's axes with the engine's formulas
+as given, calibrated and the engine run with the calibrated inputs, the choices with their price and the rule, the
+time-step ladder, how the input moves with the scene, and links to calibration.json, the CSVs and the inputs."""
 import datetime
 import os
 
@@ -10,14 +11,16 @@ from ..files import write_text
 from ..render import environment
 from ..version import __version__
 from .figure_files import filed, one
-from .pieces import figure_svg, records
+from .paper_axes import PAPER_PANELS, PSI1_RANGE, draw_rigid_body, in_window, set_paper_axes
+from .pieces import figure_svg, legend_below, records
 
 STAGE_STYLES = {"paper": ("black", "-", "paper law"), "formulas, e as given": ("tab:red", ":", None),
                 "formulas, calibrated": ("tab:blue", "--", None), "engine, calibrated": ("tab:blue", "-", None)}
 
 
-def paper_figure(frame, column, label):
-    """`column` against Psi1* per stage, one panel per target e_n."""
+def paper_figure(frame, column):
+    """`column` against Psi1* per stage on the paper's axes (Psi1* 0 to 14, the impacts beyond counted and not
+    drawn, a point far beyond the y range marked on its edge), with the rigid body's curve, one panel per target."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -25,15 +28,18 @@ def paper_figure(frame, column, label):
     fig, axes = plt.subplots(1, len(targets), figsize=(3.6 * len(targets), 3.2), constrained_layout=True,
                              squeeze=False)
     for ax, target in zip(axes[0], targets):
-        rows = frame[(frame.e_n_target == target) & (frame.psi1_star > 0)]
+        everything = frame[frame.e_n_target == target]
+        beyond = everything[everything.psi1_star > PSI1_RANGE[1]].theta_deg.nunique()
+        rows = in_window(everything)
         for stage, (colour, dashes, name) in STAGE_STYLES.items():
             data = rows[rows.dialect == stage].sort_values("psi1_star")
             if not data.empty:
                 ax.plot(data.psi1_star, data[column], color=colour, ls=dashes, lw=2.2 if stage.startswith("engine")
                         else 1.3, alpha=0.6 if stage.startswith("engine") else 1.0, label=name or stage)
-        ax.set(xlabel="Psi1*", ylabel=label, title=f"e_n {target:g}")
-        ax.grid(alpha=0.3)
-    axes[0][0].legend(fontsize=7)
+        draw_rigid_body(ax, column)
+        set_paper_axes(ax, column, dict((c, label) for c, label, _ in PAPER_PANELS)[column], int(beyond))
+        ax.set_title(f"e_n {target:g}")
+    legend_below(fig)
     svg = figure_svg(fig)
     plt.close(fig)
     return svg
@@ -51,7 +57,7 @@ def variation_figure(variation):
     ax.plot(lims, lims, color="0.6", lw=0.8, ls=":", label="input = target")
     ax.set(xlabel="target e_n", ylabel="e to give the engine", title="calibrated input against the scene")
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=7)
+    legend_below(fig)
     svg = figure_svg(fig)
     plt.close(fig)
     return svg
@@ -77,10 +83,10 @@ def write_calibration_report(calibration, out_dir, inputs):
     page = env.get_template("calibration.html.j2").render(
         c=c, version=__version__, date=datetime.datetime.now().isoformat(timespec="minutes"),
         verdict=records(verdict_rows(c)), stages=records(c.stages), inputs=records(c.inputs),
-        alternatives=records(c.alternatives), attribution=records(c.attribution), refused=c.refused,
+        alternatives=records(c.alternatives), attribution=records(c.attribution), refused=c.refused, typed=c.typed,
         ladder=records(advice.ladder), variation=records(c.variation), files=inputs,
-        figures=filed(out_dir, [("e_t against Psi1*", paper_figure(c.frame, "e_t", "e_t"), "calibration-e_t-vs-psi1"),
-                                ("Omega* against Psi1*", paper_figure(c.frame, "omega_star", "Omega*"),
+        figures=filed(out_dir, [("e_t against Psi1*", paper_figure(c.frame, "e_t"), "calibration-e_t-vs-psi1"),
+                                ("Omega* against Psi1*", paper_figure(c.frame, "omega_star"),
                                  "calibration-omega-vs-psi1")]),
         variation_figure=one(out_dir, "input e against target e_n", variation_figure(c.variation),
                              "calibration-input-e-vs-e_n")

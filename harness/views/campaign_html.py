@@ -14,24 +14,45 @@ from ..citation import doc_link
 from ..files import write_text
 from .drawing import draw_all
 from .figure_files import filed
-from .pieces import figure_svg
+from .pieces import figure_svg, legend_below
+from ..wording import counted
 
 def figures_folder(path):
     """The folder, beside the page, of its figures' files: STORE-figures for STORE.html."""
     return os.path.basename(path)[:-len(".html")] + "-figures"
 
 
+KEY_STEPS = 6       # swatches of a map's colour key, from 0 to the map's largest value
+
+
+def _shade(value, high):
+    """The background of a map's cell: white at 0, deepening to rgb(255,100,100) at the map's largest value."""
+    shade = int(255 - 155 * min(1.0, value / high)) if high > 0 else 255
+    return f"rgb(255,{shade},{shade})"
+
+
 def _cell(value, high):
     if not np.isfinite(value):
         return "<td></td>"
-    shade = int(255 - 155 * min(1.0, value / high)) if high > 0 else 255
-    return f'<td style="background: rgb(255,{shade},{shade})">{value:.3g}</td>'
+    return f'<td style="background: {_shade(value, high)}">{value:.3g}</td>'
+
+
+def _key_html(high):
+    """The colour key under a map: swatches from 0 to its largest value, each with the value it stands for."""
+    values = np.linspace(0.0, high, KEY_STEPS) if high > 0 else [0.0]
+    swatches = "".join(f'<span class="swatch" style="background: {_shade(v, high)}">{v:.3g}</span>' for v in values)
+    return f'<p class="key">colour key (white 0, red the largest of this map): {swatches}</p>'
+
+
+def _largest(frame):
+    """The largest value of a map (0 for an empty one)."""
+    grid = frame.set_index("e_n_target").to_numpy(float)
+    return float(np.nanmax(grid)) if grid.size and np.isfinite(grid).any() else 0.0
 
 
 def _map_html(frame):
     """A map's table, e_n down and the impact angles across, each cell shaded by its share of the largest."""
-    grid = frame.set_index("e_n_target")
-    high = float(np.nanmax(grid.to_numpy(float))) if grid.size else 0.0
+    grid, high = frame.set_index("e_n_target"), _largest(frame)
     head = "".join(f"<th>{html.escape(str(a))}</th>" for a in grid.columns)
     body = "".join(f"<tr><th>{e:g}</th>{''.join(_cell(v, high) for v in row)}</tr>"
                    for e, row in zip(grid.index, grid.to_numpy(float)))
@@ -78,7 +99,7 @@ def metric_figure(table, parameter, label, metric, metric_label):
                 ax.set_xticks(range(len(ticks)), ticks)
         ax.set(xlabel=label, ylabel=metric_label, title=f"e_n = {e_n:g}")
         ax.grid(alpha=0.3)
-    axes[-1].legend(fontsize=6.5)
+    legend_below(fig, fontsize=6.5)
     svg = figure_svg(fig)
     plt.close(fig)
     return svg
@@ -100,7 +121,7 @@ def deviation_figure(table, parameter, label):
         ax.set(xlabel=label, title=words)
         ax.grid(alpha=0.3)
     axes[0].set_ylabel("worst over the other dimensions")
-    axes[-1].legend(fontsize=6.5)
+    legend_below(fig, fontsize=6.5)
     svg = figure_svg(fig)
     plt.close(fig)
     return svg
@@ -143,9 +164,10 @@ def write_campaign_report(table, path, name, data=None, store=""):
     failed = table[table.status == "failed"]
     agreement, maps = (data.agreement, data.maps) if data is not None else (None, [])
     parts = [f"<h1>Campaign {html.escape(name)}</h1>",
-             f"<p>{len(table)} rows, {table.task_key.nunique()} tasks; "
+             f"<p>{counted(len(table), 'row')}, {counted(table.task_key.nunique(), 'task')}; "
              f"laws: {', '.join(sorted(table.model.unique()))}; "
-             f"engines: {', '.join(sorted(table.engine.unique()))}; {failed.task_key.nunique()} failed tasks "
+             f"engines: {', '.join(sorted(table.engine.unique()))}; "
+             f"{counted(failed.task_key.nunique(), 'failed task')} "
              f"(what each part shows: {doc_link('campaigns.md')}).</p>",
              "<p>Swept: " + (", ".join(html.escape(s.label) for s in data.sweeps) if data is not None and data.sweeps
                              else "no scene parameter") + ".</p>",
@@ -159,7 +181,7 @@ def write_campaign_report(table, path, name, data=None, store=""):
              "<h2>Deviation from the paper law over e_n x impact angle: |e_t(engine) - e_t(paper)|, the worst over the "
              "other dimensions</h2>"]
     parts += [f"<h3>{html.escape(shown.title)}</h3>" + _queried("the map", shown.sql, store, _map_html(shown.frame))
-              for shown in maps]
+              + _key_html(_largest(shown.frame)) for shown in maps]
     if not failed.empty:
         parts.append("<h2>Failed tasks</h2>")
         if data is not None and data.failures is not None:
@@ -170,6 +192,7 @@ def write_campaign_report(table, path, name, data=None, store=""):
                          f"{group.e_n_target.iloc[0]:g}</b>: {html.escape(group.message.iloc[0])}</p>"
                          f"<pre>{html.escape(group.log_tail.iloc[0])}</pre>")
     style = ("<style>body{font-family:sans-serif;margin:2em}table{border-collapse:collapse}td,th{border:1px solid "
-             "#ccc;padding:2px 6px;text-align:right}</style>")
+             "#ccc;padding:2px 6px;text-align:right}.swatch{display:inline-block;padding:2px 8px;border:1px solid "
+             "#ccc}</style>")
     return write_text(path, f"<!doctype html><html><head><meta charset='utf-8'><title>Campaign {html.escape(name)}"
                             f"</title>{style}</head><body>{''.join(parts)}</body></html>")

@@ -8,8 +8,9 @@ from ..verification import chung_ooi as suite
 from ..verification.chung_ooi_cases import TESTS
 from ..version import __version__
 from .figure_files import one
-from .pieces import figure_svg, records
+from .pieces import figure_svg, legend_below, records
 from .style import colour
+from ..wording import counted, verb
 
 CSV, PAGE = "chung-ooi.csv", "chung-ooi.html"
 
@@ -46,7 +47,7 @@ def sliding_figure(table, test):
     ax.set(xlabel="impact angle from the normal [deg]", ylabel="rebound tangential velocity [m/s]",
            title="gross sliding: simulated (markers) and rigid-body line (dashed)")
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=7)
+    legend_below(fig)
     svg = figure_svg(fig)
     plt.close(fig)
     return svg
@@ -58,7 +59,8 @@ def headline(ok, passed, checked):
         return "No check was made."
     if ok:
         return f"Every check passes: {passed} of {checked}."
-    return f"{checked - passed} of {checked} checks fail; {passed} pass."
+    return (f"{checked - passed} of {counted(checked, 'check')} {verb(checked - passed, 'fails')}; {passed} "
+            f"{verb(passed, 'passes')}.")
 
 
 def write_chung_ooi_report(out_dir, table, command):

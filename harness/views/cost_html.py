@@ -3,13 +3,14 @@ import numpy as np
 
 from . import style
 from .drawing import draw_all
-from .pieces import figure_svg, number, records
-from ..analyses.cost import (ADAPTIVE, EXTRAPOLATED, METRICS, NOT_RESOLVED, TOLERANCES, convergence_orders, ladder_rows,
-                             per_rung, recommendations, step_times, verdict)
+from .pieces import figure_svg, legend_below, number, records
+from ..analyses.cost import (ADAPTIVE, EXTRAPOLATED, MEASURE, METRICS, NOT_RESOLVED, TOLERANCES, convergence_orders,
+                             ladder_rows, per_rung, step_times)
+from ..analyses.cost_answer import answers, notes, recommendations, steps_text, verdict
 from ..outputs import COST, COST_RUN, COST_TRUTH
 
-LABELS = {"e_n": "e_n", "e_t": "e_t", "omega_star": "Omega*", "t_contact": "contact time", "f_n_max": "peak force",
-          "max": "worst metric"}
+LABELS = {"v_n1": "v_n1 (of V)", "v_t1": "v_t1 (of V)", "omega1": "R omega1 (of V)",
+          "t_contact": "contact time (of its largest)", "f_n_max": "peak force (of its largest)", "max": "worst metric"}
 
 
 def curve_style(engine, dialect):
@@ -18,6 +19,13 @@ def curve_style(engine, dialect):
     if engine == "reference" and dialect in (EXTRAPOLATED, ADAPTIVE):
         return {"color": style.colour(engine), "lw": 1.8, "ls": ":", "marker": "^", "ms": 4}
     return {**style.curve(engine, dialect), "marker": "o" if engine == "reference" else "s", "ms": 3}
+
+
+def curve_label(engine, dialect):
+    """The legend's words for a curve: the converged mode's rungs as the paper law's (views.style otherwise)."""
+    if engine == "reference" and dialect in (EXTRAPOLATED, ADAPTIVE):
+        return f"paper law, {dialect.split(', ')[1]} (converged mode)"
+    return style.label(engine, dialect)
 
 
 def _curves(cost):
@@ -39,18 +47,16 @@ def cost_figure(cost, x_column, x_label, metrics):
     from matplotlib.ticker import LogLocator, NullFormatter
     fig, axes = plt.subplots(1, len(metrics), figsize=(3.9 * len(metrics) + 0.6, 4.2), squeeze=False,
                              layout="constrained")
-    handles = {}
     for ax, metric in zip(axes[0], metrics):
         column, missing = f"err_{metric}", []
         for engine, dialect, ladder, rayleigh, converged in _curves(cost):
             data = ladder[np.isfinite(ladder[column]) & (ladder[column] > 0) & (ladder[x_column] > 0)]
             if data.empty:
                 if not ladder.empty:
-                    missing.append(style.label(engine, dialect))
+                    missing.append(curve_label(engine, dialect))
                 continue
-            line, = ax.plot(data[x_column], data[column], label=style.label(engine, dialect),
+            line, = ax.plot(data[x_column], data[column], label=curve_label(engine, dialect),
                             **curve_style(engine, dialect))
-            handles.setdefault(line.get_label(), line)
             for row in rayleigh.itertuples():
                 if getattr(row, column) > 0 and getattr(row, x_column) > 0:
                     ax.plot(getattr(row, x_column), getattr(row, column), "D", ms=7, mfc="none", color=line.get_color())
@@ -74,11 +80,10 @@ def cost_figure(cost, x_column, x_label, metrics):
             axis.set_major_locator(LogLocator(base=10, numticks=5))
             axis.set_minor_formatter(NullFormatter())
         ax.grid(alpha=0.3, which="major")
-    axes[0][0].set_ylabel("relative error (worst e_n)")
+    axes[0][0].set_ylabel("error (worst impact and e_n)")
     marks = [plt.Line2D([], [], marker="D", mfc="none", color="k", ls="none", label="20% of the Rayleigh time"),
              plt.Line2D([], [], marker="*", color="k", ls="none", label="converged mode")]
-    fig.legend(handles=[*handles.values(), *marks], loc="outside lower center", ncols=min(4, len(handles) + 2),
-               fontsize=7, frameon=False)
+    legend_below(fig, marks)
     svg = figure_svg(fig)
     plt.close(fig)
     return svg
@@ -93,13 +98,17 @@ def timing_cells(cost):
     return records(shown.rename(columns={"s_per_impact_step": "s per impact-step", "message": "timed on"}))
 
 
-def verdict_cells(cost):
-    """The verdict box's rows (analyses.cost.verdict), a time not resolved said as such."""
-    verdicts = verdict(cost)
+def verdict_cells(cost, found):
+    """The verdict box's rows (analyses.cost_answer.verdict), a time not resolved said as such, the steps marked as
+    the terminal marks them (analyses.cost_answer.steps_text)."""
+    verdicts = verdict(cost, found)
     if verdicts.empty:
         return None
     verdicts["s/impact-step"] = [number(v) if v == v else NOT_RESOLVED for v in verdicts["s/impact-step"]]
-    return records(verdicts.drop(columns=["timing"]))
+    for key in ("1%", "0.1%"):
+        verdicts[f"steps/contact for {key}"] = [steps_text(v, how) for v, how in
+                                                zip(verdicts[f"steps/contact for {key}"], verdicts[f"how for {key}"])]
+    return records(verdicts.drop(columns=["timing", "how for 1%", "how for 0.1%"]))
 
 
 def cost_section(cost, uncertainty, run):
@@ -114,10 +123,13 @@ def cost_section(cost, uncertainty, run):
         (f"{model}: error of each metric against steps per contact (the adaptive curve: force evaluations)",
          f"{model}-errors-vs-steps-per-contact", (cost_figure, (cost, "n", "steps or evaluations/contact", METRICS))))
     figures = list(zip(titles, draw_all(list(calls)), names))
+    found = answers(cost)
     refused = cost[cost.status == "refused"].drop_duplicates(["engine", "dialect", "rung"])
     times = step_times(cost)
-    return {"figures": figures, "recommendations": records(recommendations(cost)),
-            "verdict": verdict_cells(cost), "timings": timing_cells(cost),
+    return {"figures": figures, "recommendations": records(recommendations(cost, found)),
+            "verdict": verdict_cells(cost, found), "notes": notes(found, TOLERANCES[:2], verdict_only=True),
+            "all_notes": notes(found), "measure": MEASURE,
+            "timings": timing_cells(cost),
             "unresolved": list(times[times.timing == NOT_RESOLVED].engine), "files": (COST, COST_TRUTH, COST_RUN),
             "orders": records(convergence_orders(cost)),
             "refused": records(refused[["engine", "dialect", "rung", "message"]]),

@@ -5,7 +5,7 @@ import os
 import numpy as np
 import pandas as pd
 
-from ..analyses.physics import CHECK_WORDS, Tolerances
+from ..analyses.physics import CHECK_WORDS, MARGINAL_SHARE, MARGINAL_TIMES, Tolerances
 from ..analyses.published import published_distances
 from ..analyses.verdict import verdict
 from ..digitised import points_of, published_curves_apply
@@ -20,7 +20,7 @@ from .drawing import draw_all
 from .figure_files import filed
 from .paper_axes import (ANGLE_LABELS, PAPER_PANELS, PSI1_RANGE, draw_published, draw_rigid_body, in_window,
                          set_paper_axes)
-from .pieces import figure_svg, number, records, si
+from .pieces import figure_svg, legend_below, number, records, si
 
 
 def engines_ran(frame):
@@ -67,10 +67,10 @@ def series_plot(frame, title, x, ys, thresholds=None, published=None):
     beyond = {}
     if paper:
         beyond = frame[frame.psi1_star > PSI1_RANGE[1]].groupby("e_n_target").theta_deg.nunique().to_dict()
-        frame = in_window(frame)
-    groups = list(frame.groupby("e_n_target", sort=False))
+    groups = list(frame.groupby("e_n_target", sort=False))    # a panel per e_n, even one whose impacts all lie beyond
     fig, axes = plt.subplots(1, len(groups), figsize=(3.4 * len(groups), 3.6), squeeze=False, layout="constrained")
     for ax, (e_n, group) in zip(axes[0], groups):
+        group = in_window(group) if paper else group
         for (engine, dialect), series in group.groupby(["engine", "dialect"], sort=False):
             series = series.sort_values(x)
             for y, marker in zip(ys, ("", "o")):
@@ -86,14 +86,16 @@ def series_plot(frame, title, x, ys, thresholds=None, published=None):
             set_paper_axes(ax, ys[0], dict((c, label) for c, label, _ in PAPER_PANELS)[ys[0]], int(beyond.get(e_n, 0)))
             threshold = (thresholds or {}).get(e_n)
             if threshold is not None and np.isfinite(threshold):
-                ax.axvline(threshold, color="0.4", ls=":", lw=1, label=f"slides throughout (Psi1* >= {threshold:.3f})")
+                ax.axvline(threshold, color="0.4", ls=":", lw=1, label="the paper law slides throughout from here")
+                ax.annotate(f"{threshold:.3f}", (threshold, 1), xycoords=("data", "axes fraction"), xytext=(2, -2),
+                            textcoords="offset points", va="top", fontsize=7, color="0.4")
         else:
             ax.set(xlabel=ANGLE_LABELS[0], ylabel=ANGLE_LABELS[1])
             ax.grid(alpha=0.3)
         ax.set_title(f"e_n = {e_n:g}", fontsize=10)
         if ax is not axes[0][0]:
             ax.set_ylabel("")
-    axes[0][-1].legend(fontsize=6.5)
+    legend_below(fig)
     fig.suptitle(title)
     return fig
 
@@ -121,7 +123,7 @@ def force_figure(histories, contact, speed):
     right.set(xlabel="overlap [um]", ylabel="normal force [N]", title="force against overlap")
     for ax in (left, right):
         ax.grid(alpha=0.3)
-        ax.legend(fontsize=8)
+    legend_below(fig, fontsize=8)
     fig.suptitle("normal impact at the scene speed, paper law")
     svg = figure_svg(fig)
     plt.close(fig)
@@ -209,12 +211,14 @@ def compare_context(comparison, files=()):
     precision = pd.DataFrame([comparison.precision]) if comparison.precision else None
     distances = published_distances(paper) if published else None
     record = verdict(comparison)
-    checks = pd.DataFrame([{"engine": e["engine"], "check": CHECK_WORDS[c["check"]], "passed": c["passed"],
-                            "tolerance": c["tolerance"], "worst": c.get("worst"), "impacts": c["impacts"],
-                            "beyond": c["failing"], "worst case": c.get("text", ""), "attribution": c.get("cause", "")}
+    checks = pd.DataFrame([{"engine": e["engine"], "check": CHECK_WORDS[c["check"]],
+                            "grade": c.get("grade", "holds" if c["passed"] else ""), "tolerance": c["tolerance"],
+                            "worst": c.get("worst"), "x tolerance": c.get("times_tolerance"), "impacts": c["impacts"],
+                            "beyond": c["failing"], "worst case": c.get("text", ""), "causes": c.get("cause", "")}
                            for e in record["engines"] for c in e["physics"]["checks"]])
     return dict(law=law, submodels=law.describe(), scene=scene_facts(scene), figures=figures,
                 tolerance_words=Tolerances.of(record["tolerances"]).describe(), check_words=CHECK_WORDS,
+                marginal_times=f"{MARGINAL_TIMES:g}", marginal_share=f"{MARGINAL_SHARE:.0%}",
                 verdict=record, command=comparison.command, date=comparison.date, files=files,
                 partial=comparison.partial,
                 summary=records(summary), skipped=comparison.skipped, rows=len(frame),

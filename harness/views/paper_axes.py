@@ -2,6 +2,8 @@
 hidden: a point far off gets a marker on the edge and a count), with the rigid-body lines and the published points."""
 import numpy as np
 
+from ..wording import counted
+
 PSI1_RANGE = (0.0, 14.0)                 # the paper's Psi1* axis
 RIGID_ONSET = 7.0                        # a rigid sphere slides throughout from Psi1* = 7
 PAPER_PANELS = (   # (column, axis label, y range as the paper draws it)
@@ -76,7 +78,7 @@ def set_paper_axes(ax, column, label, beyond_x=0):
                 zorder=5, gid="beyond-axis")
         notes.append(f"{int(far.sum())} beyond the axis (red: {y[far].min():.3g} to {y[far].max():.3g})")
     if beyond_x:
-        notes.append(f"{beyond_x} impacts beyond Psi1* = {PSI1_RANGE[1]:g} not drawn")
+        notes.append(f"{counted(beyond_x, 'impact')} beyond Psi1* = {PSI1_RANGE[1]:g} not drawn")
     if notes:
         ax.text(0.02, 0.02, "; ".join(notes), transform=ax.transAxes, fontsize=6.5, va="bottom",
                 color="red" if far.any() else "0.35")

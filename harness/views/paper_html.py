@@ -15,12 +15,13 @@ from ..version import __version__
 from .drawing import draw_all
 from .figure_files import filed
 from .paper_axes import PAPER_PANELS, draw_published, draw_rigid_body, set_paper_axes
-from .pieces import figure_svg, records
+from .pieces import figure_svg, legend_below, records
 
 OBLIQUE, NORMAL, SLIDING, PUBLISHED = "paper.csv", "paper-normal.csv", "paper-sliding.csv", "paper-published.csv"
 PAGE = "paper.html"
 FILES = (OBLIQUE, NORMAL, SLIDING, PUBLISHED, PAGE)
 PUBLISHED_LABEL = "published (TCC13, digitised)"
+NORMAL_COLUMNS = {"t_contact": "contact time [s]", "f_n_max": "peak force [N]"}     # as the page heads them
 COLOURS = ("#1b9e77", "#d95f02", "#7570b3", "#e7298a", "#66a61e", "#e6ab02")    # one per e_n, in every figure
 
 
@@ -49,7 +50,7 @@ def law_figure(oblique, sliding, name):
         ax.plot(elastic.psi1_star, elastic[column], color="0.3", ls=":", lw=1.4, label="elastic Hertz-Mindlin")
         draw_rigid_body(ax, column)
         set_paper_axes(ax, column, label)
-    axes[-1].legend(fontsize=7, loc="lower right")
+    legend_below(fig)
     fig.suptitle(f"{name}{' (provisional)' if LAWS[name].provisional else ''}: dotted, where it slides throughout")
     svg = figure_svg(fig)
     plt.close(fig)
@@ -70,7 +71,7 @@ def normal_figure(normal):
         ax.axhline(1.0, color="k", lw=0.8)
         ax.set(xlabel="target e_n", ylabel=label)
         ax.grid(alpha=0.3)
-    axes[0].legend(fontsize=7)
+    legend_below(fig)
     fig.suptitle("normal impact at 5 m/s (dashed: provisional laws)")
     svg = figure_svg(fig)
     plt.close(fig)
@@ -87,9 +88,9 @@ def write_paper_report(out_dir, oblique, normal, sliding, command, published=Non
     at_paper_en = normal[normal.e_n_target.isin(sorted(set(oblique.e_n_target) - {1.0}))]
     html = environment(autoescape=True).get_template("paper.html.j2").render(
         figures=figures, laws=[LAWS[n] for n in names], sliding=records(sliding.drop(columns=["method"])),
-        methods=sorted(set(sliding.method)), normal=records(at_paper_en.round(4)), conventions=CONVENTIONS,
+        methods=sorted(set(sliding.method)), normal=records(at_paper_en.rename(columns=NORMAL_COLUMNS)), conventions=CONVENTIONS,
         psi_points=len(PSI1_GRID), psi_from=PSI1_GRID[0], command=command, version=__version__,
-        published=records(published.round(4)) if published is not None and not published.empty else None,
+        published=records(published) if published is not None and not published.empty else None,
         goal=GOAL, provenance=provenance(), date=datetime.datetime.now().strftime("%Y-%m-%d %H:%M"),
         files=(OBLIQUE, NORMAL, SLIDING) + ((PUBLISHED,) if published is not None else ()))
     return write_text(os.path.join(out_dir, PAGE), html)

@@ -28,6 +28,25 @@ def figure_svg(fig):
     return figure
 
 
+def legend_below(fig, extra=(), fontsize=7):
+    """One legend for the whole figure, below its panels, so that it covers no data: each label drawn in any panel
+    once, then `extra` handles, in as many columns (at most four) as the figure's width holds; the figure grows by
+    its height, so that the panels keep theirs (the figure must use the constrained layout)."""
+    handles = {}
+    for ax in fig.axes:
+        for handle, label in zip(*ax.get_legend_handles_labels()):
+            handles.setdefault(label, handle)
+    handles = [*handles.values(), *extra]
+    for columns in range(min(4, len(handles)), 0, -1):
+        legend = fig.legend(handles=handles, loc="outside lower center", ncols=columns, fontsize=fontsize,
+                            frameon=False)
+        extent = legend.get_window_extent(fig.canvas.get_renderer())
+        if columns == 1 or extent.width <= fig.bbox.width:
+            fig.set_figheight(fig.get_figheight() + extent.height / fig.dpi)
+            return
+        legend.remove()
+
+
 def number(value, digits=4):
     """A number for a person: integers as they are, floats to `digits` significant digits with a short exponent
     (3.47e-8), blank for NaN or None."""

@@ -1,8 +1,11 @@
 """The terminal view: fixed-width tables and what compare, check, cost and paper print."""
-from ..analyses.cost import (METRICS, NOT_RESOLVED, RAYLEIGH_FRACTION, WITHIN_NOISE, convergence_orders, per_rung,
-                              rayleigh_time, recommendations, step_times, verdict)
+from ..analyses.cost import (MEASURE, METRICS, NOT_RESOLVED, RAYLEIGH_FRACTION, TOLERANCES, WITHIN_NOISE,
+                              convergence_orders, per_rung, rayleigh_time, step_times)
+from ..analyses.cost_answer import answers, key, notes, recommendations, steps_text, verdict
+from ..analyses.causes import MENTION
 from ..analyses.physics import CHECK_WORDS, Tolerances
 from ..analyses.published import GOAL, meets_goal
+from ..wording import counted
 
 
 def summary_lines(frame):
@@ -15,13 +18,18 @@ def summary_lines(frame):
     return lines
 
 
-def text_table(frame, columns, formats=None):
-    """A plain fixed-width table for the terminal."""
+def text_table(frame, columns, formats=None, missing=None):
+    """A plain fixed-width table for the terminal; an empty (NaN) number is shown as `missing` says for its column,
+    else as '-', never as nan."""
     if frame.empty:
         return "  (none)"
-    formats = formats or {}
-    cells = [[formats.get(c, "{}").format(row[c]) if not isinstance(row[c], float) or c not in formats
-              else formats[c].format(row[c]) for c in columns] for _, row in frame.iterrows()]
+    formats, missing = formats or {}, missing or {}
+
+    def cell(value, column):
+        if isinstance(value, float) and value != value:
+            return missing.get(column, "-")
+        return formats.get(column, "{}").format(value)
+    cells = [[cell(row[c], c) for c in columns] for _, row in frame.iterrows()]
     widths = [max(len(c), *(len(r[i]) for r in cells)) for i, c in enumerate(columns)]
     def line(values):
         return "  " + "  ".join(v.ljust(w) if c == "note" else v.rjust(w)
@@ -38,7 +46,7 @@ def print_summary(record, comparison, written):
     names = [e["engine"] if "@" in e["engine"] else f"{e['engine']} {e['version']}" for e in engines]
     ran = " and ".join(filter(None, [", ".join(names[:-1]), names[-1]])) if names else "no engine"
     print(wrapped(f"{record['model']}: the paper law against {ran}; {len(record['e_n'])} e_n x "
-                  f"{record['impacts'] // max(len(record['e_n']), 1)} impacts"))
+                  f"{counted(record['impacts'] // max(len(record['e_n']), 1), 'impact')}"))
     if engines:
         width = max(18, *(len(name) for name in names))
         tolerances = Tolerances.of(record["tolerances"]).describe()
@@ -72,8 +80,8 @@ def print_summary(record, comparison, written):
 
 
 def print_versions(versions):
-    """Between consecutive builds of an engine, one line each: the metrics that moved, the largest change of each,
-    and the ingredients that alone move them most."""
+    """Between consecutive builds of an engine (in release order), one line each: the metrics that moved, the largest
+    change of each, and the ingredients that alone move them most; FLAGGED where the dialects are identical."""
     if versions.empty:
         return
     print("between versions (engine runs, same scene and dt):")
@@ -81,24 +89,40 @@ def print_versions(versions):
         if not rows.metric.iloc[0]:
             print(f"  {engine} {a} -> {b}: {rows.attributed_to.iloc[0]}")
             continue
-        moved = ", ".join(f"{r.metric} {r.change:+.3g} (e_n {r.e_n_target:g}, {r.theta_deg:g} deg)"
+        moved = ", ".join(f"status: {r.attributed_to} (first at e_n {r.e_n_target:g}, {r.theta_deg:g} deg)"
+                          if r.metric == "status" else
+                          f"{r.metric} {r.change:+.3g} (e_n {r.e_n_target:g}, {r.theta_deg:g} deg)"
                           for r in rows.itertuples())
-        causes = sorted({r.attributed_to.split(" (")[0] for r in rows.itertuples() if r.attributed_to})
-        print(wrapped(f"  {engine} {a} -> {b}: {moved}; ingredients that differ: {rows.ingredients_differing.iloc[0]};"
-                      f" moving them most: {', '.join(causes) or 'no single ingredient'}", indent=6))
+        if rows.flagged.iloc[0]:
+            print(wrapped(f"  {engine} {a} -> {b}: {moved}; FLAGGED: the dialects are identical, the binaries differ "
+                          "(no ingredient of harness explains it)", indent=6))
+            continue
+        metrics = rows[rows.metric != "status"]
+        causes = sorted({cause.split(" (")[0] for cause in metrics.attributed_to if cause})
+        most = f"; moving them most: {', '.join(causes) or 'no single ingredient'}" if len(metrics) else ""
+        print(wrapped(f"  {engine} {a} -> {b}: {moved}; ingredients that differ: {rows.ingredients_differing.iloc[0]}"
+                      + most, indent=6))
 
 
 def physics_phrase(physics):
-    """'reproduces ...', 'DEVIATES <worst case of each failed check>; attributed to <ingredients>' or 'not checked
-    (why)'."""
+    """'reproduces ...', 'MARGINAL' or 'DEVIATES' with the worst case of each failed check, its size and the
+    ingredients that close its miss with their shares, or 'not checked (why)'."""
     if physics["state"] == "reproduces":
-        return f"{'reproduces':12s} every check holds on {physics['impacts']} impacts"
-    if physics["state"] != "deviates":
+        return f"{'reproduces':12s} every check holds on {counted(physics['impacts'], 'impact')}"
+    if physics["state"] not in ("marginal", "deviates"):
         return f"{'not checked':12s} {physics['reason']}"
     failed = [c for c in physics["checks"] if not c["passed"]]
-    causes = list(dict.fromkeys(c["ingredient"] for c in failed if c.get("ingredient")))
-    return (f"{'DEVIATES':12s} " + "; ".join(c["short"] for c in failed)
-            + (f"; attributed to {', '.join(causes)}" if causes else ""))
+    return f"{physics['state'].upper():12s} " + "; ".join(failed_phrase(c) for c in failed)
+
+
+def failed_phrase(check):
+    """'|J_t| 1.587 mu J_n at e_n 0.25, 71 deg (126 of 180 impacts, 587x the tolerance): Coulomb rule (tangential
+    dashpot unclipped) 64%, ...': the worst case, its size, and its causes with the share of the miss each closes."""
+    if "ingredient" not in check:
+        return check["short"]
+    if not check["ingredient"]:
+        return f"{check['short']}; no ingredient alone or in a pair closes {MENTION:.0%} of it"
+    return f"{check['short']}: {check['ingredient']}"
 
 
 FOLDED = {"Coulomb bound": "coulomb", "Coulomb bound from below": "coulomb", "e_n off target": "e_n",
@@ -151,9 +175,10 @@ def verdict_line(record, reference_only=False):
 
 
 def physics_words(record):
-    """'paper law: reproduced by A; deviates in B, C', or '' when no engine was checked."""
+    """'paper law: reproduced by A; marginal in B; deviates in C, D', or '' when no engine was checked."""
     parts = []
-    for state, words in (("reproduces", "reproduced by"), ("deviates", "deviates in"), ("not checked", "not checked in")):
+    for state, words in (("reproduces", "reproduced by"), ("marginal", "marginal in"), ("deviates", "deviates in"),
+                         ("not checked", "not checked in")):
         engines = [e["engine"] for e in record["engines"] if e["physics"]["state"] == state]
         if engines:
             parts.append(f"{words} {', '.join(engines)}")
@@ -166,8 +191,13 @@ def print_comparison(comparison, written):
     frame, law = comparison.results, comparison.law
     print(f"{law.name}: paper law on the reference engine, {sum(frame.engine == 'reference')} rows")
     print("\n".join(summary_lines(frame[(frame.engine == "reference") & (frame.dialect == "paper")])))
+    if comparison.compared:
+        print("\ndoes each engine reproduce the paper law on this scene? (causes: the share of the miss each closes)")
+        for engine, physics in comparison.physics.items():
+            print(wrapped(f"  {engine} {physics_phrase(physics)}", indent=6))
     if comparison.sliding is not None:
-        print("\nsliding throughout (paper law: the smallest Psi1* found, and the condition derived for it):")
+        print("\n" + wrapped("sliding throughout (paper law: the smallest Psi1* found, and the condition derived for "
+                             "it; '-': none found, or no condition derived):"))
         print(text_table(comparison.sliding, ["e_n_target", "simulated", "derived", "difference", "formula"],
                          {"simulated": "{:.5f}", "derived": "{:.5f}", "difference": "{:+.1e}"}))
     for name, reason in comparison.skipped:
@@ -188,7 +218,8 @@ def print_comparison(comparison, written):
         for name, table in comparison.attribution.items():
             print(f"\nattribution ({name}, one ingredient at a time; max change per metric):")
             cols = [c for c in table.columns if c.startswith("d_")]
-            print(text_table(table, ["ingredient", "dialect", "target", *cols, "note"], {c: "{:+.4g}" for c in cols}))
+            shown = ["ingredient", "dialect", "target", *(["switched"] if "switched" in table else []), *cols, "note"]
+            print(text_table(table, shown, {c: "{:+.4g}" for c in cols}))
     precision = comparison.precision
     if precision:
         gaps = ", ".join(f"{k} {v:.1e}" for k, v in precision.items() if k in ("v_n1", "v_t1", "omega1"))
@@ -204,24 +235,27 @@ def print_comparison(comparison, written):
 
 
 def print_cost(table, uncertainty, law, scene, ladder, skipped, failures, verbose=False):
-    """What a person reads after cost (at most 40 lines of 120 columns): the verdict per engine against the paper
-    scheme, then skipped, refused and failed runs; with `verbose` every table too (cost_tables)."""
+    """What a person reads after cost (at most 40 lines of 120 columns): the measure, the verdict per engine against
+    the paper scheme and how each number was found, then skipped, refused and failed runs; with `verbose` every
+    table too (cost_tables)."""
     t_r = rayleigh_time(scene)
     width = 118
     def say(text):
         import textwrap
         print(textwrap.fill(text, width=width, subsequent_indent="    ", break_long_words=False))
-    say(f"{law.name}: accuracy against cost, {len(scene.e_n)} e_n x {len(scene.impacts(scene.e_n[0])[0])} impacts; "
+    say(f"{law.name}: accuracy against cost, {len(scene.e_n)} e_n x "
+        f"{counted(len(scene.impacts(scene.e_n[0])[0]), 'impact')}; "
         f"ladder {','.join(map(str, ladder))} steps/contact and {RAYLEIGH_FRACTION:.0%} of the Rayleigh time "
         f"(dt {RAYLEIGH_FRACTION * t_r:.3g} s)")
-    say("worst metric's error against the converged reference of the same dialect; time per impact = impact-steps "
-        "x the curve's time per impact-step, timed on copies of the scene's impacts until resolved:")
-    print(verdict_table(table))
+    say(f"{MEASURE}, its uncertainty ('truth +-') added; time per impact = impact-steps x the curve's time per "
+        f"impact-step, timed on copies of the scene's impacts until resolved:")
+    found = answers(table)
+    print(verdict_table(table, found))
+    for note in notes(found, TOLERANCES[:2], verdict_only=True):
+        say(f"  {note}")
     times = step_times(table)
     for row in times[times.timing == NOT_RESOLVED].itertuples():
         say(f"  {row.engine} ({row.dialect}): time per impact-step NOT RESOLVED: {row.message}")
-    truths = ", ".join(f"{curve} {max(e['err_max'] for e in per_e.values()):.1e}" for curve, per_e in uncertainty.items())
-    say(f"converged references' uncertainty (errors below it are not resolved): {truths}")
     for name, reason in skipped:
         say(f"skipped {name}: {reason}")
     refused = table[table.status == "refused"].drop_duplicates(["engine", "dialect", "rung"])
@@ -233,34 +267,38 @@ def print_cost(table, uncertainty, law, scene, ladder, skipped, failures, verbos
         if verbose:
             print(failure.log_tail)
     if verbose:
-        cost_tables(table, uncertainty)
+        cost_tables(table, uncertainty, found)
 
 
-def verdict_table(table):
-    """The verdict (analyses.cost.verdict) as a fixed-width table of at most 120 columns."""
-    verdicts = verdict(table)
+def verdict_table(table, found=None):
+    """The verdict (analyses.cost_answer.verdict) as a fixed-width table of at most 120 columns."""
+    verdicts = verdict(table, found)
     if verdicts.empty:
         return "  (no curve ran)"
-    finest = max((int(r) for r in table.rung.dropna() if str(r).isdigit()), default=0)
     shown = verdicts.assign(**{"s/impact-step": [f"{v:.3g}" if v == v else NOT_RESOLVED
-                                                for v in verdicts["s/impact-step"]]})
-    for column in ("steps/contact for 1%", "steps/contact for 0.1%"):
-        shown[column] = [f"{v:.0f}" if v == v else f">{finest}" for v in shown[column]]
+                                                for v in verdicts["s/impact-step"]],
+                               "truth uncertainty": [f"{v:.1e}" if v == v else "-"
+                                                     for v in verdicts["truth uncertainty"]]})
+    for key in ("1%", "0.1%"):
+        shown[f"steps/contact for {key}"] = [steps_text(v, how) for v, how in zip(shown[f"steps/contact for {key}"],
+                                                                                   shown[f"how for {key}"])]
     for column in ("s/impact for 1%", "x paper for 1%", "s/impact for 0.1%", "x paper for 0.1%", "20% T_R error"):
         shown[column] = [f"{v:.3g}" if v == v else "-" for v in shown[column]]
-    names = {"engine": "curve", "s/impact-step": "s/impact-step", "steps/contact for 1%": "1%: steps",
-             "s/impact for 1%": "s/impact", "x paper for 1%": "x paper", "steps/contact for 0.1%": "0.1%: steps",
-             "s/impact for 0.1%": "s/impact ", "x paper for 0.1%": "x paper ", "20% T_R error": "20% T_R error"}
+    names = {"engine": "curve", "s/impact-step": "s/impact-step", "truth uncertainty": "truth +-",
+             "steps/contact for 1%": "1%: steps", "s/impact for 1%": "s/impact", "x paper for 1%": "x paper",
+             "steps/contact for 0.1%": "0.1%: steps", "s/impact for 0.1%": "s/impact ", "x paper for 0.1%": "x paper ",
+             "20% T_R error": "20% T_R error"}
     shown = shown.rename(columns=names)
     return text_table(shown, list(names.values()))
 
 
-def cost_tables(table, uncertainty):
+def cost_tables(table, uncertainty, found=None):
     """The cost study's tables (--verbose): errors and times per rung, recommended time steps, orders of
     convergence, each curve's time per impact-step."""
-    print("\nerrors: max over impacts |x - x*| / max |x*| against the converged reference of the same dialect; "
-          "net_wall_s: the fastest of repeated timings, summed over e_n, engine start-up (timed the same way) "
-          f"excluded; '{WITHIN_NOISE}' where that is not above the timings' spread")
+    print()
+    print(wrapped(f"{MEASURE}; net_wall_s: the fastest of repeated timings, summed over e_n, engine start-up (timed "
+                  f"the same way) excluded; '{WITHIN_NOISE}' where that is not above the timings' spread; rungs "
+                  f"'truth N': the levels of the converged reference"))
     for curve, per_e in uncertainty.items():
         worst = max(errs["err_max"] for errs in per_e.values())
         truth = next(iter(per_e.values())).get("truth", "")
@@ -271,22 +309,37 @@ def cost_tables(table, uncertainty):
                           for wall, timing in zip(rows.net_wall_s, rows.timing)]
     refused = table[table.status == "refused"].drop_duplicates(["engine", "dialect", "rung"])
     print()
-    print(text_table(rows, ["engine", "dialect", "rung", "steps_per_contact", "dt", "net_wall_s", "err_e_n", "err_e_t",
-                            "err_omega_star", "err_t_contact", "err_f_n_max"],
+    print(text_table(rows, ["engine", "dialect", "rung", "steps_per_contact", "dt", "net_wall_s",
+                            *(f"err_{m}" for m in METRICS)],
                      {"steps_per_contact": "{:.4g}", "dt": "{:.3g}", **{f"err_{m}": "{:.1e}" for m in METRICS}}))
     for _, r in refused.iterrows():
         print(f"  refused: {r.engine}/{r.dialect} at {r.rung}: {r.message}")
-    print("\nrecommended time step (coarsest rung within tolerance at every e_n, worst metric, and every finer rung too):")
-    rec = recommendations(table)
+    print("\nrecommended time step (coarsest rung within tolerance at every e_n, worst metric with its truth's "
+          "uncertainty, and every finer rung too; how: f its formulas beyond its ladder, ~ extrapolated, <= a bound):")
+    rec = recommendations(table, found)
+    for tol in TOLERANCES:
+        column = f"steps/contact for {key(tol)}"
+        rec[column] = [steps_text(v, how) for v, how in zip(rec[column], rec[f"how for {key(tol)}"])]
     cols = [c for c in rec.columns if c.startswith("dt for") or c.startswith("steps/contact")] + ["error at 20% Rayleigh"]
-    print(text_table(rec, ["engine", "dialect", *cols], {c: "{:.3g}" for c in cols}))
+    print(text_table(rec, ["engine", "dialect", *cols], {c: "{:.3g}" for c in cols if not c.startswith("steps")}))
+    for note in notes(found if found is not None else answers(table)):
+        print(wrapped(note, indent=4))
     print("\norder of convergence (slope of log error against log steps per contact, rungs >= 20; the adaptive "
           "curve: against force evaluations per contact):")
     orders = convergence_orders(table)
     print(text_table(orders, ["engine", "dialect", *METRICS], {m: "{:.2f}" for m in METRICS}))
-    print("\ntime per impact-step of each curve (its timing run):")
-    for row in step_times(table).itertuples():
-        print(wrapped(f"  {row.engine} ({row.dialect}): {row.s_per_impact_step:.3g} s: {row.message}", indent=4))
+
+
+def sliding_summary(sliding, psi_max):
+    """`harness paper`'s first table: where each law slides throughout, from simulation and from its derived
+    condition, each empty cell said in words."""
+    table = text_table(sliding, ["model", "e_n_target", "simulated", "derived", "difference"],
+                       {"simulated": "{:.4f}", "derived": "{:.4f}", "difference": "{:+.1e}"},
+                       {"simulated": f"none <= {psi_max:g}", "derived": "no condition", "difference": "-"})
+    heading = wrapped(f"where each law slides throughout (|F_t| = mu F_n the whole contact): the smallest Psi1* found "
+                      f"by simulation, the condition derived for it (docs/laws.md#sliding-throughout) and their "
+                      f"difference; 'none <= {psi_max:g}': no Psi1* up to {psi_max:g} slides throughout:")
+    return f"{heading}\n{table}"
 
 
 def published_summary(published):
@@ -301,45 +354,3 @@ def published_summary(published):
                                      f"{GOAL['worst']}, RMS <= {GOAL['rms']})")
     return (f"distance from the paper's published points (e_t's x10):\n{table}\n"
             f"largest: RMS {published.rms.max():.3f}, worst {published.worst.max():.3f}; {verdict}")
-
-
-def print_calibration(calibration):
-    """What a person reads after calibrate (about 20 lines): the inputs to type per target e_n, the deviation from the
-    paper law before and after, what the engine run confirmed, what remains and why, and the time-step advice."""
-    c, scene = calibration, calibration.scene
-    print(f"calibrate {c.law.name} for {c.engine} {c.version}: e_n {', '.join(f'{e:g}' for e in scene.e_n)} x "
-          f"{len(c.frame[c.frame.dialect == 'paper']) // max(len(scene.e_n), 1)} impacts, {c.steps} steps per contact")
-    print(wrapped(f"options: {c.chosen.label} (nearest the paper law of {len(c.alternatives)} choices)"
-                  + "".join(f"; not in this build: {name}" for name, _ in c.refused if "exists from" in _)))
-    for row in c.inputs.itertuples():
-        if row.input_e != row.input_e:          # NaN: no input reaches it
-            print(wrapped(f"  e_n {row.e_n_target:g}: no input reaches it ({row.note})", indent=4))
-        else:
-            print(f"  e_n {row.e_n_target:g}: give it e = {row.input_e:.6g} (its normal impact: e_n "
-                  f"{row.normal_e_n:.6g})")
-    print("worst deviation from the paper law over the sweep (v and R omega as fractions of V):")
-    for quantity, rows in c.stages.groupby("quantity", sort=False):
-        steps = "  ->  ".join(f"{r.stage}: {r.worst:.3g}" for r in rows.itertuples())
-        print(wrapped(f"  {quantity:15s} {steps}", indent=6))
-    if c.agreement is not None:
-        print(f"the engine with these inputs agrees with its formulas to {c.agreement:.1e} of V")
-    elif c.skipped:
-        print(wrapped(f"the engine did not run: {c.skipped}"))
-    final = c.physics.get("engine, calibrated") or c.physics.get("formulas, calibrated")
-    if final and final["state"] == "deviates":
-        causes = [f"{check['short']} ({check['ingredient'] or 'no single ingredient'})"
-                  for check in final["checks"] if not check["passed"]]
-        print(wrapped("what no input fixes: " + "; ".join(causes)))
-    advice = c.advice
-    rule = f"the 20%-of-Rayleigh rule (dt {advice.rule_dt:.3g} s) errs by {advice.rule_errors['err_max']:.2g}"
-    if advice.steps is None:
-        print(wrapped(f"time step: no rung up to {int(advice.ladder.steps_per_contact.max())} steps per contact "
-                      f"holds {advice.tolerance:g} on every quantity; {rule}"))
-    else:
-        confirmed = c.confirmed
-        said = ("" if confirmed is None else
-                f"; the engine there errs by {confirmed['err_max']:.2g} ({'holds' if confirmed['meets'] else 'FAILS'})")
-        print(wrapped(f"time step for {advice.tolerance:g}: {advice.steps} steps per contact, dt {advice.dt:.3g} s = "
-                      f"{advice.fraction_of_rayleigh:.3g} of the Rayleigh time{said}; {rule}"))
-    for failure in c.failures:
-        print(f"{failure.engine} failed at e_n = {failure.e_n:g}: {failure.message}\n{failure.log_tail}")

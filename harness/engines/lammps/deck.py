@@ -58,6 +58,31 @@ def settings(law, scene, e_n, options=None, version=None):
     return values
 
 
+NORMAL_ARGUMENTS = {"hertz/material": ("E", "eta_n0", "nu"), "hooke": ("k_n", "eta_n0")}
+HISTORY_ARGUMENTS = ("Kn", "Kt", "gamma_n", "gamma_t", "xmu", "dampflag")
+RESTITUTION_DAMPING = ("tsuji", "coeff_restitution")       # whose eta_n0 slot takes the restitution coefficient e
+
+
+def typed(lines):
+    """[(name, value)] of the `fix wall/gran` line among a deck's contact lines, named as LAMMPS' manual names them:
+    granular NORMAL E eta_n0 nu (e for damping tsuji and coeff_restitution) damping D tangential FORM k_t x_gamma_t
+    mu, or STYLE Kn Kt gamma_n gamma_t xmu dampflag."""
+    words = next((line.split() for line in lines if line.startswith("fix wall ")), [])
+    if "wall/gran" not in words:
+        return []
+    words = words[words.index("wall/gran") + 1:]
+    if words[0] != "granular":
+        return [("style", words[0])] + list(zip(HISTORY_ARGUMENTS, words[1:]))
+    normal, count = words[1], len(NORMAL_ARGUMENTS.get(words[1], ()))
+    rest = words[2 + count:]
+    damping = rest[rest.index("damping") + 1]
+    names = [("e" if name == "eta_n0" and damping in RESTITUTION_DAMPING else name)
+             for name in NORMAL_ARGUMENTS.get(normal, ())]
+    tangential = rest.index("tangential")
+    return ([("normal", normal)] + list(zip(names, words[2:2 + count])) + [("damping", damping)]
+            + [("tangential", rest[tangential + 1])] + list(zip(("k_t", "x_gamma_t", "mu"), rest[tangential + 2:])))
+
+
 def pair_material(contact):
     """(E, nu) whose own mixing, E/(2(1 - nu^2)) and E/(4 (2 - nu)(1 + nu)), gives the pair's E* and G*: with
     r = E*/G* = 2 (2 - nu)/(1 - nu), nu = (4 - r)/(2 - r) and E = 2 (1 - nu^2) E* (pair_coeff 1 2 mixes one
@@ -127,7 +152,7 @@ def read_batch(scene, spec, directory, observe=False):
 def read_outputs(directory, spec, radius, observe):
     """Rebound velocities and separation from the final dump in `directory`; with `observe` also t_contact, f_n_max
     and overlap_max from the observe dump."""
-    final = rebound(read_final(os.path.join(directory, "final.dump"), spec.impacts, "LAMMPS"), radius, "LAMMPS")
+    final = rebound(read_final(os.path.join(directory, "final.dump"), spec.impacts, "LAMMPS"), radius)
     if observe:
         final.update(read_observed(os.path.join(directory, OBSERVE_DUMP), spec.impacts, radius, spec.dt, "LAMMPS"))
     return final

@@ -2,7 +2,7 @@
 keyed on the release (docs/lammps-dialect.md#versions), and its options."""
 from ...errors import UserError
 from ..protocol import Option, check_options as check_declared
-from .versions import holds, spelled
+from .versions import NEWEST, checked, holds, nearest, spelled
 
 GRANULAR = {                  # harness law -> LAMMPS granular (normal, damping, tangential) sub-models
     "linear-spring-dashpot": ("hooke", "mass_velocity", "linear_history"),
@@ -13,30 +13,31 @@ COUNTERPARTS = {law: " + ".join(words) for law, words in GRANULAR.items()}     #
 HISTORY_STYLES = {"linear-spring-dashpot": "hooke/history", "hertz-kuwabara-kono": "hertz/history"}
 MINDLIN_FORMS = {"mindlin": "total", "mindlin_rescale": "total-rescale", "mindlin/force": "force",
                  "mindlin_rescale/force": "force-rescale"}
+INGREDIENTS = {              # ingredient -> ((first, last checked release it holds for, choice), ...), read from each
+    # hertz/material against a wall: the wall's own E/(2(1 - nu)) and E/4 (2 - nu)(1 + nu) (fix_wall_gran.cpp,
+    # FixWallGran::granular), then the pair's E* and G* (gran_sub_mod.cpp, mix_stiffnessE_wall/mix_stiffnessG_wall)
+    "wall-moduli": (((2021, 9, 29, 2), (2022, 6, 23, 4), "wall"), ((2023, 8, 2, 3), NEWEST, "pair")),
+    # `damping coeff_restitution` (gran_sub_mod_damping.cpp, GranSubModDampingCoeffRestitution): absent, then there
+    "coeff_restitution": (((2021, 9, 29, 2), (2023, 8, 2, 3), False), ((2024, 8, 29, 3), NEWEST, True)),
+    # a sphere at gap 0 against a wall: in contact (fix_wall_gran.cpp, contact while rsq <= R^2), then not
+    # (gran_sub_mod_normal.cpp, GranSubModNormal::touch, rsq < radsum^2)
+    "touch": (((2021, 9, 29, 2), (2022, 6, 23, 4), "gap"), ((2023, 8, 2, 3), NEWEST, "overlap")),
+    # the hooke/history and hertz/history styles' tangential spring: kt xi (hertz: kt a xi) reset to the capped
+    # force's (fix_wall_gran.cpp, hooke_history/hertz_history), then kt a xi for both, reset to xi = -F/kt
+    # (granular_model.cpp, define_classic_model; gran_sub_mod_tangential.cpp, linear_history_classic and
+    # mindlin_classic)
+    "classic-spring": (((2021, 9, 29, 2), (2022, 6, 23, 4), "own"), ((2023, 8, 2, 3), NEWEST, "contact-radius")),
+}
 OPTIONS = {                  # declared options, default first (`--engine-option lammps:KEY=VALUE`)
     "style": Option(("granular", "history"),
                     "wall/gran granular, or the older hooke/history (linear-spring-dashpot), hertz/history "
                     "(hertz-kuwabara-kono)"),
     "tangential": Option(tuple(MINDLIN_FORMS), "the Mindlin spring of the granular style's hertz/material laws"),
     "damping": Option(("tsuji", "coeff_restitution"),
-                      "hertz-mindlin's normal dashpot: Tsuji's polynomial, or coeff_restitution (from 2024.8.29)"),
+                      "hertz-mindlin's normal dashpot: Tsuji's polynomial, or coeff_restitution (in LAMMPS "
+                      f"{checked(*INGREDIENTS['coeff_restitution'][-1][:2])})"),
 }
 DAMPING_LAWS = ("hertz-mindlin",)     # laws whose granular deck takes the `damping` option
-INGREDIENTS = {              # ingredient -> ((first, last release it holds for, choice), ...), read from each release
-    # hertz/material against a wall: the wall's own E/(2(1 - nu)) and E/4 (2 - nu)(1 + nu) (fix_wall_gran.cpp,
-    # FixWallGran::granular), then the pair's E* and G* (gran_sub_mod.cpp, mix_stiffnessE_wall/mix_stiffnessG_wall)
-    "wall-moduli": (((2021, 9, 29, 2), (2022, 6, 23, 4), "wall"), ((2023, 8, 2, 3), None, "pair")),
-    # `damping coeff_restitution` (gran_sub_mod_damping.cpp, GranSubModDampingCoeffRestitution): absent, then there
-    "coeff_restitution": (((2021, 9, 29, 2), (2023, 8, 2, 3), False), ((2024, 8, 29, 3), None, True)),
-    # a sphere at gap 0 against a wall: in contact (fix_wall_gran.cpp, contact while rsq <= R^2), then not
-    # (gran_sub_mod_normal.cpp, GranSubModNormal::touch, rsq < radsum^2)
-    "touch": (((2021, 9, 29, 2), (2022, 6, 23, 4), "gap"), ((2023, 8, 2, 3), None, "overlap")),
-    # the hooke/history and hertz/history styles' tangential spring: kt xi (hertz: kt a xi) reset to the capped
-    # force's (fix_wall_gran.cpp, hooke_history/hertz_history), then kt a xi for both, reset to xi = -F/kt
-    # (granular_model.cpp, define_classic_model; gran_sub_mod_tangential.cpp, linear_history_classic and
-    # mindlin_classic)
-    "classic-spring": (((2021, 9, 29, 2), (2022, 6, 23, 4), "own"), ((2023, 8, 2, 3), None, "contact-radius")),
-}
 DAMPING = {"tsuji": "tsuji:polynomial", "coeff_restitution": "tsuji:tension"}   # A(e) polynomial; sqrt5 beta
 COMMON = {"end": "tension", "integrator": "velocity-verlet", "coulomb": "total", "lever": "0"}
 PAIR = {**COMMON, "geometry": "pair"}     # two spheres: their relative motion, the normal turning
@@ -55,8 +56,8 @@ HISTORY_DIALECTS = {         # the older styles take harness' own k_n, E* and G*
     "linear-spring-dashpot": {**COMMON},
     "hertz-kuwabara-kono": {**COMMON, "tangential": "mindlin:total", "tangential-damping": "none"},
 }
-CONTACT_RADIUS_SPRINGS = {   # the same numbers through the classic styles' spring from 2023.8.2: k a xi, k the deck's kt
-    "linear-spring-dashpot": "contact-radius-spring:kappa",
+CONTACT_RADIUS_SPRINGS = {   # the same numbers through the classic styles' spring (classic-spring contact-radius):
+    "linear-spring-dashpot": "contact-radius-spring:kappa",       # k a xi, k the deck's kt
     "hertz-kuwabara-kono": "contact-radius-spring:mindlin",
 }
 
@@ -69,7 +70,11 @@ def check_options(law_name, options, version=None):
         raise UserError(f"the damping option is for the granular style's {', '.join(DAMPING_LAWS)}, not {law_name}")
     if options.get("damping") == "coeff_restitution" and version and not holds(INGREDIENTS["coeff_restitution"],
                                                                                  version):
-        raise UserError(f"LAMMPS {version} has no damping coeff_restitution (it exists from 2024.8.29)")
+        near = spelled(nearest(version))
+        which = f"LAMMPS {version}" if near == version else \
+            f"LAMMPS {version} was never checked; the release nearest it that was, {near},"
+        raise UserError(f"{which} has no damping coeff_restitution (of the releases harness checked, "
+                        f"{releases_of('coeff_restitution', True)} have it)")
     if options.get("style", "granular") == "history" and law_name not in HISTORY_STYLES:
         raise UserError(f"LAMMPS has no older wall style for {law_name}; style history is for "
                         f"{', '.join(HISTORY_STYLES)}")
@@ -132,7 +137,7 @@ def dialect(law_name, options=None, target="wall", version=None):
 
 def numbers(law_name):
     """The composition whose numbers a wall deck gives the older hooke/history and hertz/history styles (k_n, k_t,
-    gamma_n, gamma_t): the same in every release, which differ in what they compute with them."""
+    gamma_n, gamma_t): the same in every release checked, which differ in what they compute with them."""
     from ...laws import compose
     from ...laws.law import replace_submodels
     return replace_submodels(compose(law_name), HISTORY_DIALECTS[law_name], "lammps")
@@ -143,7 +148,6 @@ def ingredients(version):
     return {name: holds(ranges, version) for name, ranges in INGREDIENTS.items()}
 
 
-def ranges_text(name):
-    """'2021.9.29.2 - 2022.6.23.4: wall; 2023.8.2.3 -: pair' for the docs and the report."""
-    return "; ".join(f"{spelled(first)} - {spelled(last) if last else ''}: {choice}"
-                     for first, last, choice in INGREDIENTS[name])
+def releases_of(name, choice):
+    """'2024.8.29.3 to 2025.7.22.4': the checked releases in which ingredient `name` is `choice`."""
+    return "; ".join(checked(first, last) for first, last, chosen in INGREDIENTS[name] if chosen == choice)

@@ -1,6 +1,8 @@
 """LAMMPS releases as harness spells them: the banner's '29 Sep 2021 - Update 2' is '2021.9.29.2' (YYYY.M.D, then .U
 for a stable update), with a tuple that orders them; the releases whose dialect was checked against the binary, the
-nearest of them for any other, and the one-line note a report gives for a release that was not checked."""
+nearest of them for any other, and the one-line note a report gives for a release that was not checked. What harness
+says of a release holds for those it checked alone: a range of them is written first to last
+('2023.8.2.3 to 2025.7.22.4'), never open towards releases it has not run."""
 import re
 
 MONTHS = {name: number for number, name in enumerate(
@@ -8,6 +10,7 @@ MONTHS = {name: number for number, name in enumerate(
 BANNER = re.compile(r"Simulator - ([0-9]+) ([A-Za-z]+) ([0-9]+)(?: - Update ([0-9]+))?\s*$", re.MULTILINE)
 VERIFIED = ((2021, 9, 29, 2), (2022, 6, 23, 4), (2023, 8, 2, 3), (2024, 8, 29, 3), (2025, 7, 22, 4))
 DEFAULT = VERIFIED[0]       # Debian 12's: the dialect of a binary whose release cannot be read (or of none)
+NEWEST = VERIFIED[-1]       # the last release checked: every range of an ingredient ends at one checked
 
 
 def release(text):
@@ -56,10 +59,15 @@ def dialect_note(version):
 
 
 def holds(ranges, version):
-    """The choice whose (first, last, choice) range holds the nearest checked release of `version` (last None: still
-    holds in the newest)."""
+    """The choice whose (first, last, choice) range of checked releases holds the nearest checked release of
+    `version`."""
     numbers = nearest(version)
     for first, last, choice in ranges:
-        if first <= numbers and (last is None or numbers <= last):
+        if first <= numbers <= last:
             return choice
     raise LookupError(f"no range holds {spelled(numbers)}")
+
+
+def checked(first=DEFAULT, last=NEWEST):
+    """'2023.8.2.3 to 2025.7.22.4': releases harness checked, first to last (one release: itself)."""
+    return spelled(first) if first == last else f"{spelled(first)} to {spelled(last)}"

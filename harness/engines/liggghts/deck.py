@@ -76,6 +76,22 @@ def settings(law, scene, e_n, options=None):
     return model, tangential, sorted(options.items()), properties, restitution
 
 
+def typed(lines):
+    """[(name, value)] of a deck's contact lines, named as LIGGGHTS' manual names them: each `fix property/global`
+    (its values after the style, and after a peratomtypepair's type count) and the `pair_style gran` keywords."""
+    out = []
+    for line in lines:
+        words = line.split()
+        if "property/global" in words:
+            at = words.index("property/global")
+            name, style, values = words[at + 1], words[at + 2], words[at + 3:]
+            shown = sorted(set(values[1:])) if style == "peratomtypepair" else values
+            out.append((name, " ".join(shown)))
+        elif words[:2] == ["pair_style", "gran"]:
+            out += list(zip(words[2::2], words[3::2]))
+    return out
+
+
 RIGID_E = 1e300        # a rigid wall's youngsModulus: (1 - nu^2)/E vanishes beside the sphere's in double precision
 OTHER_WALL_MODELS = ("hooke", "hertz", "hooke/hysteresis")   # per-type: E and nu (mixed as harness does), else per pair
 
@@ -170,16 +186,11 @@ def run_inputs(liggghts, count, timeout_s, workdir):
                           env={**os.environ, "OMP_NUM_THREADS": "1"})
 
 
-def final_state(state, radius, log_tail=""):
-    """Rebound velocities and separation from the final dump's (z, vx, vz, omegay) (see dumps.rebound)."""
-    return rebound(state, radius, "LIGGGHTS", log_tail)
-
-
 def read_batch(scene, spec, directory, observe=False):
     """The final state of one run's spec (harness.plan.RunSpec) run in `directory` (and what observe mode saw)."""
     if scene.spheres:
         return read_pair_batch(directory, scene, spec, observe, "LIGGGHTS", OBSERVE_DUMP)
-    final = final_state(read_dump(os.path.join(directory, "final.dump"), spec.impacts), scene.radius)
+    final = rebound(read_dump(os.path.join(directory, "final.dump"), spec.impacts), scene.radius)
     if observe:
         final.update(read_observation(os.path.join(directory, OBSERVE_DUMP), spec.impacts, scene.radius, spec.dt))
     return final

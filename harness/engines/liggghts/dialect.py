@@ -21,7 +21,7 @@ HONOURED_BY = {                 # the LIGGGHTS models that read each option (the
     "ktToKnUser": ("hooke",),
     "tangential": ("hooke", "hertz"),
 }
-COMMON = {"end": "tension", "integrator": "velocity-verlet", "lever": "0.5"}
+COMMON = {"end": "tension", "integrator": "velocity-verlet", "coulomb": "spring", "lever": "0.5"}
 DIALECTS = {                    # sub-models that make the paper law compute what LIGGGHTS computes
     "linear-spring-dashpot": {**COMMON, "damping": "linear:tension", "tangential": "linear:1",
                               "tangential-damping": "normal-coefficient"},

@@ -6,13 +6,14 @@ COUNTERPARTS = {"hertz-mindlin": "Law2_ScGeom_MindlinPhys_Mindlin", "linear-spri
           "walton-braun": "Law2_ScGeom_LudingPhys_Basic"}
 DIALECTS = {                    # sub-models that make the paper law compute what YADE computes
     "hertz-mindlin": {"damping": "tsuji:appendix-b", "end": "no-tension", "tangential": "mindlin:incremental",
-                      "tangential-damping": "normal-ratio", "integrator": "leapfrog", "lever": "1",
-                      "slip": "noratch"},
+                      "tangential-damping": "normal-ratio", "integrator": "leapfrog", "coulomb": "spring",
+                      "lever": "1", "slip": "noratch"},
     "linear-spring-dashpot": {"damping": "linear:half-mass", "end": "no-tension", "tangential": "linear:2/7",
-                              "tangential-damping": "proportional", "integrator": "leapfrog", "lever": "1"},
+                              "tangential-damping": "proportional", "integrator": "leapfrog", "coulomb": "spring",
+                              "lever": "1"},
     "walton-braun": {"normal": "luding-incremental", "end": "no-tension", "tangential": "linear:2/7",
-                     "tangential-damping": "none", "integrator": "leapfrog", "geometry": "stand-in-sphere",
-                     "lever": "0.5"},
+                     "tangential-damping": "none", "integrator": "leapfrog", "coulomb": "spring",
+                     "geometry": "stand-in-sphere", "lever": "0.5"},
 }
 PAIR_DIALECTS = {              # Ig2_Sphere_Sphere_ScGeom between two spheres: slip from the full radii with noRatch
     "hertz-mindlin": {**DIALECTS["hertz-mindlin"], "geometry": "pair-vector", "lever": "0", "slip": "noratch-pair",
@@ -27,7 +28,7 @@ OPTIONS = {                     # declared options, default first (`--engine-opt
 CUNDALL_STRACK = {             # K_n = E R, K_s = nu K_n, no damping (e = 1 whatever e_n), noRatch slip with the
     "normal": "cundall-strack", "damping": "none", "end": "tension",  # default wall geometry (r1 = R),
     "tangential": "linear:nu", "tangential-damping": "none",                 # torque lever R - d/2
-    "integrator": "leapfrog", "lever": "0.5", "slip": "noratch-sphere"}
+    "integrator": "leapfrog", "coulomb": "spring", "lever": "0.5", "slip": "noratch-sphere"}
 
 
 def dialect(law_name, options=None, target="wall"):

@@ -7,6 +7,7 @@ import numpy as np
 
 from ...version import __version__
 from ...render import render
+from ...wording import counted
 from ..dumps import pair_rebound
 from ..runner import EngineFailure, remove_engine_tmpdir, run_engine
 from .dialect import COUNTERPARTS
@@ -71,6 +72,18 @@ def script(law, scene, spec, linear="viscel", observe=False):
                   ip2="Ip2_FrictMat_FrictMat_MindlinPhys", ip2_args=[("en", e_n), ("es", e_n)])
 
 
+def typed(lines):
+    """[(name, value)] of a script's contact lines: the material's class and each number it or the physics functor
+    takes (as YADE names them), and the functors."""
+    import re
+    out = []
+    for line in lines:
+        out += [("material", m) for m in re.findall(r"= (\w+Mat)\(", line)]
+        out += [(name, value) for name, value in re.findall(r"(\w+)=Real\(\"([^\"]+)\"\)", line)]
+        out += [(name.split("_")[0], name) for name in re.findall(r"\b((?:Ip2|Law2)_\w+)\(", line)]
+    return out
+
+
 def pair_script(scene, e_n, v_n0, v_t0, omega0, common):
     """The batched script of two-sphere impacts (Mindlin): every projectile touching its own target below it (at
     rest, fixed or free, its own material and spin), their relative velocity the impact's; omega0 is the equivalent
@@ -104,7 +117,7 @@ def read_result(path, n_spheres, what="result file", columns=5):
     except ValueError:
         raise EngineFailure(f"YADE {what} is malformed") from None
     if len(rows) > n_spheres:
-        raise EngineFailure(f"YADE {what} holds {len(rows)} rows for {n_spheres} spheres")
+        raise EngineFailure(f"YADE {what} holds {counted(len(rows), 'row')} for {counted(n_spheres, 'sphere')}")
     if rows.shape != (n_spheres, columns) or not np.array_equal(rows[:, 0], np.arange(n_spheres)):
         raise EngineFailure(f"YADE {what} is truncated: {len(rows)} of {n_spheres} spheres")
     return rows[:, 1:]
@@ -153,7 +166,7 @@ def read_batch(scene, spec, directory, observe=False):
     n = spec.impacts
     if scene.spheres:
         rows = read_result(os.path.join(directory, "result.txt"), n, columns=PAIR_COLUMNS)
-        final = pair_rebound(rows.reshape(2 * n, 5), scene, "YADE")
+        final = pair_rebound(rows.reshape(2 * n, 5), scene)
     else:
         final = final_of(read_result(os.path.join(directory, "result.txt"), n))
     if observe:

@@ -5,8 +5,9 @@ from ...jit import compiled
 from . import clip
 
 NAME = "spring"
-SUMMARY = "the spring capped at mu |F_n|; the tangential dashpot added only below the cap"
+SUMMARY = "the spring capped at mu |F_n|; the tangential dashpot added only below the cap, the sum not clipped"
 SLOTS = ()
+BRIEF = "tangential dashpot unclipped"
 
 
 @compiled

@@ -7,6 +7,7 @@ from . import clip
 NAME = "total"
 SUMMARY = "spring plus dashpot capped together at mu |F_n|; a capped total leaves the spring F_t + c_t V_s"
 SLOTS = ()
+BRIEF = "spring + dashpot clipped together"
 
 
 @compiled

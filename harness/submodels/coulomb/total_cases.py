@@ -8,6 +8,7 @@ NAME = "total-cases"
 SUMMARY = ("spring plus dashpot capped together at mu |F_n|; a spring beyond mu |F_n| on the total's side is cut to "
            "it (the dashpot dropped), else the dashpot alone is shortened and the spring kept")
 SLOTS = ()
+BRIEF = "spring + dashpot clipped by four cases"
 
 
 @compiled

@@ -1,6 +1,7 @@
 """A spring whose coefficient k is applied at the contact radius a = sqrt(R alpha): F = -k a xi on the total
 tangential displacement xi; after the Coulomb cap xi = -F/k, the displacement of the spring k alone, so that the
-next step scales the capped force by a once more (docs/laws.md#tangential-laws)."""
+next step scales the capped force by a once more; its dashpot is (c_t/c_n) c_n, not a number without a normal dashpot
+(docs/laws.md#tangential-laws)."""
 from ...errors import UserError
 from ...jit import compiled
 from ..base import TangentialModel
@@ -14,7 +15,8 @@ SLOTS = ("k",)
 
 class ContactRadiusSpring(TangentialModel):
     """F = -k a xi, reset after the cap to xi = -F/k; k = 8 G* ('mindlin') or a ratio of k_n ('kappa', '2/7', a
-    number: the linear spring's k_t). The tangential dashpot and the stability limit take k itself."""
+    number: the linear spring's k_t). The tangential dashpot and the stability limit take k itself; the dashpot is
+    taken as the ratio c_t/c_n times the normal dashpot, c_t where c_n is not 0 and 0/0 (NaN) where it is."""
     name, kernel, constant_stiffness = NAME, NAME, True
 
     def __init__(self, coefficient="kappa"):
@@ -26,6 +28,13 @@ class ContactRadiusSpring(TangentialModel):
         if self.coefficient == "mindlin":
             return f"{self.name}(k=8G*)"
         return f"{self.name}(k={ratio_label(self.coefficient)} k_n)"
+
+    def undefined(self, dashpot):
+        """c_t = (c_t/c_n) c_n divides 0 by 0 without a normal dashpot: the force is NaN from the first contact step
+        (NaN times any slip, a zero one included)."""
+        if dashpot.c0 != 0.0:
+            return ""
+        return "the tangential dashpot (c_t/c_n) c_n divides 0 by 0 without a normal dashpot (c_n = 0)"
 
     def parameter(self, contact, k_n):
         if self.coefficient == "mindlin":
