@@ -7,6 +7,7 @@ import sys
 import time
 
 from ..errors import EngineMissing, UserError
+from ..programs import absolute_path
 from ..version import __version__
 from .options import EXIT_CODES, EXIT_ENGINE, EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_USAGE, Parser
 from .stopping import Stopped, stop_behind, stop_on_signals
@@ -142,12 +143,13 @@ def main(argv=None):
     args, since = None, time.time() - 1.0
     raise_lost_stop, restore_signals = stop_on_signals()
     try:
-        argv = sys.argv[1:] if argv is None else argv
-        args = build_parser({chosen_command(argv)}).parse_args(argv)
-        from ..engines.runner import sweep_stale
-        sweep_stale()
-        show_log(quiet=getattr(args, "quiet", False))
-        code = args.func(args)
+        with absolute_path():           # for the programs libraries run by name: none from the working directory
+            argv = sys.argv[1:] if argv is None else argv
+            args = build_parser({chosen_command(argv)}).parse_args(argv)
+            from ..engines.runner import sweep_stale
+            sweep_stale()
+            show_log(quiet=getattr(args, "quiet", False))
+            code = args.func(args)
         raise_lost_stop()               # a stop lost in the command's last moments, before its timer raised it
         return code
     except KeyboardInterrupt as exc:

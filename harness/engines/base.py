@@ -4,11 +4,11 @@ and declares every hook a command uses; an engine is a subclass that overrides w
 import copy
 import dataclasses
 import os
-import shutil
 import sys
 from functools import lru_cache
 
 from ..errors import UserError
+from ..programs import which
 from .builds import sha256
 from .executable import banner, chosen, missing, present
 from .protocol import InputRange, Status, check_options as check_declared
@@ -88,12 +88,12 @@ class Engine:
 
     def executable_file(self):
         """The file whose content is the engine (hashed into every result): the binary itself."""
-        return shutil.which(self.binary()) or self.binary()
+        return which(self.binary()) or self.binary()
 
     def build(self):
         """What ran: {version, binary, sha256 of its executable file, origin} (the record of every result)."""
-        path = shutil.which(self.binary()) or self.binary()
-        return {"version": self.version(), "binary": os.path.abspath(path) if path else "",
+        path = which(self.binary())
+        return {"version": self.version(), "binary": path or "",
                 "sha256": sha256(self.executable_file()),
                 "origin": self.origin or self.default_origin()}
 
