@@ -71,5 +71,5 @@ def map_sql(engine, law, angles, metric="e_t"):
 
 def maps_sql():
     """Which maps there are, and their angles: each engine and law with the impact angles it ran."""
-    return (f"SELECT engine, model, list(DISTINCT theta_deg ORDER BY theta_deg) AS angles FROM {MAP} GROUP BY ALL "
-            "ORDER BY release_order(engine), model")
+    return (f"SELECT engine, model, list(DISTINCT theta_deg ORDER BY theta_deg) AS angles FROM {MAP} "
+            "GROUP BY engine, model ORDER BY release_order(engine), model")
