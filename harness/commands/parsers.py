@@ -163,7 +163,8 @@ def check_parser(sub, describe):
     p.set_defaults(func=runs("check"))
     p = describe(sub, "baseline", "harness baseline --update --baseline baselines")
     p.add_argument("--update", action="store_true", help="required: rewriting expectations is deliberate")
-    p.add_argument("--baseline", metavar="DIR", help="baseline directory")
+    p.add_argument("--baseline", metavar="DIR", help="required: the baseline directory to write (the committed one in a "
+                                                     "checkout: baselines)")
     p.add_argument("--engines", default=None, metavar="LIST", help="engine builds to run instead of the defaults")
     add_output_options(p)
     p.set_defaults(func=runs("check", "main_update"))
