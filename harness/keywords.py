@@ -52,7 +52,11 @@ def as_reals(name, value, optional=False):
     items = list(value)
     if not all(_is_real(v) for v in items):
         _refuse(name, "a list of numbers", value)
-    return tuple(_normal(name, v) for v in items)
+    values = tuple(_normal(name, v) for v in items)
+    repeated = sorted({v for v in values if values.count(v) > 1})
+    if repeated:
+        raise UserError(f"{name}: {', '.join(f'{v:g}' for v in repeated)} given more than once")
+    return values
 
 
 def as_whole(name, value, optional=False):

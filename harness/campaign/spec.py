@@ -46,6 +46,11 @@ def load(path):
 def from_dict(data, name="campaign"):
     """Campaign of the file's table, checked against the schema and the task limit before anything is built."""
     data = validated(data, name)
+    for key, items in data.items():
+        if isinstance(items, list) and all(isinstance(i, (str, int, float)) for i in items):
+            repeated = sorted({str(i) for i in items if items.count(i) > 1})
+            if repeated:
+                raise UserError(f"campaign {name}: {key} holds {', '.join(repeated)} more than once")
     variants = [(law, ()) for law in data.get("laws", [])]
     variants += [(v["law"], tuple(sorted(v.get("with", {}).items()))) for v in data.get("variants", [])]
     if not variants:

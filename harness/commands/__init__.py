@@ -141,6 +141,10 @@ def main(argv=None):
     """Parse, run one command, return its exit code; a user's mistake is one line and 2, Ctrl-C is 130, a closed
     output ends it quietly with 141 (128 + SIGPIPE, as a shell reports a Unix tool stopped by its closed pipe)."""
     args, since = None, time.time() - 1.0
+    if sys.stdout is None:          # started with stdout closed (`harness cite >&-`): what it says would be lost
+        if sys.stderr is not None:
+            print("harness: error: stdout is closed: what harness says would be lost", file=sys.stderr)
+        return EXIT_USAGE
     raise_lost_stop, restore_signals = stop_on_signals()
     try:
         with absolute_path():           # for the programs libraries run by name: none from the working directory

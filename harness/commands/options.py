@@ -44,6 +44,22 @@ class Parser(argparse.ArgumentParser):
     def error(self, message):
         raise UserError(message)
 
+    def parse_known_args(self, args=None, namespace=None):
+        """As argparse, but an option that takes one value given twice is refused (argparse keeps the last)."""
+        args = list(sys.argv[1:] if args is None else args)
+        seen = set()
+        for word in args:
+            if word == "--":
+                break
+            action = self._option_string_actions.get(word.split("=", 1)[0]) if word.startswith("--") else None
+            if action is None or isinstance(action, (argparse._AppendAction, argparse._CountAction,
+                                                     argparse._SubParsersAction)):
+                continue
+            if action.dest in seen:
+                self.error(f"{word.split('=', 1)[0]} given more than once")
+            seen.add(action.dest)
+        return super().parse_known_args(args, namespace)
+
 
 def number(text):
     """A finite float of normal size (the scene validates ranges): a subnormal one (0 < |x| < 2.2e-308) has lost
@@ -65,7 +81,11 @@ def number_list(text):
     parts = text.split(",")
     if any(part.strip() == "" for part in parts):
         return _empty(text)
-    return tuple(number(part) for part in parts)
+    values = tuple(number(part) for part in parts)
+    repeated = sorted({v for v in values if values.count(v) > 1})
+    if repeated:
+        raise argparse.ArgumentTypeError(f"{', '.join(f'{v:g}' for v in repeated)} given more than once: {text!r}")
+    return values
 
 
 def _empty(text):

@@ -1,0 +1,43 @@
+"""Bad input is exit 2 in one line naming what is wrong, never 'could not run' (3) or silence (issue 40.6)."""
+import subprocess
+import sys
+
+import pytest
+
+import harness
+from harness.commands import main
+
+SCENE = ["--model", "thornton"]
+
+
+@pytest.mark.parametrize("args, words", [
+    (["--engines", "lammps@@x"], "lammps@@x: a build is named by its version"),
+    (["--engines", "liggghts@"], "liggghts@: a build is named by its version"),
+    (["--engines", "reference@all"], "reference@all: the reference solver has no builds"),
+    (["--tolerance", "velocity=1e-320"], "--tolerance velocity must lie in [1e-12, 1000)"),
+    (["--tolerance", "coulomb=0"], "--tolerance coulomb must lie in [1e-12, 1000)"),
+    (["--en", "0.5", "--en", "0.6"], "--en given more than once"),
+    (["--en=0.5", "--en", "0.6"], "--en given more than once"),
+    (["--mu", "0.3", "--mu=0.3"], "--mu given more than once"),
+    (["--en", "0.5,0.25,0.5"], "0.5 given more than once"),
+    (["--en", "0.5", "--angles", "10,20,10"], "10 given more than once"),
+])
+def test_bad_words_are_one_line_and_exit_2(args, words, tmp_path, capfd):
+    angles = [] if "--angles" in args else ["--angles", "10"]
+    assert main(["compare", *SCENE, *angles, "-o", str(tmp_path / "out"), *args]) == 2
+    (line,) = capfd.readouterr().err.strip().splitlines()
+    assert line.startswith("harness: error:") and words in line, line
+    assert not (tmp_path / "out").exists()
+
+
+def test_repeated_sweep_items_are_refused_from_python_and_in_a_campaign(tmp_path):
+    with pytest.raises(ValueError, match="0.5 given more than once"):
+        harness.compare("thornton", en=[0.5, 0.5], angles=[10])
+    (tmp_path / "c.toml").write_text('laws = ["thornton"]\ne_n = [0.5]\nangles = [10.0, 20.0, 10.0]\n')
+    assert main(["campaign", str(tmp_path / "c.toml"), "-o", str(tmp_path / "store"), "--dry-run"]) == 2
+
+
+def test_a_closed_stdout_is_said_and_not_exit_0():
+    """`harness cite >&-`: what it would print is lost, so it says so on stderr and exits 2."""
+    done = subprocess.run(f"{sys.executable} -m harness cite >&-", shell=True, capture_output=True, text=True)
+    assert done.returncode == 2 and "stdout is closed" in done.stderr
