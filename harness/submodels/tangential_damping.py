@@ -79,3 +79,27 @@ class TangentialDashpot:
     def prefactor(self, contact, dashpot, k_n, k_t, e_n):
         """2 g_t sqrt(m_t): c_t = this sqrt(k_t)."""
         return 2.0 * self.ratio(dashpot, k_n, k_t, e_n) * math.sqrt(self.effective_mass(contact))
+
+
+
+class GivenTangentialDashpot(TangentialDashpot):
+    """c_t(alpha) = share c_n(alpha) + per_mass m, given by an input's numbers: its prefactor c_t/sqrt(k_t) at
+    alpha = 1, where k_t(1) = unit_stiffness R^radius_power (the caller has checked that c_t and sqrt(k_t) grow alike
+    with alpha)."""
+
+    def __init__(self, share, per_mass, unit_stiffness, radius_power):
+        super().__init__("none")
+        self.share, self.per_mass = float(share), float(per_mass)
+        self.unit_stiffness, self.radius_power = float(unit_stiffness), float(radius_power)
+        self.rule = "given" if (self.share or self.per_mass) else "none"
+
+    def label(self):
+        if self.rule == "none":
+            return "none"
+        return f"c_t={self.share:.6g}*c_n" if self.share else f"c_t={self.per_mass:.6g}*m"
+
+    def prefactor(self, contact, dashpot, k_n, k_t, e_n):
+        if self.rule == "none":
+            return 0.0
+        c_t = self.share * dashpot.c0 + self.per_mass * contact.mass
+        return c_t / (self.unit_stiffness * contact.radius ** self.radius_power) ** 0.5
