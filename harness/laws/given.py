@@ -12,11 +12,10 @@ def given_law(spring, dashpot, friction, tangential_damping, overrides, summary)
     """The Law of an input: spring ('linear', k_n) or ('hertz', E*); dashpot (c, mass power, radius power, alpha power)
     for c0 = c m^a R^b; friction ('linear', k_t), ('mindlin:FORM', k_t/a), ('contact-radius', k[, nan reason]) or
     ('viscous', _, _[, nan reason]); tangential_damping ('share', x: c_t = x c_n) or ('per-mass', g: c_t = g m);
-    `overrides` the stepping sub-models. A tangential dashpot that grows with the overlap otherwise than sqrt(k_t)
-    does is not modelled (the solver's c_t = prefactor sqrt(k_t))."""
+    `overrides` the stepping sub-models. A constant tangential dashpot beside a Mindlin spring
+    does is not modelled (the solver's c_t = prefactor sqrt(k_t) + share c_n)."""
     normal = GivenLinear(spring[1]) if spring[0] == "linear" else GivenHertz(spring[1])
     damping = FixedDashpot(*dashpot)
-    c_power = dashpot[3] if tangential_damping[0] == "share" else 0.0       # c_t ~ alpha^c_power
     kind, reason = friction[0], (friction[3] if len(friction) > 3 else "")
     if kind == "linear":
         tangential, unit, radius_power, k_power = GivenLinearTangential(friction[1]), friction[1], 0.0, 0.0
@@ -25,16 +24,13 @@ def given_law(spring, dashpot, friction, tangential_damping, overrides, summary)
     elif kind.startswith("mindlin:"):
         tangential = GivenMindlin(kind.partition(":")[2], friction[1])
         unit, radius_power, k_power = friction[1], 0.5, 0.5          # k_t = k R^1/2 alpha^1/2
-    else:                                    # no spring: k = 1, or R^1/2 alpha^1/2 where c_t grows as alpha^1/4
-        grows = c_power > 0.0
-        tangential = GivenViscous("mindlin" if grows else "linear", 0.125 if grows else 1.0, reason)
-        unit, radius_power, k_power = 1.0, 0.5 if grows else 0.0, 0.5 if grows else 0.0
+    else:                                    # no spring: the dashpot alone (c_t = prefactor sqrt(1), or the share)
+        tangential, unit, radius_power, k_power = GivenViscous("linear", 1.0, reason), 1.0, 0.0, 0.0
     share, per_mass = ((tangential_damping[1], 0.0) if tangential_damping[0] == "share" else
                        (0.0, tangential_damping[1]))
-    if (share or per_mass) and abs(c_power - k_power / 2.0) > 1e-12:
-        not_modelled(f"a tangential dashpot growing as alpha^{c_power:g} beside a tangential stiffness growing as "
-                     f"alpha^{k_power:g} ({summary}; the solver's tangential dashpot grows as sqrt(k_t)); give a "
-                     "tangential damping of 0")
+    if per_mass and k_power:
+        not_modelled(f"a constant tangential dashpot beside a tangential stiffness growing as alpha^{k_power:g} "
+                     f"({summary}); give a tangential damping of 0")
     law = Law("input", normal, damping, "tension", tangential,
               GivenTangentialDashpot(share, per_mass, unit, radius_power), summary=summary)
     return replace_submodels(law, overrides)

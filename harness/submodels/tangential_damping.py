@@ -22,6 +22,8 @@ class TangentialDashpot:
     cone, then the sum capped); 'sphere-mass': m_t = m/(1 + m R^2/I) (2/7 m for a solid sphere on a wall) in place
     of m."""
 
+    normal_share = 0.0          # c_t += normal_share c_n(alpha) in the Verlet schemes (solver.codes.P_TSHARE)
+
     def __init__(self, spec="none"):
         self.spec = str(spec)
         head, *options = self.spec.split(":")
@@ -83,23 +85,22 @@ class TangentialDashpot:
 
 
 class GivenTangentialDashpot(TangentialDashpot):
-    """c_t(alpha) = share c_n(alpha) + per_mass m, given by an input's numbers: its prefactor c_t/sqrt(k_t) at
-    alpha = 1, where k_t(1) = unit_stiffness R^radius_power (the caller has checked that c_t and sqrt(k_t) grow alike
-    with alpha)."""
+    """c_t(alpha) = share c_n(alpha) + per_mass m, given by an input's numbers: the share through the solver's
+    P_TSHARE (Verlet schemes), per_mass m as the prefactor c_t/sqrt(k_t), k_t = unit_stiffness R^radius_power (the
+    caller has checked that k_t is constant there)."""
 
     def __init__(self, share, per_mass, unit_stiffness, radius_power):
         super().__init__("none")
-        self.share, self.per_mass = float(share), float(per_mass)
+        self.normal_share, self.per_mass = float(share), float(per_mass)
         self.unit_stiffness, self.radius_power = float(unit_stiffness), float(radius_power)
-        self.rule = "given" if (self.share or self.per_mass) else "none"
+        self.rule = "given" if (self.normal_share or self.per_mass) else "none"
 
     def label(self):
         if self.rule == "none":
             return "none"
-        return f"c_t={self.share:.6g}*c_n" if self.share else f"c_t={self.per_mass:.6g}*m"
+        return f"c_t={self.normal_share:.6g}*c_n" if self.normal_share else f"c_t={self.per_mass:.6g}*m"
 
     def prefactor(self, contact, dashpot, k_n, k_t, e_n):
-        if self.rule == "none":
+        if not self.per_mass:
             return 0.0
-        c_t = self.share * dashpot.c0 + self.per_mass * contact.mass
-        return c_t / (self.unit_stiffness * contact.radius ** self.radius_power) ** 0.5
+        return self.per_mass * contact.mass / (self.unit_stiffness * contact.radius ** self.radius_power) ** 0.5

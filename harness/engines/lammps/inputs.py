@@ -308,8 +308,6 @@ def classic_composition(given_input, target, version):
     dashpot = (gamman, 1.0, 0.5, 0.5) if hertz else (gamman, 1.0, 0.0, 0.0)
     wall = holds(INGREDIENTS["classic-wall"], version) if target == "wall" else "own"
     nan = "x_gamma_t = gammat/gamman is 0/0 without normal damping (granular_model.cpp, define_classic_model)"
-    if hertz and gammat:
-        not_modelled("gran/hertz/history's tangential dashpot gammat a beside its spring kt a (give dampflag 0)")
     if style == "gran/hooke":
         if wall == "shifted":
             not_modelled(f"LAMMPS {spelled(nearest(version))}'s gran/hooke wall, which takes its friction from "
@@ -319,10 +317,12 @@ def classic_composition(given_input, target, version):
         friction = ("mindlin:total", kt, 0.5) if hertz else ("linear", kt, 0.0)
     else:
         friction = ("contact-radius", kt, 0.0, nan)
-    overrides = {**COMMON, "touch": holds(INGREDIENTS["touch"], version)} if target == "wall" else dict(PAIR)
+    overrides = ({**COMMON, "touch": holds(INGREDIENTS["touch"], version)} if target == "wall" else
+                 {**COMMON, "geometry": "pair"})       # the classic pair styles' torque from the full radii
     if given_input.limit_damping:
         overrides["end"] = "no-tension"
-    return given_law(spring, dashpot, friction, ("per-mass", gammat), overrides, f"LAMMPS {style}")
+    share = ("share", gammat / gamman) if gamman else ("per-mass", gammat)        # m gammat p = (gammat/gamman) c_n
+    return given_law(spring, dashpot, friction, share, overrides, f"LAMMPS {style}")
 
 
 WALL_STYLES = ("xplane", "yplane", "zplane", "zcylinder", "region")
