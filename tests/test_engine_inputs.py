@@ -1,0 +1,254 @@
+"""A user's own engine inputs (--engine-input ENGINE=TEXT, harness.engine_inputs): parsed with the engine's own
+vocabulary, refused with its reasons, composed of neutral sub-models with the input's numbers; the real binaries
+against those compositions on walls and pairs, per release; results that record the input verbatim."""
+import json
+import math
+import os
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+from conftest import agreement, needs
+
+import oracles
+from harness.engine_inputs import parse
+from harness.engines import lammps
+from harness.errors import UserError
+from harness.execute import execute
+from harness.laws import compose
+from harness.plan import engine_plan
+from harness.request import Request, scene_from
+
+ANGLES = (0.0, 20.0, 45.0, 70.0)
+needs_lammps = needs("lammps")
+RELEASES = ("2021.9.29.2", "2022.6.23.4", "2023.8.2.3", "2024.8.29.3", "2025.7.22.4")
+
+
+def build(release):
+    """The LAMMPS build of `release` as an engine (skipped where it is not installed)."""
+    from harness.engines import ENGINES
+    try:
+        (engine,) = ENGINES.resolve(f"lammps@{release}")
+    except Exception:
+        pytest.skip(f"LAMMPS {release} is not installed")
+    return engine
+
+
+def engine_against_dialect(engine, text, scene, steps=200):
+    """The engine with input `text` and its dialect on the reference at equal dt: (frame, failures)."""
+    law = compose(lammps.dialect.GRANULAR and "linear-spring-dashpot")
+    return execute(engine_plan(engine, law, scene, steps, {"input": text}))
+
+
+# --- parsing and refusals (no engine) -------------------------------------------------------------------------------
+
+def test_unknown_words_are_refused_with_lammps_vocabulary():
+    with pytest.raises(UserError, match=r"lammps would refuse this input: Illegal model type hook: LAMMPS takes "
+                                        r"normal hooke, hertz, hertz/material, dmt, jkr; damping, tangential"):
+        parse("lammps", "hook 1e6 0.5 tangential linear_history 2.8e5 0.5 0.4")
+    with pytest.raises(UserError, match="LAMMPS' damping models are velocity, mass_velocity, viscoelastic, tsuji, "
+                                        "coeff_restitution"):
+        parse("lammps", "hooke 1e6 0.5 damping foo tangential linear_history 2.8e5 0.5 0.4")
+    with pytest.raises(UserError, match="Must specify tangential granular model"):
+        parse("lammps", "hooke 1e6 0.5")
+    with pytest.raises(UserError, match="Must either specify tangential stiffness or material properties"):
+        parse("lammps", "hooke 1e6 0.5 tangential mindlin NULL 0.5 0.4")
+    with pytest.raises(UserError, match="harness reads no yade input yet"):
+        parse("yade", "ViscElMat")
+
+
+def test_values_a_release_refuses_are_refused_with_its_reason_and_unphysical_ones_flagged():
+    text = "hooke 1e6 -0.5 damping mass_velocity tangential linear_history 2.8e5 0.5 0.4"
+    with pytest.raises(UserError, match=r"Illegal hooke model: damp -0.5 < 0 \(LAMMPS 2023.8.2.3 refuses"):
+        parse("lammps", text, "2023.8.2.3")
+    old = parse("lammps", text, "2021.9.29.2")
+    assert [f.name for f in old.flags()] == ["damp"]
+    with pytest.raises(UserError, match="Illegal model type coeff_restitution .LAMMPS 2023.8.2.3 has no"):
+        parse("lammps", "hooke 1e6 0.5 damping coeff_restitution tangential linear_history 2.8e5 0.5 0.4",
+              "2023.8.2.3")
+    assert [f.name for f in parse("lammps", "hertz/material 1e8 1.2 0.3 damping tsuji tangential mindlin NULL 0.5 "
+                                            "0.4").flags()] == ["e"]
+
+
+@pytest.mark.parametrize("text,what", [
+    ("jkr 1e8 0.5 0.3 2 tangential linear_history 2.8e5 0.5 0.4", "cohesive normal model jkr"),
+    ("dmt 1e8 0.5 0.3 2 tangential linear_history 2.8e5 0.5 0.4", "cohesive normal model dmt"),
+    ("hooke 1e6 0.5 tangential linear_history 2.8e5 0.5 0.4 rolling sds 1 1 1", "rolling sds"),
+])
+def test_cohesion_and_rolling_parse_and_are_refused_as_not_yet_modelled(text, what):
+    with pytest.raises(UserError, match=f"not yet modelled: LAMMPS' {what}"):
+        parse("lammps", text)
+
+
+def test_the_cli_refuses_in_one_line_with_exit_2(tmp_path):
+    run = subprocess.run([sys.executable, "-m", "harness", "compare", "--model", "linear-spring-dashpot",
+                          "--engines", "lammps", "--engine-input", "lammps=jkr 1e8 0.5 0.3 2 tangential "
+                          "linear_history 2.8e5 0.5 0.4", "-o", str(tmp_path / "out")],
+                         capture_output=True, text=True, timeout=300)
+    assert run.returncode == 2 and "Traceback" not in run.stderr
+    assert run.stderr.strip().splitlines()[-1] == ("harness: error: not yet modelled: LAMMPS' cohesive normal model "
+                                                   "jkr (surface energy; a later issue)")
+
+
+def test_at_file_reads_the_contact_line_of_a_deck(tmp_path):
+    deck = tmp_path / "in.mine"
+    deck.write_text("units si\npair_style granular\npair_coeff * * hooke 1e6 0.5 & # normal\n"
+                    "  tangential linear_history 2.8e5 0.5 0.4\nfix 1 all nve/sphere\n")
+    assert parse("lammps", f"@{deck}").text == "hooke 1e6 0.5 tangential linear_history 2.8e5 0.5 0.4"
+    wall = tmp_path / "in.wall"
+    wall.write_text("fix w all wall/gran hooke/history 2e5 NULL 50 NULL 0.5 1 zplane 0.0 NULL\n")
+    assert parse("lammps", f"@{wall}").style == "gran/hooke/history"
+
+
+def test_the_input_sets_the_scene_friction_and_a_different_mu_is_refused():
+    text = "hooke 1e6 0.5 tangential linear_history 2.8e5 0.5 0.4"
+    request = Request.from_keywords("linear-spring-dashpot", engines=["lammps"], engine_input=[f"lammps={text}"])
+    assert request.scene.mu == 0.4 and request.engine_options["lammps"]["input"] == text
+    with pytest.raises(UserError, match="--mu 0.3 and the engine input's mu 0.4 differ"):
+        Request.from_keywords("linear-spring-dashpot", engines=["lammps"], engine_input={"lammps": text}, mu=0.3)
+
+
+# --- the composition against independent oracles (no engine) --------------------------------------------------------
+
+def reference_e_n(text, target="wall", version="2024.8.29.3", steps=4000):
+    """e_n of the input's composition at normal incidence, on the reference solver."""
+    from harness.solver.simulate import simulate
+    scene = scene_from(en=[0.5], angles=[0.0], mu=parse("lammps", text).mu, target=target)
+    law = parse("lammps", text).composition(target, version)
+    return float(simulate(law, scene, steps_per_contact=steps)[0].e_n.iloc[0]), scene
+
+
+@pytest.mark.parametrize("damping,power", [("velocity", 0.0), ("mass_velocity", 0.0), ("viscoelastic", 0.5)])
+def test_each_damping_model_is_the_dashpot_lammps_documents(damping, power):
+    """hooke k with damping velocity (eta = d), mass_velocity (d m) and viscoelastic (d m a): e_n against an
+    independent integration of m x'' = -k x - eta(x) x' (tests/oracles.py)."""
+    k, d = 1e6, {"velocity": 150.0, "mass_velocity": 900.0, "viscoelastic": 6e4}[damping]
+    text = f"hooke {k} {d} damping {damping} tangential linear_nohistory 0 0.4"
+    e_n, scene = reference_e_n(text)
+    m, radius, speed = scene.contact.mass, scene.contact.radius, scene.speed
+    eta = {"velocity": lambda x: d, "mass_velocity": lambda x: d * m,
+           "viscoelastic": lambda x: d * m * math.sqrt(radius * max(x, 0.0))}[damping]
+    expected = oracles.normal_impact(lambda x, v: k * x + eta(x) * v, m, speed)["e"]
+    assert 0.1 < expected < 0.99 and e_n == pytest.approx(expected, abs=2e-3)
+
+
+def test_hooke_coeff_restitution_returns_e_in_the_dialect():
+    e_n, _ = reference_e_n("hooke 1e6 0.3 damping coeff_restitution tangential linear_nohistory 0 0.4")
+    assert e_n == pytest.approx(0.3, abs=1e-3)
+
+
+def test_hertz_material_wall_moduli_follow_the_release():
+    """E* = E/(2(1 - nu)) against a wall to 2022.6.23.4, E/(2(1 - nu^2)) from 2023.8.2.3; a pair's E/(2(1 - nu^2))."""
+    given = parse("lammps", "hertz/material 1e8 0.5 0.3 damping tsuji tangential mindlin NULL 0.5 0.4")
+    assert given.composition("wall", "2021.9.29.2").normal.e_star == pytest.approx(1e8 / 1.4)
+    assert given.composition("wall", "2023.8.2.3").normal.e_star == pytest.approx(1e8 / 1.82)
+    assert given.composition("sphere", "2021.9.29.2").normal.e_star == pytest.approx(1e8 / 1.82)
+
+
+# --- the real binaries ----------------------------------------------------------------------------------------------
+
+GRANULAR = {
+    "hooke": "hooke 1e7 2e5 tangential linear_history 2.8e6 0.5 0.4",
+    "hooke mass_velocity": "hooke 1e7 3000 damping mass_velocity tangential linear_history 2.8e6 0.5 0.4",
+    "hooke velocity nohistory": "hooke 1e7 500 damping velocity tangential linear_nohistory 0.5 0.4",
+    "hertz tsuji mindlin": "hertz 1e9 0.5 damping tsuji tangential mindlin 4e8 0.3 0.4",
+    "hertz/material viscoelastic mindlin/force": "hertz/material 1e9 3.7e5 0.3 tangential mindlin/force NULL 0.5 "
+                                                 "0.4",
+    "hertz/material tsuji rescale limit_damping": "hertz/material 1e9 0.4 0.3 damping tsuji tangential "
+                                                  "mindlin_rescale NULL 0.5 0.4 limit_damping",
+}
+
+
+@needs_lammps
+@pytest.mark.parametrize("name", sorted(GRANULAR))
+@pytest.mark.parametrize("target", ["wall", "sphere"])
+def test_lammps_granular_inputs_agree_with_their_composition(name, target):
+    """Debian's LAMMPS with each granular input, a wall and a pair of another size, with spin: within 1e-6."""
+    extra = dict(target="sphere", target_radius=0.03) if target == "sphere" else {}
+    scene = scene_from(en=[0.5], angles=ANGLES, omega0=-20.0, mu=0.4, **extra)
+    frame, failures = execute(engine_plan(lammps.ENGINE, compose("linear-spring-dashpot"), scene, 200,
+                                          {"input": GRANULAR[name]}))
+    assert failures == [] and agreement(frame, "lammps") < 1e-6
+
+
+@pytest.mark.engine
+@pytest.mark.parametrize("release", RELEASES)
+@pytest.mark.parametrize("target", ["wall", "sphere"])
+def test_each_release_agrees_with_its_composition_of_a_hertz_material_input(release, target):
+    engine = build(release)
+    extra = dict(target="sphere") if target == "sphere" else {}
+    scene = scene_from(en=[0.5], angles=ANGLES, mu=0.4, **extra)
+    text = "hertz/material 1e9 0.5 0.3 damping tsuji tangential mindlin NULL 0.5 0.4"
+    frame, failures = execute(engine_plan(engine, compose("hertz-mindlin"), scene, 200, {"input": text}))
+    assert failures == [] and agreement(frame, engine.NAME) < 1e-6
+
+
+@pytest.mark.engine
+@pytest.mark.parametrize("release", ["2024.8.29.3", "2025.7.22.4"])
+def test_hooke_coeff_restitution_returns_e_in_the_engine(release):
+    engine = build(release)
+    scene = scene_from(en=[0.3], angles=[0.0], mu=0.4)
+    text = "hooke 1e7 0.3 damping coeff_restitution tangential linear_history 2.8e6 0.5 0.4"
+    frame, failures = execute(engine_plan(engine, compose("linear-spring-dashpot"), scene, 1000, {"input": text}))
+    rows = frame[frame.engine == engine.NAME]
+    assert failures == [] and rows.e_n.iloc[0] == pytest.approx(0.3, abs=1e-3)
+    assert agreement(frame, engine.NAME) < 1e-6
+
+
+CLASSIC = "gran/hooke/history 1e7 NULL 3000 NULL 0.4 1"
+
+
+@pytest.mark.engine
+@pytest.mark.parametrize("release", RELEASES)
+def test_a_classic_hooke_history_wall_agrees_per_release(release):
+    engine = build(release)
+    scene = scene_from(en=[0.5], angles=ANGLES, omega0=-20.0, mu=0.4)
+    frame, failures = execute(engine_plan(engine, compose("linear-spring-dashpot"), scene, 200, {"input": CLASSIC}))
+    assert failures == [] and agreement(frame, engine.NAME) < 1e-6
+
+
+@pytest.mark.engine
+def test_a_classic_hooke_history_wall_differs_between_2021_and_2023_as_the_engines_do():
+    """The wall's spring kt xi (2021.9.29.2) became kt a xi (2023.8.2.3): the engines differ, and their
+    compositions differ by the same amounts."""
+    scene = scene_from(en=[0.5], angles=(30.0, 60.0), mu=0.4)
+    got = {}
+    for release in ("2021.9.29.2", "2023.8.2.3"):
+        engine = build(release)
+        frame, failures = execute(engine_plan(engine, compose("linear-spring-dashpot"), scene, 200,
+                                              {"input": CLASSIC}))
+        assert failures == []
+        got[release] = (frame[frame.engine == engine.NAME].reset_index(), frame[frame.engine == "reference"]
+                        .reset_index())
+    (old, old_dialect), (new, new_dialect) = got["2021.9.29.2"], got["2023.8.2.3"]
+    assert np.max(np.abs(new.v_t1 - old.v_t1)) > 1e-2 * scene.speed
+    assert np.allclose(new.v_t1 - old.v_t1, new_dialect.v_t1 - old_dialect.v_t1, atol=1e-6 * scene.speed)
+
+
+@pytest.mark.engine
+@pytest.mark.parametrize("release", ["2021.9.29.2", "2024.8.29.3"])
+@pytest.mark.parametrize("style", ["gran/hooke 1e7 NULL 3000 NULL 0.4 1",
+                                   "gran/hertz/history 1e9 NULL 3.7e5 NULL 0.4 1"])
+@pytest.mark.parametrize("target", ["wall", "sphere"])
+def test_classic_styles_agree_on_walls_and_pairs(release, style, target):
+    engine = build(release)
+    extra = dict(target="sphere", target_radius=0.03) if target == "sphere" else {}
+    scene = scene_from(en=[0.5], angles=ANGLES, omega0=-20.0, mu=0.4, **extra)
+    frame, failures = execute(engine_plan(engine, compose("linear-spring-dashpot"), scene, 200, {"input": style}))
+    assert failures == [] and agreement(frame, engine.NAME) < 1e-6
+
+
+@needs_lammps
+def test_results_and_records_hold_the_input_verbatim_with_its_composition(tmp_path):
+    text = "hooke 1e7 3000 damping mass_velocity tangential linear_history 2.8e6 0.5 0.4"
+    out = tmp_path / "out"
+    run = subprocess.run([sys.executable, "-m", "harness", "compare", "--model", "linear-spring-dashpot",
+                          "--engines", "lammps", "--engine-input", f"lammps={text}", "--en", "0.5",
+                          "--angles", "10,40", "-o", str(out), "--quiet"], capture_output=True, text=True,
+                         timeout=900)
+    assert run.returncode in (0, 1), run.stderr[-2000:]
+    record = json.loads((out / "run.json").read_text())
+    assert record["engine_inputs"]["lammps"]["text"] == text
+    assert record["engine_inputs"]["lammps"]["composition"]["normal"] == "linear(k_n=1e+07)"
+    assert text in (out / "report.html").read_text()
