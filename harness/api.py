@@ -170,10 +170,26 @@ def compare_request(request, on_frame=None, progress=None, partial=None):
     return Comparison(law, scene, results, overrides=dict(request.overrides), engine_options=request.engine_options,
                       arithmetic=arithmetic_of(request.engine_options),
                       builds={e.NAME: {**e.build(), "note": e.dialect_note()} for e in engines},
+                      engine_inputs=input_records(law, scene, engines),
                       requested=request.engines, skipped=[(s.name, s.reason) for s in found if not s.available],
                       failures=failures, attribution=attributions, attribution_rows=rows, sliding=sliding,
                       precision=precision,
                       histories=histories, tolerances=request.tolerances)
+
+
+def input_records(law, scene, engines):
+    """{engine: {text, composition, flags}} of each engine that ran a user's own input: the text verbatim, the
+    neutral sub-models it maps to, and the unphysical values it was run with."""
+    from .engine_inputs import INPUT_OPTION, parse
+    out = {}
+    for engine, options in engines.items():
+        text = (options or {}).get(INPUT_OPTION)
+        if text is not None:
+            composition = engine.dialect(law.name, options, target_of(scene)).describe()
+            flags = [f.why for f in parse(engine.code, text, engine.version()).flags(engine.version())]
+            out[engine.NAME] = {"text": text, "composition": {k: str(v) for k, v in composition.items()},
+                                "flags": flags}
+    return out
 
 
 def measurements(law, scene, engines, steps, tolerances):

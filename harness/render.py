@@ -42,7 +42,9 @@ def word(value):
 
 
 def token(value):
-    """A word of a user's engine input: a finite number (num) or a keyword (word)."""
+    """A word of a user's engine input: an integer, a finite number (num) or a keyword (word)."""
+    if isinstance(value, int) and not isinstance(value, bool):
+        return str(value)
     return word(value) if isinstance(value, str) else num(value)
 
 

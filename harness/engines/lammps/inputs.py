@@ -165,8 +165,11 @@ def parse_classic(text, words):
 
 
 def _token(word):
+    """A word as the deck gets it: an integer (LAMMPS reads dampflag as one), a float, or the word itself."""
+    if word.lstrip("+-").isdigit():
+        return int(word)
     try:
-        return float(word) if word != "NULL" else word
+        return float(word)
     except ValueError:
         return word
 
