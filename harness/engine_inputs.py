@@ -55,6 +55,25 @@ class EngineInput:
     def composition(self, target, version=None):
         raise NotImplementedError
 
+    def translations(self, target, version=None):
+        """Other inputs of its engine that compute the same composition on `target` in `version` (those a
+        vocabulary proposes, kept where their composition is this one's)."""
+        mine = self.composition(target, version).describe()
+        module = vocabulary(self.engine)
+        out = []
+        for text in self.alternatives():
+            try:
+                other = module.parse(text, version)
+                if other.composition(target, version).describe() == mine:
+                    out.append(other.text)
+            except UserError:
+                continue
+        return out
+
+    def alternatives(self):
+        """Texts of its engine that may compute what it computes (translations() keeps those that do)."""
+        return []
+
     def neutral(self, target="wall", version=None):
         """{sub-model key: label} of the composition it maps to (what results and reports record beside the text)."""
         return self.composition(target, version).describe()

@@ -78,6 +78,26 @@ class LammpsInput(EngineInput):
             return "linear-spring-dashpot"
         return "hertz-kuwabara-kono" if self.damping == "viscoelastic" else "hertz-mindlin"
 
+    def alternatives(self):
+        """The classic style as granular words and the granular words as a classic style, where the forms match:
+        hooke + mass_velocity + linear_history|linear_nohistory and hertz + viscoelastic + mindlin."""
+        v, limit = self.named, (" limit_damping" if self.limit_damping else "")
+        if self.style in CLASSIC:
+            share = v["gammat"] / v["gamman"] if v["gamman"] else 0.0
+            normal, damping, tangential = {
+                "gran/hooke": ("hooke", "mass_velocity", f"linear_nohistory {share!r} {v['xmu']!r}"),
+                "gran/hooke/history": ("hooke", "mass_velocity", f"linear_history {v['kt']!r} {share!r} {v['xmu']!r}"),
+                "gran/hertz/history": ("hertz", "viscoelastic", f"mindlin {v['kt']!r} {share!r} {v['xmu']!r}")}[self.style]
+            return [f"{normal} {v['kn']!r} {v['gamman']!r} damping {damping} tangential {tangential}{limit}"]
+        forms = {("hooke", "mass_velocity", "linear_history"): "gran/hooke/history",
+                 ("hooke", "mass_velocity", "linear_nohistory"): "gran/hooke",
+                 ("hertz", "viscoelastic", "mindlin"): "gran/hertz/history"}
+        style = forms.get((self.normal, self.damping, self.tangential))
+        if style is None or v.get("k_t") == "NULL":
+            return []
+        k_t = v.get("k_t", 2.0 / 7.0 * v["k_n"])
+        return [f"{style} {v['k_n']!r} {k_t!r} {v['damp']!r} {v['x_gamma_t'] * v['damp']!r} {v['mu']!r} 1{limit}"]
+
     def deck_style(self):
         """(pair_style words, pair_coeff words, fix wall/gran words) of a deck, the user's own words."""
         if self.style == "granular":
