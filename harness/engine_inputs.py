@@ -70,6 +70,11 @@ class EngineInput:
                 continue
         return out
 
+    def other_engines(self, contact):
+        """[(engine, text, release)] of inputs of other engines that may compute the same law on this contact
+        (harness.explain keeps those whose composition, stepped as this one, gives the same rebounds)."""
+        return []
+
     def alternatives(self):
         """Texts of its engine that may compute what it computes (translations() keeps those that do)."""
         return []

@@ -296,3 +296,62 @@ def test_explain_translates_a_classic_style_into_granular_words_that_run_alike()
         assert failures == []
         rows.append(frame[frame.engine == engine.NAME].reset_index())
     assert np.allclose(rows[0][["v_n1", "v_t1", "omega1"]], rows[1][["v_n1", "v_t1", "omega1"]], rtol=0, atol=1e-9)
+
+
+# --- LIGGGHTS -------------------------------------------------------------------------------------------------------
+
+LIGGGHTS_INPUTS = {
+    "hertz": "model hertz tangential history youngsModulus 1e9 poissonsRatio 0.3 coefficientRestitution 0.5 "
+             "coefficientFriction 0.4",
+    "hooke": "model hooke tangential history youngsModulus 1e9 poissonsRatio 0.3 coefficientRestitution 0.5 "
+             "coefficientFriction 0.4 characteristicVelocity 2",
+}
+
+
+def test_liggghts_inputs_are_refused_with_its_own_words():
+    with pytest.raises(UserError, match="0.05 < coefficientRestitution <= 1 required"):
+        parse("liggghts", LIGGGHTS_INPUTS["hertz"].replace("0.5 coefficientFriction", "1.2 coefficientFriction"))
+    with pytest.raises(UserError, match="Could not locate a fix/property storing value.s. for characteristicVelocity "
+                                        "as requested by model hooke"):
+        parse("liggghts", LIGGGHTS_INPUTS["hooke"].replace(" characteristicVelocity 2", ""))
+    with pytest.raises(UserError, match="Invalid model specified"):
+        parse("liggghts", "model hertzz tangential history")
+    with pytest.raises(UserError, match="not yet modelled: LIGGGHTS' cohesion sjkr"):
+        parse("liggghts", "model hertz tangential history cohesion sjkr youngsModulus 1e9")
+
+
+@needs("liggghts")
+@pytest.mark.parametrize("name", sorted(LIGGGHTS_INPUTS))
+@pytest.mark.parametrize("target", ["wall", "sphere"])
+def test_liggghts_inputs_agree_with_their_composition(name, target):
+    from harness.engines import get_engine
+    extra = dict(target="sphere", target_radius=0.03) if target == "sphere" else {}
+    scene = scene_from(en=[0.5], angles=ANGLES, omega0=-20.0, mu=0.4, **extra)
+    law = compose("hertz-mindlin" if name == "hertz" else "linear-spring-dashpot")
+    frame, failures = execute(engine_plan(get_engine("liggghts"), law, scene, 200,
+                                          {"input": LIGGGHTS_INPUTS[name]}))
+    assert failures == [] and agreement(frame, "liggghts") < 1e-6
+
+
+@needs("liggghts")
+@pytest.mark.engine
+def test_explain_translates_a_liggghts_input_into_lammps_words_that_run_alike():
+    """LIGGGHTS hertz + history with its properties is LAMMPS hertz/material + coeff_restitution + mindlin NULL with
+    x_gamma_t = 2 sqrt(G*/E*): explain names those words (their composition, stepped as LIGGGHTS steps, rebounds as
+    the input's within 1e-6 of V), and the two engines run with them return the same e_n at normal incidence (their
+    steppers differ at first touch by a step: within 1e-3)."""
+    from harness.engines import get_engine
+    from harness.explain import explain
+    x = explain("liggghts", LIGGGHTS_INPUTS["hertz"], angles=[0.0, 20.0, 60.0])
+    ((where, text),) = x.translations
+    assert where == "lammps 2024.8.29.3" and text.startswith("hertz/material 1000000000.0 0.5 0.3 damping "
+                                                              "coeff_restitution tangential mindlin NULL")
+    lammps_2024 = build("2024.8.29.3")
+    scene = scene_from(en=[0.5], angles=[0.0], mu=0.4)
+    e_n = {}
+    for engine, given, law in ((get_engine("liggghts"), LIGGGHTS_INPUTS["hertz"], "hertz-mindlin"),
+                               (lammps_2024, text, "hertz-mindlin")):
+        frame, failures = execute(engine_plan(engine, compose(law), scene, 1000, {"input": given}))
+        assert failures == [] and agreement(frame, engine.NAME) < 1e-6
+        e_n[engine.NAME] = frame[frame.engine == engine.NAME].e_n.iloc[0]
+    assert abs(e_n["liggghts"] - e_n[lammps_2024.NAME]) < 1e-3 and abs(e_n["liggghts"] - 0.5) < 5e-3

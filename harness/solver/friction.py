@@ -41,8 +41,11 @@ def friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, in_contact, scheme
             f_s = cap(f_s, limit)
             tangential_after_cap(code, f_s, p[C.P_T1], a, ot)
             f_t = f_s
-        elif p[C.P_TDAMP] == 0.0:
+        elif p[C.P_TDAMP] == 0.0 and p[C.P_TSHARE] == 0.0:
             f_t = f_s
+        elif p[C.P_TSHARE] != 0.0:                   # Coulomb rule 'spring' with a share of the normal dashpot
+            c_t = p[C.P_TDAMP] * math.sqrt(tangential_stiffness(code, p[C.P_T1], a)) if p[C.P_TDAMP] != 0.0 else 0.0
+            f_t = f_s - (c_t + normal_share(p, alpha)) * slip
         else:
             f_t = f_s - p[C.P_TDAMP] * math.sqrt(tangential_stiffness(code, p[C.P_T1], a)) * slip
     else:

@@ -41,6 +41,35 @@ class LiggghtsInput(EngineInput):
     def flags(self, version=None):
         return ()
 
+    def other_engines(self, contact):
+        """[(engine, text, release)]: the LAMMPS words with the same spring, dashpot and friction numbers on this
+        contact (hertz/material Y e nu with damping coeff_restitution and Mindlin NULL; hooke with LIGGGHTS' k_n;
+        x_gamma_t the ratio of the two dashpots), for LAMMPS 2024.8.29.3, the first release harness ran with
+        coeff_restitution."""
+        from ...submodels.calibration import hertz_equivalent_stiffness
+        v, settings = self.values, dict(self.settings)
+        y, nu, e, mu = (v["youngsModulus"], v["poissonsRatio"], v["coefficientRestitution"],
+                        v["coefficientFriction"])
+        damped = self.tangential != "off" and settings.get("tangential_damping") != "off"
+        kt_kn = KT_TO_KN_USER if settings.get("ktToKnUser") == "on" else 1.0
+        if self.model == "hertz":
+            e_star, g_star = y / (2.0 * (1.0 - nu * nu)), y / (4.0 * (2.0 - nu) * (1.0 + nu))
+            share = 2.0 * math.sqrt(g_star / e_star) if damped else 0.0
+            normal = f"hertz/material {y!r} {e!r} {nu!r} damping coeff_restitution"
+            spring = f"mindlin NULL {share!r} {mu!r}"
+        else:
+            k_n = hertz_equivalent_stiffness(y / (2.0 * (1.0 - nu * nu)), contact.radius, contact.mass,
+                                             v["characteristicVelocity"])
+            share = (1.0 if damped else 0.0)
+            normal = f"hooke {k_n!r} {e!r} damping coeff_restitution"
+            spring = f"linear_history {kt_kn * k_n!r} {share!r} {mu!r}"
+        if self.tangential == "no_history":
+            spring = f"linear_nohistory {share!r} {mu!r}"
+        elif self.tangential == "off":
+            spring = "linear_nohistory 0.0 0.0"
+        limit = " limit_damping" if settings.get("limitForce") == "on" else ""
+        return [("lammps", f"{normal} tangential {spring}{limit}", "2024.8.29.3")]
+
     def deck_values(self):
         """What the deck template takes of this input: model, tangential, settings, Y, nu, e, mu and properties."""
         v = self.values
