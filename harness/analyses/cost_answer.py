@@ -201,7 +201,7 @@ def recommendations(cost, found=None):
     times = step_times(cost).set_index(["engine", "dialect"]).s_per_impact_step
     times = times[~times.index.duplicated()]
     out = []
-    for (engine, dialect), per_tol in answers.items():
+    for (engine, dialect), per_tol in found.items():
         row = {"engine": engine, "dialect": dialect}
         step_s = times.get((engine, dialect), np.nan)
         for tol, a in per_tol.items():
