@@ -355,3 +355,15 @@ def test_explain_translates_a_liggghts_input_into_lammps_words_that_run_alike():
         assert failures == [] and agreement(frame, engine.NAME) < 1e-6
         e_n[engine.NAME] = frame[frame.engine == engine.NAME].e_n.iloc[0]
     assert abs(e_n["liggghts"] - e_n[lammps_2024.NAME]) < 1e-3 and abs(e_n["liggghts"] - 0.5) < 5e-3
+
+
+def test_a_campaign_takes_engine_inputs_and_refuses_a_friction_sweep_against_them():
+    from harness.campaign.spec import from_dict
+    text = "hooke 1e7 3000 damping mass_velocity tangential linear_history 2.8e6 0.5 0.4"
+    campaign = from_dict({"laws": ["linear-spring-dashpot"], "engines": ["lammps"], "e_n": [0.5], "angles": [10, 30],
+                          "engine_inputs": {"lammps": text}})
+    (request,) = campaign.requests
+    assert request.engine_options["lammps"]["input"] == text and request.scene.mu == 0.4
+    with pytest.raises(UserError, match="--mu 0.3 and the engine input's mu 0.4 differ"):
+        from_dict({"laws": ["linear-spring-dashpot"], "engines": ["lammps"], "e_n": [0.5], "mus": [0.3],
+                   "engine_inputs": {"lammps": text}})
