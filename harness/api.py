@@ -23,8 +23,15 @@ HISTORY_POINTS = 400
 
 
 def run_request(request, on_frame=None, progress=None):
-    """The reference solver's results table of a validated request; progress.advance after each e_n."""
-    runs = reference_runs(request.law, request.scene, request.resolution)
+    """The reference solver's results table of a validated request (the dialect of its one engine input, if it has
+    one: --engine-input); progress.advance after each e_n."""
+    from .engine_inputs import INPUT_OPTION
+    given = [name for name, options in request.engine_options.items() if INPUT_OPTION in options]
+    if len(given) > 1:
+        raise UserError(f"run takes one engine input, got {len(given)} ({', '.join(given)})")
+    dialect = ENGINES[given[0]].dialect(request.law.name, request.engine_options[given[0]],
+                                        target_of(request.scene)) if given else None
+    runs = reference_runs(request.law, request.scene, request.resolution, dialect)
     if progress:
         progress.expect(len(runs))
 

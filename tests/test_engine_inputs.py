@@ -367,3 +367,19 @@ def test_a_campaign_takes_engine_inputs_and_refuses_a_friction_sweep_against_the
     with pytest.raises(UserError, match="--mu 0.3 and the engine input's mu 0.4 differ"):
         from_dict({"laws": ["linear-spring-dashpot"], "engines": ["lammps"], "e_n": [0.5], "mus": [0.3],
                    "engine_inputs": {"lammps": text}})
+
+
+def test_run_steps_the_dialect_of_an_engine_input(tmp_path):
+    """harness run --engine-input: the reference solver runs the input's composition; hooke + mass_velocity returns the
+    linear oscillator's e_n = exp(-z pi/sqrt(1 - z^2)), z = d m/(2 sqrt(m k))."""
+    import pandas as pd
+    from harness.commands import main
+    out = tmp_path / "run.csv"
+    code = main(["run", "--model", "linear-spring-dashpot", "--engine-input", "lammps=hooke 1e7 3000 damping "
+                 "mass_velocity tangential linear_history 2.8e6 0.5 0.4", "--en", "0.5", "--angles", "0",
+                 "-o", str(out), "--quiet"])
+    rows = pd.read_csv(out)
+    m = scene_from(en=[0.5], angles=[0.0]).contact.mass
+    z = 3000.0 * m / (2.0 * math.sqrt(m * 1e7))
+    assert code == 0 and list(rows.dialect) == ["lammps"]
+    assert rows.e_n.iloc[0] == pytest.approx(math.exp(-z * math.pi / math.sqrt(1.0 - z * z)), abs=1e-3)

@@ -36,6 +36,7 @@ def engines_parser(sub, describe):
 def run_parser(sub, describe):
     p = describe(sub, "run", "harness run --model thornton --en 0.9,0.5,0.1 --angles 0:80:10 -o results.csv")
     p.add_argument("--model", required=True, type=law_name, help="law name (see `harness models`)")
+    add_engine_input(p)
     add_scene_options(p)
     p.add_argument("-o", "--output", required=True, help="results CSV to write")
     add_output_options(p)
