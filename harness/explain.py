@@ -89,7 +89,7 @@ def explain(engine, text, run=False, **keywords):
         nearest.append((law_name, distance(sweep, paper, scene.speed, scene.radius)))
     nearest.sort(key=lambda pair: pair[1])
     translations = [(build.code, other) for other in given.translations(target, version)]
-    translations += across_engines(given, dialect, scene, target)
+    translations += across_engines(given, dialect, scene, target, sweep)
     advice = advice_lines(build, nearest[0][0], paper_scene(nearest[0][0], scene, dialect), paper_e) if nearest else []
     explanation = Explanation(build.NAME, given.text, {k: str(v) for k, v in dialect.describe().items()},
                               [f.why for f in given.flags(version)], e_n, float(normal.t_contact), sweep, nearest,
@@ -103,13 +103,12 @@ STEPPING = ("integrator", "coulomb", "geometry", "lever", "slip", "torque", "tou
 SAME_LAW = 1e-6              # worst difference relative to V under one stepping: the same law
 
 
-def across_engines(given, dialect, scene, target):
+def across_engines(given, dialect, scene, target, mine):
     """[(engine, text)] of other engines' inputs that compute the input's law: each candidate's composition with the
     input's stepping sub-models (integrator, Coulomb rule, levers, touch) on the reference over the scene, kept where
     it rebounds as the input does within SAME_LAW of V (what differs then is each engine's stepping alone)."""
     from .laws.law import replace_submodels
     from .solver.simulate import simulate
-    mine = simulate(dialect, scene, steps_per_contact=STEPS)[0]
     stepping = {k: v for k, v in dialect.describe().items() if k in STEPPING}
     stepping["lever"] = {"R": "0", "R - d/4": "0.25", "R - d/2": "0.5", "R - d": "1"}[stepping["lever"]]
     out = []

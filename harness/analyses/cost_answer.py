@@ -197,11 +197,11 @@ def recommendations(cost, found=None):
     """Per curve (engine, dialect) and tolerance: the time step and steps per contact of its Answer, how it was
     found, and the time per impact there (impact-steps per impact x the curve's time per impact-step); the error a
     time step of 20% of the Rayleigh time gives."""
-    found = answers(cost) if found is None else found
+    given = answers(cost) if found is None else found
     times = step_times(cost).set_index(["engine", "dialect"]).s_per_impact_step
     times = times[~times.index.duplicated()]
     out = []
-    for (engine, dialect), per_tol in found.items():
+    for (engine, dialect), per_tol in given.items():
         row = {"engine": engine, "dialect": dialect}
         step_s = times.get((engine, dialect), np.nan)
         for tol, a in per_tol.items():
