@@ -383,3 +383,15 @@ def test_run_steps_the_dialect_of_an_engine_input(tmp_path):
     z = 3000.0 * m / (2.0 * math.sqrt(m * 1e7))
     assert code == 0 and list(rows.dialect) == ["lammps"]
     assert rows.e_n.iloc[0] == pytest.approx(math.exp(-z * math.pi / math.sqrt(1.0 - z * z)), abs=1e-3)
+
+
+def test_at_file_reads_a_liggghts_deck(tmp_path):
+    deck = tmp_path / "in.liggghts"
+    deck.write_text("fix m1 all property/global youngsModulus peratomtype 1e9\n"
+                    "fix m2 all property/global poissonsRatio peratomtype 0.3\n"
+                    "fix m3 all property/global coefficientRestitution peratomtypepair 1 0.5\n"
+                    "fix m4 all property/global coefficientFriction peratomtypepair 1 0.4\n"
+                    "pair_style gran model hertz tangential history # the contact\npair_coeff * *\n")
+    given = parse("liggghts", f"@{deck}")
+    assert (given.model, given.tangential, given.mu) == ("hertz", "history", 0.4)
+    assert given.values["coefficientRestitution"] == 0.5 and given.values["youngsModulus"] == 1e9
