@@ -3,7 +3,6 @@ vocabulary, refused with its reasons, composed of neutral sub-models with the in
 against those compositions on walls and pairs, per release; results that record the input verbatim."""
 import json
 import math
-import os
 import subprocess
 import sys
 

@@ -6,6 +6,7 @@ import math
 from dataclasses import dataclass
 
 from ...engine_inputs import EngineInput, Flag, not_modelled, refuse
+from ...errors import UserError
 from ...submodels.calibration import polynomial_tsuji_A
 from .versions import NEWEST, holds, nearest, spelled
 
@@ -377,10 +378,5 @@ def contact_text(deck, path):
             end = next((i for i, w in enumerate(rest) if w in WALL_STYLES), len(rest))
             rest = rest[:end]
             return " ".join(rest[1:] if rest[:1] == ["granular"] else ["gran/" + rest[0]] + rest[1:] if rest else [])
-    raise_missing(path)
-
-
-def raise_missing(path):
-    from ...errors import UserError
     raise UserError(f"--engine-input @{path}: no pair_style gran/..., pair_coeff of pair_style granular or fix "
                     "wall/gran line in it")

@@ -6,7 +6,7 @@ neutral sub-models with those numbers."""
 import math
 from dataclasses import dataclass
 
-from ...engine_inputs import EngineInput, Flag, not_modelled, refuse
+from ...engine_inputs import EngineInput, not_modelled, refuse
 from ...errors import UserError
 from ...submodels.normal.given import GivenLinear
 
@@ -37,9 +37,6 @@ class LiggghtsInput(EngineInput):
 
     def law_family(self):
         return "hertz-mindlin" if self.model == "hertz" else "linear-spring-dashpot"
-
-    def flags(self, version=None):
-        return ()
 
     def other_engines(self, contact):
         """[(engine, text, release)]: the LAMMPS words with the same spring, dashpot and friction numbers on this
