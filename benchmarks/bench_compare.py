@@ -41,13 +41,14 @@ def serial(request, out_dir):
         frame, failure = ENGINES[run.engine].run([run])[0]
         frames.append(frame)
         failures += [failure] if failure else []
-    attributions, sliding, histories = measurements(law, scene, engines, request.resolution)
+    attributions, rows, sliding, histories = measurements(law, scene, engines, request.resolution, request.tolerances)
     precision = None
     yade = ENGINES["yade"]
     if yade in engines and engines[yade].get("precision", "double") == "double" and available(HIGH):
         precision = issue_precision_check(law, scene, request.resolution)
     comparison = Comparison(law, scene, pd.concat(frames, ignore_index=True), failures=failures,
-                            attribution=attributions, sliding=sliding, histories=histories, precision=precision)
+                            attribution=attributions, attribution_rows=rows, sliding=sliding, histories=histories,
+                            precision=precision, tolerances=request.tolerances)
     threads, drawing.THREADS = drawing.THREADS, 1
     try:
         write_report(comparison, out_dir)

@@ -318,7 +318,8 @@ def test_an_engine_that_cannot_run_exits_3_with_the_reason_on_stderr(tmp_path, c
     assert main(["calibrate", "--model", "hertz-mindlin", "--engine", "liggghts", "--en", "0.5", "--angles", "10,40",
                  "-o", str(out)]) == 3
     said = capfd.readouterr()
-    assert "is not an executable file" in said.err and "liggghts did not run" in said.err
+    err = " ".join(said.err.split())
+    assert "is not an executable file" in err and "liggghts did not run" in err
     assert "is not an executable file" not in said.out
     assert json.loads((out / "calibration.json").read_text())["inputs"][0]["input_e"] is not None
 

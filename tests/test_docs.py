@@ -69,7 +69,7 @@ LONG = {   # command as shown (without .venv/bin/) -> why it does not run here
                      "(tests/test_chung_ooi.py)",
     "harness benchmark chung-ooi --engines reference,kratos": "Chung & Ooi's tests on Kratos: minutes "
                      "(tests/test_chung_ooi.py)",
-    "harness calibrate --model hertz-mindlin --engine lammps --en 0.1,0.25,0.5,0.9,0.95 --angles 0:85:5 -o "
+    "harness calibrate --model hertz-mindlin --engine lammps --en 0.25,0.5,0.9,0.95 --angles 0:85:5 -o "
     "calibrated/": "a calibration on 5 e_n x 18 angles: minutes (tests/test_calibrate.py)",
     "harness calibrate --model hertz-mindlin --engine lammps@2024.8.29 -o calibrated-2024/": "a calibration on the "
                      "default scene: minutes (tests/test_calibrate.py)",

@@ -223,7 +223,7 @@ def test_a_hung_kratos_is_killed_at_the_timeout_and_leaves_no_process(tmp_path, 
 @pytest.mark.parametrize("body, message", [
     ('printf \'{"rows": [[0, 0.03, 0.1, 0.5, 0.2]], "compl\' > result.json', "malformed"),
     ('printf \'{"rows": [[0, 0.03, 0.1, 0.5, 0.2]]}\' > result.json', "truncated"),
-    ('printf \'{"rows": [[0, 0.03, 0.1, 0.5, 0.2]], "complete": true}\' > result.json', "holds 1 spheres for 2"),
+    ('printf \'{"rows": [[0, 0.03, 0.1, 0.5, 0.2]], "complete": true}\' > result.json', "holds 1 sphere for 2"),
     ("true", "wrote no result file"),
 ])
 def test_a_damaged_result_is_named_and_keeps_the_log(tmp_path, monkeypatch, body, message):
