@@ -41,3 +41,14 @@ def test_a_closed_stdout_is_said_and_not_exit_0():
     """`harness cite >&-`: what it would print is lost, so it says so on stderr and exits 2."""
     done = subprocess.run(f"{sys.executable} -m harness cite >&-", shell=True, capture_output=True, text=True)
     assert done.returncode == 2 and "stdout is closed" in done.stderr
+
+
+@pytest.mark.parametrize("keywords, words", [
+    (dict(speed=10 ** 400), "speed is beyond the range of a double"),
+    (dict(angles=[10.0], en=range(200_000)), "en holds 200000 numbers; at most 100000"),
+])
+def test_limits_from_python_are_one_clear_error(keywords, words):
+    """issue 40.5: an integer beyond a double and a list beyond the limit are refused before any work (the list by
+    its length, before it is copied)."""
+    with pytest.raises(ValueError, match=words):
+        harness.compare("thornton", **{"angles": [10.0], **keywords})

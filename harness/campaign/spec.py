@@ -7,6 +7,7 @@ from dataclasses import dataclass, replace
 from ..api import options_for, statuses
 from ..engines import ENGINES
 from ..errors import UserError
+from ..keywords import repeats
 from ..plan import CONVERGED, compare_plan
 from ..request import Request
 from ..scene import DEFAULT_ANGLES
@@ -48,7 +49,7 @@ def from_dict(data, name="campaign"):
     data = validated(data, name)
     for key, items in data.items():
         if isinstance(items, list) and all(isinstance(i, (str, int, float)) for i in items):
-            repeated = sorted({str(i) for i in items if items.count(i) > 1})
+            repeated = repeats([str(item) for item in items])
             if repeated:
                 raise UserError(f"campaign {name}: {key} holds {', '.join(repeated)} more than once")
     variants = [(law, ()) for law in data.get("laws", [])]

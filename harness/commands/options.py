@@ -7,6 +7,7 @@ import re
 import sys
 
 from ..errors import UserError
+from ..keywords import repeats
 from ..files import refuse_unless_regular
 
 EXIT_OK, EXIT_DISAGREE, EXIT_USAGE, EXIT_ENGINE, EXIT_INTERNAL, EXIT_INTERRUPTED = 0, 1, 2, 3, 4, 130
@@ -82,7 +83,7 @@ def number_list(text):
     if any(part.strip() == "" for part in parts):
         return _empty(text)
     values = tuple(number(part) for part in parts)
-    repeated = sorted({v for v in values if values.count(v) > 1})
+    repeated = repeats(values)
     if repeated:
         raise argparse.ArgumentTypeError(f"{', '.join(f'{v:g}' for v in repeated)} given more than once: {text!r}")
     return values
