@@ -52,3 +52,14 @@ def test_limits_from_python_are_one_clear_error(keywords, words):
     its length, before it is copied)."""
     with pytest.raises(ValueError, match=words):
         harness.compare("thornton", **{"angles": [10.0], **keywords})
+
+
+def test_a_query_that_is_not_utf8_is_one_line_and_exit_2(tmp_path):
+    """issue 40.5: bytes of the command line that are not UTF-8 reach Python as surrogates; DuckDB took them for a
+    TypeError traceback (exit 4)."""
+    (tmp_path / "c.toml").write_text('laws = ["thornton"]\ne_n = [0.5]\nangles = [10.0]\n')
+    assert main(["campaign", str(tmp_path / "c.toml"), "-o", str(tmp_path / "store"), "--quiet"]) == 0
+    done = subprocess.run([sys.executable, "-m", "harness", "query", str(tmp_path / "store"), b"SELECT \xff\xfe"],
+                          capture_output=True, text=True)
+    assert done.returncode == 2 and done.stderr.strip().splitlines() == [
+        "harness: error: the query is not UTF-8 text (character 8)"], done.stderr
