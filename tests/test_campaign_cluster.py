@@ -125,6 +125,33 @@ def test_a_dask_campaign_leaves_nothing_in_tmpdir(tmp_path, dashboard_port_taken
     assert os.listdir(scratch) == []
 
 
+@pytest.fixture
+def nearly_full_tmpdir(tmp_path):
+    """A 64 KiB file system with one 4 KiB block left (root mounts it; a full TMPDIR), unmounted after."""
+    where = tmp_path / "full"
+    where.mkdir()
+    if os.geteuid() != 0 or subprocess.run(["mount", "-t", "tmpfs", "-o", "size=64k", "tmpfs", str(where)],
+                                           capture_output=True).returncode != 0:
+        pytest.skip("mounting a small file system needs root")
+    try:
+        room = os.statvfs(where)
+        (where / "fill").write_bytes(b"\0" * (room.f_bavail * room.f_frsize - 4096))
+        yield where
+    finally:
+        subprocess.run(["umount", "-l", str(where)], capture_output=True)
+
+
+def test_a_dask_campaign_with_a_full_tmpdir_is_one_line_and_exit_3(tmp_path, nearly_full_tmpdir):
+    (tmp_path / "c.toml").write_text(TOML)
+    done = subprocess.run([sys.executable, "-m", "harness", "campaign", str(tmp_path / "c.toml"), "-o",
+                           str(tmp_path / "store"), "--executor", "dask", "--workers", "1"],
+                          capture_output=True, text=True, timeout=300,
+                          env={**os.environ, "TMPDIR": str(nearly_full_tmpdir)})
+    assert done.returncode == 3, done.stderr
+    assert done.stderr.strip().count("\n") == 0 and "no space left" in done.stderr, done.stderr
+    assert sorted(os.listdir(nearly_full_tmpdir)) == ["fill"]
+
+
 def test_the_slurm_scheduler_speaks_tls_only_with_private_credentials_and_no_http(tmp_path):
     from distributed import Security
     shared, scratch = tmp_path / "shared", tmp_path / "scratch"

@@ -2,6 +2,7 @@
 scheduler, or SLURM: harness.campaign.clusters and .slurm). Every executor calls on_done(i, frame, log tail) as each
 task finishes, in whatever order they finish, with a bounded number of tasks in flight."""
 import contextlib
+import errno
 import logging
 import os
 import time
@@ -133,7 +134,7 @@ def executor(kind, workers=None, scheduler=None, scheduler_file=None, slurm=None
             accepted(cluster, scratch)
             cluster.adapt(minimum_jobs=0, maximum_jobs=slurm.get("jobs", 4))
         else:
-            cluster = local_cluster(workers_for(workers), scratch)
+            cluster = started(lambda: local_cluster(workers_for(workers), scratch), scratch)
         return OnDask(Client(cluster, set_as_default=False), cluster, cleanups(cluster, scratch))
     except BaseException:
         if cluster is not None:
@@ -143,6 +144,27 @@ def executor(kind, workers=None, scheduler=None, scheduler_file=None, slurm=None
         for cleanup in cleanups(cluster, scratch):
             cleanup()
         raise
+
+
+def started(start, scratch):
+    """A cluster `start` returns; one that fails for want of room in its scratch (a full TMPDIR, a quota) is
+    Unavailable in one line, not Dask's traceback."""
+    spec = logging.getLogger("distributed.deploy.spec")
+    level = spec.level
+    spec.setLevel(logging.ERROR)                     # its "closed without starting up" would be a second line
+    try:
+        return start()
+    except Exception as exc:
+        cause = exc
+        while cause is not None and not isinstance(cause, OSError):
+            cause = cause.__cause__ or cause.__context__
+        if cause is None or cause.errno not in (errno.ENOSPC, errno.EDQUOT):
+            raise
+        room = "no space left on the device" if cause.errno == errno.ENOSPC else "disk quota exceeded"
+        raise Unavailable(f"the Dask cluster could not start: {room} of its scratch directory "
+                          f"{os.path.dirname(scratch)} (TMPDIR); free some or point TMPDIR elsewhere") from None
+    finally:
+        spec.setLevel(level)
 
 
 def cleanups(cluster, scratch):
