@@ -1,4 +1,4 @@
-"""No command writes into the installed package (issue 40): each command's cheapest use, run from a scratch
+"""No command writes into the installed package: each command's cheapest use, run from a scratch
 directory, leaves every file of the package directory as it was (Python's own __pycache__ aside)."""
 import hashlib
 import os
@@ -26,6 +26,9 @@ COMMANDS = [
     ["paper", "--laws", "thornton", "--steps-per-contact", "100", "-o", "paper"],
     ["compile", "--laws", "thornton"],
     ["campaign", str(EXAMPLES / "campaign.toml"), "-o", "store", "--dry-run"],
+    ["campaign", "small.toml", "-o", "store"],
+    ["query", "store", "SELECT count(*) FROM results"],
+    ["benchmark", "chung-ooi", "--engines", "reference", "-o", "chung-ooi"],
     ["baseline", "--update", "--baseline", ""],
     ["check", "--baseline", ""],
 ]
@@ -43,10 +46,14 @@ def snapshot():
 
 @pytest.fixture(scope="module")
 def scratch(tmp_path_factory):
-    return tmp_path_factory.mktemp("scratch")
+    """A scratch working directory holding the smallest campaign (for campaign, then query on its store)."""
+    where = tmp_path_factory.mktemp("scratch")
+    (where / "small.toml").write_text('laws = ["thornton"]\nengines = ["reference"]\ne_n = [0.5]\nangles = [10]\n'
+                                      'steps_per_contact = [200]\n')
+    return where
 
 
-@pytest.mark.parametrize("argv", COMMANDS, ids=[a[0] for a in COMMANDS])
+@pytest.mark.parametrize("argv", COMMANDS, ids=[a[0] + (" --dry-run" if "--dry-run" in a else "") for a in COMMANDS])
 def test_no_command_writes_into_the_package(argv, scratch):
     before = snapshot()
     done = subprocess.run([sys.executable, "-m", "harness", *argv], cwd=scratch, capture_output=True, text=True,
