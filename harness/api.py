@@ -60,12 +60,18 @@ def calibrate_request(request, tolerances=None, timestep_tolerance=1e-2):
     if not engine.supports(request.law.name):
         raise UserError(f"{engine.NAME} has no counterpart of {request.law.name}")
     check_timestep_tolerance(timestep_tolerance)
+    from .engine_inputs import INPUT_OPTION
     fixed = options_for(request, engine.NAME)
+    yours = None
+    if INPUT_OPTION in fixed:              # --engine-input: the user's input is the stage before calibration
+        yours = input_records(request.law, scene, {engine: fixed})[engine.NAME]
+        yours["dialect"] = engine.dialect(request.law.name, fixed, "wall")
+        fixed = {k: v for k, v in fixed.items() if k != INPUT_OPTION}
     (status,) = statuses(request)
     if not status.available and status.reason != engine.status(request.law.name, fixed).reason:
         raise UserError(f"{engine.NAME} cannot be calibrated on this scene: {status.reason}")   # not a missing engine
     return run_calibration(engine, request.law, scene, int(request.resolution), tolerances or request.tolerances,
-                           timestep_tolerance, fixed=fixed)
+                           timestep_tolerance, fixed=fixed, yours=yours)
 
 
 def calibration_engine(names):

@@ -68,14 +68,16 @@ def compare(model, engines=None, engine_options=None, tolerances=None, engine_in
 
 
 @takes(SCENE, RESOLUTION, WITH, doc=SCENE_DOC + RESOLUTION_DOC)
-def calibrate(model, engine, tolerances=None, timestep_tolerance=1e-2, **keywords):
+def calibrate(model, engine, tolerances=None, timestep_tolerance=1e-2, engine_input=None, **keywords):
     """The engine inputs that make `engine` compute `model` nearest the paper law on a scene, confirmed by running
     the engine, and the time step that buys `timestep_tolerance` (harness calibrate): a Calibration, e.g.
-    calibrate("hertz-mindlin", "lammps", en=[0.25, 0.5], angles=[10, 30, 60])."""
+    calibrate("hertz-mindlin", "lammps", en=[0.25, 0.5], angles=[10, 30, 60]). engine_input: {engine: your own
+    input as it takes it} (--engine-input), the stage before calibration."""
     from .api import calibrate_request
     as_text("engine", engine)
     as_real("timestep_tolerance", timestep_tolerance)
-    request = Request.from_keywords(model, engines=[engine], tolerances=tolerances, **keywords)
+    request = Request.from_keywords(model, engines=[engine], tolerances=tolerances, engine_input=engine_input,
+                                    **keywords)
     return calibrate_request(request, request.tolerances, timestep_tolerance)
 
 

@@ -73,6 +73,7 @@ def calibrate_parser(sub, describe):
     p.add_argument("--engine", required=True, help=f"the engine to calibrate ({', '.join(EXTERNAL)}, or a build "
                                                     "ENGINE@VERSION)")
     add_scene_options(p)
+    add_engine_input(p)
     p.add_argument("--tolerance", dest="tolerances", action="append", default=[], metavar="NAME=VALUE",
                    help="a tolerance of the physics verdict before and after (as compare's)")
     p.add_argument("--timestep-tolerance", type=number, default=1e-2, metavar="X",
