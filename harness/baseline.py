@@ -1,6 +1,7 @@
 """Baselines: the expected rebound kinematics of a fixed matrix (every law through the reference and through each
 engine that supports it), committed under baselines/ and shipped with the package, and the regression check."""
 import os
+from dataclasses import replace
 from importlib.resources import files
 
 import numpy as np
@@ -21,7 +22,12 @@ MATRIX_EN = (0.9, 0.5, 0.1)
 MATRIX_ANGLES = (0.0, 30.0, 60.0)
 STEPS_PER_CONTACT = 200
 METRICS = ("v_n1", "v_t1", "omega1", "e_n", "e_t", "omega_star", "psi2_star", "t_contact", "f_n_max")
-KEYS = ["model", "engine", "dialect", "e_n_target", "theta_deg"]   # engine and dialect by code: lammps@2023.8.2.3 -> lammps
+KEYS = ["model", "engine", "dialect", "engine_input", "e_n_target", "theta_deg"]   # engine, dialect by code: lammps@X -> lammps
+INPUT_CASES = (     # (law, engine, a user's own input): rows recorded with the input verbatim and its composition
+    ("linear-spring-dashpot", "lammps", "hooke 1e7 45 damping velocity tangential linear_history 2.8e6 0.5 0.4"),
+    ("hertz-mindlin", "liggghts", "model hertz tangential history youngsModulus 7e10 poissonsRatio 0.3 "
+                                  "coefficientRestitution 0.5 coefficientFriction 0.4"),
+)
 # relative tolerance (floor 1e-9 of the metric's scale): the reference is deterministic; an engine build may move
 TOLERANCE = {"reference": 1e-9, "engine": 1e-6}
 
@@ -62,11 +68,33 @@ def compute(progress=None, cache=None, engines=None):
                 skipped.append(f"{engine_name} {name}: {status.reason}")
                 plan += reference_runs(law, scene, STEPS_PER_CONTACT, engine.dialect(name, {}))
         frame, failures = execute(plan, cache=cache)
-        frames.append(frame)
+        frames.append(frame.assign(engine_input="", composition=""))
         skipped += [f"{f.engine} {name} e_n={f.e_n}: {f.message}" for f in failures]
         if progress:
             progress.advance(name)
+    for name, code, text in INPUT_CASES:
+        frame, missed = input_case(builds[code], name, text, cache)
+        frames.append(frame)
+        skipped += missed
     return pd.concat(frames, ignore_index=True), skipped
+
+
+def input_case(engine, law_name, text, cache=None):
+    """The rows of a user's own input on the matrix's angles at its own e and mu: its dialect on the reference and
+    the engine where installed, each with the input verbatim and the neutral composition it maps to; (frame,
+    skipped)."""
+    from .engine_inputs import INPUT_OPTION, parse
+    options = {INPUT_OPTION: text}
+    law, scene = compose(law_name), replace(matrix_scene(), e_n=(0.5,), mu=parse(engine.code, text).mu)
+    dialect = engine.dialect(law_name, dict(options))
+    composition = "; ".join(f"{k} {v}" for k, v in dialect.describe().items())
+    status = engine.status(law_name)
+    plan = (engine_plan(engine, law, scene, STEPS_PER_CONTACT, options) if status.available else
+            reference_runs(law, scene, STEPS_PER_CONTACT, dialect))
+    frame, failures = execute(plan, cache=cache)
+    skipped = ([] if status.available else [f"{engine.code} {law_name} (input {text!r}): {status.reason}"])
+    skipped += [f"{f.engine} {law_name} (input {text!r}): {f.message}" for f in failures]
+    return frame.assign(engine_input=text, composition=composition), skipped
 
 
 def update(directory, progress=None, engines=None):
@@ -79,8 +107,10 @@ def update(directory, progress=None, engines=None):
 
 def by_code(frame):
     """The frame with each build's engine and dialect named by the engine's code (lammps@2023.8.2.3 -> lammps), so
-    that a baseline from one release is checked against another."""
-    return frame.assign(engine=frame.engine.str.partition("@")[0], dialect=frame.dialect.str.partition("@")[0])
+    that a baseline from one release is checked against another, and no engine input written as ''."""
+    given = frame.engine_input.fillna("").astype(str) if "engine_input" in frame else ""
+    return frame.assign(engine=frame.engine.str.partition("@")[0], dialect=frame.dialect.str.partition("@")[0],
+                        engine_input=given)
 
 
 def compare_to_baseline(baseline, now):

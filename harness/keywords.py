@@ -1,6 +1,7 @@
 """The Python API's keywords checked for type at the boundary, before any is used: a wrong type is one
 UserTypeError naming the keyword, a subnormal number (0 < |x| < 2.2e-308: digits lost, and whatever divides by it
 overflows) one UserError; values are judged later, by the request and the scene."""
+from collections import Counter
 from collections.abc import Mapping
 from functools import partial
 from numbers import Integral, Real
@@ -20,13 +21,24 @@ def _refuse(name, expected, value):
     raise UserTypeError(f"keyword {name} must be {expected}, got {type(value).__name__} {shown}")
 
 
+MAX_ITEMS = 100000          # numbers in one sweep list (the CLI's angle ranges take as many)
+
+
+def repeats(values):
+    """The items of `values` that occur more than once, sorted."""
+    return sorted(value for value, count in Counter(values).items() if count > 1)
+
+
 def _is_real(value):
     return isinstance(value, Real) and not isinstance(value, (bool, np.bool_))
 
 
 def _normal(name, value):
-    """`value` as a float, refused when subnormal (the CLI refuses the same at parsing)."""
-    value = float(value)
+    """`value` as a float, refused when subnormal or beyond a float's range (the CLI refuses the same at parsing)."""
+    try:
+        value = float(value)
+    except OverflowError:
+        raise UserError(f"{name} is beyond the range of a double ({sys.float_info.max:.3g})") from None
     if 0.0 < abs(value) < sys.float_info.min:
         raise UserError(f"{name} must be 0 or of normal size (at least {sys.float_info.min:.3g} in magnitude), "
                         f"got {value!r}")
@@ -49,10 +61,16 @@ def as_reals(name, value, optional=False):
     hint = f" (e.g. {name}=[{value!r}])" if _is_real(value) else ""
     if not isinstance(value, SEQUENCES) or (isinstance(value, np.ndarray) and value.ndim != 1):
         _refuse(name, "a list of numbers" + (" or None" if optional else "") + hint, value)
+    if len(value) > MAX_ITEMS:
+        raise UserError(f"{name} holds {len(value)} numbers; at most {MAX_ITEMS} are taken")
     items = list(value)
     if not all(_is_real(v) for v in items):
         _refuse(name, "a list of numbers", value)
-    return tuple(_normal(name, v) for v in items)
+    values = tuple(_normal(name, v) for v in items)
+    repeated = repeats(values)
+    if repeated:
+        raise UserError(f"{name}: {', '.join(f'{v:g}' for v in repeated)} given more than once")
+    return values
 
 
 def as_whole(name, value, optional=False):

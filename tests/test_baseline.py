@@ -60,3 +60,30 @@ def test_check_without_baseline_is_a_user_error(tmp_path):
     from harness.errors import UserError
     with pytest.raises(UserError, match="no baseline"):
         baseline.check(str(tmp_path))
+
+
+def test_the_baseline_records_each_input_verbatim_with_its_composition():
+    """The LAMMPS input's rows (hooke 1e7 with a velocity dashpot of 45) rebound at the damped oscillator's
+    e = exp(-pi zeta / sqrt(1 - zeta^2)), zeta = eta / (2 sqrt(k m)), m of the matrix's sphere, in the reference and
+    the engine alike."""
+    import math
+    frame = read_csv(REFERENCE / baseline.BASELINE_FILE)
+    law, code, text = baseline.INPUT_CASES[0]
+    rows = frame[frame.engine_input == text]
+    assert set(rows.model) == {law} and set(rows.dialect.str.partition("@")[0]) == {code}
+    assert {"reference", code} <= set(rows.engine.str.partition("@")[0])
+    assert set(rows.composition) == {rows.composition.iloc[0]} and "normal linear(k_n=1e+07)" in rows.composition.iloc[0]
+    radius, rho = rows.radius.iloc[0], rows.rho.iloc[0]
+    zeta = 45.0 / (2.0 * math.sqrt(1e7 * 4.0 / 3.0 * math.pi * radius ** 3 * rho))
+    assert abs(rows.e_n - math.exp(-math.pi * zeta / math.sqrt(1.0 - zeta ** 2))).max() < 1e-3
+    assert set(frame.engine_input.fillna("")) == {""} | {text for _, _, text in baseline.INPUT_CASES}
+
+
+def test_a_perturbed_input_row_is_named_with_its_input(now, tmp_path):
+    frame = read_csv(REFERENCE / baseline.BASELINE_FILE)
+    _, _, text = baseline.INPUT_CASES[1]
+    row = frame.index[(frame.engine_input == text) & (frame.engine == "reference") & (frame.theta_deg == 30.0)][0]
+    frame.loc[row, "v_t1"] *= 1.0 + 1e-7
+    write_csv(frame, tmp_path / baseline.BASELINE_FILE)
+    failures, _, _ = baseline.check(str(tmp_path), now=now)
+    assert len(failures) == 1 and failures.iloc[0].engine_input == text and failures.iloc[0].metric == "v_t1"

@@ -7,6 +7,7 @@ a Dask campaign starts outlives it in TMPDIR."""
 import gc
 import json
 import os
+import signal
 import socket
 import stat
 import subprocess
@@ -123,6 +124,33 @@ def test_a_dask_campaign_leaves_nothing_in_tmpdir(tmp_path, dashboard_port_taken
                           capture_output=True, text=True, timeout=300, env={**os.environ, "TMPDIR": str(scratch)})
     assert done.returncode == 0 and done.stderr == "", done.stderr
     assert os.listdir(scratch) == []
+
+
+@pytest.fixture
+def nearly_full_tmpdir(tmp_path):
+    """A 64 KiB file system with one 4 KiB block left (root mounts it; a full TMPDIR), unmounted after."""
+    where = tmp_path / "full"
+    where.mkdir()
+    if os.geteuid() != 0 or subprocess.run(["mount", "-t", "tmpfs", "-o", "size=64k", "tmpfs", str(where)],
+                                           capture_output=True).returncode != 0:
+        pytest.skip("mounting a small file system needs root")
+    try:
+        room = os.statvfs(where)
+        (where / "fill").write_bytes(b"\0" * (room.f_bavail * room.f_frsize - 4096))
+        yield where
+    finally:
+        subprocess.run(["umount", "-l", str(where)], capture_output=True)
+
+
+def test_a_dask_campaign_with_a_full_tmpdir_is_one_line_and_exit_3(tmp_path, nearly_full_tmpdir):
+    (tmp_path / "c.toml").write_text(TOML)
+    done = subprocess.run([sys.executable, "-m", "harness", "campaign", str(tmp_path / "c.toml"), "-o",
+                           str(tmp_path / "store"), "--executor", "dask", "--workers", "1"],
+                          capture_output=True, text=True, timeout=300,
+                          env={**os.environ, "TMPDIR": str(nearly_full_tmpdir)})
+    assert done.returncode == 3, done.stderr
+    assert done.stderr.strip().count("\n") == 0 and "no space left" in done.stderr, done.stderr
+    assert sorted(os.listdir(nearly_full_tmpdir)) == ["fill"]
 
 
 def test_the_slurm_scheduler_speaks_tls_only_with_private_credentials_and_no_http(tmp_path):
@@ -315,6 +343,76 @@ def test_a_job_script_slurm_refuses_is_one_line_exit_3_and_leaves_nothing(tmp_pa
     assert not [w for w in recwarn if "already in use" in str(w.message)]     # on stderr outside pytest
 
 
+STAND_IN_SBATCH = """[ "$1" = "--test-only" ] && exit 0
+echo "$$" >> "{log}"
+{submit}"""
+
+
+def stand_in_slurm(tmp_path, monkeypatch, submit):
+    """A SLURM whose sbatch takes the job script (--test-only) and then submits with `submit` (shell), logging
+    each submission's process id (`submit` may log more, to {log}); returns the log's path."""
+    bin_dir, log = tmp_path / "bin", tmp_path / "submitted.log"
+    bin_dir.mkdir()
+    fake_executable(bin_dir, STAND_IN_SBATCH.format(log=log, submit=submit.format(log=log)), "sbatch")
+    fake_executable(bin_dir, "exit 0", "scancel")
+    monkeypatch.setenv("PATH", f"{bin_dir}:{os.environ['PATH']}")
+    return log
+
+
+@pytest.mark.parametrize("submit, words", [
+    ("exit 0", "sbatch printed no job id (it printed nothing"),
+    ("echo 'sbatch: job accepted'", "sbatch printed no job id (its last line: 'sbatch: job accepted'"),
+    ("echo 'sbatch: error: Batch job submission failed: QOS limit' >&2; exit 1",
+     "SLURM did not take a job: sbatch: error: Batch job submission failed: QOS limit"),
+])
+def test_a_slurm_that_takes_no_job_ends_in_one_line_with_its_words_and_leaves_nothing(
+        tmp_path, capfd, monkeypatch, dashboard_port_taken, submit, words):
+    """sbatch accepts the script, then prints no job id (or fails): the campaign stops at its first submission, in
+    one line with what sbatch said, exit 3, its scheduler closed and nothing left, rather than retrying for ever."""
+    log = stand_in_slurm(tmp_path, monkeypatch, submit)
+    args = campaign_args(tmp_path, "--executor", "dask", "--slurm", "queue=debug")
+    before, listening = sorted(os.listdir(tmp_path)) + ["submitted.log"], listeners(os.getpid())
+    one_line(within(120, lambda: main(args)), capfd, tmp_path, before, words, exit_code=3)
+    assert len(log.read_text().split()) >= 1                # the premise: a job was submitted
+    assert listeners(os.getpid()) <= listening              # the scheduler does not listen any more
+
+
+def test_sigterm_while_sbatch_does_not_answer_ends_harness_at_once_with_nothing_left(tmp_path, monkeypatch):
+    """sbatch hangs on submitting: SIGTERM ends the campaign within seconds (exit 143, one line), sbatch and what it
+    started killed, the store directory it made removed."""
+    log = stand_in_slurm(tmp_path, monkeypatch, 'sleep 300 & echo "$!" >> "{log}"; wait')
+    from conftest import interruptible
+    proc = subprocess.Popen([sys.executable, "-m", "harness", *campaign_args(tmp_path, "--executor", "dask",
+                                                                           "--slurm", "queue=debug")],
+                            cwd=tmp_path, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            preexec_fn=interruptible)
+    try:
+        waited = 0.0
+        while not (log.exists() and len(log.read_text().split()) == 2) and waited < 120 and proc.poll() is None:
+            threading.Event().wait(0.2)
+            waited += 0.2
+        submitted = [int(pid) for pid in log.read_text().split()]      # sbatch, and what it started
+        assert all(map(alive, submitted))                  # the premise: sbatch is still submitting
+        proc.send_signal(15)
+        out, err = proc.communicate(timeout=15)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.communicate()
+    lines = err.strip().splitlines()
+    assert proc.returncode == 143 and len(lines) == 1 and lines[0].startswith("harness: terminated"), err
+    assert not any(map(alive, submitted))
+    assert not (tmp_path / "store").exists()
+
+
+def alive(pid):
+    """A process with this id runs (a zombie has ended)."""
+    try:
+        return psutil.Process(pid).status() != psutil.STATUS_ZOMBIE
+    except psutil.NoSuchProcess:
+        return False
+
+
 def test_a_store_path_with_an_empty_component_is_refused(tmp_path, capfd):
     """-o /scratch/$USER/store with USER unset."""
     (tmp_path / "c.toml").write_text(TOML)
@@ -334,6 +432,12 @@ def test_the_printed_job_script_leaves_no_credentials_behind(tmp_path, capfd, mo
     assert os.listdir(tmp_path) == ["c.toml"]
 
 
+def ctrl_c_as_a_terminal_gives_it():
+    """SIGINT at its default in the child, as a shell starts harness: a test runner's worker may ignore it, and
+    Python started with SIGINT ignored keeps it ignored (whatever harness does)."""
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
+
+
 def test_dask_jobqueue_leaves_ctrl_c_to_harness():
     """dask-jobqueue's runner sets SIGINT to sys.exit() on import: Ctrl-C would end a campaign with status 0 and no
     word. Imported by harness, from a thread first (where setting a handler fails), the handler is Python's."""
@@ -344,5 +448,6 @@ def test_dask_jobqueue_leaves_ctrl_c_to_harness():
             "slurm_cluster_class()\n"
             "assert signal.getsignal(signal.SIGINT) is signal.default_int_handler, signal.getsignal(signal.SIGINT)\n"
             "print('kept')")
-    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120,
+                          preexec_fn=ctrl_c_as_a_terminal_gives_it)
     assert done.returncode == 0 and done.stdout.strip() == "kept" and "Traceback" not in done.stderr, done.stderr

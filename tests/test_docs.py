@@ -37,7 +37,7 @@ LONG = {   # command as shown (without .venv/bin/) -> why it does not run here
                      "(tests/test_report_browser.py opens the report in chromium)",
     "python -m harness.submodels.generate": "rewrites harness/solver/dispatch.py (tests/test_registry.py holds the "
                      "committed file to what it generates)",
-    "harness baseline --update": "rewrites the committed baseline on purpose, running every engine "
+    "harness baseline --update --baseline baselines": "rewrites the committed baseline on purpose, running every engine "
                                  "(tests/test_engine_builds.py updates one in a temporary directory)",
     "harness cost --model hertz-mindlin --verbose": "a cost study with every engine: minutes (tests/test_cost.py)",
     "python benchmarks/bench_commands.py": "times the commands cold and warm, several times each: minutes "
@@ -306,7 +306,10 @@ def catalogue_sizes():
     import test_campaign_cluster as cluster
     import test_campaign_file as campaign_file
     import test_campaign_store as store
+    import test_exit_words as exit_words
+    import test_package_untouched as untouched
     import test_query as query
+    import test_working_directory as working_directory
     return {
         "cli": len(cli.CATALOGUE),
         "damaged": total(cli, "test_report_refuses_a_damaged_directory_in_one_line") + total(
@@ -337,6 +340,9 @@ def catalogue_sizes():
                          "test_a_job_script_slurm_refuses_is_one_line_exit_3_and_leaves_nothing",
                          "test_a_store_path_with_an_empty_component_is_refused")
         + 3,                                           # the unreachable scheduler's test runs four schedulers
+        "exit words": total(exit_words, *(name for name in dir(exit_words) if name.startswith("test_"))),
+        "planted": len(working_directory.NAMES),
+        "untouched": len(untouched.COMMANDS),
     }
 
 
@@ -351,6 +357,15 @@ QUOTED = [   # (doc, the sentence with the count as {}, catalogue)
     ("user-guide.md", "{} of hostile or oversized query", "queries"),
     ("user-guide.md", "({} attacks refused", "attacks"),
     ("user-guide.md", "{} of bad cluster options", "cluster"),
+    ("user-guide.md", "under any of {} names harness", "planted"),
+    ("user-guide.md", "{} commands run from a scratch directory", "untouched"),
+    ("user-guide.md", "{} kinds of malformed engine selector", "exit words"),
+    ("../README.md", "{} kinds of bad input on the command line", "cli"),
+    ("../README.md", "{} kinds of damaged results directory", "damaged"),
+    ("../README.md", "{} kinds of occupied output", "occupied"),
+    ("../README.md", "{} kinds of malformed engine selector", "exit words"),
+    ("../README.md", "under any of {} names harness", "planted"),
+    ("../README.md", "{} commands leave every file of the installed package", "untouched"),
     ("testing.md", "({} kinds by category through `run`", "cli"),
     ("testing.md", "{} kinds of occupied output", "occupied"),
     ("testing.md", "({} kinds of keyword of the wrong type", "types"),

@@ -428,9 +428,10 @@ def test_ctrl_c_inside_the_compiled_kernel_stops_at_once_and_says_nothing_was_wr
 
 def test_ctrl_c_while_the_measurements_beside_the_engines_run_exits_at_once(tmp_path):
     """What runs beside the engines (attribution, sliding threshold, histories; compiling on a first run) must not
-    hold harness after Ctrl-C: made to take a minute here, the interrupted compare still ends within seconds."""
+    hold harness after Ctrl-C: made to take ten minutes here, the interrupted compare still ends within a minute
+    even under load (a wait for the measurements would take the ten minutes)."""
     code = ("import sys, time, harness.api as api\n"
-            "api.measurements = lambda *a: time.sleep(60)\n"
+            "api.measurements = lambda *a: time.sleep(600)\n"
             "from harness.commands import main\n"
             f"sys.exit(main(['compare', '--model', 'hertz-mindlin', '--en', '0.5', '--angles', '10', '--engines', "
             f"'reference', '-o', {str(tmp_path / 'out')!r}]))\n")
@@ -443,8 +444,13 @@ def test_ctrl_c_while_the_measurements_beside_the_engines_run_exits_at_once(tmp_
     time.sleep(0.5)
     stopped = time.perf_counter()
     proc.send_signal(signal.SIGINT)
-    _, err = proc.communicate(timeout=30)
-    assert time.perf_counter() - stopped < 10.0 and proc.returncode == 130, err      # seconds, not the minute
+    try:
+        _, err = proc.communicate(timeout=120)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.communicate()
+    assert time.perf_counter() - stopped < 60.0 and proc.returncode == 130, err      # not the ten minutes
 
 
 # --- an interrupt at a rename ----------------------------------------------------------------------------------------

@@ -160,12 +160,12 @@ def answers(cost):
     return out
 
 
-def notes(answers, tolerances=TOLERANCES, verdict_only=False):
+def notes(answered, tolerances=TOLERANCES, verdict_only=False):
     """The sentences of the answers not plainly measured on a curve's own rungs, one per curve and sentence with
     the tolerances it answers: 'lammps 1% and 0.1%: 524288 steps/contact measured ...'; `verdict_only`: the curves
     of the verdict (the paper scheme and the engines)."""
     out = []
-    for (engine, dialect), per_tol in answers.items():
+    for (engine, dialect), per_tol in answered.items():
         if verdict_only and engine == "reference" and dialect != "paper":
             continue
         name = engine if engine != "reference" else ("the paper scheme" if dialect == "paper"
@@ -193,15 +193,15 @@ def steps_text(steps, how):
     return f"{steps:.0f}{mark}" if how == "formulas" else f"{mark}{steps:.0f}"
 
 
-def recommendations(cost, found=None):
+def recommendations(cost, answered=None):
     """Per curve (engine, dialect) and tolerance: the time step and steps per contact of its Answer, how it was
     found, and the time per impact there (impact-steps per impact x the curve's time per impact-step); the error a
     time step of 20% of the Rayleigh time gives."""
-    found = answers(cost) if found is None else found
+    answered = answers(cost) if answered is None else answered
     times = step_times(cost).set_index(["engine", "dialect"]).s_per_impact_step
     times = times[~times.index.duplicated()]
     out = []
-    for (engine, dialect), per_tol in answers.items():
+    for (engine, dialect), per_tol in answered.items():
         row = {"engine": engine, "dialect": dialect}
         step_s = times.get((engine, dialect), np.nan)
         for tol, a in per_tol.items():

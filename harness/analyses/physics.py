@@ -19,6 +19,8 @@ MARGINAL_SHARE = 0.1       # and at most this share of the impacts fails it; els
 CHECK_WORDS = {"velocity": "rebound velocity", "e_n": "normal restitution", "coulomb": "Coulomb impulse bound",
                "energy": "energy"}
 
+SMALLEST_TOLERANCE = 1e-12        # a tolerance below what double precision resolves in these quantities
+
 
 @dataclass(frozen=True)
 class Tolerances:
@@ -45,8 +47,9 @@ class Tolerances:
                 number = float(value)
             except (TypeError, ValueError):
                 raise UserError(f"--tolerance {name} must be a number, got {value!r}") from None
-            if not (math.isfinite(number) and 0.0 <= number < 1e3):
-                raise UserError(f"--tolerance {name} must lie in [0, 1000), got {value!r}")
+            if not (math.isfinite(number) and SMALLEST_TOLERANCE <= number < 1e3):
+                raise UserError(f"--tolerance {name} must lie in [{SMALLEST_TOLERANCE:g}, 1000) (below, double "
+                                f"precision's round-off decides), got {value!r}")
             values[name] = number
         return cls(**values)
 

@@ -20,6 +20,7 @@ from .timestep import FINE, advise
 from .typed import typed
 
 GIVEN, CALIBRATED, RUN = "formulas, e as given", "formulas, calibrated", "engine, calibrated"
+YOURS = "your input"                   # the stage before calibration when the user gave their own (--engine-input)
 SPEEDS, RADII = (0.5, 1.0, 2.0), (0.5, 1.0, 2.0)       # the scene's speed and radius times these: the variation
 
 
@@ -49,6 +50,7 @@ class Calibration:
     skipped: str = ""                   # why the engine did not run, when it did not
     version: str = ""                   # of the engine build calibrated
     rule: str = RULE                    # how the choice was made from the choices' prices
+    yours: dict | None = None           # the user's own input (--engine-input): text, composition, flags
 
     @property
     def alternatives(self):
@@ -62,9 +64,12 @@ class Calibration:
                 + "\n .inputs .stages .physics .advice .confirmed .variation>")
 
 
-def calibrate(engine, law, scene, steps=1000, tolerances=None, timestep_tolerance=1e-2, run_engine=True, fixed=None):
+def calibrate(engine, law, scene, steps=1000, tolerances=None, timestep_tolerance=1e-2, run_engine=True, fixed=None,
+              yours=None):
     """Calibrate `engine` (an Engine) for `law` on `scene` (angles or tangential speeds; one e_n per target), each
-    choice of its options with the options `fixed` (a --with's); targets no choice reaches are refused first."""
+    choice of its options with the options `fixed` (a --with's); targets no choice reaches are refused first. With
+    `yours` (the user's own input: text, composition, flags and its `dialect`), the stage before calibration is that
+    input as written, at every target, in place of the engine's formulas with e as given."""
     tolerances = Tolerances.of(tolerances)
     target = "sphere" if scene.spheres else "wall"
     searched = engine.restitution_inputs(law.name)
@@ -74,7 +79,8 @@ def calibrate(engine, law, scene, steps=1000, tolerances=None, timestep_toleranc
     version = engine.version() if status.available else ""
     refuse_unreachable(scene.e_n, ends, searched, f"{engine.code} {version}".strip(), law.name, scene, steps)
     paper = simulate(law, scene, steps_per_contact=steps)[0]
-    given = as_given(choices[0][1], scene, steps, GIVEN)
+    before = YOURS if yours else GIVEN
+    given = as_given(yours["dialect"] if yours else choices[0][1], scene, steps, before)
     table, chosen = choose(engine, law, scene, steps, tolerances, paper, choices, ends, searched)
     frame = pd.concat([paper, given, chosen.rows], ignore_index=True)
     remaining, remaining_rows = attribute(law, chosen.dialect, scene,
@@ -92,13 +98,14 @@ def calibrate(engine, law, scene, steps=1000, tolerances=None, timestep_toleranc
             confirmed = confirm(engine, law, scene, chosen, advice, failures)
     elif run_engine:
         skipped = status.reason
-    stages = [GIVEN, CALIBRATED] + ([RUN] if (frame.engine == RUN).any() else [])
-    physics = {s: engine_physics(frame, s, tolerances, None if s == GIVEN else remaining, scene.gravity,
-                                 None if s == GIVEN else remaining_rows) for s in stages}
+    stages = [before, CALIBRATED] + ([RUN] if (frame.engine == RUN).any() else [])
+    physics = {s: engine_physics(frame, s, tolerances, None if s == before else remaining, scene.gravity,
+                                 None if s == before else remaining_rows) for s in stages}
     return Calibration(engine.NAME, law, scene, steps, tolerances, timestep_tolerance, frame, table, chosen,
                        inputs_table(chosen), to_type, stage_table(frame, stages, scene.gravity), physics, remaining,
                        agreement, advice, confirmed, variation(chosen.dialect, scene, steps, searched),
-                       refused(engine, law.name, target), failures, skipped, version)
+                       refused(engine, law.name, target), failures, skipped, version,
+                       yours={k: v for k, v in yours.items() if k != "dialect"} if yours else None)
 
 
 def choose(engine, law, scene, steps, tolerances, paper, choices, ends, searched):

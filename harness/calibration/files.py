@@ -22,12 +22,13 @@ TABLES = ("results", "inputs", "alternatives", "stages", "attribution", "timeste
 
 def record_of(calibration):
     """The calibration as JSON data: the engine, its options and inputs (with what its contact lines set, and the
-    lines), the scene, the step and the advice."""
+    lines), the user's own input it started from (verbatim, with its composition), the scene, the step and the
+    advice."""
     advice = calibration.advice
     return {"model": calibration.law.name, "engine": calibration.engine, "version": calibration.version,
             "options": calibration.chosen.options, "steps_per_contact": calibration.steps,
             "scene": {k: v for k, v in asdict(calibration.scene).items() if k != "extra"},
-            "inputs": inputs_of(calibration),
+            "inputs": inputs_of(calibration), "your_input": calibration.yours,
             "timestep": {"tolerance": advice.tolerance, "steps_per_contact": advice.steps, "dt_s": advice.dt,
                          "rayleigh_s": advice.rayleigh_s, "fraction_of_rayleigh": advice.fraction_of_rayleigh,
                          "confirmed": calibration.confirmed}}
@@ -62,7 +63,8 @@ def summary(calibration, files, exit_code):
     c = calibration
     record = record_of(c)
     return {"model": c.law.name, "engine": c.engine, "version": c.version, "options": c.chosen.options,
-            "steps_per_contact": c.steps, "inputs": record["inputs"], "rule": c.rule, "choices": c.choices,
+            "steps_per_contact": c.steps, "inputs": record["inputs"], "your_input": c.yours, "rule": c.rule,
+            "choices": c.choices,
             "refused_options": [{"option": name, "reason": why} for name, why in c.refused],
             "physics": {stage: {"state": p["state"], "failing": p["failing"], "reason": p["reason"]}
                         for stage, p in c.physics.items()},

@@ -2,16 +2,19 @@
 scheduler, or SLURM: harness.campaign.clusters and .slurm). Every executor calls on_done(i, frame, log tail) as each
 task finishes, in whatever order they finish, with a bounded number of tasks in flight."""
 import contextlib
+import errno
 import logging
 import os
+import time
 
 from ..engines import ENGINES
 from ..errors import UserError
-from .clusters import address_in, connect, local_cluster, remove, scratch_directory
+from .clusters import Unavailable, address_in, connect, local_cluster, remove, scratch_directory
 from .limits import max_workers
-from .slurm import accepted, forget_credentials, slurm_cluster
+from .slurm import accepted, failure, forget_credentials, slurm_cluster, stop_submissions
 
 log = logging.getLogger("harness")
+POLL_S = 0.1            # how often the wait for finished tasks looks whether the cluster can start no worker
 
 
 def run_task(run):
@@ -45,6 +48,7 @@ class OnDask:
         from distributed.gc import disable_gc_diagnosis
         disable_gc_diagnosis(force=True)
         self.client, self.cluster, self.cleanups = client, cluster, tuple(cleanups)
+        self.closed = False
 
     @property
     def workers(self):
@@ -63,7 +67,7 @@ class OnDask:
                 window.add(future)
         submit(max(2, 2 * self.workers))
         try:
-            for future in window:
+            for future in self.finished(window):
                 frame, log_tail = future.result()
                 on_done(index.pop(future.key), frame, log_tail)
                 future.release()
@@ -73,9 +77,25 @@ class OnDask:
                 future.cancel()
             raise
 
+    def finished(self, window):
+        """The futures of `window` as each finishes; Unavailable as soon as a job SLURM did not take leaves the
+        cluster without a worker, rather than a wait for workers that never come."""
+        while not window.is_empty():
+            while not window.has_ready():
+                reason = failure(self.cluster)
+                if reason and not self.client.scheduler_info().get("workers"):
+                    raise Unavailable(reason)
+                time.sleep(POLL_S)
+            yield next(window)
+
     def close(self):
         """Close the client, then the cluster, then remove what harness made for them; a failure to close (a
-        cluster that cannot cancel its jobs) is said in one line and does not hide what stopped the campaign."""
+        cluster that cannot cancel its jobs) is said in one line and does not hide what stopped the campaign; a
+        second call does nothing."""
+        if self.closed:
+            return
+        self.closed = True
+        stop_submissions(self.cluster)
         for what, close in (("client", self.client.close), ("cluster", getattr(self.cluster, "close", None))):
             if close is None:
                 continue
@@ -114,15 +134,37 @@ def executor(kind, workers=None, scheduler=None, scheduler_file=None, slurm=None
             accepted(cluster, scratch)
             cluster.adapt(minimum_jobs=0, maximum_jobs=slurm.get("jobs", 4))
         else:
-            cluster = local_cluster(workers_for(workers), scratch)
+            cluster = started(lambda: local_cluster(workers_for(workers), scratch), scratch)
         return OnDask(Client(cluster, set_as_default=False), cluster, cleanups(cluster, scratch))
     except BaseException:
         if cluster is not None:
+            stop_submissions(cluster)
             with contextlib.suppress(Exception):
                 cluster.close()
         for cleanup in cleanups(cluster, scratch):
             cleanup()
         raise
+
+
+def started(start, scratch):
+    """A cluster `start` returns; one that fails for want of room in its scratch (a full TMPDIR, a quota) is
+    Unavailable in one line, not Dask's traceback."""
+    spec = logging.getLogger("distributed.deploy.spec")
+    level = spec.level
+    spec.setLevel(logging.ERROR)                     # its "closed without starting up" would be a second line
+    try:
+        return start()
+    except Exception as exc:
+        cause = exc
+        while cause is not None and not isinstance(cause, OSError):
+            cause = cause.__cause__ or cause.__context__
+        if cause is None or cause.errno not in (errno.ENOSPC, errno.EDQUOT):
+            raise
+        room = "no space left on the device" if cause.errno == errno.ENOSPC else "disk quota exceeded"
+        raise Unavailable(f"the Dask cluster could not start: {room} of its scratch directory "
+                          f"{os.path.dirname(scratch)} (TMPDIR); free some or point TMPDIR elsewhere") from None
+    finally:
+        spec.setLevel(level)
 
 
 def cleanups(cluster, scratch):

@@ -38,8 +38,14 @@ BATCH = 4096                      # rows read from DuckDB at a time
 def statement(sql):
     """The one SELECT statement of `sql`; UserError for none, several, or any other kind."""
     import duckdb
+    if not isinstance(sql, str):
+        raise UserError(f"the query must be text, got {type(sql).__name__}")
     if len(sql.encode("utf-8", "replace")) > MAX_QUERY_BYTES:
         raise UserError(f"the query is longer than {MAX_QUERY_BYTES} bytes")
+    try:
+        sql.encode("utf-8")
+    except UnicodeEncodeError as exc:       # bytes of the command line that are not UTF-8
+        raise UserError(f"the query is not UTF-8 text (character {exc.start + 1})") from None
     try:
         found = duckdb.extract_statements(sql)
     except duckdb.Error as exc:

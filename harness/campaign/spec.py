@@ -7,6 +7,7 @@ from dataclasses import dataclass, replace
 from ..api import options_for, statuses
 from ..engines import ENGINES
 from ..errors import UserError
+from ..keywords import repeats
 from ..plan import CONVERGED, compare_plan, specs_of
 from ..request import Request
 from ..scene import DEFAULT_ANGLES
@@ -46,6 +47,11 @@ def load(path):
 def from_dict(data, name="campaign"):
     """Campaign of the file's table, checked against the schema and the task limit before anything is built."""
     data = validated(data, name)
+    for key, items in data.items():
+        if isinstance(items, list) and all(isinstance(i, (str, int, float)) for i in items):
+            repeated = repeats([str(item) for item in items])
+            if repeated:
+                raise UserError(f"campaign {name}: {key} holds {', '.join(repeated)} more than once")
     variants = [(law, ()) for law in data.get("laws", [])]
     variants += [(v["law"], tuple(sorted(v.get("with", {}).items()))) for v in data.get("variants", [])]
     if not variants:
@@ -76,6 +82,7 @@ def from_dict(data, name="campaign"):
                         f"targets x speeds x spins x resolutions x e_n x runs per engine); at most {MAX_TASKS} are "
                         "taken: split the campaign")
     options = {engine: dict(o) for engine, o in data.get("engine_options", {}).items()}
+    inputs = dict(data.get("engine_inputs", {})) or None
     requests = []
     for (law, overrides), material, scene, speed, spin, resolution in itertools.product(
             variants, materials, scenes, speeds, spins, resolutions):
@@ -83,7 +90,7 @@ def from_dict(data, name="campaign"):
         if speed is not None:
             keywords[speed[0]] = speed[1]
         requests.append(Request.from_keywords(law, engines=list(engines), engine_options=options, with_=overrides,
-                                              **keywords))
+                                              engine_input=inputs, **keywords))
     return Campaign(data.get("name", name), tuple(requests), engines, block)
 
 

@@ -7,6 +7,7 @@ import sys
 import time
 
 from ..errors import EngineMissing, UserError
+from ..programs import absolute_path
 from ..version import __version__
 from .options import EXIT_CODES, EXIT_ENGINE, EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_USAGE, Parser
 from .stopping import Stopped, stop_behind, stop_on_signals
@@ -30,6 +31,8 @@ COMMANDS = {   # name -> (its module, its summary): the parser lists every comma
                                "the engines: every quantity against its closed form"),
     "compile": ("compile", "compile every kernel the commands use into the numba cache now, so that no first run "
                            "waits for it"),
+    "explain": ("explain", "what your own engine input computes: achieved e_n, e_t, Omega* and contact time, the "
+                           "paper law it is nearest, the same law in other inputs, and calibrate's advice"),
     "render": ("render", "write an engine's input deck/script for the scene without running it"),
     "report": ("report", "rebuild DIR/report.html from a compare or cost directory, simulating nothing"),
     "check": ("check", "recompute the baseline matrix; exit 1 listing every metric outside tolerance"),
@@ -140,14 +143,19 @@ def main(argv=None):
     """Parse, run one command, return its exit code; a user's mistake is one line and 2, Ctrl-C is 130, a closed
     output ends it quietly with 141 (128 + SIGPIPE, as a shell reports a Unix tool stopped by its closed pipe)."""
     args, since = None, time.time() - 1.0
+    if sys.stdout is None:          # started with stdout closed (`harness cite >&-`): what it says would be lost
+        if sys.stderr is not None:
+            print("harness: error: stdout is closed: what harness says would be lost", file=sys.stderr)
+        return EXIT_USAGE
     raise_lost_stop, restore_signals = stop_on_signals()
     try:
-        argv = sys.argv[1:] if argv is None else argv
-        args = build_parser({chosen_command(argv)}).parse_args(argv)
-        from ..engines.runner import sweep_stale
-        sweep_stale()
-        show_log(quiet=getattr(args, "quiet", False))
-        code = args.func(args)
+        with absolute_path():           # for the programs libraries run by name: none from the working directory
+            argv = sys.argv[1:] if argv is None else argv
+            args = build_parser({chosen_command(argv)}).parse_args(argv)
+            from ..engines.runner import sweep_stale
+            sweep_stale()
+            show_log(quiet=getattr(args, "quiet", False))
+            code = args.func(args)
         raise_lost_stop()               # a stop lost in the command's last moments, before its timer raised it
         return code
     except KeyboardInterrupt as exc:

@@ -3,6 +3,7 @@ content-addressed Parquet store that a rerun resumes; `--dry-run` says what it w
 import os
 import sys
 import tempfile
+from contextlib import closing
 
 from ..campaign.clusters import Unavailable, remove
 from ..campaign.driver import dry_run, run_campaign
@@ -44,7 +45,8 @@ def main(args):
                                                   quiet=args.quiet or args.json) as progress:
                 store = Store(args.output)              # again, now that this process is its only writer
                 where = where or executor(args.executor, args.workers, slurm=slurm, shared=args.output)
-                summary = run_campaign(campaign, store, where, args.no_cache, progress)
+                with closing(where):        # before the lock goes: the cluster's files in the store go first
+                    summary = run_campaign(campaign, store, where, args.no_cache, progress)
                 table = store.table()
                 page = write_campaign_report(table, report_path, campaign.name, page_data(store, table),
                                              args.output)

@@ -29,8 +29,15 @@ def unexplained(failures, engine):
     return sorted(ran - dialect)
 
 
+def named_baseline(value):
+    """The --baseline directory as given; an empty value is refused rather than read as the working directory."""
+    if value is not None and not value.strip():
+        raise UserError("--baseline is empty: name a baseline directory")
+    return value
+
+
 def main(args):
-    engines, baseline = pins(args), args.baseline or DEFAULT_BASELINE
+    engines, baseline = pins(args), named_baseline(args.baseline) or DEFAULT_BASELINE
     with Progress("check", quiet=args.quiet or args.json) as progress:
         cache = RunCache(Store(args.store, drop_damaged=args.drop_damaged)) if args.store else None
         failures, skipped, releases = check(baseline, progress=progress, cache=cache, engines=engines)
@@ -62,7 +69,10 @@ def main(args):
 def main_update(args):
     if not args.update:
         raise UserError("baseline rewrites the committed expectations only with --update")
-    baseline = args.baseline or DEFAULT_BASELINE
+    baseline = named_baseline(args.baseline)
+    if baseline is None:
+        raise UserError("baseline --update writes only where --baseline names a directory (the committed one in a "
+                        "checkout: --baseline baselines)")
     with Progress("baseline", quiet=args.quiet) as progress:
         frame, skipped = update(baseline, progress=progress, engines=pins(args))
     if not args.quiet:

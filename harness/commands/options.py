@@ -7,6 +7,7 @@ import re
 import sys
 
 from ..errors import UserError
+from ..keywords import repeats
 from ..files import refuse_unless_regular
 
 EXIT_OK, EXIT_DISAGREE, EXIT_USAGE, EXIT_ENGINE, EXIT_INTERNAL, EXIT_INTERRUPTED = 0, 1, 2, 3, 4, 130
@@ -44,6 +45,22 @@ class Parser(argparse.ArgumentParser):
     def error(self, message):
         raise UserError(message)
 
+    def parse_known_args(self, args=None, namespace=None):
+        """As argparse, but an option that takes one value given twice is refused (argparse keeps the last)."""
+        args = list(sys.argv[1:] if args is None else args)
+        seen = set()
+        for word in args:
+            if word == "--":
+                break
+            action = self._option_string_actions.get(word.split("=", 1)[0]) if word.startswith("--") else None
+            if action is None or isinstance(action, (argparse._AppendAction, argparse._CountAction,
+                                                     argparse._SubParsersAction)):
+                continue
+            if action.dest in seen:
+                self.error(f"{word.split('=', 1)[0]} given more than once")
+            seen.add(action.dest)
+        return super().parse_known_args(args, namespace)
+
 
 def number(text):
     """A finite float of normal size (the scene validates ranges): a subnormal one (0 < |x| < 2.2e-308) has lost
@@ -65,7 +82,11 @@ def number_list(text):
     parts = text.split(",")
     if any(part.strip() == "" for part in parts):
         return _empty(text)
-    return tuple(number(part) for part in parts)
+    values = tuple(number(part) for part in parts)
+    repeated = repeats(values)
+    if repeated:
+        raise argparse.ArgumentTypeError(f"{', '.join(f'{v:g}' for v in repeated)} given more than once: {text!r}")
+    return values
 
 
 def _empty(text):
@@ -188,6 +209,15 @@ def add_engine_options(parser):
                              "the law; `reference` alone runs the reference solver only)")
     parser.add_argument("--engine-option", dest="engine_options", type=engine_option, action="append", default=[],
                         metavar="ENGINE:KEY=VALUE", help=f"an engine's option, repeatable: {declared}")
+    add_engine_input(parser)
+
+
+def add_engine_input(parser):
+    """--engine-input ENGINE=TEXT (harness.engine_inputs)."""
+    parser.add_argument("--engine-input", dest="engine_inputs", action="append", default=[], metavar="ENGINE=TEXT",
+                        help="your own contact input as the engine takes it, repeatable: lammps='hooke 1e6 0.5 "
+                             "tangential linear_history 2.8e5 0.5 0.4' (the words after pair_coeff * *, or a "
+                             "classic style and its arguments), or ENGINE=@FILE (the contact lines of a deck)")
 
 
 def engines_from(text):
@@ -215,6 +245,8 @@ def keywords(args, resolution=True):
         out.update(steps_per_contact=args.steps_per_contact, dt=args.dt, converged=args.converged)
     if hasattr(args, "engines"):
         out.update(engines=engines_from(args.engines), engine_options=args.engine_options)
+    if getattr(args, "engine_inputs", None):
+        out.update(engine_input=args.engine_inputs)
     return out
 
 

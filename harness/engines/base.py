@@ -4,11 +4,11 @@ and declares every hook a command uses; an engine is a subclass that overrides w
 import copy
 import dataclasses
 import os
-import shutil
 import sys
 from functools import lru_cache
 
 from ..errors import UserError
+from ..programs import which
 from .builds import sha256
 from .executable import banner, chosen, missing, present
 from .protocol import InputRange, Status, check_options as check_declared
@@ -88,12 +88,12 @@ class Engine:
 
     def executable_file(self):
         """The file whose content is the engine (hashed into every result): the binary itself."""
-        return shutil.which(self.binary()) or self.binary()
+        return which(self.binary()) or self.binary()
 
     def build(self):
         """What ran: {version, binary, sha256 of its executable file, origin} (the record of every result)."""
-        path = shutil.which(self.binary()) or self.binary()
-        return {"version": self.version(), "binary": os.path.abspath(path) if path else "",
+        path = which(self.binary())
+        return {"version": self.version(), "binary": path or "",
                 "sha256": sha256(self.executable_file()),
                 "origin": self.origin or self.default_origin()}
 
@@ -166,11 +166,22 @@ class Engine:
         """The law as this engine computes it (a harness.laws.Law), for the options given, against a wall or a
         sphere (the two-sphere dialect, reduced to the equivalent wall impact). An option `with:KEY` (with_options)
         replaces sub-model KEY of the dialect, which the engine's inputs then follow."""
+        from ..engine_inputs import INPUT_OPTION
         from ..laws import replace_submodels
         options, submodels = split_submodels(options)
-        law = self.composition(law_name, options, target)
+        text = options.pop(INPUT_OPTION, None)
+        law = self.input_dialect(law_name, text, target) if text is not None else \
+            self.composition(law_name, options, target)
         law = replace_submodels(law, submodels) if submodels else law
         return law if law.dialect == self.dialect_label else dataclasses.replace(law, dialect=self.dialect_label)
+
+    def input_dialect(self, law_name, text, target):
+        """What this build computes with a user's own input `text` (--engine-input), named as the law it is compared
+        with: its vocabulary's composition for this release (harness.engine_inputs)."""
+        from ..engine_inputs import parse
+        version = self.version()
+        law = parse(self.code, text, version).composition(target, version)
+        return dataclasses.replace(law, name=law_name)
 
     def release_dialect(self, law_name, release):
         """Its dialect of the law against a wall as it was for another release (the same where its formulas do not

@@ -2,13 +2,13 @@
 `engine@version`. The default build is the one on PATH (or in the engine's variable); others are prefixes under the
 engines directory, one per version (tools/install_lammps.sh makes them), or a path a user names (`lammps@/opt/lmp`).
 A selector after `@` is `all`, a path, or the start of a version as `harness engines` prints it."""
-import glob
+import fnmatch
 import hashlib
 import os
-import shutil
 from functools import lru_cache
 
 from ..errors import EngineMissing, UserError
+from ..programs import directory_from, which
 from ..releases import release_key
 
 DIRECTORY_VARIABLE = "HARNESS_ENGINES_DIR"
@@ -17,8 +17,8 @@ ALL = "all"
 
 
 def directory():
-    """Where the engine prefixes are: $HARNESS_ENGINES_DIR, else /opt/harness/engines."""
-    return os.environ.get(DIRECTORY_VARIABLE, DEFAULT_DIRECTORY)
+    """Where the engine prefixes are: $HARNESS_ENGINES_DIR (an absolute directory), else /opt/harness/engines."""
+    return directory_from(DIRECTORY_VARIABLE, DEFAULT_DIRECTORY)
 
 
 @lru_cache(maxsize=None)
@@ -46,9 +46,9 @@ def found(engine):
     """(binary, origin) of every build of `engine` here: its default, then each prefix `<directory>/<engine>-*` (once:
     a default that is a prefix's own binary is not listed again)."""
     out = []
-    default = shutil.which(engine.binary())
+    default = which(engine.binary())
     if default:
-        out.append((os.path.abspath(default), engine.default_origin()))
+        out.append((default, engine.default_origin()))
     for prefix, binary in prefix_binaries(engine):
         if binary not in (path for path, _ in out):
             out.append((binary, f"prefix {prefix}"))
@@ -57,8 +57,13 @@ def found(engine):
 
 def prefix_binaries(engine):
     """(prefix, executable) of every prefix `<directory>/<engine>-*` that holds the engine's executable, in order."""
-    out = []
-    for prefix in sorted(glob.glob(os.path.join(directory(), f"{engine.code}-*"))):
+    root, out = directory(), []
+    try:
+        names = os.listdir(root)
+    except OSError:
+        return out
+    for name in sorted(fnmatch.filter(names, f"{engine.code}-*")):
+        prefix = os.path.join(root, name)
         binary = engine.prefix_binary(prefix)
         if binary and os.access(binary, os.X_OK):
             out.append((prefix, binary))

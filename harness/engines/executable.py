@@ -1,20 +1,21 @@
-"""An engine's executable: which one runs (a path in its environment variable, else its name on PATH), whether it is
-there, what was looked for when it is not, and the head of what it prints for `-h` (read in a temporary directory,
-where the binary's own log files land, never in the user's)."""
+"""An engine's executable: which one runs (an absolute path or a name in its environment variable, else its name on
+PATH, never a file relative to the working directory), whether it is there, what was looked for when it is not, and
+the head of what it prints for `-h` (read in a temporary directory, where the binary's own log files land, never in
+the user's)."""
 import os
-import shutil
 
+from ..programs import from_variable, which
 from .runner import EngineFailure, run_engine, scratch
 
 BANNER_TIMEOUT_S = 5.0          # the banner comes in well under a second; a hung binary costs no more
 
 
 def chosen(variable, name):
-    return os.environ.get(variable, name)
+    return from_variable(variable, name) if variable else name
 
 
 def present(variable, name):
-    return shutil.which(chosen(variable, name)) is not None
+    return which(chosen(variable, name)) is not None
 
 
 def missing(variable, name, package):

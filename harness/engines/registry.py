@@ -1,5 +1,8 @@
 """The registry of the engines, one line each: name -> Engine. A name `engine@selector` (builds.py) is one build of
 an engine, resolved on first use."""
+import os
+import re
+
 from ..errors import UserError
 from .kratos import ENGINE as KRATOS
 from .lammps import ENGINE as LAMMPS
@@ -7,7 +10,9 @@ from .liggghts import ENGINE as LIGGGHTS
 from .names import EXTERNAL
 from .reference import ENGINE as REFERENCE
 from .yade import ENGINE as YADE
-from .builds import select
+from .builds import ALL, select
+
+VERSION = re.compile(r"\d[0-9A-Za-z.+-]*")   # how a build's version is written: 2021.9.29, 2023.02a
 
 
 class Registry(dict):
@@ -34,6 +39,11 @@ class Registry(dict):
         if not at or not dict.__contains__(self, code):
             raise UserError(f"unknown engine {name!r}; known: {', '.join(self)} (and ENGINE@VERSION, ENGINE@all, "
                             f"ENGINE@/path/to/its/binary)")
+        if code == "reference":
+            raise UserError(f"{name}: the reference solver has no builds; name it `reference`")
+        if selector != ALL and os.sep not in selector and not VERSION.fullmatch(selector):
+            raise UserError(f"{name}: a build is named by its version (e.g. {code}@2021.9.29), {code}@all or "
+                            f"{code}@/path/to/its/binary")
         chosen = select(self[code], selector)
         for build in chosen:
             self.resolved[build.NAME] = build

@@ -1,5 +1,6 @@
 """Run an engine as a subprocess in its own directory and process group, with a timeout, its log streamed to disk
-and only its tail read; killed with harness (SIGKILL on the parent's death), listening on no network interface."""
+and only its tail read; killed with harness (SIGKILL on the parent's death), listening on no network interface;
+every program found by its absolute path (harness.programs), and the engine's PATH without relative entries."""
 import os
 import shutil
 import signal
@@ -8,6 +9,8 @@ import threading
 import time
 from dataclasses import dataclass
 from functools import lru_cache
+
+from ..programs import search_path, which
 
 LOG_TAIL_LINES = 40
 LOG_TAIL_BYTES = 64 * 1024
@@ -42,7 +45,8 @@ def tail(text, lines=LOG_TAIL_LINES):
 
 
 def launcher():
-    return PARENT_DEATH if shutil.which(PARENT_DEATH[0]) else []
+    path = which(PARENT_DEATH[0])
+    return [path, *PARENT_DEATH[1:]] if path else []
 
 
 PRIVATE_TMP = "private-tmp"     # the directory of a run that the engine sees as /tmp (its_own_tmp)
@@ -56,15 +60,16 @@ def its_own_tmp():
     """The argv prefix that runs a command in a mount namespace of its own where /tmp is PRIVATE_TMP of its working
     directory (for an engine that writes to /tmp whatever TMPDIR says, as YADE does); [] where the system allows no
     such namespace (no unshare, user namespaces disabled), tried once."""
-    if shutil.which("unshare") is None:
+    unshare, shell = which("unshare"), which("sh")
+    if unshare is None or shell is None:
         return []
     user = [] if os.geteuid() == 0 else ["--user", "--map-root-user"]
-    prefix = ["unshare", "--mount", "--propagation", "private", *user, "--", "sh", "-c", BIND_TMP, "sh"]
+    prefix = [unshare, "--mount", "--propagation", "private", *user, "--", shell, "-c", BIND_TMP, "sh"]
     with scratch("probe") as probe:
         os.mkdir(os.path.join(probe, PRIVATE_TMP))
         try:
             tried = subprocess.run([*prefix, "true"], cwd=probe, stdin=subprocess.DEVNULL, capture_output=True,
-                                   timeout=30)
+                                   timeout=30, env={**os.environ, "PATH": search_path()})
         except (OSError, subprocess.TimeoutExpired):
             return []
     return prefix if tried.returncode == 0 else []
@@ -77,9 +82,12 @@ def run_engine(argv, workdir, timeout_s, env=None, log_name="engine.log", privat
     start = time.perf_counter()
     if STOPPED.is_set():
         raise EngineFailure("not started: harness is stopping")
-    if shutil.which(argv[0]) is None:
+    program = which(argv[0])
+    if program is None:
         raise EngineFailure(f"{argv[0]} not found")
+    argv = [program, *argv[1:]]
     env = {**(os.environ if env is None else env), **ISOLATED, "TMPDIR": workdir}
+    env["PATH"] = search_path(env.get("PATH", os.defpath))
     prefix = its_own_tmp() if private_tmp else []
     if prefix:
         os.makedirs(os.path.join(workdir, PRIVATE_TMP), exist_ok=True)

@@ -52,7 +52,8 @@ def supports(ints, params):
     for family, column in (("normal", L.I_NORMAL), ("tangential", L.I_TANGENTIAL), ("integrator", L.I_INTEGRATOR),
                            ("geometry", L.I_GEOMETRY)):
         covered &= np.array([k.adaptive for k in kernels(family)])[ints[:, column]]
-    return covered & (params[:, L.TANGENTIAL_DAMPING_PREFACTOR] == 0.0) & (params[:, L.SLIP_RADIUS] == 0.0)
+    dashpot = (params[:, L.TANGENTIAL_DAMPING_PREFACTOR] != 0.0) | (params[:, L.TANGENTIAL_DAMPING_SHARE] != 0.0)
+    return covered & ~dashpot & (params[:, L.SLIP_RADIUS] == 0.0)
 
 
 def stepper_names(ints):

@@ -82,6 +82,7 @@ def batch_of(law, scene, spec, every_effect=False):
         params[:, L.TANGENTIAL_DAMPING_PREFACTOR] = law.tangential_damping.prefactor(
             contact, dashpot, normal.linear_stiffness, constant_k_t, e_n)
         params[:, L.TANGENTIAL_DAMPING_CONE] = CONE_CODES[law.tangential_damping.cone]
+        params[:, L.TANGENTIAL_DAMPING_SHARE] = law.tangential_damping.normal_share
     two_spheres = kernel_of("geometry", code_of("geometry", law.geometry)).two_spheres
     params[:, L.LEVER] = law.lever
     params[:, L.TORQUE_LEVER] = (law.lever if law.torque == "lever" else 0.5 if two_spheres else   # each body's

@@ -23,7 +23,9 @@ def friction(s, ot, p, ints, code, h, scratch, alpha, a, f_n, slip, in_contact, 
     of contact."""
     f_t, f_s = 0.0, 0.0
     damping = p[L.TANGENTIAL_DAMPING_PREFACTOR]
-    if TANGENTIAL_VISCOUS[code] and alpha > 0.0:
+    if TANGENTIAL_VISCOUS[code] and alpha > 0.0 and p[L.TANGENTIAL_DAMPING_SHARE] != 0.0:
+        f_t = viscous_friction(1.0, dashpot_with_share(p, code, a, alpha), slip, p[L.MU] * abs(f_n))
+    elif TANGENTIAL_VISCOUS[code] and alpha > 0.0:
         f_t = viscous_friction(tangential_stiffness(code, p, a), damping, slip, p[L.MU] * abs(f_n))
     elif in_contact:
         limit = p[L.MU] * abs(f_n)
@@ -33,6 +35,8 @@ def friction(s, ot, p, ints, code, h, scratch, alpha, a, f_n, slip, in_contact, 
             f_t, f_s = damped_friction(ot, p, code, h, a, f_s, slip, limit, lever)
         else:
             k_t = tangential_stiffness(code, p, a) if damping != 0.0 else 0.0
+            if p[L.TANGENTIAL_DAMPING_SHARE] != 0.0:          # c_t = damping sqrt(k_t) with k_t = 1
+                damping, k_t = dashpot_with_share(p, code, a, alpha), 1.0
             f_t, f_s, cut = coulomb_cap(ints[L.I_COULOMB], p, f_s, damping, k_t, slip, limit)
             if cut:
                 tangential_after_cap(code, p, f_s, a, ot)
@@ -40,6 +44,21 @@ def friction(s, ot, p, ints, code, h, scratch, alpha, a, f_n, slip, in_contact, 
         for k in range(N_TSTATE):
             ot[k] = 0.0
     return f_t, f_s
+
+
+@njit(cache=True, inline="always")
+def dashpot_with_share(p, code, a, alpha):
+    """The tangential dashpot with a share of the normal one: c_t = prefactor sqrt(k_t) + normal_share."""
+    damping = p[L.TANGENTIAL_DAMPING_PREFACTOR]
+    c_t = damping * math.sqrt(tangential_stiffness(code, p, a)) if damping != 0.0 else 0.0
+    return c_t + normal_share(p, alpha)
+
+
+@njit(cache=True, inline="always")
+def normal_share(p, alpha):
+    """share c_n(alpha) = share c0 alpha^power: the tangential dashpot's share of the normal one."""
+    power = p[L.DAMPING_POWER]
+    return p[L.TANGENTIAL_DAMPING_SHARE] * p[L.DAMPING_C0] * (1.0 if power == 0.0 else alpha ** power)
 
 
 @njit(cache=True, inline="always")

@@ -10,7 +10,7 @@ from ..jit import compiled
 from ..submodels.tangential.state import N_TSTATE, T_STEP
 from . import layout as L
 from .dispatch import NORMAL_HISTORY, TANGENTIAL_NONE, end_clip, normal_step, tangential_stiffness, touch_contact
-from .friction import friction
+from .friction import friction, normal_share
 from .schemes import damping_power
 from .state import (N_STATE, S_ALPHA, S_AMAX, S_DW2, S_FEL, S_FN, S_FS, S_FT, S_HISTORY, S_NOLD, S_NX, S_NZ, S_SX,
                     S_SZ, S_VX, S_VZ, S_W, S_X, S_Z, reset_history)
@@ -152,6 +152,8 @@ def step_leapfrog_pair(s, st, o, ot, p, ints, h, scratch, ext):
             else:
                 damping = p[L.TANGENTIAL_DAMPING_PREFACTOR]
                 c_s = damping * math.sqrt(k_s) if damping != 0.0 else 0.0
+                if p[L.TANGENTIAL_DAMPING_SHARE] != 0.0:
+                    c_s += normal_share(p, alpha)
                 fx, fz = sx - c_s * slip * tx, sz - c_s * slip * tz
             torque = nz * fx - nx * fz                    # (n x F)_y: the normal force has no moment
             f_t = fx * tx + fz * tz

@@ -15,7 +15,7 @@ from ..submodels.tangential.viscous import friction as viscous_friction
 from . import layout as L
 from .dispatch import (END_PULLS, NORMAL_HISTORY, TANGENTIAL_NONE, TANGENTIAL_VISCOUS, coulomb_first_touch, end_clip,
                        normal_force, normal_kink, normal_step, tangential_stiffness, touch_contact)
-from .friction import friction, slip_velocity, tangential_update
+from .friction import dashpot_with_share, friction, slip_velocity, tangential_update
 from .state import (N_STATE, S_ALPHA, S_AMAX, S_C, S_FEL, S_FN, S_FS, S_FT, S_HISTORY, S_NOLD, S_NX, S_NZ, S_SX,
                     S_SZ, S_U, S_VX, S_VZ, S_W, S_X, S_Z, reset_history)
 
@@ -228,8 +228,13 @@ def first_touch_velocity_verlet(s, st, p, ints, ext):
     slip0 = p[L.VX0] - p[L.RADIUS] * p[L.W0]
     limit = p[L.MU] * abs(s[S_FN])
     damping = p[L.TANGENTIAL_DAMPING_PREFACTOR]
-    if TANGENTIAL_VISCOUS[code]:
+    shared = p[L.TANGENTIAL_DAMPING_SHARE] != 0.0      # c_t = prefactor sqrt(k_t) + share c_n(0)
+    if TANGENTIAL_VISCOUS[code] and shared:
+        s[S_FT] = viscous_friction(1.0, dashpot_with_share(p, code, 0.0, 0.0), slip0, limit)
+    elif TANGENTIAL_VISCOUS[code]:
         s[S_FT] = viscous_friction(tangential_stiffness(code, p, 0.0), damping, slip0, limit)
+    elif shared:
+        s[S_FT] = coulomb_first_touch(ints[L.I_COULOMB], p, -dashpot_with_share(p, code, 0.0, 0.0) * slip0, limit)
     else:
         s[S_FT] = coulomb_first_touch(ints[L.I_COULOMB], p,
                                       -damping * math.sqrt(tangential_stiffness(code, p, 0.0)) * slip0, limit)

@@ -32,7 +32,8 @@ OWN = (     # the impact's own columns, before the families' blocks
 )
 FORMS = (("damping", damping.SLOTS, ("the normal dashpot c = c0 alpha^power", "")),
          ("tangential_damping", tangential_damping.SLOTS,
-          ("the tangential dashpot c_t = prefactor sqrt(k_t)", "the paper scheme's Coulomb test (CONE_CODES)")))
+          ("the tangential dashpot c_t = prefactor sqrt(k_t) + share c_n(alpha)",
+           "the paper scheme's Coulomb test (CONE_CODES)", "a share of the normal dashpot c_n (0: none)")))
 
 
 def ident(text):

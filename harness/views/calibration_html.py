@@ -15,6 +15,7 @@ from .paper_axes import PAPER_PANELS, PSI1_RANGE, draw_rigid_body, in_window, se
 from .pieces import figure_svg, legend_below, records
 
 STAGE_STYLES = {"paper": ("black", "-", "paper law"), "formulas, e as given": ("tab:red", ":", None),
+                "your input": ("tab:red", ":", None),
                 "formulas, calibrated": ("tab:blue", "--", None), "engine, calibrated": ("tab:blue", "-", None)}
 
 

@@ -11,6 +11,9 @@ def print_calibration(calibration):
     impacts = len(c.frame[c.frame.dialect == "paper"])
     print(f"calibrate {c.law.name} for {c.engine} {c.version}: e_n {', '.join(f'{e:g}' for e in scene.e_n)} x "
           f"{counted(impacts // max(len(scene.e_n), 1), 'impact')}, {c.steps} steps per contact")
+    if c.yours:
+        print(wrapped(f"your input: {c.yours['text']} (computes "
+                      f"{'; '.join(f'{k} {v}' for k, v in c.yours['composition'].items())})", indent=6))
     print_choices(c, impacts)
     print_typed(c)
     print("worst deviation from the paper law over the sweep (v and R omega as fractions of V):")

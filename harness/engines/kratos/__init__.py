@@ -5,6 +5,7 @@ bin/python imports Kratos, or the interpreter HARNESS_KRATOS_PYTHON names; its d
 and output in script.py, the interpreter's probe in venv.py."""
 import os
 
+from ...programs import from_variable, which
 from ..base import Engine
 from ..builds import directory, prefix_binaries, sha256
 from .dialect import COUNTERPARTS, DIALECTS, PAIR_DIALECTS
@@ -34,7 +35,7 @@ class Kratos(Engine):
         if self._binary:
             return self._binary
         if self.VARIABLE in os.environ:
-            return os.environ[self.VARIABLE]
+            return from_variable(self.VARIABLE, "")
         found = prefix_binaries(self)
         return found[-1][1] if found else ""
 
@@ -49,7 +50,7 @@ class Kratos(Engine):
             return (f"no Kratos venv {directory()}/kratos-<release>/bin/python (bash tools/install_kratos.sh, or "
                     f"bash tools/setup.sh)")
         if self.VARIABLE in os.environ and not self._binary:
-            what = "does not import" if os.access(binary, os.X_OK) else "is not an executable file that imports"
+            what = "does not import" if which(binary) else "is not an executable file that imports"
             return f"{self.VARIABLE}={binary!r} {what} KratosMultiphysics' DEMApplication"
         return f"{binary} does not import KratosMultiphysics' DEMApplication (bash tools/install_kratos.sh)"
 

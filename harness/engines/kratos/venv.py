@@ -5,6 +5,7 @@ import json
 import os
 from functools import lru_cache
 
+from ...programs import which
 from ..runner import EngineFailure, run_engine, scratch
 
 PYTHON_VARIABLE = "HARNESS_KRATOS_PYTHON"     # another interpreter with Kratos (a custom install, a test's fake)
@@ -19,11 +20,12 @@ print(json.dumps({"version": m.version("KratosMultiphysics"), "dem": m.version("
 
 
 def probe(python):
-    """{version, dem, library} of the interpreter at `python`; {} where it is missing or has no Kratos."""
-    if not python or not os.access(python, os.X_OK):
+    """{version, dem, library} of the interpreter `python` names (an absolute path or a name on PATH); {} where it
+    is missing or has no Kratos."""
+    path = which(python)
+    if path is None:
         return {}
-    stat = os.stat(python)
-    return _probe(python, stat.st_mtime_ns)
+    return _probe(path, os.stat(path).st_mtime_ns)
 
 
 @lru_cache(maxsize=None)

@@ -62,8 +62,8 @@ class Lammps(Engine):
         binary = super().executable_file()
         if os.path.basename(binary) != "harness-lmp":
             return binary
-        found = glob.glob(os.path.join(os.path.dirname(os.path.dirname(binary)), "lib", "python3*", "site-packages",
-                                       "lammps", "lmp"))
+        prefix = glob.escape(os.path.dirname(os.path.dirname(binary)))
+        found = glob.glob(os.path.join(prefix, "lib", "python3*", "site-packages", "lammps", "lmp"))
         return found[0] if found else binary
 
     def typed_inputs(self, lines):

@@ -2,9 +2,9 @@
 yade launcher; its dialects are in dialect.py, its input and output in script.py, its interpreter and flavours in
 flavours.py. It also checks its own arithmetic (precision.py)."""
 import os
-import shutil
 
 from ...errors import UserError
+from ...programs import which
 from ..base import Engine
 from ..builds import sha256
 from .dialect import COUNTERPARTS, DIALECTS, OPTIONS, PAIR_DIALECTS, check_options, dialect
@@ -62,7 +62,7 @@ class Yade(Engine):
         return None                     # one build: Debian's
 
     def at(self, binary, origin):
-        if os.path.realpath(binary) != os.path.realpath(shutil.which(self.binary()) or self.binary()):
+        if os.path.realpath(binary) != os.path.realpath(which(self.binary()) or self.binary()):
             raise UserError("YADE runs as a module of Debian's python3.11; another build is not supported yet")
         return super().at(binary, origin)
 

@@ -2,10 +2,10 @@
 never the yade launcher, which opens network servers; and its version."""
 import os
 import re
-import shutil
 from functools import lru_cache
 
 from ...errors import UserError
+from ...programs import from_variable, which
 
 PYTHON_VARIABLE = "HARNESS_YADE_PYTHON"    # another interpreter (a test's fake); default Debian's python3.11
 FLAVOURS = {"double": "yade-double", "long-double": "yade-longdouble", "float128": "yade-float128",
@@ -16,7 +16,7 @@ LIBRARY = "/usr/lib/x86_64-linux-gnu"
 
 
 def python():
-    return os.environ.get(PYTHON_VARIABLE, "/usr/bin/python3.11")
+    return from_variable(PYTHON_VARIABLE, "/usr/bin/python3.11")
 
 
 def flavour_path(precision):
@@ -27,7 +27,7 @@ def flavour_path(precision):
 
 def available(precision="double"):
     """Debian's python3.11 and the flavour's module directory are both there."""
-    return shutil.which(python()) is not None and os.path.isdir(flavour_path(precision))
+    return which(python()) is not None and os.path.isdir(flavour_path(precision))
 
 
 def version():
@@ -59,7 +59,7 @@ def environment(precision):
 
 def missing_reason(precision="double"):
     """What was looked for, and where, when YADE cannot run."""
-    if shutil.which(python()) is None:
+    if which(python()) is None:
         where = f"{PYTHON_VARIABLE}={os.environ[PYTHON_VARIABLE]!r}" if PYTHON_VARIABLE in os.environ else "/usr/bin/python3.11"
         return f"no Python interpreter at {where} (YADE runs as a module of Debian's python3.11)"
     return f"no YADE {precision} module directory {flavour_path(precision)} (apt-get install -y yade, or bash tools/setup.sh)"
