@@ -58,16 +58,17 @@ class GivenContactRadiusSpring(ContactRadiusSpring):
 
 class GivenViscous(ViscousTangential):
     """No spring: F_t = -sign(V_s) min(c_t |V_s|, mu F_n); the dashpot's c_t = prefactor sqrt(k), with k = 1
-    ('linear', a constant c_t) or 8 G a ('mindlin', c_t growing as a^1/2), G given so that the prefactor is the
-    input's."""
+    ('linear', a constant c_t) or 8 G a ('mindlin', c_t growing as a^1/2): `slot` the given k or G, so that the
+    prefactor is the input's."""
     name = "viscous-given"
 
-    def __init__(self, form, p1, nan_reason=""):
+    def __init__(self, form, slot, nan_reason=""):
         super().__init__(form)
-        self.p1, self.nan_reason = float(p1), nan_reason
+        self.slot, self.nan_reason = float(slot), nan_reason
 
     def parameter(self, contact, k_n):
-        return self.p1
+        """Its kernel's one slot: k ('linear') or G ('mindlin')."""
+        return self.slot
 
     def undefined(self, dashpot):
         """The input's own 0/0 (`nan_reason`) where its dashpot is a share of a normal dashpot that is 0."""
