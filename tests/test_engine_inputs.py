@@ -394,3 +394,58 @@ def test_at_file_reads_a_liggghts_deck(tmp_path):
     given = parse("liggghts", f"@{deck}")
     assert (given.model, given.tangential, given.mu) == ("hertz", "history", 0.4)
     assert given.values["coefficientRestitution"] == 0.5 and given.values["youngsModulus"] == 1e9
+
+
+# --- YADE -----------------------------------------------------------------------------------------------------------
+
+YADE_INPUTS = {
+    "viscel kn ks cn cs": "ViscElMat(kn=2e7, ks=5.7e6, cn=1000, cs=300, frictionAngle=0.38)",
+    "viscel tc en et": "ViscElMat(tc=4e-4, en=0.5, et=0.6, frictionAngle=0.38)",
+    "mindlin en es": "FrictMat(young=1e9, poisson=0.3, frictionAngle=0.38) Ip2_FrictMat_FrictMat_MindlinPhys(en=0.5, "
+                     "es=0.7)",
+    "mindlin betan": "FrictMat(young=1e9, poisson=0.3, frictionAngle=0.38) "
+                     "Ip2_FrictMat_FrictMat_MindlinPhys(betan=0.2)",
+}
+
+
+@needs("yade")
+@pytest.mark.parametrize("name", sorted(YADE_INPUTS))
+@pytest.mark.parametrize("target", ["wall", "sphere"])
+def test_yade_inputs_agree_with_their_composition(name, target):
+    """YADE 2023.02a with each input, a wall and a free pair of another size, with spin: within 1e-6 of V."""
+    from harness.engines import get_engine
+    extra = dict(target="sphere", target_radius=0.03) if target == "sphere" else {}
+    scene = scene_from(en=[0.5], angles=ANGLES, omega0=-20.0, mu=math.tan(0.38), **extra)
+    law = compose("hertz-mindlin" if name.startswith("mindlin") else "linear-spring-dashpot")
+    frame, failures = execute(engine_plan(get_engine("yade"), law, scene, 200, {"input": YADE_INPUTS[name]}))
+    assert failures == [] and agreement(frame, "yade") < 1e-6
+
+
+def test_yade_inputs_are_refused_with_its_own_words_and_flagged():
+    with pytest.raises(UserError, match="ViscElMat: No such attribute: kt"):
+        parse("yade", "ViscElMat(kn=1e5, kt=1e4, cn=1, cs=1)")
+    with pytest.raises(UserError, match="Inconsistent material constants for ViscElMat's"):
+        parse("yade", "ViscElMat(kn=1e5, cn=1)")
+    with pytest.raises(UserError, match="only one of en, betan can be specified"):
+        parse("yade", "FrictMat(young=1e9) Ip2_FrictMat_FrictMat_MindlinPhys(en=0.5, betan=0.1)")
+    with pytest.raises(UserError, match="not yet modelled: Mindlin's DMT adhesion gamma"):
+        parse("yade", "FrictMat(young=1e9) Ip2_FrictMat_FrictMat_MindlinPhys(en=0.5, gamma=0.1)")
+    with pytest.raises(UserError, match="not yet modelled: ViscElMat's rolling resistance mR"):
+        parse("yade", "ViscElMat(tc=1e-4, en=0.5, et=0.5, mR=0.01)")
+    with pytest.raises(UserError, match="not yet modelled: YADE's CohFrictMat"):
+        parse("yade", "CohFrictMat(young=1e9, normalCohesion=1e5)")
+    flags = parse("yade", "ViscElMat(kn=1e5, ks=1e4, cn=-1, cs=1)").flags()
+    assert [f.name for f in flags] == ["cn"]
+    assert [f.name for f in parse("yade", "ViscElMat(tc=1e-4, en=1.2, et=0.5, kn=1)").flags()] == ["kn", "en"]
+
+
+def test_yade_viscel_composition_halves_each_constant_and_takes_pournin_with_the_reduced_mass():
+    """One material on both sides: 1/(1/x + 1/x) = x/2; tc, en, et give k_n = m_R (pi^2 + ln^2 en)/tc^2, m_R = m/2
+    against a wall (Pournin 2001 with YADE's factor 2 per side)."""
+    scene = scene_from(en=[0.5], angles=[0.0])
+    law = parse("yade", "ViscElMat(kn=2e7, ks=5.7e6, cn=1000, cs=300)").composition("wall")
+    assert law.normal.stiffness(scene.contact, scene.speed) == 1e7
+    law = parse("yade", "ViscElMat(tc=4e-4, en=0.5, et=0.6)").composition("wall")
+    m = scene.contact.mass
+    assert law.normal.stiffness(scene.contact, scene.speed) == pytest.approx(m / 2 * (math.pi ** 2 + math.log(0.5) ** 2)
+                                                                             / 4e-4 ** 2, rel=1e-12)
