@@ -449,3 +449,21 @@ def test_yade_viscel_composition_halves_each_constant_and_takes_pournin_with_the
     m = scene.contact.mass
     assert law.normal.stiffness(scene.contact, scene.speed) == pytest.approx(m / 2 * (math.pi ** 2 + math.log(0.5) ** 2)
                                                                              / 4e-4 ** 2, rel=1e-12)
+
+
+@needs("yade")
+@pytest.mark.engine
+def test_a_yade_input_runs_through_compare_with_its_precision_check_and_is_recorded(tmp_path):
+    """compare runs the input in double and, for YADE's arithmetic check, in mpfr150 (both with the input), and
+    records it verbatim with its composition: kn/2 = 1e7 for one ViscElMat on both sides."""
+    text = "ViscElMat(kn=2e7, ks=5.7e6, cn=1000, cs=300, frictionAngle=0.38)"
+    out = tmp_path / "out"
+    run = subprocess.run([sys.executable, "-m", "harness", "compare", "--model", "linear-spring-dashpot",
+                          "--engines", "yade", "--engine-input", f"yade={text}", "--en", "0.5",
+                          "--angles", "10,40", "-o", str(out), "--quiet"], capture_output=True, text=True,
+                         timeout=900)
+    assert run.returncode in (0, 1), run.stderr[-2000:]
+    record = json.loads((out / "run.json").read_text())
+    assert record["engine_inputs"]["yade"]["text"] == text
+    assert record["engine_inputs"]["yade"]["composition"]["normal"] == "linear(k_n=1e+07)"
+    assert text in (out / "report.html").read_text()

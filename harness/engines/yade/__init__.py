@@ -86,7 +86,9 @@ class Yade(Engine):
 
     def precision_runs(self, law, scene, options):
         """A double run beside an mpfr150 one (precision.py), when the comparison runs in double."""
-        return precision_runs(law, scene) if self.flavour(options) == "double" else ()
+        if self.flavour(options) != "double":
+            return ()
+        return precision_runs(law, scene, self.dialect, dict(options or {}).get("input"))
 
 
 ENGINE = Yade()
