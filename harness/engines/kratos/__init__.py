@@ -78,7 +78,7 @@ class Kratos(Engine):
         mixes them (InitializeContactWithFEM); rigid is a face RIGID_SCALE times stiffer than the sphere."""
         return ("same", "other", "rigid")
 
-    def target_reason(self, law_name, scene):
+    def target_reason(self, law_name, scene, options=None):
         """Its pair dialects hold for a free target of the projectile's moduli (any size, density or spin): a held
         target still lends its mass to Kratos' damping, m* = m1 m2/(m1 + m2), and unequal moduli move each lever to
         R_i - d E_j/(E_i + E_j) (docs/kratos-dialect.md, measured there)."""

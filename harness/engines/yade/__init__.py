@@ -78,6 +78,19 @@ class Yade(Engine):
         sphere's own material only."""
         return ("same", "other", "rigid") if law_name == "hertz-mindlin" else ("same",)
 
+    def target_reason(self, law_name, scene, options=None):
+        """A user's own input (the option `input`) runs against a free target sphere of the projectile's density (its
+        one material on both spheres; ViscEl would take a held target's mass into m_R); the paper's inputs against
+        the targets PAIR_DIALECTS holds."""
+        if "input" not in dict(options or {}) or not scene.spheres:
+            return super().target_reason(law_name, scene)
+        projectile, target = scene.spheres
+        if target.fixed:
+            return "your own input runs against a free target sphere only"
+        if target.rho != projectile.rho:
+            return "your own input gives both spheres its one material: a target of the projectile's density only"
+        return ""
+
     def composition(self, law_name, options, target):
         return dialect(law_name, options, target)
 
