@@ -4,4 +4,5 @@ VOCABULARIES = {
     "lammps": ".lammps.inputs",
     "liggghts": ".liggghts.inputs",
     "yade": ".yade.inputs",
+    "kratos": ".kratos.inputs",
 }

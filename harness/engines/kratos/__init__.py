@@ -75,8 +75,9 @@ class Kratos(Engine):
 
     def walls(self, law_name, options=None):
         """Any wall: a rigid face carries its own YOUNG_MODULUS and POISSON_RATIO, mixed with the sphere's as harness
-        mixes them (InitializeContactWithFEM); rigid is a face RIGID_SCALE times stiffer than the sphere."""
-        return ("same", "other", "rigid")
+        mixes them (InitializeContactWithFEM); rigid is a face RIGID_SCALE times stiffer than the sphere. A user's own
+        input (the option `input`) gives the wall its one material."""
+        return ("same",) if "input" in dict(options or {}) else ("same", "other", "rigid")
 
     def target_reason(self, law_name, scene, options=None):
         """Its pair dialects hold for a free target of the projectile's moduli (any size, density or spin): a held
