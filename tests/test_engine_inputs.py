@@ -524,3 +524,36 @@ def test_a_kratos_input_steps_as_the_kratos_dialect_of_a_scene_with_its_numbers(
     paper = kratos.dialect(law_name, None, target)
     a, b = run_kernel(batch_of(given, mine, 0.5, 200))[0], run_kernel(batch_of(paper, theirs, 0.6, 200))[0]
     assert np.allclose(a, b, rtol=1e-12, atol=1e-12 * 5.0)
+
+
+def test_at_file_reads_a_yade_script_and_a_kratos_materials_file(tmp_path):
+    script = tmp_path / "scene.py"
+    script.write_text("from yade import *\n# ViscElMat(kn=1, ks=1, cn=1, cs=1) in a comment\n"
+                      "mat = O.materials.append(FrictMat(young=7e10, poisson=0.3,\n    frictionAngle=0.1, density=2650))\n"
+                      "O.engines = [InteractionLoop([Ig2_Sphere_Sphere_ScGeom()], "
+                      "[Ip2_FrictMat_FrictMat_MindlinPhys(en=0.5, es=0.5)], [Law2_ScGeom_MindlinPhys_Mindlin()])]\n")
+    given = parse("yade", f"@{script}")
+    assert given.text == ("FrictMat(young=7e10, poisson=0.3, frictionAngle=0.1, density=2650) "
+                          "Ip2_FrictMat_FrictMat_MindlinPhys(en=0.5, es=0.5) Law2_ScGeom_MindlinPhys_Mindlin()")
+    assert [f.name for f in given.flags()] == ["density"] and given.mu == pytest.approx(math.tan(0.1))
+    materials = tmp_path / "MaterialsDEM.json"
+    materials.write_text(json.dumps({
+        "materials": [{"material_name": "m", "material_id": 1,
+                       "Variables": {"PARTICLE_DENSITY": 2650.0, "YOUNG_MODULUS": 7e10, "POISSON_RATIO": 0.3}}],
+        "material_relations": [{"material_names_list": ["m", "m"], "material_ids_list": [1, 1], "Variables": {
+            "COEFFICIENT_OF_RESTITUTION": 0.5, "STATIC_FRICTION": 0.2, "DYNAMIC_FRICTION": 0.2,
+            "DEM_DISCONTINUUM_CONSTITUTIVE_LAW_NAME": "DEM_D_Linear_viscous_Coulomb"}}]}))
+    given = parse("kratos", f"@{materials}")
+    assert given.law == "DEM_D_Linear_viscous_Coulomb" and given.mu == 0.2 and given.values["YOUNG_MODULUS"] == 7e10
+
+
+@pytest.mark.parametrize("engine, text, line", [
+    ("yade", "ViscElMat(kn=1e5, ks=1e4, cn=1, cs=1, mR=0.01)", "not yet modelled: ViscElMat's rolling resistance mR"),
+    ("kratos", "DEM_DISCONTINUUM_CONSTITUTIVE_LAW_NAME DEM_D_DMT_Cohesive_Law", "not yet modelled: Kratos' "
+                                                                                "DEM_D_DMT_Cohesive_Law"),
+])
+def test_yade_and_kratos_refusals_are_one_line_with_exit_2(engine, text, line):
+    run = subprocess.run([sys.executable, "-m", "harness", "compare", "--model", "hertz-mindlin", "--engines", engine,
+                          "--engine-input", f"{engine}={text}"], capture_output=True, text=True, timeout=300)
+    assert run.returncode == 2 and line in run.stderr and "Traceback" not in run.stderr
+    assert len(run.stderr.strip().splitlines()) == 1

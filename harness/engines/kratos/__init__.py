@@ -89,6 +89,8 @@ class Kratos(Engine):
         projectile, target = scene.spheres
         if target.fixed:
             return "its damping takes a held target's mass (m* = m1 m2/(m1 + m2)): no dialect for a frozen target yet"
+        if "input" in dict(options or {}):
+            return ""                       # a user's own input gives both spheres its YOUNG_MODULUS and POISSON_RATIO
         if (target.E, target.nu) != (projectile.E, projectile.nu):
             return "its lever arms split the overlap by the moduli (R_i - d E_j/(E_i + E_j)): no dialect for a target " \
                    "of other moduli yet"
