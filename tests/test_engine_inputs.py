@@ -529,7 +529,8 @@ def test_a_kratos_input_steps_as_the_kratos_dialect_of_a_scene_with_its_numbers(
 def test_at_file_reads_a_yade_script_and_a_kratos_materials_file(tmp_path):
     script = tmp_path / "scene.py"
     script.write_text("from yade import *\n# ViscElMat(kn=1, ks=1, cn=1, cs=1) in a comment\n"
-                      "mat = O.materials.append(FrictMat(young=7e10, poisson=0.3,\n    frictionAngle=0.1, density=2650))\n"
+                      "mat = O.materials.append(FrictMat(young=7e10, poisson=0.3,\n"
+                      "    frictionAngle=0.1, density=2650))\n"
                       "O.engines = [InteractionLoop([Ig2_Sphere_Sphere_ScGeom()], "
                       "[Ip2_FrictMat_FrictMat_MindlinPhys(en=0.5, es=0.5)], [Law2_ScGeom_MindlinPhys_Mindlin()])]\n")
     given = parse("yade", f"@{script}")
@@ -557,3 +558,30 @@ def test_yade_and_kratos_refusals_are_one_line_with_exit_2(engine, text, line):
                           "--engine-input", f"{engine}={text}"], capture_output=True, text=True, timeout=300)
     assert run.returncode == 2 and line in run.stderr and "Traceback" not in run.stderr
     assert len(run.stderr.strip().splitlines()) == 1
+
+
+@needs("yade")
+@needs_lammps
+@pytest.mark.engine
+def test_explain_translates_a_yade_viscel_input_into_lammps_words_that_run_alike():
+    """ViscElMat kn, ks, cn, cs of one material is LAMMPS `hooke kn/2 cn/2 damping velocity tangential linear_history
+    ks/2 cs/cn mu limit_damping`: explain names those words (their composition, stepped as YADE steps, rebounds as the
+    input's within 1e-6 of V), and YADE and Debian's LAMMPS run with them return the same e_n at normal incidence
+    (leapfrog against velocity Verlet at t_c/1000: within 1e-3)."""
+    from harness.engines import get_engine
+    from harness.explain import explain
+    text = YADE_INPUTS["viscel kn ks cn cs"]
+    x = explain("yade", text, angles=[0.0, 20.0, 60.0])
+    ((where, words),) = x.translations
+    assert where == "lammps 2021.9.29.2" and words == ("hooke 10000000.0 500.0 damping velocity tangential "
+                                                      "linear_history 2850000.0 0.3 0.39941272145322637 "
+                                                      "limit_damping")
+    scene = scene_from(en=[0.5], angles=[0.0], mu=math.tan(0.38))
+    e_n = {}
+    for engine, given in ((get_engine("yade"), text), (lammps.ENGINE, words)):
+        frame, failures = execute(engine_plan(engine, compose("linear-spring-dashpot"), scene, 1000,
+                                              {"input": given}))
+        assert failures == [] and agreement(frame, engine.NAME) < 1e-6
+        e_n[engine.NAME] = frame[frame.engine == engine.NAME].e_n.iloc[0]
+    clipped = oracles.lsd_notension_e(500.0 / (2.0 * math.sqrt(1e7 * scene.contact.mass)))   # F_n >= 0: Schwager
+    assert abs(e_n["yade"] - e_n["lammps"]) < 1e-3 and abs(e_n["yade"] - clipped) < 5e-3

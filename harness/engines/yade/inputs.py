@@ -61,6 +61,19 @@ class YadeInput(EngineInput):
     def law_family(self):
         return "hertz-mindlin" if self.law == "mindlin" else "linear-spring-dashpot"
 
+    def other_engines(self, contact):
+        """[(engine, text, release)]: for ViscElMat kn, ks, cn, cs (one material: half of each on the contact), the
+        LAMMPS granular words with those numbers, `hooke kn/2 cn/2 damping velocity tangential linear_history ks/2
+        cs/cn mu` (velocity damping: a constant c_n; x_gamma_t: c_t/c_n), on 2021.9.29.2, the first release harness
+        runs."""
+        if self.law != "viscel" or self.form != "direct":
+            return []
+        v = self.values
+        share = v["cs"] / v["cn"] if v["cn"] else 0.0
+        text = (f"hooke {v['kn'] / 2.0!r} {v['cn'] / 2.0!r} damping velocity tangential linear_history "
+                f"{v['ks'] / 2.0!r} {share!r} {self.mu!r} limit_damping")
+        return [("lammps", text, "2021.9.29.2")]
+
     def flags(self, version=None):
         v, out = {**self.values, **dict(self.functor)}, []
         if "density" in v:
