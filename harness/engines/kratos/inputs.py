@@ -27,7 +27,7 @@ NUMBERS = ("YOUNG_MODULUS", "POISSON_RATIO", "COEFFICIENT_OF_RESTITUTION", "STAT
 WORDS = ("DEM_DISCONTINUUM_CONSTITUTIVE_LAW_NAME", "DEM_ROLLING_FRICTION_MODEL_NAME")
 NOT_YET = {"ROLLING_FRICTION": "rolling friction", "ROLLING_FRICTION_WITH_WALLS": "rolling friction with walls",
            "PARTICLE_COHESION": "cohesion", "AMOUNT_OF_COHESION_FROM_STRESS": "cohesion"}
-UNUSED = ("PARTICLE_DENSITY", "COMPUTE_WEAR", "SEVERITY_OF_WEAR", "IMPACT_WEAR_SEVERITY", "BRINELL_HARDNESS")
+UNUSED = ("PARTICLE_DENSITY", "FRICTION_DECAY", "COMPUTE_WEAR", "SEVERITY_OF_WEAR", "IMPACT_WEAR_SEVERITY", "BRINELL_HARDNESS")
 NEEDS = ("YOUNG_MODULUS", "POISSON_RATIO", "COEFFICIENT_OF_RESTITUTION", "STATIC_FRICTION", "DYNAMIC_FRICTION",
          "DEM_DISCONTINUUM_CONSTITUTIVE_LAW_NAME")
 PAIR_WORD = re.compile(r'"?([A-Z][A-Z_]+)"?\s*[:=]?\s*("[^"]*"|[^\s,{}"]+)')
@@ -49,9 +49,9 @@ class KratosInput(EngineInput):
 
     def flags(self, version=None):
         v = self.values
-        return tuple(Flag(name, f"{name} {v[name]:g} not used: " + ("the sphere's density is the scene's (--rho)"
-                                                                    if name == "PARTICLE_DENSITY" else
-                                                                    "harness runs no wear"))
+        why = {"PARTICLE_DENSITY": "the sphere's density is the scene's (--rho)",
+               "FRICTION_DECAY": "with STATIC_FRICTION equal to DYNAMIC_FRICTION it changes nothing"}
+        return tuple(Flag(name, f"{name} {v[name]:g} not used: " + why.get(name, "harness runs no wear"))
                      for name in UNUSED if name in v)
 
     def deck_values(self):
