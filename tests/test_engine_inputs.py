@@ -53,8 +53,9 @@ def test_unknown_words_are_refused_with_lammps_vocabulary():
         parse("lammps", "hooke 1e6 0.5")
     with pytest.raises(UserError, match="Must either specify tangential stiffness or material properties"):
         parse("lammps", "hooke 1e6 0.5 tangential mindlin NULL 0.5 0.4")
-    with pytest.raises(UserError, match="harness reads no yade input yet"):
-        parse("yade", "ViscElMat")
+    with pytest.raises(UserError, match="harness reads no reference input yet; it reads inputs of lammps, liggghts, "
+                                        "yade, kratos"):
+        parse("reference", "hooke 1e6 0.5")
 
 
 def test_values_a_release_refuses_are_refused_with_its_reason_and_unphysical_ones_flagged():
