@@ -586,3 +586,13 @@ def test_explain_translates_a_yade_viscel_input_into_lammps_words_that_run_alike
         e_n[engine.NAME] = frame[frame.engine == engine.NAME].e_n.iloc[0]
     clipped = oracles.lsd_notension_e(500.0 / (2.0 * math.sqrt(1e7 * scene.contact.mass)))   # F_n >= 0: Schwager
     assert abs(e_n["yade"] - e_n["lammps"]) < 1e-3 and abs(e_n["yade"] - clipped) < 5e-3
+
+
+def test_a_yade_or_kratos_input_runs_against_a_wall_of_its_own_material_only():
+    """The input is one material for the sphere and its wall: a rigid or other wall is skipped, not run as the
+    input's own material under another name."""
+    from harness.engines import get_engine
+    yade_text = YADE_INPUTS["mindlin en es"]
+    assert get_engine("yade").walls("hertz-mindlin", {"input": yade_text}) == ("same",)
+    assert get_engine("kratos").walls("hertz-mindlin", {"input": KRATOS_INPUTS["hertz"]}) == ("same",)
+    assert "rigid" in get_engine("yade").walls("hertz-mindlin") and "rigid" in get_engine("kratos").walls("hertz-mindlin")

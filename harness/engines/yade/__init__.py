@@ -74,8 +74,10 @@ class Yade(Engine):
         return ARITHMETIC[self.flavour(options)]
 
     def walls(self, law_name, options=None):
-        """hertz-mindlin against any wall (FrictMat: E and nu mixed as harness mixes them), the others against the
-        sphere's own material only."""
+        """hertz-mindlin against any wall (FrictMat: E and nu mixed as harness mixes them), the others, and a user's
+        own input (its one material), against the sphere's own material only."""
+        if "input" in dict(options or {}):
+            return ("same",)
         return ("same", "other", "rigid") if law_name == "hertz-mindlin" else ("same",)
 
     def target_reason(self, law_name, scene, options=None):
