@@ -104,7 +104,7 @@ def statuses(request, refuse=True):
         engine = ENGINES[name]
         status = engine.status(request.law.name, request.engine_options.get(name))
         options = request.engine_options.get(name)
-        unsupported = (engine.target_reason(request.law.name, scene) or
+        unsupported = (engine.target_reason(request.law.name, scene, options) or
                        ("engine inputs do not model gravity" if scene.gravity else
                        f"its {request.law.name} inputs use a wall of the sphere's own material"
                        if not scene.spheres and scene.wall not in engine.walls(request.law.name, options) else None))

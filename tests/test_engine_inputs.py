@@ -53,8 +53,9 @@ def test_unknown_words_are_refused_with_lammps_vocabulary():
         parse("lammps", "hooke 1e6 0.5")
     with pytest.raises(UserError, match="Must either specify tangential stiffness or material properties"):
         parse("lammps", "hooke 1e6 0.5 tangential mindlin NULL 0.5 0.4")
-    with pytest.raises(UserError, match="harness reads no yade input yet"):
-        parse("yade", "ViscElMat")
+    with pytest.raises(UserError, match="harness reads no reference input yet; it reads inputs of lammps, liggghts, "
+                                        "yade, kratos"):
+        parse("reference", "hooke 1e6 0.5")
 
 
 def test_values_a_release_refuses_are_refused_with_its_reason_and_unphysical_ones_flagged():
@@ -394,3 +395,204 @@ def test_at_file_reads_a_liggghts_deck(tmp_path):
     given = parse("liggghts", f"@{deck}")
     assert (given.model, given.tangential, given.mu) == ("hertz", "history", 0.4)
     assert given.values["coefficientRestitution"] == 0.5 and given.values["youngsModulus"] == 1e9
+
+
+# --- YADE -----------------------------------------------------------------------------------------------------------
+
+YADE_INPUTS = {
+    "viscel kn ks cn cs": "ViscElMat(kn=2e7, ks=5.7e6, cn=1000, cs=300, frictionAngle=0.38)",
+    "viscel tc en et": "ViscElMat(tc=4e-4, en=0.5, et=0.6, frictionAngle=0.38)",
+    "mindlin en es": "FrictMat(young=1e9, poisson=0.3, frictionAngle=0.38) Ip2_FrictMat_FrictMat_MindlinPhys(en=0.5, "
+                     "es=0.7)",
+    "mindlin betan": "FrictMat(young=1e9, poisson=0.3, frictionAngle=0.38) "
+                     "Ip2_FrictMat_FrictMat_MindlinPhys(betan=0.2)",
+}
+
+
+@needs("yade")
+@pytest.mark.parametrize("name", sorted(YADE_INPUTS))
+@pytest.mark.parametrize("target", ["wall", "sphere"])
+def test_yade_inputs_agree_with_their_composition(name, target):
+    """YADE 2023.02a with each input, a wall and a free pair of another size, with spin: within 1e-6 of V."""
+    from harness.engines import get_engine
+    extra = dict(target="sphere", target_radius=0.03) if target == "sphere" else {}
+    scene = scene_from(en=[0.5], angles=ANGLES, omega0=-20.0, mu=math.tan(0.38), **extra)
+    law = compose("hertz-mindlin" if name.startswith("mindlin") else "linear-spring-dashpot")
+    frame, failures = execute(engine_plan(get_engine("yade"), law, scene, 200, {"input": YADE_INPUTS[name]}))
+    assert failures == [] and agreement(frame, "yade") < 1e-6
+
+
+def test_yade_inputs_are_refused_with_its_own_words_and_flagged():
+    with pytest.raises(UserError, match="ViscElMat: No such attribute: kt"):
+        parse("yade", "ViscElMat(kn=1e5, kt=1e4, cn=1, cs=1)")
+    with pytest.raises(UserError, match="Inconsistent material constants for ViscElMat's"):
+        parse("yade", "ViscElMat(kn=1e5, cn=1)")
+    with pytest.raises(UserError, match="only one of en, betan can be specified"):
+        parse("yade", "FrictMat(young=1e9) Ip2_FrictMat_FrictMat_MindlinPhys(en=0.5, betan=0.1)")
+    with pytest.raises(UserError, match="not yet modelled: Mindlin's DMT adhesion gamma"):
+        parse("yade", "FrictMat(young=1e9) Ip2_FrictMat_FrictMat_MindlinPhys(en=0.5, gamma=0.1)")
+    with pytest.raises(UserError, match="not yet modelled: ViscElMat's rolling resistance mR"):
+        parse("yade", "ViscElMat(tc=1e-4, en=0.5, et=0.5, mR=0.01)")
+    with pytest.raises(UserError, match="not yet modelled: YADE's CohFrictMat"):
+        parse("yade", "CohFrictMat(young=1e9, normalCohesion=1e5)")
+    flags = parse("yade", "ViscElMat(kn=1e5, ks=1e4, cn=-1, cs=1)").flags()
+    assert [f.name for f in flags] == ["cn"]
+    assert [f.name for f in parse("yade", "ViscElMat(tc=1e-4, en=1.2, et=0.5, kn=1)").flags()] == ["kn", "en"]
+
+
+def test_yade_viscel_composition_halves_each_constant_and_takes_pournin_with_the_reduced_mass():
+    """One material on both sides: 1/(1/x + 1/x) = x/2; tc, en, et give k_n = m_R (pi^2 + ln^2 en)/tc^2, m_R = m/2
+    against a wall (Pournin 2001 with YADE's factor 2 per side)."""
+    scene = scene_from(en=[0.5], angles=[0.0])
+    law = parse("yade", "ViscElMat(kn=2e7, ks=5.7e6, cn=1000, cs=300)").composition("wall")
+    assert law.normal.stiffness(scene.contact, scene.speed) == 1e7
+    law = parse("yade", "ViscElMat(tc=4e-4, en=0.5, et=0.6)").composition("wall")
+    m = scene.contact.mass
+    assert law.normal.stiffness(scene.contact, scene.speed) == pytest.approx(m / 2 * (math.pi ** 2 + math.log(0.5) ** 2)
+                                                                             / 4e-4 ** 2, rel=1e-12)
+
+
+@needs("yade")
+@pytest.mark.engine
+def test_a_yade_input_runs_through_compare_with_its_precision_check_and_is_recorded(tmp_path):
+    """compare runs the input in double and, for YADE's arithmetic check, in mpfr150 (both with the input), and
+    records it verbatim with its composition: kn/2 = 1e7 for one ViscElMat on both sides."""
+    text = "ViscElMat(kn=2e7, ks=5.7e6, cn=1000, cs=300, frictionAngle=0.38)"
+    out = tmp_path / "out"
+    run = subprocess.run([sys.executable, "-m", "harness", "compare", "--model", "linear-spring-dashpot",
+                          "--engines", "yade", "--engine-input", f"yade={text}", "--en", "0.5",
+                          "--angles", "10,40", "-o", str(out), "--quiet"], capture_output=True, text=True,
+                         timeout=900)
+    assert run.returncode in (0, 1), run.stderr[-2000:]
+    record = json.loads((out / "run.json").read_text())
+    assert record["engine_inputs"]["yade"]["text"] == text
+    assert record["engine_inputs"]["yade"]["composition"]["normal"] == "linear(k_n=1e+07)"
+    assert text in (out / "report.html").read_text()
+
+
+# --- Kratos ---------------------------------------------------------------------------------------------------------
+
+KRATOS_INPUTS = {
+    "hertz": "DEM_DISCONTINUUM_CONSTITUTIVE_LAW_NAME DEM_D_Hertz_viscous_Coulomb YOUNG_MODULUS 5e10 POISSON_RATIO 0.3 "
+             "COEFFICIENT_OF_RESTITUTION 0.6 STATIC_FRICTION 0.1 DYNAMIC_FRICTION 0.1",
+    "linear": '"DEM_DISCONTINUUM_CONSTITUTIVE_LAW_NAME": "DEM_D_Linear_viscous_Coulomb", "YOUNG_MODULUS": 2e9, '
+              '"POISSON_RATIO": 0.25, "COEFFICIENT_OF_RESTITUTION": 0.6, "STATIC_FRICTION": 0.1, '
+              '"DYNAMIC_FRICTION": 0.1',
+}
+
+
+@needs("kratos")
+@pytest.mark.parametrize("name", sorted(KRATOS_INPUTS))
+@pytest.mark.parametrize("target", ["wall", "sphere"])
+def test_kratos_inputs_agree_with_their_composition(name, target):
+    """Kratos 10.4.4 with each input (the scene's E, nu and e_n 0.5 differ from the input's), a wall and a free pair
+    of another size, with spin: within 1e-6 of V (mu 0.1: the dialect leaves out a term of the unloading rescale
+    that grows where the spring sticks, docs/kratos-dialect.md)."""
+    from harness.engines import get_engine
+    extra = dict(target="sphere", target_radius=0.03) if target == "sphere" else {}
+    scene = scene_from(en=[0.5], angles=ANGLES, omega0=-20.0, mu=0.1, **extra)
+    law = compose("hertz-mindlin" if name == "hertz" else "linear-spring-dashpot")
+    frame, failures = execute(engine_plan(get_engine("kratos"), law, scene, 200, {"input": KRATOS_INPUTS[name]}))
+    assert failures == [] and agreement(frame, "kratos") < 1e-6
+
+
+def test_kratos_inputs_are_refused_with_its_own_words():
+    with pytest.raises(UserError, match="Variable YOUNGS_MODULUS is unknown"):
+        parse("kratos", KRATOS_INPUTS["hertz"].replace("YOUNG_MODULUS", "YOUNGS_MODULUS"))
+    with pytest.raises(UserError, match="does not have COEFFICIENT_OF_RESTITUTION"):
+        parse("kratos", KRATOS_INPUTS["hertz"].replace("COEFFICIENT_OF_RESTITUTION 0.6 ", ""))
+    with pytest.raises(UserError, match="not yet modelled: Kratos' DEM_D_JKR_Cohesive_Law"):
+        parse("kratos", KRATOS_INPUTS["hertz"].replace("DEM_D_Hertz_viscous_Coulomb", "DEM_D_JKR_Cohesive_Law"))
+    with pytest.raises(UserError, match="not yet modelled: Kratos' rolling friction"):
+        parse("kratos", KRATOS_INPUTS["hertz"] + " ROLLING_FRICTION 0.01")
+    assert parse("kratos", KRATOS_INPUTS["hertz"] + " ROLLING_FRICTION 0.0").mu == 0.1
+
+
+@pytest.mark.parametrize("name", sorted(KRATOS_INPUTS))
+@pytest.mark.parametrize("target", ["wall", "sphere"])
+def test_a_kratos_input_steps_as_the_kratos_dialect_of_a_scene_with_its_numbers(name, target):
+    """The input's composition, on a scene of other E, nu and e_n, steps as the Kratos dialect of the paper's path
+    (tested against Kratos in tests/test_kratos.py) on a scene that carries the input's E, nu and e: equal outputs."""
+    from harness.engines import get_engine
+    from harness.solver.batch import batch_of
+    from harness.solver.simulate import run_kernel
+    young, nu = (5e10, 0.3) if name == "hertz" else (2e9, 0.25)
+    extra = dict(target="sphere", target_radius=0.03) if target == "sphere" else {}
+    mine = scene_from(en=[0.5], angles=ANGLES, omega0=-20.0, mu=0.1, **extra)
+    theirs = scene_from(en=[0.6], angles=ANGLES, omega0=-20.0, mu=0.1, E=young, nu=nu, **extra)
+    kratos, law_name = get_engine("kratos"), "hertz-mindlin" if name == "hertz" else "linear-spring-dashpot"
+    given = kratos.dialect(law_name, {"input": KRATOS_INPUTS[name]}, target)
+    paper = kratos.dialect(law_name, None, target)
+    a, b = run_kernel(batch_of(given, mine, 0.5, 200))[0], run_kernel(batch_of(paper, theirs, 0.6, 200))[0]
+    assert np.allclose(a, b, rtol=1e-12, atol=1e-12 * 5.0)
+
+
+def test_at_file_reads_a_yade_script_and_a_kratos_materials_file(tmp_path):
+    script = tmp_path / "scene.py"
+    script.write_text("from yade import *\n# ViscElMat(kn=1, ks=1, cn=1, cs=1) in a comment\n"
+                      "mat = O.materials.append(FrictMat(young=7e10, poisson=0.3,\n"
+                      "    frictionAngle=0.1, density=2650))\n"
+                      "O.engines = [InteractionLoop([Ig2_Sphere_Sphere_ScGeom()], "
+                      "[Ip2_FrictMat_FrictMat_MindlinPhys(en=0.5, es=0.5)], [Law2_ScGeom_MindlinPhys_Mindlin()])]\n")
+    given = parse("yade", f"@{script}")
+    assert given.text == ("FrictMat(young=7e10, poisson=0.3, frictionAngle=0.1, density=2650) "
+                          "Ip2_FrictMat_FrictMat_MindlinPhys(en=0.5, es=0.5) Law2_ScGeom_MindlinPhys_Mindlin()")
+    assert [f.name for f in given.flags()] == ["density"] and given.mu == pytest.approx(math.tan(0.1))
+    materials = tmp_path / "MaterialsDEM.json"
+    materials.write_text(json.dumps({
+        "materials": [{"material_name": "m", "material_id": 1,
+                       "Variables": {"PARTICLE_DENSITY": 2650.0, "YOUNG_MODULUS": 7e10, "POISSON_RATIO": 0.3}}],
+        "material_relations": [{"material_names_list": ["m", "m"], "material_ids_list": [1, 1], "Variables": {
+            "COEFFICIENT_OF_RESTITUTION": 0.5, "STATIC_FRICTION": 0.2, "DYNAMIC_FRICTION": 0.2,
+            "DEM_DISCONTINUUM_CONSTITUTIVE_LAW_NAME": "DEM_D_Linear_viscous_Coulomb"}}]}))
+    given = parse("kratos", f"@{materials}")
+    assert given.law == "DEM_D_Linear_viscous_Coulomb" and given.mu == 0.2 and given.values["YOUNG_MODULUS"] == 7e10
+
+
+@pytest.mark.parametrize("engine, text, line", [
+    ("yade", "ViscElMat(kn=1e5, ks=1e4, cn=1, cs=1, mR=0.01)", "not yet modelled: ViscElMat's rolling resistance mR"),
+    ("kratos", "DEM_DISCONTINUUM_CONSTITUTIVE_LAW_NAME DEM_D_DMT_Cohesive_Law", "not yet modelled: Kratos' "
+                                                                                "DEM_D_DMT_Cohesive_Law"),
+])
+def test_yade_and_kratos_refusals_are_one_line_with_exit_2(engine, text, line):
+    run = subprocess.run([sys.executable, "-m", "harness", "compare", "--model", "hertz-mindlin", "--engines", engine,
+                          "--engine-input", f"{engine}={text}"], capture_output=True, text=True, timeout=300)
+    assert run.returncode == 2 and line in run.stderr and "Traceback" not in run.stderr
+    assert len(run.stderr.strip().splitlines()) == 1
+
+
+@needs("yade")
+@needs_lammps
+@pytest.mark.engine
+def test_explain_translates_a_yade_viscel_input_into_lammps_words_that_run_alike():
+    """ViscElMat kn, ks, cn, cs of one material is LAMMPS `hooke kn/2 cn/2 damping velocity tangential linear_history
+    ks/2 cs/cn mu limit_damping`: explain names those words (their composition, stepped as YADE steps, rebounds as the
+    input's within 1e-6 of V), and YADE and Debian's LAMMPS run with them return the same e_n at normal incidence
+    (leapfrog against velocity Verlet at t_c/1000: within 1e-3)."""
+    from harness.engines import get_engine
+    from harness.explain import explain
+    text = YADE_INPUTS["viscel kn ks cn cs"]
+    x = explain("yade", text, angles=[0.0, 20.0, 60.0])
+    ((where, words),) = x.translations
+    assert where == "lammps 2021.9.29.2" and words == ("hooke 10000000.0 500.0 damping velocity tangential "
+                                                      "linear_history 2850000.0 0.3 0.39941272145322637 "
+                                                      "limit_damping")
+    scene = scene_from(en=[0.5], angles=[0.0], mu=math.tan(0.38))
+    e_n = {}
+    for engine, given in ((get_engine("yade"), text), (lammps.ENGINE, words)):
+        frame, failures = execute(engine_plan(engine, compose("linear-spring-dashpot"), scene, 1000,
+                                              {"input": given}))
+        assert failures == [] and agreement(frame, engine.NAME) < 1e-6
+        e_n[engine.NAME] = frame[frame.engine == engine.NAME].e_n.iloc[0]
+    clipped = oracles.lsd_notension_e(500.0 / (2.0 * math.sqrt(1e7 * scene.contact.mass)))   # F_n >= 0: Schwager
+    assert abs(e_n["yade"] - e_n["lammps"]) < 1e-3 and abs(e_n["yade"] - clipped) < 5e-3
+
+
+def test_a_yade_or_kratos_input_runs_against_a_wall_of_its_own_material_only():
+    """The input is one material for the sphere and its wall: a rigid or other wall is skipped, not run as the
+    input's own material under another name."""
+    from harness.engines import get_engine
+    yade_text = YADE_INPUTS["mindlin en es"]
+    assert get_engine("yade").walls("hertz-mindlin", {"input": yade_text}) == ("same",)
+    assert get_engine("kratos").walls("hertz-mindlin", {"input": KRATOS_INPUTS["hertz"]}) == ("same",)
+    assert "rigid" in get_engine("yade").walls("hertz-mindlin") and "rigid" in get_engine("kratos").walls("hertz-mindlin")

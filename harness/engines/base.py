@@ -143,9 +143,9 @@ class Engine:
         can."""
         return ("same",)
 
-    def target_reason(self, law_name, scene):
-        """Why its inputs cannot put the sphere against the scene's target (a wall, or a sphere: scene.spheres), ''
-        when they can."""
+    def target_reason(self, law_name, scene, options=None):
+        """Why its inputs (with these options) cannot put the sphere against the scene's target (a wall, or a sphere:
+        scene.spheres), '' when they can."""
         if scene.spheres and law_name not in self.PAIR_DIALECTS:
             return f"its {law_name} inputs have no sphere target yet"
         return ""

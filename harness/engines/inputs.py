@@ -3,4 +3,6 @@ dialect, registered here by one line (harness/engine_inputs.py reads it)."""
 VOCABULARIES = {
     "lammps": ".lammps.inputs",
     "liggghts": ".liggghts.inputs",
+    "yade": ".yade.inputs",
+    "kratos": ".kratos.inputs",
 }

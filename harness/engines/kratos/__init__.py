@@ -76,10 +76,11 @@ class Kratos(Engine):
 
     def walls(self, law_name, options=None):
         """Any wall: a rigid face carries its own YOUNG_MODULUS and POISSON_RATIO, mixed with the sphere's as harness
-        mixes them (InitializeContactWithFEM); rigid is a face RIGID_SCALE times stiffer than the sphere."""
-        return ("same", "other", "rigid")
+        mixes them (InitializeContactWithFEM); rigid is a face RIGID_SCALE times stiffer than the sphere. A user's own
+        input (the option `input`) gives the wall its one material."""
+        return ("same",) if "input" in dict(options or {}) else ("same", "other", "rigid")
 
-    def target_reason(self, law_name, scene):
+    def target_reason(self, law_name, scene, options=None):
         """Its pair dialects hold for a free target of the projectile's moduli (any size, density or spin): a held
         target still lends its mass to Kratos' damping, m* = m1 m2/(m1 + m2), and unequal moduli move each lever to
         R_i - d E_j/(E_i + E_j) (docs/kratos-dialect.md, measured there)."""
@@ -89,6 +90,8 @@ class Kratos(Engine):
         projectile, target = scene.spheres
         if target.fixed:
             return "its damping takes a held target's mass (m* = m1 m2/(m1 + m2)): no dialect for a frozen target yet"
+        if "input" in dict(options or {}):
+            return ""                       # a user's own input gives both spheres its YOUNG_MODULUS and POISSON_RATIO
         if (target.E, target.nu) != (projectile.E, projectile.nu):
             return "its lever arms split the overlap by the moduli (R_i - d E_j/(E_i + E_j)): no dialect for a target " \
                    "of other moduli yet"

@@ -75,14 +75,18 @@ def pair_spheres(scene, spec):
     return spheres, materials, None
 
 
-def script(law, scene, spec, observe=False):
+def script(law, scene, spec, observe=False, own=None):
     """The script text of a run's spec (harness.plan.RunSpec; validated numbers and fixed words only, see
-    harness.render)."""
+    harness.render); `own`, a user's own input (its law, E, nu, e and mu), for every material and the relation."""
     target = "sphere" if scene.spheres else "wall"
     place = pair_spheres if scene.spheres else wall_spheres
     spheres, materials, wall = place(scene, spec)
+    counterpart, e_n, mu = COUNTERPARTS[law.name], spec.e_n, scene.mu
+    if own:
+        materials = [dict(m, E=own["E"], nu=own["nu"]) for m in materials]
+        counterpart, e_n, mu = own["counterpart"], own["e_n"], own["mu"]
     return render(TEMPLATES, "batch.py.j2", harness_version=__version__, law=law.name,
-                  counterpart=COUNTERPARTS[law.name], e_n=spec.e_n, mu=scene.mu, impacts=spec.impacts, target=target,
+                  counterpart=counterpart, e_n=e_n, mu=mu, impacts=spec.impacts, target=target,
                   dt=spec.dt, chunk=spec.chunk, max_chunks=spec.chunks, observe=bool(observe), spheres=spheres,
                   materials=materials, wall=wall)
 
@@ -154,5 +158,9 @@ def read_observation(path, spec):
 
 
 def render_batch(paper_law, scene, spec, options=None, observe=False):
-    """The script text of one run's spec, as Engine.run_batch would run it."""
-    return script(paper_law, scene, spec, observe)
+    """The script text of one run's spec, as Engine.run_batch would run it (with a user's own input, the option
+    `input` (harness.engine_inputs), its variables as given)."""
+    from ...engine_inputs import INPUT_OPTION, parse
+    text = dict(options or {}).get(INPUT_OPTION)
+    own = parse("kratos", text).deck_values() if text is not None else None
+    return script(paper_law, scene, spec, observe, own)

@@ -74,9 +74,24 @@ class Yade(Engine):
         return ARITHMETIC[self.flavour(options)]
 
     def walls(self, law_name, options=None):
-        """hertz-mindlin against any wall (FrictMat: E and nu mixed as harness mixes them), the others against the
-        sphere's own material only."""
+        """hertz-mindlin against any wall (FrictMat: E and nu mixed as harness mixes them), the others, and a user's
+        own input (its one material), against the sphere's own material only."""
+        if "input" in dict(options or {}):
+            return ("same",)
         return ("same", "other", "rigid") if law_name == "hertz-mindlin" else ("same",)
+
+    def target_reason(self, law_name, scene, options=None):
+        """A user's own input (the option `input`) runs against a free target sphere of the projectile's density (its
+        one material on both spheres; ViscEl would take a held target's mass into m_R); the paper's inputs against
+        the targets PAIR_DIALECTS holds."""
+        if "input" not in dict(options or {}) or not scene.spheres:
+            return super().target_reason(law_name, scene)
+        projectile, target = scene.spheres
+        if target.fixed:
+            return "your own input runs against a free target sphere only"
+        if target.rho != projectile.rho:
+            return "your own input gives both spheres its one material: a target of the projectile's density only"
+        return ""
 
     def composition(self, law_name, options, target):
         return dialect(law_name, options, target)
@@ -86,7 +101,9 @@ class Yade(Engine):
 
     def precision_runs(self, law, scene, options):
         """A double run beside an mpfr150 one (precision.py), when the comparison runs in double."""
-        return precision_runs(law, scene) if self.flavour(options) == "double" else ()
+        if self.flavour(options) != "double":
+            return ()
+        return precision_runs(law, scene, self.dialect, dict(options or {}).get("input"))
 
 
 ENGINE = Yade()

@@ -193,5 +193,32 @@ def read_observation(path, n_spheres, dt):
 
 
 def render_batch(paper_law, scene, spec, options=None, observe=False):
-    """The script text of one run's spec (harness.plan.RunSpec), as Engine.run_batch would run it."""
-    return script(paper_law, scene, spec, dict(options or {}).get("linear", "viscel"), observe)
+    """The script text of one run's spec (harness.plan.RunSpec), as Engine.run_batch would run it (with a user's own
+    input, the option `input` (harness.engine_inputs), its material and functors verbatim)."""
+    from ...engine_inputs import INPUT_OPTION, parse
+    options = dict(options or {})
+    text = options.pop(INPUT_OPTION, None)
+    if text is not None:
+        return input_script(scene, spec, parse("yade", text).deck_values(), observe)
+    return script(paper_law, scene, spec, options.get("linear", "viscel"), observe)
+
+
+def input_script(scene, spec, own, observe=False):
+    """The batched script of a user's own input (`own`: its material, functors and their values), the sphere and its
+    wall or target sphere of that one material."""
+    e_n, v_n0, v_t0, omega0 = spec.e_n, spec.v_n0, spec.v_t0, spec.omega0
+    radius = scene.radius
+    spheres = [{"x": i * 4.0 * radius, "vx": float(vt), "vz": -float(vn), "omegay": float(w)}
+               for i, (vn, vt, w) in enumerate(zip(v_n0, v_t0, omega0))]
+    common = dict(harness_version=__version__, law="input", e_n=e_n, rho=scene.rho, radius=radius, height=radius,
+                  spheres=spheres, ig2="Ig2_Wall_Sphere_ScGeom", hertzian=True, dt=spec.dt, chunk=spec.chunk,
+                  max_chunks=spec.chunks, observe=bool(observe), other=None, target=None, **own)
+    if scene.spheres:
+        projectile, target = scene.spheres
+        r1, r2, r_star = projectile.radius, target.radius, scene.contact.radius
+        common.update(radius=r1, height=r1 + r2, rho=projectile.rho, ig2="Ig2_Sphere_Sphere_ScGeom", hertzian=False,
+                      target={"radius": r2, "fixed": target.fixed, "omega": target.omega},
+                      spheres=[{"x": i * 3.0 * (r1 + r2), "vx": float(vt), "vz": -float(vn),
+                                "omegay": (r_star * float(w) - r2 * target.omega) / r1}
+                               for i, (vn, vt, w) in enumerate(zip(v_n0, v_t0, omega0))])
+    return render(TEMPLATES, "batch.py.j2", **common)
