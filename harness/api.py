@@ -23,8 +23,15 @@ HISTORY_POINTS = 400
 
 
 def run_request(request, on_frame=None, progress=None):
-    """The reference solver's results table of a validated request; progress.advance after each e_n."""
-    runs = reference_runs(request.law, request.scene, request.resolution)
+    """The reference solver's results table of a validated request (the dialect of its one engine input, if it has
+    one: --engine-input); progress.advance after each e_n."""
+    from .engine_inputs import INPUT_OPTION
+    given = [name for name, options in request.engine_options.items() if INPUT_OPTION in options]
+    if len(given) > 1:
+        raise UserError(f"run takes one engine input, got {len(given)} ({', '.join(given)})")
+    dialect = ENGINES[given[0]].dialect(request.law.name, request.engine_options[given[0]],
+                                        target_of(request.scene)) if given else None
+    runs = reference_runs(request.law, request.scene, request.resolution, dialect)
     if progress:
         progress.expect(len(runs))
 
@@ -170,10 +177,26 @@ def compare_request(request, on_frame=None, progress=None, partial=None):
     return Comparison(law, scene, results, overrides=dict(request.overrides), engine_options=request.engine_options,
                       arithmetic=arithmetic_of(request.engine_options),
                       builds={e.NAME: {**e.build(), "note": e.dialect_note()} for e in engines},
+                      engine_inputs=input_records(law, scene, engines),
                       requested=request.engines, skipped=[(s.name, s.reason) for s in found if not s.available],
                       failures=failures, attribution=attributions, attribution_rows=rows, sliding=sliding,
                       precision=precision,
                       histories=histories, tolerances=request.tolerances)
+
+
+def input_records(law, scene, engines):
+    """{engine: {text, composition, flags}} of each engine that ran a user's own input: the text verbatim, the
+    neutral sub-models it maps to, and the unphysical values it was run with."""
+    from .engine_inputs import INPUT_OPTION, parse
+    out = {}
+    for engine, options in engines.items():
+        text = (options or {}).get(INPUT_OPTION)
+        if text is not None:
+            composition = engine.dialect(law.name, options, target_of(scene)).describe()
+            flags = [f.why for f in parse(engine.code, text, engine.version()).flags(engine.version())]
+            out[engine.NAME] = {"text": text, "composition": {k: str(v) for k, v in composition.items()},
+                                "flags": flags}
+    return out
 
 
 def measurements(law, scene, engines, steps, tolerances):

@@ -24,6 +24,7 @@ class Comparison:
     engine_options: dict = field(default_factory=dict)
     arithmetic: dict = field(default_factory=dict)       # engine -> the floating-point arithmetic it ran in
     builds: dict = field(default_factory=dict)           # engine -> what ran (Engine.build) and its dialect note
+    engine_inputs: dict = field(default_factory=dict)    # engine -> {text, composition, flags} of a user's own input
     requested: tuple | None = None          # engines asked for by name (None: every engine that supports the law)
     skipped: list = field(default_factory=list)          # (engine, reason)
     failures: list = field(default_factory=list)         # FailedRun

@@ -53,16 +53,17 @@ def run(model, **keywords):
 
 
 @takes(SCENE, RESOLUTION, WITH, doc=SCENE_DOC + RESOLUTION_DOC)
-def compare(model, engines=None, engine_options=None, tolerances=None, **keywords):
+def compare(model, engines=None, engine_options=None, tolerances=None, engine_input=None, **keywords):
     """The paper law, each engine's dialect and each engine on one scene (harness compare): a Comparison with
     .results, .agreement, .deviation, .cross, .attribution, .findings, .sliding, .physics, .reproduces, .ok,
     .report(dir) and .plot(column), e.g. compare("hertz-mindlin", engines=["liggghts"], en=[0.5], angles=[10, 30]).
     engines: a list of names (None: every engine that supports the law); engine_options: {engine: {key: value}};
-    tolerances: the physics verdict's, {name: value} (--tolerance)."""
+    tolerances: the physics verdict's, {name: value} (--tolerance); engine_input: {engine: your own input as it
+    takes it} (--engine-input)."""
     from .api import compare_request
     from .notebook_results import Compared
     request = Request.from_keywords(model, engines=engines, engine_options=engine_options, tolerances=tolerances,
-                                    **keywords)
+                                    engine_input=engine_input, **keywords)
     return Compared.of(compare_request(request))
 
 
@@ -148,3 +149,12 @@ def plot(frame, y, x=None, title=None):
     per engine and dialect, e.g. plot(harness.run("thornton", en=[0.5]), "e_t")."""
     from .notebook_results import series
     return series(frame, y, x, title)
+
+
+def explain(engine, text, run=False, **keywords):
+    """What your own input `text` of `engine` computes (harness explain): an Explanation with .e_n, .t_contact,
+    .sweep (the input's dialect per impact), .nearest [(paper law, distance)], .translations, .advice and, with
+    run=True, .agreement of the engine with its dialect; e.g. explain("lammps", "hooke 1e7 2e5 tangential
+    linear_history 2.8e6 0.5 0.4", angles=[10, 30])."""
+    from .explain import explain as explained
+    return explained(engine, text, run=run, **keywords)

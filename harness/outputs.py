@@ -45,7 +45,7 @@ def _write_run(out_dir, comparison, partial):
     write_text(os.path.join(out_dir, RUN), json.dumps(
         {"model": comparison.law.name, "overrides": comparison.overrides, "scene": scene_fields,
          "skipped": comparison.skipped, "engine_options": comparison.engine_options,
-         "arithmetic": comparison.arithmetic, "builds": comparison.builds,
+         "arithmetic": comparison.arithmetic, "builds": comparison.builds, "engine_inputs": comparison.engine_inputs,
          "requested": comparison.requested, "command": comparison.command, "date": comparison.date,
          "tolerances": comparison.tolerances.as_dict(), "partial": partial,
          "attributions": list(comparison.attribution)}, indent=1))
@@ -166,7 +166,7 @@ def load_comparison(out_dir):
     engine_options = run.get("engine_options", {})
     return Comparison(law, scene, frame, overrides=run.get("overrides") or {}, engine_options=engine_options,
                       arithmetic=run.get("arithmetic") or arithmetic_of(engine_options),
-                      builds=run.get("builds") or {}, requested=tuple(requested) if requested else None,
+                      builds=run.get("builds") or {}, engine_inputs=run.get("engine_inputs") or {}, requested=tuple(requested) if requested else None,
                       skipped=[tuple(s) for s in run.get("skipped", [])], failures=failures, attribution=attributions,
                       attribution_rows=attribution_rows,
                       sliding=sliding if not sliding.empty else None,

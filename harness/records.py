@@ -24,6 +24,12 @@ def _options(value):
     return isinstance(value, dict) and all(isinstance(k, str) and _string_map(v) for k, v in value.items())
 
 
+def _inputs(value):
+    return isinstance(value, dict) and all(
+        isinstance(i, dict) and _strings(i.get("text")) and _string_map(i.get("composition"))
+        and isinstance(i.get("flags"), list) and all(map(_strings, i["flags"])) for i in value.values())
+
+
 def _names(value):
     return value is None or (isinstance(value, list) and all(map(_strings, value)))
 
@@ -49,6 +55,7 @@ FIELDS = {   # field -> (what it must be, in words; its check)
     "arithmetic": ("{engine: the arithmetic it ran in}", _string_map),
     "builds": ("{engine: {version, binary, sha256, origin, note}}",
                lambda v: isinstance(v, dict) and all(isinstance(b, dict) and _string_map(b) for b in v.values())),
+    "engine_inputs": ("{engine: {text, composition, flags}}", _inputs),
     "requested": ("a list of engine names or null", _names),
     "attributions": ("a list of the attributions measured", lambda v: isinstance(v, list) and all(map(_strings, v))),
     "command": ("a string", _strings),

@@ -41,12 +41,20 @@ def word(value):
     return value
 
 
+def token(value):
+    """A word of a user's engine input: an integer, a finite number (num) or a keyword (word)."""
+    if isinstance(value, int) and not isinstance(value, bool):
+        return str(value)
+    return word(value) if isinstance(value, str) else num(value)
+
+
 def environment(directory=REPORT_TEMPLATES, autoescape=False):
     env = jinja2.Environment(loader=jinja2.FileSystemLoader(str(directory)), undefined=jinja2.StrictUndefined,
                              autoescape=autoescape, keep_trailing_newline=True)
     env.filters["num"] = num
     env.filters["word"] = word
     env.filters["count"] = count
+    env.filters["token"] = token
     env.filters["counted"] = counted
     env.globals["doc"] = doc_link
     return env

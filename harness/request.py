@@ -189,6 +189,26 @@ def engine_options_from(triples, engines=None):
     return out
 
 
+def with_inputs(items, engines, options, mu):
+    """Put each engine input (--engine-input ENGINE=TEXT, harness.engine_inputs) among its engine's options (each
+    build of it asked for too); the scene's friction coefficient, the inputs' own."""
+    from .engine_inputs import INPUT_OPTION, engine_inputs_from, input_mu
+    inputs = engine_inputs_from(items)
+    for engine, text in inputs.items():
+        if engine == "reference":
+            raise UserError("--engine-input is for an engine; the reference solver computes the paper law")
+        if options.get(engine):
+            raise UserError(f"give --engine-input or --engine-option for {engine}, not both: the input sets what "
+                            "the options would")
+        builds = [b for b in engines or () if b == engine or b.partition("@")[0] == engine]
+        if engines is not None and not builds:
+            raise UserError(f"--engine-input for {engine}, which is not among the engines asked for "
+                            f"({', '.join(engines)})")
+        for name in builds or (engine,):
+            options.setdefault(name, {})[INPUT_OPTION] = text
+    return input_mu(inputs, mu)
+
+
 @dataclass(frozen=True)
 class Request:
     """A validated request: `law` (the named law with its replacements), `scene`, `resolution`, the engines asked
@@ -208,7 +228,7 @@ class Request:
 
     @classmethod
     def from_keywords(cls, model, engines=None, engine_options=None, steps_per_contact=None, dt=None,
-                      converged=False, tolerances=None, **keywords):
+                      converged=False, tolerances=None, engine_input=None, **keywords):
         """From the API's keywords (the CLI passes its options under the same names): `with_` or `overrides` for
         --with, `engine_options` as {engine: {key: value}} or [(engine, key, value)], `tolerances` as
         {name: value} or ["name=value"] (the physics verdict's, harness.analyses.physics.Tolerances)."""
@@ -227,6 +247,8 @@ class Request:
             raise UserError(f"--with {repeated[0]}=... given twice")
         engines = engines_asked(as_names("engines", engines))
         options = engine_options_from(as_engine_options(engine_options), engines)
+        if engine_input:
+            keywords["mu"] = with_inputs(engine_input, engines, options, keywords.get("mu"))
         tolerances = Tolerances.of(as_tolerances(tolerances))
         request = cls(model, scene_from(**keywords), resolution_from(steps_per_contact, dt, converged),
                       tuple(overrides), engines, options, tolerances)

@@ -24,6 +24,7 @@ SMOKES = {
     "bench_calibrate.py": (["liggghts"], r"RATIO calibrate/compare \(medians\): [\d.]+", True),
     "bench_startup.py": ([], r"--help\s+[\d.]+ /\s+[\d.]+\s+[\d.]+ /\s+[\d.]+", False),
     "bench_kratos.py": ([], r"RATIO separate/batched: [\d.]+x \(same results to 1e-12: True\)", "kratos"),
+    "bench_explain.py": ([], r"call, warm\s+[\d.]+ /\s+[\d.]+ s", False),
     "bench_commands.py": ([], r"compare --model hertz-mindlin\s+[\d.]+ /\s+[\d.]+\s+[\d.]+ /\s+[\d.]+\s+1", True),
 }
 

@@ -181,6 +181,7 @@ FILE = Table({
     "engines": ListOf(EngineName(ENGINES), f"an array of engine names ({', '.join(ENGINES)}, or ENGINE@VERSION)"),
     "engine_options": TableOf(TableOf(Text(), expected='a table of KEY = "VALUE"'), keys=ENGINES,
                               expected="a table of engines"),
+    "engine_inputs": TableOf(Text(), keys=ENGINES, expected='a table of ENGINE = "your own input"'),
     "e_n": NUMBERS, "angles": NUMBERS, "psi": NUMBERS, "vt": NUMBERS, "speeds": NUMBERS, "normal_speeds": NUMBERS,
     "spins": NUMBERS, "dt": NUMBERS, "mus": NUMBERS, "radii": NUMBERS,
     "walls": ListOf(Text(WALLS), f"an array of walls ({', '.join(WALLS)})"),

@@ -76,6 +76,7 @@ def from_dict(data, name="campaign"):
                         f"targets x speeds x spins x resolutions x e_n x runs per engine); at most {MAX_TASKS} are "
                         "taken: split the campaign")
     options = {engine: dict(o) for engine, o in data.get("engine_options", {}).items()}
+    inputs = dict(data.get("engine_inputs", {})) or None
     requests = []
     for (law, overrides), material, scene, speed, spin, resolution in itertools.product(
             variants, materials, scenes, speeds, spins, resolutions):
@@ -83,7 +84,7 @@ def from_dict(data, name="campaign"):
         if speed is not None:
             keywords[speed[0]] = speed[1]
         requests.append(Request.from_keywords(law, engines=list(engines), engine_options=options, with_=overrides,
-                                              **keywords))
+                                              engine_input=inputs, **keywords))
     return Campaign(data.get("name", name), tuple(requests), engines, block)
 
 

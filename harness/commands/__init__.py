@@ -30,6 +30,8 @@ COMMANDS = {   # name -> (its module, its summary): the parser lists every comma
                                "the engines: every quantity against its closed form"),
     "compile": ("compile", "compile every kernel the commands use into the numba cache now, so that no first run "
                            "waits for it"),
+    "explain": ("explain", "what your own engine input computes: achieved e_n, e_t, Omega* and contact time, the "
+                           "paper law it is nearest, the same law in other inputs, and calibrate's advice"),
     "render": ("render", "write an engine's input deck/script for the scene without running it"),
     "report": ("report", "rebuild DIR/report.html from a compare or cost directory, simulating nothing"),
     "check": ("check", "recompute the baseline matrix; exit 1 listing every metric outside tolerance"),

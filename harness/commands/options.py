@@ -188,6 +188,15 @@ def add_engine_options(parser):
                              "the law; `reference` alone runs the reference solver only)")
     parser.add_argument("--engine-option", dest="engine_options", type=engine_option, action="append", default=[],
                         metavar="ENGINE:KEY=VALUE", help=f"an engine's option, repeatable: {declared}")
+    add_engine_input(parser)
+
+
+def add_engine_input(parser):
+    """--engine-input ENGINE=TEXT (harness.engine_inputs)."""
+    parser.add_argument("--engine-input", dest="engine_inputs", action="append", default=[], metavar="ENGINE=TEXT",
+                        help="your own contact input as the engine takes it, repeatable: lammps='hooke 1e6 0.5 "
+                             "tangential linear_history 2.8e5 0.5 0.4' (the words after pair_coeff * *, or a "
+                             "classic style and its arguments), or ENGINE=@FILE (the contact lines of a deck)")
 
 
 def engines_from(text):
@@ -215,6 +224,8 @@ def keywords(args, resolution=True):
         out.update(steps_per_contact=args.steps_per_contact, dt=args.dt, converged=args.converged)
     if hasattr(args, "engines"):
         out.update(engines=engines_from(args.engines), engine_options=args.engine_options)
+    if getattr(args, "engine_inputs", None):
+        out.update(engine_input=args.engine_inputs)
     return out
 
 

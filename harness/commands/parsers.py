@@ -7,8 +7,8 @@ from ..campaign.drop import DROP, DROP_HELP
 from ..campaign.limits import max_workers
 from ..engines.names import EXTERNAL
 from ..laws.table import law_name
-from .options import (BENCHMARK_EXIT_CODES, add_engine_options, add_output_options, add_scene_options, engine_option,
-                      number)
+from .options import (BENCHMARK_EXIT_CODES, add_engine_input, add_engine_options, add_output_options, add_scene_options,
+                      engine_option, number, number_list)
 
 PIN_HELP = ("engine builds to run instead of the defaults, e.g. lammps@2023.8.2 (`harness engines` lists them); a "
             "baseline from another release is checked all the same, and what changed between the releases is said")
@@ -36,6 +36,7 @@ def engines_parser(sub, describe):
 def run_parser(sub, describe):
     p = describe(sub, "run", "harness run --model thornton --en 0.9,0.5,0.1 --angles 0:80:10 -o results.csv")
     p.add_argument("--model", required=True, type=law_name, help="law name (see `harness models`)")
+    add_engine_input(p)
     add_scene_options(p)
     p.add_argument("-o", "--output", required=True, help="results CSV to write")
     add_output_options(p)
@@ -130,6 +131,22 @@ def compile_parser(sub, describe):
     p.set_defaults(func=runs("compile"))
 
 
+def explain_parser(sub, describe):
+    p = describe(sub, "explain", "harness explain lammps 'hooke 1e7 2e5 tangential linear_history 2.8e6 0.5 0.4'")
+    p.add_argument("engine", help="the engine (or build ENGINE@VERSION) whose input it is")
+    p.add_argument("text", help="the input as the engine takes it (lammps: the words after pair_coeff * *, or a "
+                                "classic style and its arguments), or @FILE: the contact lines of a deck")
+    p.add_argument("--angles", type=number_list, default=None, metavar="LIST",
+                   help="impact angles in degrees (default: the paper's sweep)")
+    for name, what in (("--material", "the sphere's material (default tcc13)"), ("--radius", "its radius, m"),
+                       ("--rho", "its density, kg/m^3"), ("--speed", "the impact speed, m/s")):
+        p.add_argument(name, type=str if name == "--material" else number, default=None, help=what)
+    p.add_argument("--run", action="store_true", help="also run the engine on the sweep and say how far it is from "
+                                                      "its dialect")
+    add_output_options(p)
+    p.set_defaults(func=runs("explain"))
+
+
 def render_parser(sub, describe):
     p = describe(sub, "render", "harness render --model hertz-mindlin --engine liggghts --en 0.5 -o decks/")
     p.add_argument("--model", type=law_name, help="law name (see `harness models`)")
@@ -138,6 +155,7 @@ def render_parser(sub, describe):
                                                          "inputs at the calibrated values (no other option needed)")
     p.add_argument("--engine-option", dest="engine_options", type=engine_option, action="append", default=[],
                    metavar="ENGINE:KEY=VALUE", help="an engine's option (see `harness compare --help`)")
+    add_engine_input(p)
     add_scene_options(p)
     p.add_argument("-o", "--output", required=True, metavar="DIR", help="directory for the inputs")
     add_output_options(p)

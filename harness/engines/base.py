@@ -166,11 +166,22 @@ class Engine:
         """The law as this engine computes it (a harness.laws.Law), for the options given, against a wall or a
         sphere (the two-sphere dialect, reduced to the equivalent wall impact). An option `with:KEY` (with_options)
         replaces sub-model KEY of the dialect, which the engine's inputs then follow."""
+        from ..engine_inputs import INPUT_OPTION
         from ..laws import replace_submodels
         options, submodels = split_submodels(options)
-        law = self.composition(law_name, options, target)
+        text = options.pop(INPUT_OPTION, None)
+        law = self.input_dialect(law_name, text, target) if text is not None else \
+            self.composition(law_name, options, target)
         law = replace_submodels(law, submodels) if submodels else law
         return law if law.dialect == self.dialect_label else dataclasses.replace(law, dialect=self.dialect_label)
+
+    def input_dialect(self, law_name, text, target):
+        """What this build computes with a user's own input `text` (--engine-input), named as the law it is compared
+        with: its vocabulary's composition for this release (harness.engine_inputs)."""
+        from ..engine_inputs import parse
+        version = self.version()
+        law = parse(self.code, text, version).composition(target, version)
+        return dataclasses.replace(law, name=law_name)
 
     def release_dialect(self, law_name, release):
         """Its dialect of the law against a wall as it was for another release (the same where its formulas do not

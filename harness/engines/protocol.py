@@ -43,8 +43,11 @@ class InputRange:
 
 def check_options(name, declared, options):
     """The options given, validated against an engine's declared ones: one clear line for an unknown key or value."""
+    from ..engine_inputs import INPUT_OPTION          # an engine input travels as an option (harness.engine_inputs)
     options = dict(options or {})
     for key, value in options.items():
+        if key == INPUT_OPTION:
+            continue
         if key not in declared:
             raise UserError(f"unknown {name} option {key!r}; known: {', '.join(declared) or 'none'}")
         if value not in declared[key].values:

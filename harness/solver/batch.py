@@ -116,6 +116,7 @@ def batch_of(law, scene, e_n, steps_per_contact, check_stability=True, every_eff
         params[:, C.P_TDAMP] = law.tangential_damping.prefactor(contact, dashpot, normal.linear_stiffness,
                                                                 constant_k_t, e_n)
         params[:, C.P_TCONE] = CONE_CODES[law.tangential_damping.cone]
+        params[:, C.P_TSHARE] = law.tangential_damping.normal_share
     params[:, C.P_LEVER] = law.lever
     params[:, C.P_TORQUE_LEVER] = law.lever if law.torque == "lever" else contact_point_lever(scene)
     pair = GEOMETRIES[law.geometry].pair

@@ -29,7 +29,9 @@ P_TORQUE_LEVER = 24                          # torque lever R - P_TORQUE_LEVER a
 P_R1, P_R2, P_INV_I1, P_INV_I2, P_W2 = 25, 26, 27, 28, 29   # two spheres: radii, 1/inertias (0: fixed), target's spin
 P_TCONE = 30                                 # the paper scheme's Coulomb test with a tangential dashpot: 0 the
                                              # spring's first, 1 spring plus dashpot (tangential_damping.CONES)
-N_PARAMS = 31
+P_TSHARE = 31                                # tangential dashpot, Verlet schemes: c_t += P_TSHARE c_n(alpha), a share
+                                             # of the normal dashpot (0 = none)
+N_PARAMS = 32
 
 # per-impact integer slots
 I_NORMAL, I_END, I_TANGENTIAL, I_INTEGRATOR, I_COULOMB, I_GEOMETRY, I_TOUCH = 0, 1, 2, 3, 4, 5, 6

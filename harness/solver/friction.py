@@ -21,7 +21,9 @@ def friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, in_contact, scheme
     or added to a spring within the cone and capped again (rule 'spring-first'). History cleared out of contact."""
     paper = scheme == C.INTEGRATOR_PAPER
     f_t, f_s = 0.0, 0.0
-    if TANGENTIAL_VISCOUS[code] and alpha > 0.0:
+    if TANGENTIAL_VISCOUS[code] and alpha > 0.0 and p[C.P_TSHARE] != 0.0:
+        f_t = viscous_friction(1.0, normal_share(p, alpha), slip, p[C.P_MU] * abs(f_n))
+    elif TANGENTIAL_VISCOUS[code] and alpha > 0.0:
         f_t = viscous_friction(tangential_stiffness(code, p[C.P_T1], a), p[C.P_TDAMP], slip, p[C.P_MU] * abs(f_n))
     elif in_contact:
         limit = p[C.P_MU] * abs(f_n)
@@ -30,7 +32,7 @@ def friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, in_contact, scheme
         if PAPER and paper and p[C.P_TDAMP] != 0.0:
             f_t, f_s = damped_friction(ot, p, code, h, a, f_s, slip, limit, lever)
         elif (VELOCITY_VERLET or VERLET_PAIR or LEAPFROG or LEAPFROG_SCALAR_PAIR) and coulomb == C.COULOMB_TOTAL:
-            f_t, f_s = capped_total(ot, p, code, a, f_s, slip, limit)
+            f_t, f_s = capped_total(ot, p, code, a, f_s, slip, limit, alpha)
         elif (LEAPFROG or LEAPFROG_SCALAR_PAIR) and coulomb == C.COULOMB_TOTAL_CASES:
             f_t, f_s = capped_cases(ot, p, code, a, f_s, slip, limit)
         elif (VELOCITY_VERLET or VERLET_PAIR or LEAPFROG or LEAPFROG_SCALAR_PAIR) and coulomb == C.COULOMB_SPRING_FIRST:
@@ -39,8 +41,11 @@ def friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, in_contact, scheme
             f_s = cap(f_s, limit)
             tangential_after_cap(code, f_s, p[C.P_T1], a, ot)
             f_t = f_s
-        elif p[C.P_TDAMP] == 0.0:
+        elif p[C.P_TDAMP] == 0.0 and p[C.P_TSHARE] == 0.0:
             f_t = f_s
+        elif p[C.P_TSHARE] != 0.0:                   # Coulomb rule 'spring' with a share of the normal dashpot
+            c_t = p[C.P_TDAMP] * math.sqrt(tangential_stiffness(code, p[C.P_T1], a)) if p[C.P_TDAMP] != 0.0 else 0.0
+            f_t = f_s - (c_t + normal_share(p, alpha)) * slip
         else:
             f_t = f_s - p[C.P_TDAMP] * math.sqrt(tangential_stiffness(code, p[C.P_T1], a)) * slip
     else:
@@ -50,10 +55,12 @@ def friction(s, ot, p, code, h, scratch, alpha, a, f_n, slip, in_contact, scheme
 
 
 @njit(cache=True, inline="always")
-def capped_total(ot, p, code, a, f_s, slip, limit):
+def capped_total(ot, p, code, a, f_s, slip, limit, alpha):
     """Coulomb rule 'total': the spring and its dashpot together, F_s - c_t V_s, capped at mu |F_n|; when capped,
     the spring is set to what the capped total leaves to it, F_t + c_t V_s. Returns (F_t, F_s)."""
     c_t = p[C.P_TDAMP] * math.sqrt(tangential_stiffness(code, p[C.P_T1], a)) if p[C.P_TDAMP] != 0.0 else 0.0
+    if p[C.P_TSHARE] != 0.0:
+        c_t += normal_share(p, alpha)
     total = f_s - c_t * slip
     if abs(total) <= limit:
         return total, f_s
@@ -61,6 +68,13 @@ def capped_total(ot, p, code, a, f_s, slip, limit):
     f_s = f_t + c_t * slip
     tangential_after_cap(code, f_s, p[C.P_T1], a, ot)
     return f_t, f_s
+
+
+@njit(cache=True, inline="always")
+def normal_share(p, alpha):
+    """P_TSHARE c_n(alpha): a tangential dashpot that is a share of the normal one, c_n = c0 alpha^power."""
+    power = p[C.P_DAMP_POWER]
+    return p[C.P_TSHARE] * p[C.P_DAMP_C0] * (1.0 if power == 0.0 else alpha ** power)
 
 
 @njit(cache=True, inline="always")

@@ -23,6 +23,7 @@ from .switches import (LEAPFROG, LEAPFROG_PAIR, LEAPFROG_SCALAR_PAIR, LEAPFROG_S
                        VERLET_PAIR)
 from .dispatch import N_NORMAL, TANGENTIAL_NONE, TANGENTIAL_VISCOUS, tangential_stiffness
 from .events import locate_release, split_at_event
+from .friction import normal_share
 from .mesh import PEAK_POINTS, graded_step, parabola_peak, polynomial_peak
 from .pair import step_leapfrog_pair, step_leapfrog_scalar_pair, step_verlet_pair
 from .schemes import paper_first_touch, step, step_leapfrog, step_leapfrog_sphere, step_velocity_verlet
@@ -80,6 +81,11 @@ def integrate_rows(first, last, params, ints, out, history, stride, ext, work):
                                            p[C.P_MU] * abs(s[S_FN]))
             else:
                 s[S_FT] = -p[C.P_TDAMP] * math.sqrt(tangential_stiffness(code, p[C.P_T1], 0.0)) * slip0
+            if p[C.P_TSHARE] != 0.0 and p[C.P_DAMP_POWER] == 0.0:     # a share of the constant normal dashpot
+                if TANGENTIAL_VISCOUS[code]:
+                    s[S_FT] = viscous_friction(1.0, normal_share(p, 0.0), slip0, p[C.P_MU] * abs(s[S_FN]))
+                else:
+                    s[S_FT] -= normal_share(p, 0.0) * slip0
             if row_ints[C.I_COULOMB] == C.COULOMB_TOTAL and abs(s[S_FT]) > p[C.P_MU] * abs(s[S_FN]):
                 s[S_FT] = 0.0
             elif row_ints[C.I_COULOMB] == C.COULOMB_SPRING_FIRST:

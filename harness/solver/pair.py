@@ -9,7 +9,7 @@ from ..jit import compiled
 from ..submodels.tangential.state import N_TSTATE, T_STEP
 from . import codes as C
 from .dispatch import NORMAL_HISTORY, TANGENTIAL_NONE, normal_step, tangential_stiffness
-from .friction import friction
+from .friction import friction, normal_share
 from .schemes import damping_power
 from .state import (N_STATE, S_ALPHA, S_AMAX, S_DW2, S_FEL, S_FN, S_FS, S_FT, S_HISTORY, S_NOLD, S_NX, S_NZ, S_SX,
                     S_SZ, S_VX, S_VZ, S_W, S_X, S_Z, reset_history)
@@ -153,6 +153,8 @@ def step_leapfrog_pair(s, st, o, ot, p, ints, h, scratch, ext):
                 fx, fz = sx, sz
             else:
                 c_s = p[C.P_TDAMP] * math.sqrt(k_s) if p[C.P_TDAMP] != 0.0 else 0.0
+                if p[C.P_TSHARE] != 0.0:
+                    c_s += normal_share(p, alpha)
                 fx, fz = sx - c_s * slip * tx, sz - c_s * slip * tz
             torque = nz * fx - nx * fz                    # (n x F)_y: the normal force has no moment
             f_t = fx * tx + fz * tz

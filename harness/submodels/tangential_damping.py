@@ -22,6 +22,8 @@ class TangentialDashpot:
     cone, then the sum capped); 'sphere-mass': m_t = m/(1 + m R^2/I) (2/7 m for a solid sphere on a wall) in place
     of m."""
 
+    normal_share = 0.0          # c_t += normal_share c_n(alpha) in the Verlet schemes (solver.codes.P_TSHARE)
+
     def __init__(self, spec="none"):
         self.spec = str(spec)
         head, *options = self.spec.split(":")
@@ -79,3 +81,26 @@ class TangentialDashpot:
     def prefactor(self, contact, dashpot, k_n, k_t, e_n):
         """2 g_t sqrt(m_t): c_t = this sqrt(k_t)."""
         return 2.0 * self.ratio(dashpot, k_n, k_t, e_n) * math.sqrt(self.effective_mass(contact))
+
+
+
+class GivenTangentialDashpot(TangentialDashpot):
+    """c_t(alpha) = share c_n(alpha) + per_mass m, given by an input's numbers: the share through the solver's
+    P_TSHARE (Verlet schemes), per_mass m as the prefactor c_t/sqrt(k_t), k_t = unit_stiffness R^radius_power (the
+    caller has checked that k_t is constant there)."""
+
+    def __init__(self, share, per_mass, unit_stiffness, radius_power):
+        super().__init__("none")
+        self.normal_share, self.per_mass = float(share), float(per_mass)
+        self.unit_stiffness, self.radius_power = float(unit_stiffness), float(radius_power)
+        self.rule = "given" if (self.normal_share or self.per_mass) else "none"
+
+    def label(self):
+        if self.rule == "none":
+            return "none"
+        return f"c_t={self.normal_share:.6g}*c_n" if self.normal_share else f"c_t={self.per_mass:.6g}*m"
+
+    def prefactor(self, contact, dashpot, k_n, k_t, e_n):
+        if not self.per_mass:
+            return 0.0
+        return self.per_mass * contact.mass / (self.unit_stiffness * contact.radius ** self.radius_power) ** 0.5

@@ -228,4 +228,5 @@ def compare_context(comparison, files=()):
                 ratios=ratios, sliding=records(sliding), published=records(distances),
                 attributions=[(name, records(table)) for name, table in comparison.attribution.items()],
                 versions=records(comparison.versions) if not comparison.versions.empty else None,
-                notes=[(engine, b["note"]) for engine, b in comparison.builds.items() if b.get("note")])
+                notes=[(engine, b["note"]) for engine, b in comparison.builds.items() if b.get("note")],
+                inputs=comparison.engine_inputs)

@@ -92,7 +92,7 @@ def pair_material(contact):
     return {"E": 2.0 * (1.0 - nu * nu) * contact.E_star, "nu": nu}
 
 
-def pair_deck(law, scene, spec, options=None, observe=False, version=None):
+def pair_deck(law, scene, spec, options=None, observe=False, version=None, own=None):
     """The batched deck of two-sphere impacts: pair k is atoms 2k-1 (the projectile, above) and 2k (its target, at
     rest, frozen when fixed), touching, their relative velocity the impact's; omega0 is the equivalent spin, so the
     projectile's own is (R* omega0 - R2 omega2)/R1. hertz/material gets each type's E and nu and the pair's mixing
@@ -103,7 +103,7 @@ def pair_deck(law, scene, spec, options=None, observe=False, version=None):
     pairs = [{"x": i * spacing, "vx": float(vt), "vz": -float(vn),
               "omega1": (r_star * float(w) - r2 * target.omega) / r1}
              for i, (vn, vt, w) in enumerate(zip(spec.v_n0, spec.v_t0, spec.omega0))]
-    values = settings(law, scene, spec.e_n, options, version)
+    values = dict(INPUT_SETTINGS, normal_args=[0.0, 0.0]) if own else settings(law, scene, spec.e_n, options, version)
     normal_args = values.pop("normal_args")          # hooke: k_n, c_n/m; hertz/material: E, coefficient, nu
     k_n, coefficient = normal_args[0], normal_args[1]
     materials = [(1, 1, {"E": projectile.E, "nu": projectile.nu}), (2, 2, {"E": target.E, "nu": target.nu}),
@@ -115,15 +115,28 @@ def pair_deck(law, scene, spec, options=None, observe=False, version=None):
                   skin=0.5 * min(r1, r2), dt=spec.dt, centres=r1 + r2, r1=r1, r2=r2, rho1=projectile.rho,
                   rho2=target.rho, omega2=target.omega, fixed=target.fixed, chunk=spec.chunk, max_chunks=spec.chunks,
                   normal=values["normal"], damping=values["damping"], tangential=values["tangential"],
-                  x_gamma_t=values["x_gamma_t"], k_n=k_n, k_t=values["k_t"], observe=bool(observe))
+                  x_gamma_t=values["x_gamma_t"], k_n=k_n, k_t=values["k_t"], observe=bool(observe),
+                  **{"input_style": (), "input_coeff": (), **(own or {})})
+
+
+def input_words(options, version):
+    """{pair_style, pair_coeff, wall} words of a user's own input (the option `input`: harness.engine_inputs), or {}."""
+    from ...engine_inputs import INPUT_OPTION, parse
+    text = dict(options or {}).get(INPUT_OPTION)
+    if text is None:
+        return {}
+    style, coefficients, wall = parse("lammps", text, version).deck_style()
+    return {"input_style": style, "input_coeff": coefficients, "input_wall": wall}
 
 
 def deck(law, scene, spec, options=None, observe=False, version=None):
     """Render the batched deck of a run's spec (harness.plan.RunSpec; validated numbers and fixed words only, see
-    harness.render) for LAMMPS `version`; `observe` adds the per-step contact dump (OBSERVE_DUMP)."""
+    harness.render) for LAMMPS `version`; `observe` adds the per-step contact dump (OBSERVE_DUMP). A user's own input
+    (the option `input`) gives its contact words verbatim to pair_style, pair_coeff * * and fix wall/gran."""
+    own = input_words(options, version)
     if scene.spheres:
-        return pair_deck(law, scene, spec, options, observe, version)
-    if scene.wall not in walls(law.name, split_submodels(options)[0]):
+        return pair_deck(law, scene, spec, options, observe, version, own)
+    if not own and scene.wall not in walls(law.name, split_submodels(options)[0]):
         raise EngineFailure(f"LAMMPS' {law.name} decks use a wall of the sphere's own material")
     radius = scene.radius
     spacing = 4.0 * radius
@@ -132,7 +145,14 @@ def deck(law, scene, spec, options=None, observe=False, version=None):
     return render(TEMPLATES, "batch.in.j2", harness_version=__version__, law=law.name, mu=scene.mu, e_n=spec.e_n,
                   atoms=atoms, x_lo=-2.0 * radius, x_hi=len(atoms) * spacing, box_half=2.0 * radius, z_lo=-radius,
                   z_hi=4.0 * radius, skin=0.5 * radius, dt=spec.dt, radius=radius, rho=scene.rho, chunk=spec.chunk,
-                  max_chunks=spec.chunks, observe=bool(observe), **settings(law, scene, spec.e_n, options, version))
+                  max_chunks=spec.chunks, observe=bool(observe),
+                  **({**INPUT_SETTINGS, **own} if own else {**NO_INPUT, **settings(law, scene, spec.e_n, options,
+                                                                                  version)}))
+
+
+INPUT_SETTINGS = dict(style="input", normal="input", damping="input", tangential="input", normal_args=[],
+                      history_args=[], dampflag=0, k_t=None, x_gamma_t=0.0)    # what a template reads of an input
+NO_INPUT = dict(input_style=(), input_coeff=(), input_wall=())
 
 
 def run_inputs(lmp, count, timeout_s, workdir):

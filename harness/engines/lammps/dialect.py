@@ -97,6 +97,9 @@ def walls(law_name, options=None):
     """Any wall where the deck gives the wall's stiffnesses as numbers (granular hooke, the older hooke/history and
     hertz/history styles): harness computes them from the contact's E* and G*. hertz/material takes one E and nu and
     mixes them with themselves, so its wall is of the sphere's own material."""
+    from ...engine_inputs import INPUT_OPTION
+    if INPUT_OPTION in (options or {}):
+        return ("same", "other", "rigid")         # a user's input gives the contact's numbers whatever the wall
     if law_name not in DIALECTS:
         return ("same",)
     style, normal, _, _ = words(law_name, options)

@@ -107,12 +107,16 @@ def wall_material(scene, model):
     return [(RIGID_E, 0.0)] if scene.wall == "rigid" else [(scene.wall_E, scene.wall_nu)]
 
 
-def pair_deck(law, scene, spec, observe=False):
+def pair_deck(law, scene, spec, observe=False, own=None):
     """The batched deck of two-sphere impacts: pair k is atoms 2k-1 (the projectile, above) and 2k (its target, at
     rest, frozen when fixed), touching, their relative velocity the impact's, each of its own material; omega0 is the
     equivalent spin,
     so the projectile's own is (R* omega0 - R2 omega2)/R1."""
-    model, tangential, _, properties, restitution = settings(law, scene, spec.e_n, {})
+    model, tangential, _, properties, restitution = settings(law, scene, spec.e_n, {}) if own is None else \
+        (own["model"], own["tangential"], own["options"], own["properties"], own["e_n"])
+    if own and own["options"]:
+        raise EngineFailure("LIGGGHTS' pair decks take no setting of your input yet (limitForce, "
+                            "tangential_damping, ktToKnUser)")
     if any(style not in ("scalar", "peratomtypepair") for _, style, _ in properties):
         raise EngineFailure(f"LIGGGHTS' pair decks take no per-type property of {model}")
     projectile, target = scene.spheres
@@ -123,9 +127,12 @@ def pair_deck(law, scene, spec, observe=False):
              for i, (vn, vt, w) in enumerate(zip(spec.v_n0, spec.v_t0, spec.omega0))]
     big = max(r1, r2)
     text = render(TEMPLATES, "pair.in.j2", harness_version=__version__, law=law.name, model=model, e_n=restitution,
-                  E1=projectile.E, E2=target.E, nu1=projectile.nu, nu2=target.nu, pairs=pairs, properties=properties,
+                  E1=own["E"][0] if own else projectile.E, E2=own["E"][0] if own else target.E,
+                  nu1=own["nu"][0] if own else projectile.nu, nu2=own["nu"][0] if own else target.nu,
+                  pairs=pairs, properties=properties,
                   x_lo=-2.0 * big, x_hi=len(pairs) * spacing, box_half=2.0 * big, z_lo=-2.0 * r2,
-                  z_hi=2.0 * (r1 + r2) + 2.0 * r1, skin=0.5 * min(r1, r2), mu=scene.mu, tangential=tangential,
+                  z_hi=2.0 * (r1 + r2) + 2.0 * r1, skin=0.5 * min(r1, r2), mu=own["mu"] if own else scene.mu,
+                  tangential=tangential,
                   dt=spec.dt, centres=r1 + r2, r1=r1, r2=r2, rho1=projectile.rho, rho2=target.rho,
                   omega2=target.omega, fixed=target.fixed, chunk=spec.chunk, max_chunks=spec.chunks,
                   observe=bool(observe))
@@ -135,9 +142,15 @@ def pair_deck(law, scene, spec, observe=False):
 def deck(law, scene, spec, options=None, observe=False):
     """Render the batched deck of a run's spec (harness.plan.RunSpec; validated numbers and fixed words only, see
     harness.render); `observe` adds the per-step contact dump (OBSERVE_DUMP)."""
+    from ...engine_inputs import INPUT_OPTION, parse
+    options = dict(options or {})
+    text = options.pop(INPUT_OPTION, None)
+    own = parse("liggghts", text).deck_values() if text is not None else None
     if scene.spheres:
-        return pair_deck(law, scene, spec, observe)
+        return pair_deck(law, scene, spec, observe, own)
     e_n = spec.e_n
+    if own:
+        return input_deck(law, scene, spec, observe, own)
     model, tangential, options, properties, restitution = settings(law, scene, e_n, options)
     if not MIN_RESTITUTION < restitution <= 1.0:
         raise EngineFailure(f"LIGGGHTS accepts coefficientRestitution in (0.05, 1] only; e_n = {e_n:g} was not run")
@@ -155,6 +168,19 @@ def deck(law, scene, spec, options=None, observe=False):
                   properties=properties, tangential=tangential, options=options, dt=spec.dt, radius=radius,
                   rho=scene.rho, chunk=spec.chunk, max_chunks=spec.chunks, observe=bool(observe))
     return Deck(text, model, len(atoms))
+
+
+def input_deck(law, scene, spec, observe, own):
+    """The wall deck of a user's own input (`own`: its model, settings and property values, one atom type)."""
+    radius = scene.radius
+    spacing = 4.0 * radius
+    atoms = [{"x": i * spacing, "vx": float(vt), "vz": -float(vn), "omegay": float(w)}
+             for i, (vn, vt, w) in enumerate(zip(spec.v_n0, spec.v_t0, spec.omega0))]
+    text = render(TEMPLATES, "batch.in.j2", harness_version=__version__, law=law.name, types=1, atoms=atoms,
+                  x_lo=-2.0 * radius, x_hi=len(atoms) * spacing, box_half=2.0 * radius, z_lo=-radius,
+                  z_hi=4.0 * radius, skin=0.5 * radius, dt=spec.dt, radius=radius, rho=scene.rho, chunk=spec.chunk,
+                  max_chunks=spec.chunks, observe=bool(observe), **own)
+    return Deck(text, own["model"], len(atoms))
 
 
 def read_dump(path, n_atoms):
