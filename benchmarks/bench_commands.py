@@ -7,7 +7,7 @@ times each since these machines are noisy; min and median. The README's and docs
 Commands: the quick start's `harness compare --model hertz-mindlin` (every engine installed), `harness paper`, then
 warm and once each `harness cost --model hertz-mindlin` (it takes minutes) and `harness benchmark chung-ooi` on the
 reference and on every engine. --smoke runs compare, paper and cost on their smallest scenes and Chung & Ooi on the
-reference, once.
+reference, once; its compare runs LIGGGHTS alone.
 """
 import argparse
 import os
@@ -24,7 +24,8 @@ FULL = {   # label -> arguments (the output directory is added)
     "paper": ["paper"],
 }
 SMOKE = {
-    "compare --model hertz-mindlin": ["compare", "--model", "hertz-mindlin", "--en", "0.5", "--angles", "10,40"],
+    "compare --model hertz-mindlin": ["compare", "--model", "hertz-mindlin", "--en", "0.5", "--angles", "10,40",
+                                      "--engines", "liggghts"],
     "paper": ["paper", "--laws", "linear-spring-dashpot", "--steps-per-contact", "200"],
 }
 CHUNG_OOI = {"benchmark chung-ooi --engines reference": ["benchmark", "chung-ooi", "--engines", "reference"],
@@ -47,14 +48,15 @@ def timed(arguments, cache, scratch):
 
 
 def measure(arguments, repeat, scratch):
-    """(cold walls, warm walls): each cold run in a new empty cache, the warm runs in the last cold run's cache."""
+    """(cold walls, warm walls, cache): each cold run in a new empty cache, the warm runs in the last cold run's cache,
+    which is returned."""
     cold, warm = [], []
     for _ in range(repeat):
         cache = tempfile.mkdtemp(dir=scratch)
         cold.append(timed(arguments, cache, scratch))
     for _ in range(repeat):
         warm.append(timed(arguments, cache, scratch))
-    return cold, warm
+    return cold, warm, cache
 
 
 def spread(walls):
@@ -71,11 +73,11 @@ def main():
     scratch = tempfile.mkdtemp(prefix="bench-commands-")
     try:
         print(f"{'harness ...':34s} {'cold min / median [s]':>22s} {'warm min / median [s]':>22s} {'runs':>5s}")
+        caches = {}
         for label, arguments in commands.items():
-            cold, warm = measure(arguments, repeat, scratch)
+            cold, warm, caches[label] = measure(arguments, repeat, scratch)
             print(f"{label:34s} {spread(cold):>22s} {spread(warm):>22s} {repeat:5d}")
-        cache = tempfile.mkdtemp(dir=scratch)
-        timed(commands["compare --model hertz-mindlin"], cache, scratch)          # compiles the cost's kernels
+        cache = caches["compare --model hertz-mindlin"]                 # compare compiled the cost's kernels there
         for label, arguments in (("cost --model hertz-mindlin", COST["smoke" if args.smoke else "full"]),
                                  *list(CHUNG_OOI.items())[:1 if args.smoke else None]):
             wall = timed(arguments, cache, scratch)

@@ -7,6 +7,8 @@ runs, the precision checked on two impacts at a coarse step, the figures drawn i
 faster. Both warm (compiled).
 
     .venv/bin/python benchmarks/bench_compare.py [--smoke]
+
+--smoke: one e_n and two angles, LIGGGHTS and YADE alone (YADE for its precision check).
 """
 import os
 import sys
@@ -82,7 +84,7 @@ def side_by_side(request, out_dir):
 
 
 def main(smoke=False):
-    keywords = dict(en=(0.5,), angles=(10.0, 40.0)) if smoke else {}
+    keywords = dict(en=(0.5,), angles=(10.0, 40.0), engines=["liggghts", "yade"]) if smoke else {}
     request = Request.from_keywords("hertz-mindlin", **keywords)
     with tempfile.TemporaryDirectory(prefix="harness-bench-") as warm:
         side_by_side(request, warm)                   # compile, load the engines' files into the page cache

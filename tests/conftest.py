@@ -160,3 +160,22 @@ def snapshot(root):
             info = os.lstat(path)
             out[os.path.relpath(path, root)] = (info.st_size, info.st_mtime_ns)
     return out
+
+
+def once_per_session(tmp_path_factory, name, compute):
+    """compute() run once for the whole test session, every xdist worker included: the first process to take the lock
+    runs it and pickles its result, the others (and later calls) unpickle it."""
+    import fcntl
+    import os
+    import pickle
+    shared = tmp_path_factory.getbasetemp()
+    shared = shared.parent if os.environ.get("PYTEST_XDIST_WORKER") else shared    # this session's, every worker's
+    record = shared / f"{name}.pickle"
+    with open(shared / f"{name}.lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        if not record.exists():
+            result = compute()
+            partial = record.with_suffix(".partial")
+            partial.write_bytes(pickle.dumps(result))
+            partial.rename(record)
+    return pickle.loads(record.read_bytes())

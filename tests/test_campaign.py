@@ -246,8 +246,8 @@ def test_a_campaign_on_dask_stopped_by_sigint_leaves_whole_fragments_and_no_proc
     import time
     from test_reliability import descendants, wait_gone
     path = tmp_path / "c.toml"
-    path.write_text('laws = ["hertz-mindlin"]\nengines = ["yade"]\ne_n = [0.3, 0.5, 0.7, 0.9]\n'
-                    'angles = [10, 30, 50, 70]\nspins = [0.0, 5.0, 10.0]\nsteps_per_contact = [500]\n')
+    path.write_text('laws = ["hertz-mindlin"]\nengines = ["yade"]\ne_n = [0.3, 0.7]\n'
+                    'angles = [10, 50]\nspins = [0.0, 5.0, 10.0]\nsteps_per_contact = [500]\n')
     store = tmp_path / "store"
     command = [sys.executable, "-m", "harness", "campaign", str(path), "-o", str(store), "--executor", "dask",
                "--workers", "2"]
@@ -265,7 +265,7 @@ def test_a_campaign_on_dask_stopped_by_sigint_leaves_whole_fragments_and_no_proc
     names = os.listdir(store)
     assert not [n for n in names if n.endswith(".tmp")]
     kept = Store(store).finished()
-    assert 1 <= len(kept) < 36          # 3 spins x 4 e_n x (paper law, YADE formulas, YADE)
+    assert 1 <= len(kept) < 18          # 3 spins x 2 e_n x (paper law, YADE formulas, YADE)
     done = subprocess.run(command + ["--json"], capture_output=True, text=True, timeout=600)
     summary = json.loads(done.stdout)
-    assert (summary["tasks"], summary["cached"], summary["ran"]) == (36, len(kept), 36 - len(kept))
+    assert (summary["tasks"], summary["cached"], summary["ran"]) == (18, len(kept), 18 - len(kept))

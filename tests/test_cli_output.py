@@ -46,9 +46,10 @@ def test_quiet_prints_the_verdict_line_alone(tmp_path, capsys):
 @needs_liggghts
 def test_summary_is_short_and_verbose_has_every_table(tmp_path, capsys, monkeypatch):
     monkeypatch.setenv("COLUMNS", "120")        # a terminal 120 wide (pytest-xdist's workers say 80)
-    main(["compare", "--model", "hertz-mindlin", *SMALL, "-o", str(tmp_path / "a")])
+    store = ["--store", str(tmp_path / "runs")]          # the verbose compare reads the first one's runs
+    main(["compare", "--model", "hertz-mindlin", *SMALL, *store, "-o", str(tmp_path / "a")])
     short = capsys.readouterr().out.splitlines()
-    main(["compare", "--model", "hertz-mindlin", *SMALL, "-o", str(tmp_path / "b"), "--verbose"])
+    main(["compare", "--model", "hertz-mindlin", *SMALL, *store, "-o", str(tmp_path / "b"), "--verbose"])
     verbose = capsys.readouterr().out
     engines = sum(ENGINES[name].available() for name in EXTERNAL)
     # per engine: its physics line with each failed check's causes, its agreement and its three deviations

@@ -9,6 +9,7 @@ from concurrent.futures import ThreadPoolExecutor
 import numpy as np
 import pandas as pd
 import pytest
+from conftest import once_per_session
 from oracles import (kuwabara_kono_e, stronge_e, thornton_appendix_b_g, thornton_e, thornton_impact,
                      tsuji_hertz_e, walton_braun_closed)
 from scipy.optimize import brentq
@@ -308,8 +309,13 @@ def run_job(engine, job):
 
 
 @pytest.fixture(scope="module")
-def engine_runs():
-    """Every engine job, two at a time (each run is one engine process; the machine has two cores)."""
+def engine_runs(tmp_path_factory):
+    """Every engine job, two at a time (each run is one engine process; the machine has two cores), once for all
+    test processes."""
+    return once_per_session(tmp_path_factory, "hard-cases-engine-runs", all_engine_runs)
+
+
+def all_engine_runs():
     jobs = [(engine, job) for engine in EXTERNAL if ENGINES[engine].available() for job in engine_jobs(engine)]
     with ThreadPoolExecutor(max_workers=2) as pool:
         done = list(pool.map(lambda item: run_job(*item), jobs))

@@ -39,11 +39,19 @@ def test_a_with_it_cannot_follow_is_refused_for_it(registered, tmp_path, capsys)
     assert "stand-in cannot follow --with end=tension" in capsys.readouterr().err
 
 
-def test_cost_runs_it(registered, tmp_path):
+def test_cost_runs_it(registered, tmp_path, monkeypatch):
+    """Its runs report no wall time (they run as they are read), so its time per impact-step is never resolved: the
+    timing rounds grow to their caps, here lowered so that they end in seconds (at 2^16 steps and 4096 impacts they
+    took minutes)."""
+    import harness.cost_plan
+    monkeypatch.setattr(harness.cost_plan, "MAX_TIMING_STEPS", 2 ** 10)
+    monkeypatch.setattr(harness.cost_plan, "MAX_TIMING_IMPACTS", 512)
     assert main(["cost", "--model", "hertz-mindlin", "--engines", "stand-in", "--en", "0.5", "--angles", "30",
                  "--ladder", "50,100", "-o", str(tmp_path)]) == 0
-    table = pd.read_csv(tmp_path / "cost.csv")
+    table = pd.read_csv(tmp_path / "cost.csv", dtype={"rung": str})
     assert set(table[table.engine == "stand-in"].status) == {"ok"}
+    timing = table[(table.engine == "stand-in") & (table.rung == "per impact-step")]
+    assert list(timing.timing) == ["not resolved"] and timing.impacts.iloc[0] == 512, timing.to_dict("records")
 
 
 def test_the_chung_ooi_benchmark_runs_it(registered, tmp_path):

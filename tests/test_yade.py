@@ -206,8 +206,8 @@ def test_compare_with_both_engines_prints_the_engine_against_engine_attribution(
     from harness.engines import liggghts
     if not liggghts.ENGINE.available():
         pytest.skip("liggghts is not installed")
-    proc = subprocess.run([sys.executable, "-m", "harness", "compare", "--model",
-                           "hertz-mindlin", "--en", "0.5", "--angles", "0,30,60", "--verbose", "-o", str(tmp_path)],
+    proc = subprocess.run([sys.executable, "-m", "harness", "compare", "--model", "hertz-mindlin", "--engines",
+                           "liggghts,yade", "--en", "0.5", "--angles", "0,30,60", "--verbose", "-o", str(tmp_path)],
                           capture_output=True, text=True, timeout=600)
     assert proc.returncode == 0, proc.stdout + proc.stderr
     assert "yade against liggghts" in proc.stdout

