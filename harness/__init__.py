@@ -2,7 +2,8 @@
 
 From Python, the commands with the command line's option names as keywords (docs/user-guide.md, "Python"):
 `run` (the reference solver's results table), `compare` (a Comparison: verdicts, tables, .report(dir), .plot(column)),
-`calibrate`, `cost`, `paper`, `benchmark`, `campaign` and `explain` (what your own engine input computes); `columns` describes every results column with its unit;
+`calibrate`, `cost`, `paper`, `benchmark`, `campaign` and `explain` (what your own engine input computes); `columns`
+describes every results column with its unit;
 `plot` draws a results table as the paper's figures."""
 
 import importlib as _importlib

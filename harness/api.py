@@ -209,10 +209,10 @@ def measurements(law, scene, engines, steps, tolerances):
     of engines, the paper law's sliding-throughout threshold, its normal force histories."""
     done = {}
 
-    def simulate_at(l, s):                  # each law once: the paper law and a switched law serve every engine
-        key = law_key(l)
+    def simulate_at(law_, s):               # each law once: the paper law and a switched law serve every engine
+        key = law_key(law_)
         if key not in done:
-            done[key] = simulate(l, s, steps_per_contact=steps)[0]
+            done[key] = simulate(law_, s, steps_per_contact=steps)[0]
         return done[key]
 
     dialects = {engine.NAME: engine.dialect(law.name, options, target_of(scene)) for engine, options in engines.items()}

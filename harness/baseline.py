@@ -22,7 +22,7 @@ MATRIX_EN = (0.9, 0.5, 0.1)
 MATRIX_ANGLES = (0.0, 30.0, 60.0)
 STEPS_PER_CONTACT = 200
 METRICS = ("v_n1", "v_t1", "omega1", "e_n", "e_t", "omega_star", "psi2_star", "t_contact", "f_n_max")
-KEYS = ["model", "engine", "dialect", "engine_input", "e_n_target", "theta_deg"]   # engine, dialect by code: lammps@X -> lammps
+KEYS = ["model", "engine", "dialect", "engine_input", "e_n_target", "theta_deg"]   # engine by code: lammps@X -> lammps
 INPUT_CASES = (     # (law, engine, a user's own input): rows recorded with the input verbatim and its composition
     ("linear-spring-dashpot", "lammps", "hooke 1e7 45 damping velocity tangential linear_history 2.8e6 0.5 0.4"),
     ("hertz-mindlin", "liggghts", "model hertz tangential history youngsModulus 7e10 poissonsRatio 0.3 "

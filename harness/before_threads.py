@@ -10,7 +10,8 @@ from .engines import batches  # noqa: F401  (an engine's run imports it when it 
 
 def import_what_threads_use():
     """Load here what threads would otherwise import on first use: pandas' pyarrow layer (a string column loads it),
-    the engines' batches (imported above) and the unicode_escape codec (jinja's lexer looks it up when it compiles an engine's template)."""
+    the engines' batches (imported above) and the unicode_escape codec (jinja's lexer looks it up when it compiles an
+    engine's template)."""
     frame = pd.DataFrame({"text": ["x"], "number": [1.0]})
     pd.concat([frame, frame], ignore_index=True).to_csv()
     codecs.lookup("unicode_escape")

@@ -144,7 +144,8 @@ def input_mu(inputs, mu):
     given = {engine: parse(engine, text).mu for engine, text in inputs.items()}
     values = {m for m in given.values() if m is not None}
     if len(values) > 1:
-        raise UserError(f"the engine inputs give different friction coefficients ({', '.join(f'{e} {m:g}' for e, m in given.items())}): compare them one at a time")
+        each = ", ".join(f"{e} {m:g}" for e, m in given.items())
+        raise UserError(f"the engine inputs give different friction coefficients ({each}): compare them one at a time")
     if not values:
         return mu
     value = values.pop()

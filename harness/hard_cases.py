@@ -14,7 +14,7 @@ EN_RANGE = (0.01, 0.02, 0.05, 0.1, 0.3, 0.5, 0.7, 0.9, 0.99, 1.0)   # "e_n from 
 EN_DEFAULT = (0.05, 0.5, 1.0)         # low, middle and elastic, for the cases that vary something else
 ANGLES = (0.0, 45.0, 89.5)            # normal (e_n is checked there), oblique, grazing
 RATIO_TANGENTIAL = ("linear", "walton-braun")      # tangential springs whose k_t/k_n is an option (`linear:R`)
-KT_KN_RANGE = (1e-3, 10.0)            # k_t/k_n accepted by those springs is (0, 10] (harness/submodels/tangential/ratio.py)
+KT_KN_RANGE = (1e-3, 10.0)            # those springs accept k_t/k_n in (0, 10] (harness/submodels/tangential/ratio.py)
 NU_RANGE = (0.499, -0.99)             # Mindlin's k_t/k_n = kappa = 2(1-nu)/(2-nu): 0.6671 and 1.3311 at the ends of
                                       # the Poisson range (-1, 0.5) a Scene accepts
 

@@ -1,4 +1,5 @@
-"""Rebound kinematics and the paper's normalised quantities, from incident and rebound velocities (docs/laws.md#normalisation).
+"""Rebound kinematics and the paper's normalised quantities, from incident and rebound velocities
+(docs/laws.md#normalisation).
 
 Convention (printed in every report): wall below, V_n > 0 the approach speed and v_n1 > 0 the rebound speed;
 V_t along +x; omega is the spin about +y, positive when the sphere rolls in +x; contact-point slip V_s = V_t - R omega.

@@ -166,7 +166,8 @@ def load_comparison(out_dir):
     engine_options = run.get("engine_options", {})
     return Comparison(law, scene, frame, overrides=run.get("overrides") or {}, engine_options=engine_options,
                       arithmetic=run.get("arithmetic") or arithmetic_of(engine_options),
-                      builds=run.get("builds") or {}, engine_inputs=run.get("engine_inputs") or {}, requested=tuple(requested) if requested else None,
+                      builds=run.get("builds") or {}, engine_inputs=run.get("engine_inputs") or {},
+                      requested=tuple(requested) if requested else None,
                       skipped=[tuple(s) for s in run.get("skipped", [])], failures=failures, attribution=attributions,
                       attribution_rows=attribution_rows,
                       sliding=sliding if not sliding.empty else None,

@@ -35,7 +35,8 @@ def count(value):
 
 
 def word(value):
-    """A keyword from the adapters' fixed sets: letters, digits and _ / . -, nothing else (no spaces, quotes, newlines or $)."""
+    """A keyword from the adapters' fixed sets: letters, digits and _ / . -, nothing else (no spaces, quotes, newlines
+    or $)."""
     if not isinstance(value, str) or not WORD.fullmatch(value):
         raise RenderError(f"refusing to render {value!r} as a keyword")
     return value

@@ -81,7 +81,8 @@ def target_sphere(target, radius, material, omega, fixed):
 
 
 def target_material_fields(text):
-    """--target-material same|MATERIAL|E=PASCAL,nu=RATIO,rho=KG_M3 -> the target's E, nu, rho (same: the projectile's)."""
+    """--target-material same|MATERIAL|E=PASCAL,nu=RATIO,rho=KG_M3 -> the target's E, nu, rho (same: the
+    projectile's)."""
     if text == "same":
         return {}
     if "=" in text:

@@ -12,9 +12,9 @@ from .reading import read_table
 IDENTITY = ("model", "dialect", "engine", "engine_version", "engine_binary", "engine_sha256", "e_n_target", "mu",
             "theta_deg", "v_n0", "v_t0", "omega0", "radius", "E", "nu", "rho", "dt", "steps_per_contact")
 BUILD = ("engine_binary", "engine_sha256")      # the executable that ran and its SHA-256 ('' for the reference)
-OUTCOME = ("v_n1", "v_t1", "omega1", "e_n", "e_t", "beta", "psi1_maw", "psi2_maw", "psi1_star", "psi2_star", "omega_star",
-           "theta_r_com_deg", "theta_r_cp_deg", "t_contact", "f_n_max", "overlap_max", "ke_ratio", "wall_s",
-           "status", "message")
+OUTCOME = ("v_n1", "v_t1", "omega1", "e_n", "e_t", "beta", "psi1_maw", "psi2_maw", "psi1_star", "psi2_star",
+           "omega_star", "theta_r_com_deg", "theta_r_cp_deg", "t_contact", "f_n_max", "overlap_max", "ke_ratio",
+           "wall_s", "status", "message")
 COLUMNS = IDENTITY + OUTCOME
 
 

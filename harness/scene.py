@@ -157,7 +157,8 @@ def within_bounds(scene):
             raise UserError(f"{name} must lie in [{low:g}, {high:g}] {unit}{WHY.get(name, '')}, got {value!r}"
                             .replace(" ,", ","))
     if abs(scene.omega0) * scene.radius > MAX_SURFACE_SPEED:
-        raise UserError(f"|omega0| R must be at most {MAX_SURFACE_SPEED:g} m/s, got {abs(scene.omega0) * scene.radius:g}")
+        raise UserError(f"|omega0| R must be at most {MAX_SURFACE_SPEED:g} m/s, "
+                        f"got {abs(scene.omega0) * scene.radius:g}")
     surface = list(scene.v_t or ()) + [p * scene.mu * scene.speed for p in scene.psi1_star or ()]   # V_t at e_n 1
     if any(v > MAX_SURFACE_SPEED for v in surface):
         raise UserError(f"tangential speeds must be at most {MAX_SURFACE_SPEED:g} m/s, got {max(surface):g}")

@@ -152,7 +152,8 @@ def _max_force(force, sols):
 
 
 def normal_impact(force, m, V, end="alpha", t_max=None):
-    """Integrate m alpha'' = -F(alpha, alpha_dot), alpha(0)=0, alpha_dot(0)=V; e = -alpha_dot(t_c)/V (docs/laws.md, 2.1)."""
+    """Integrate m alpha'' = -F(alpha, alpha_dot), alpha(0)=0, alpha_dot(0)=V; e = -alpha_dot(t_c)/V (docs/laws.md,
+    2.1)."""
     # force(alpha, alpha_dot) returns the UNCLIPPED force (repulsive > 0).  It must accept a slightly negative alpha
     # (evaluated inside the last step): use an odd continuation such as _ppow(a, p) = sign(a)|a|^p.
     # end="alpha": contact ends when alpha returns to 0 (tension allowed); end="force": contact ends when the force
@@ -178,7 +179,8 @@ def normal_impact(force, m, V, end="alpha", t_max=None):
 
 
 def hertz_elastic(m, R, E_star, V):
-    """Elastic Hertz impact: alpha_max=(15mV^2/(16E*sqrtR))^(2/5), F_max=4/3E*sqrtR alpha_max^1.5, t_c=2.94328 alpha_max/V (docs/laws.md)."""
+    """Elastic Hertz impact: alpha_max=(15mV^2/(16E*sqrtR))^(2/5), F_max=4/3E*sqrtR alpha_max^1.5, t_c=2.94328
+    alpha_max/V (docs/laws.md)."""
     alpha_max = (15.0 * m * V ** 2 / (16.0 * E_star * math.sqrt(R))) ** 0.4
     f_max = 4.0 / 3.0 * E_star * math.sqrt(R) * alpha_max ** 1.5
     return dict(alpha_max=alpha_max, f_max=f_max, t_c=C_TC * alpha_max / V)
@@ -198,7 +200,8 @@ def lsd_tension_g(e):
 
 
 def lsd_tension_closed(e, k, m):
-    """LSD Convention A: e = exp(-g pi/sqrt(1-g^2)) (exact), t_c = pi/(w0 sqrt(1-g^2)), w0 = sqrt(k/m) (docs/laws.md)."""
+    """LSD Convention A: e = exp(-g pi/sqrt(1-g^2)) (exact), t_c = pi/(w0 sqrt(1-g^2)), w0 = sqrt(k/m)
+    (docs/laws.md)."""
     g = lsd_tension_g(e)
     s = math.sqrt(1.0 - g * g)
     w0 = math.sqrt(k / m)
@@ -227,7 +230,8 @@ def lsd_notension_e(g):
 
 
 def lsd_notension_t_c(g, w0):
-    """LSD Conv. B t_c (own derivation): 2 arccos g/(w0 sqrt(1-g^2)); 2/w0 at g=1; 2 arccosh g/(w0 sqrt(g^2-1)) for g>1."""
+    """LSD Conv. B t_c (own derivation): 2 arccos g/(w0 sqrt(1-g^2)); 2/w0 at g=1; 2 arccosh g/(w0 sqrt(g^2-1)) for
+    g>1."""
     # Derivation: x = V/w e^{-g w0 t} sin(w t), w = w0 sqrt(1-g^2); w0^2 x + 2 g w0 x' = 0 gives
     # tan(w t) = -2 g sqrt(1-g^2)/(1-2g^2) = -tan(2 arcsin g), i.e. w t_c = pi - 2 arcsin g = 2 arccos g.
     # g = 1: x = V t e^{-w0 t}, force zero at w0 t = 2.  g > 1 (h = sqrt(g^2-1)): e^{2 w0 h t} = ((g+h)/(g-h))^2,
@@ -242,7 +246,8 @@ def lsd_notension_t_c(g, w0):
 
 
 def lsd_notension_g(e):
-    """Damping ratio g giving restitution e for LSD Convention B: root of lsd_notension_e(g) = e by brentq (docs/laws.md)."""
+    """Damping ratio g giving restitution e for LSD Convention B: root of lsd_notension_e(g) = e by brentq
+    (docs/laws.md)."""
     if not 0.0 < e <= 1.0:
         raise ValueError("e must be in (0, 1]")
     if e == 1.0:
@@ -259,7 +264,8 @@ def lsd_notension_g(e):
 
 
 def kuwabara_kono_e(y, end="alpha"):
-    """e of F = k[alpha^1.5 + 1.5 A alpha^0.5 alpha_dot] vs y = A (k/m)^(2/5) V^(1/5): x'' = -x^1.5 - 1.5 y x^0.5 x' (docs/laws.md)."""
+    """e of F = k[alpha^1.5 + 1.5 A alpha^0.5 alpha_dot] vs y = A (k/m)^(2/5) V^(1/5): x'' = -x^1.5 - 1.5 y x^0.5 x'
+    (docs/laws.md)."""
     # Scaling alpha = alpha0 x, t = (alpha0/V) tau, alpha0 = (m V^2/k)^(2/5) leaves the single parameter y.
     # The docs/laws.md table (y 0.01..1 -> e 0.98288..0.18412) is reproduced with end="alpha" (tension allowed),
     # which is therefore the default; see the self-checks.
@@ -269,7 +275,8 @@ def kuwabara_kono_e(y, end="alpha"):
 
 
 def tsuji_hertz_e(A, end="alpha"):
-    """e of F = k alpha^1.5 + A sqrt(m k) alpha^0.25 alpha_dot, velocity independent: x'' = -x^1.5 - A x^0.25 x' (docs/laws.md)."""
+    """e of F = k alpha^1.5 + A sqrt(m k) alpha^0.25 alpha_dot, velocity independent: x'' = -x^1.5 - A x^0.25 x'
+    (docs/laws.md)."""
     # Same scaling as kuwabara_kono_e; the damping coefficient becomes exactly A.
     def f(a, v):
         return _ppow(a, 1.5) + A * _ppow(a, 0.25) * v
@@ -277,7 +284,8 @@ def tsuji_hertz_e(A, end="alpha"):
 
 
 def tsuji_hertz_A(e, end="alpha"):
-    """Inverse of tsuji_hertz_e by brentq: A such that F = k alpha^1.5 + A sqrt(mk) alpha^0.25 alpha_dot gives e (docs/laws.md)."""
+    """Inverse of tsuji_hertz_e by brentq: A such that F = k alpha^1.5 + A sqrt(mk) alpha^0.25 alpha_dot gives e
+    (docs/laws.md)."""
     if e == 1.0:
         return 0.0
     hi = 1.0
@@ -291,7 +299,8 @@ _APP_B_H = (-6.918798, -16.41105, 146.8049, -796.4559, 2928.711, -7206.864, 1149
 
 
 def thornton_appendix_b_g(e):
-    """Thornton et al. (2013) App. B fit: x = sum h_i e^i, g = sqrt(1/[1-(1+e)^2 exp(x)] - 1), c = 2g sqrt(m 2E*a) (docs/laws.md)."""
+    """Thornton et al. (2013) App. B fit: x = sum h_i e^i, g = sqrt(1/[1-(1+e)^2 exp(x)] - 1), c = 2g sqrt(m 2E*a)
+    (docs/laws.md)."""
     if e >= 1.0:
         return 0.0
     x = sum(h * e ** (i + 1) for i, h in enumerate(_APP_B_H))
@@ -304,7 +313,8 @@ def thornton_appendix_b_g(e):
 
 
 def thornton_e(V, V_y):
-    """Thornton (1997): e = (6sqrt3/5)^1/2 [1-r^2/6]^1/2 {r/[r+2sqrt(6/5-r^2/5)]}^1/4, r = V_y/V; 1 for V <= V_y (docs/laws.md)."""
+    """Thornton (1997): e = (6sqrt3/5)^1/2 [1-r^2/6]^1/2 {r/[r+2sqrt(6/5-r^2/5)]}^1/4, r = V_y/V; 1 for V <= V_y
+    (docs/laws.md)."""
     if V <= V_y:
         return 1.0
     r = V_y / V
@@ -313,7 +323,8 @@ def thornton_e(V, V_y):
 
 
 def thornton_yield(p_y, E_star, R, rho):
-    """Yield: a_y=pi p_y R/(2E*), alpha_y=(pi p_y/(2E*))^2 R, F_y=pi^3 p_y^3 R^2/(6E*^2), 1/2 m V_y^2 = 2/5 F_y alpha_y (docs/laws.md)."""
+    """Yield: a_y=pi p_y R/(2E*), alpha_y=(pi p_y/(2E*))^2 R, F_y=pi^3 p_y^3 R^2/(6E*^2), 1/2 m V_y^2 = 2/5 F_y alpha_y
+    (docs/laws.md)."""
     a_y = math.pi * p_y * R / (2.0 * E_star)
     alpha_y = (math.pi * p_y / (2.0 * E_star)) ** 2 * R
     F_y = math.pi ** 3 * p_y ** 3 * R ** 2 / (6.0 * E_star ** 2)
@@ -365,7 +376,8 @@ def _elastoplastic_impact(E_star, R, m, V, alpha_y, plastic_force, unload_params
 
 
 def thornton_impact(p_y, E_star, R, m, V):
-    """Thornton (1997) law integrated: Hertz, then F=F_y+pi p_y R(alpha-alpha_y), unload 4/3E*sqrt(R_p)(alpha-alpha_p)^1.5 (docs/laws.md)."""
+    """Thornton (1997) law integrated: Hertz, then F=F_y+pi p_y R(alpha-alpha_y), unload
+    4/3E*sqrt(R_p)(alpha-alpha_p)^1.5 (docs/laws.md)."""
     alpha_y, F_y, _ = _yield_from_mass(p_y, E_star, R, m)
     kpl = math.pi * p_y * R
 
@@ -390,7 +402,8 @@ def stronge_e(V, V_y):
 
 
 def stronge_impact(p_y, E_star, R, m, V):
-    """Stronge reconstruction integrated: Hertz to alpha_y, F=F_y(2alpha/alpha_y-1), Hertz unload with R_c=R sqrt(F_c/F_y) (docs/laws.md)."""
+    """Stronge reconstruction integrated: Hertz to alpha_y, F=F_y(2alpha/alpha_y-1), Hertz unload with R_c=R
+    sqrt(F_c/F_y) (docs/laws.md)."""
     alpha_y, F_y, _ = _yield_from_mass(p_y, E_star, R, m)
 
     def plastic(a, v):
@@ -405,12 +418,14 @@ def stronge_impact(p_y, E_star, R, m, V):
 
 
 def walton_braun_closed(K1, e, m, V):
-    """Walton-Braun: e = sqrt(K1/K2) (K2 = K1/e^2), F_max = V sqrt(m K1), t_c = (pi/2) sqrt(m/K1)(1+e) (docs/laws.md)."""
+    """Walton-Braun: e = sqrt(K1/K2) (K2 = K1/e^2), F_max = V sqrt(m K1), t_c = (pi/2) sqrt(m/K1)(1+e)
+    (docs/laws.md)."""
     return dict(e=e, f_max=V * math.sqrt(m * K1), t_c=0.5 * math.pi * math.sqrt(m / K1) * (1.0 + e))
 
 
 def walton_braun_impact(K1, e, m, V):
-    """Walton-Braun integrated: load F=K1 alpha to alpha'=0, unload F=K2(alpha-alpha0), alpha0=alpha_max(1-K1/K2), K2=K1/e^2 (docs/laws.md)."""
+    """Walton-Braun integrated: load F=K1 alpha to alpha'=0, unload F=K2(alpha-alpha0), alpha0=alpha_max(1-K1/K2),
+    K2=K1/e^2 (docs/laws.md)."""
     K2 = K1 / e ** 2
     t1, y1, _, _, _ = _run_phase(lambda a, v: K1 * a, m, 0.0, [0.0, V], [(lambda a, v: v, -1)], V)
     amax = y1[0]
@@ -445,7 +460,8 @@ def rigid_sliding(mu, e, V_n, V_t, R, omega0=0.0):
 
 def rigid_sliding_pair(mu, e, V_n, V_s, m1, R1, m2, R2):
     """Two free solid spheres sliding throughout: J_n = m*(1+e)V_n, 1/m* = 1/m1 + 1/m2; J = -mu J_n sgn(V_s) on the
-    projectile (dv1 = J/m1, d omega1 = -R1 J/I1) and -J on the target (dv2 = -J/m2, d omega2 = -R2 J/I2), I = 2/5 m R^2."""
+    projectile (dv1 = J/m1, d omega1 = -R1 J/I1) and -J on the target (dv2 = -J/m2, d omega2 = -R2 J/I2), I = 2/5 m
+    R^2."""
     # Frame: the projectile above the target, the line of centres along z; V_s = (v1_t - v2_t) - (R1 w1 + R2 w2) is
     # the slip of the projectile's contact point (at -R1 z) over the target's (at +R2 z); an impulse J x on the
     # projectile there has the moment (-R1 z) x (J x) = -R1 J y, and -J x on the target at +R2 z has -R2 J y.
@@ -518,7 +534,8 @@ if __name__ == "__main__":
         return ok
 
     def claim(label, got, stated, tol, rel=False):
-        """A number stated in the literature (as docs/laws.md quotes it) compared with the oracle: a miss is reported as a discrepancy."""
+        """A number stated in the literature (as docs/laws.md quotes it) compared with the oracle: a miss is reported as
+        a discrepancy."""
         err = abs(got - stated) / (abs(stated) if rel else 1.0)
         ok = err <= tol
         print("  [%s] %-62s oracle %-.6g stated %-.6g  (%s diff %.1e, tol %.0e)"
@@ -614,8 +631,9 @@ if __name__ == "__main__":
     for e, stated in zip((0.1, 0.3, 0.5, 0.7, 0.9), (0.2527, 0.3971, 0.5503, 0.7182, 0.9020)):
         claim("LIGGGHTS hertz limitForce (sqrt5 beta, no tension) e=%g" % e,
               tsuji_hertz_e(math.sqrt(5.0) * lsd_tension_g(e), "force"), stated, 5e-5)
-    # observation (not in the literature quoted): Hertz + alpha^(1/4) damping with A = sqrt5 g has exactly the e of the LSD with
-    # damping ratio g, under BOTH end conventions (hence "sqrt5 beta is exact" and LIGGGHTS limitForce = LSD clipped)
+    # observation (not in the literature quoted): Hertz + alpha^(1/4) damping with A = sqrt5 g has exactly the e of the
+    # LSD with damping ratio g, under BOTH end conventions (hence "sqrt5 beta is exact" and LIGGGHTS limitForce = LSD
+    # clipped)
     for A in (0.05, 0.3, 1.0, 2.0, 3.0, 6.0):
         g = A / math.sqrt(5.0)
         if g < 1.0:
@@ -633,7 +651,8 @@ if __name__ == "__main__":
     claim("App. B max |achieved - target| for e in 0.05..0.9 (<= 3e-4)", worst, 0.0, 3.5e-4)
     claim("App. B input 0.99 achieved (YADE: 0.979)",
           tsuji_hertz_e(math.sqrt(6.0) * thornton_appendix_b_g(0.99), "force"), 0.979, 5e-4)
-    # the engine form c_n = 2 sqrt(5/6) beta sqrt(S_n m), S_n = 2E*a = 1.5 k sqrt(alpha) -> A = 2 sqrt(5/6) sqrt(1.5) beta
+    # the engine form c_n = 2 sqrt(5/6) beta sqrt(S_n m), S_n = 2E*a = 1.5 k sqrt(alpha)
+    # -> A = 2 sqrt(5/6) sqrt(1.5) beta
     check("engine form 2 sqrt(5/6) sqrt(3/2) = sqrt5", 2.0 * math.sqrt(5.0 / 6.0) * math.sqrt(1.5), math.sqrt(5.0),
           1e-15)
 

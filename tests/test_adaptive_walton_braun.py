@@ -29,7 +29,9 @@ def assert_close(adaptive, ladder, scene, bound):
     """e_n, e_t and R omega/V within `bound` (absolute), t_c and F_max within it relative. (Omega* divides the spin
     by mu (1 + e) V_n: at 89.5 deg that amplifies an error in e_t 640x, and the ladder's 2^-18 of a contact leaves
     ~1e-8 there.)"""
-    spin = lambda frame: frame.omega1 * scene.radius / scene.speed
+    def spin(frame):
+        return frame.omega1 * scene.radius / scene.speed
+
     for col in ("e_n", "e_t", "spin", "t_contact", "f_n_max"):
         ours, theirs = (spin(adaptive), spin(ladder)) if col == "spin" else (adaptive[col], ladder[col])
         scale = theirs.abs() if col in ("t_contact", "f_n_max") else 1.0
@@ -51,8 +53,10 @@ def test_converged_mode_agrees_with_the_deep_ladder(name, overrides):
 
 
 def test_error_follows_the_tolerance_at_a_fraction_of_brute_force(count_kernel_steps):
-    """Walton-Braun, 10 to 85 deg (brute force does not converge by 2^20 steps per contact at 89.5): against the deep ladder the worst error of v_n and v_t (over V) falls at least
-    10x from tol 1e-5 to 1e-7 and is below 1e-8 at tol 1e-9; the converged mode, both its tolerances counted, takes at most a fifth of the force
+    """Walton-Braun, 10 to 85 deg (brute force does not converge by 2^20 steps per contact at 89.5): against the deep
+    ladder the worst error of v_n and v_t (over V) falls at least
+    10x from tol 1e-5 to 1e-7 and is below 1e-8 at tol 1e-9; the converged mode, both its tolerances counted, takes at
+    most a fifth of the force
     evaluations of brute-force refinement with the same stopping rule (benchmarks/bench_converged.py times both)."""
     law = compose("walton-braun")
     scene = Scene(e_n=(0.5,), angles_deg=(10.0, 30.0, 60.0, 85.0))

@@ -30,7 +30,8 @@ WRONG_TYPES = [   # (keywords, the keyword the message must name)
     (dict(target="sphere", target_material=None), "target_material"),
     (dict(target="sphere", target_material=3), "target_material"),
     (dict(target="sphere", target_omega="1"), "target_omega"),
-    (dict(target="sphere", target_fixed="no"), "target_fixed"), (dict(target="sphere", target_fixed=None), "target_fixed"),
+    (dict(target="sphere", target_fixed="no"), "target_fixed"),
+    (dict(target="sphere", target_fixed=None), "target_fixed"),
     (dict(with_="end=tension"), "with_"), (dict(with_=["end=tension"]), "with_"), (dict(with_=3), "with_"),
     (dict(with_={"end": 3}), "with_"),
     (dict(engine_options="liggghts:limitForce=on"), "engine_options"),
@@ -50,7 +51,8 @@ def cases(catalogue):
         for call in ("run", "compare"):
             if call == "run" and set(keywords) & set(COMPARE_ONLY):
                 continue
-            shown = ", ".join(f"{k}=" + ("<generator>" if hasattr(v, "__next__") else repr(v)) for k, v in keywords.items())
+            shown = ", ".join(f"{k}=" + ("<generator>" if hasattr(v, "__next__") else repr(v))
+                              for k, v in keywords.items())
             yield pytest.param(call, keywords, name, id=f"{call} {shown}"[:90])
 
 

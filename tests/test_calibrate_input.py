@@ -39,7 +39,8 @@ def test_your_input_is_the_stage_before_calibration_and_rebounds_as_the_oscillat
 def test_an_input_for_another_engine_than_the_one_calibrated_is_refused(tmp_path, capfd):
     code = main(["calibrate", "--model", "linear-spring-dashpot", "--engine", "lammps", "--engine-input",
                  "liggghts=model hertz tangential history youngsModulus 1e9 poissonsRatio 0.3 "
-                 "coefficientRestitution 0.5 coefficientFriction 0.4", "--en", "0.5", "--angles", "10", "-o", str(tmp_path / "cal")])
+                 "coefficientRestitution 0.5 coefficientFriction 0.4", "--en", "0.5", "--angles", "10",
+                 "-o", str(tmp_path / "cal")])
     (line,) = capfd.readouterr().err.strip().splitlines()
     assert code == 2 and "not among the engines asked for" in line
     assert not (tmp_path / "cal").exists()

@@ -92,8 +92,8 @@ def test_notes_name_the_curve_and_every_tolerance_they_answer():
                                                           {131072: 0.02, 262144: 1e-4, 524288: 0.0}, levels=True)
     found = answered(formulas, rows("lammps", "lammps", ladder))
     said = notes(found, (1e-2, 1e-3), verdict_only=True)
-    assert said == [f"lammps 1% and 0.1%: 262144 steps/contact measured on its formulas in the reference beyond its "
-                    f"ladder (it computes them: its velocity errors equal theirs to 0e+00 of V on every rung it ran)"]
+    assert said == ["lammps 1% and 0.1%: 262144 steps/contact measured on its formulas in the reference beyond its "
+                    "ladder (it computes them: its velocity errors equal theirs to 0e+00 of V on every rung it ran)"]
 
 
 def test_a_rung_refused_above_the_stability_limit_is_a_coarse_rung_that_misses():

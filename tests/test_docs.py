@@ -37,8 +37,9 @@ LONG = {   # command as shown (without .venv/bin/) -> why it does not run here
                      "(tests/test_report_browser.py opens the report in chromium)",
     "python -m harness.submodels.generate": "rewrites harness/solver/dispatch.py (tests/test_registry.py holds the "
                      "committed file to what it generates)",
-    "harness baseline --update --baseline baselines": "rewrites the committed baseline on purpose, running every engine "
-                                 "(tests/test_engine_builds.py updates one in a temporary directory)",
+    "harness baseline --update --baseline baselines":
+        "rewrites the committed baseline on purpose, running every engine "
+        "(tests/test_engine_builds.py updates one in a temporary directory)",
     "harness cost --model hertz-mindlin --verbose": "a cost study with every engine: minutes (tests/test_cost.py)",
     "python benchmarks/bench_commands.py": "times the commands cold and warm, several times each: minutes "
                                            "(tests/test_benchmarks.py runs its --smoke size)",

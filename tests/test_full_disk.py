@@ -2,7 +2,6 @@
 at the same path is intact, no temporary file is left and the output lock is released. The disk is a real tmpfs of
 64 KB, mounted in a private mount namespace (unshare) so that neither root nor the host's mounts are needed."""
 import json
-import os
 import shutil
 import subprocess
 import sys

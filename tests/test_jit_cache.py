@@ -15,7 +15,8 @@ def compiled_functions():
     for package in (harness.solver, harness.submodels):
         for module in pkgutil.walk_packages(package.__path__, package.__name__ + "."):
             for value in vars(importlib.import_module(module.name)).values():
-                if isinstance(value, CPUDispatcher) and value._cache is not None and hasattr(value._cache, "_cache_path"):
+                cached = isinstance(value, CPUDispatcher) and value._cache is not None
+                if cached and hasattr(value._cache, "_cache_path"):
                     yield value
 
 

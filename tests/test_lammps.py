@@ -77,8 +77,8 @@ def test_deck_holds_only_the_expected_commands_and_numbers():
     commands = {line.split()[0] for line in text.splitlines() if line and not line.startswith("#")}
     assert commands <= {"units", "atom_style", "atom_modify", "boundary", "newton", "comm_modify", "region",
                         "create_box", "neighbor", "neigh_modify", "pair_style", "pair_coeff", "timestep", "fix",
-                        "create_atoms", "set", "compute", "thermo_style", "thermo", "thermo_modify", "variable", "label",
-                        "run", "if", "next", "jump", "print", "write_dump"}
+                        "create_atoms", "set", "compute", "thermo_style", "thermo", "thermo_modify", "variable",
+                        "label", "run", "if", "next", "jump", "print", "write_dump"}
     assert f"hertz/material {scene.E!r} 0.5 {scene.nu!r} damping tsuji tangential mindlin NULL" in text
 
 
@@ -149,7 +149,8 @@ def test_lammps_two_spheres_agree_with_their_dialect_at_equal_dt(name, pair, ome
     scene = scene_from(en=(0.3, 0.6, 0.9), angles=ANGLES, omega0=omega0, target="sphere", **PAIR_TARGETS[pair])
     dialect = lammps.dialect(name, {}, "sphere")
     frame, failures = execute(engine_plan(lammps.ENGINE, compose(name), scene, 200))
-    assert failures == [] and (dialect.integrator, dialect.coulomb, dialect.geometry) == ("velocity-verlet", "total", "pair")
+    assert failures == []
+    assert (dialect.integrator, dialect.coulomb, dialect.geometry) == ("velocity-verlet", "total", "pair")
     assert agreement(frame, "lammps") < 1e-6
 
 

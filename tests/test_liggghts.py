@@ -84,8 +84,10 @@ def test_hooke_pushes_tangentially_even_without_friction_and_the_dialect_follows
     v_t0 = scene.impacts(0.5)[1]
     assert (final["v_t1"] < v_t0 * (1 - 1e-4)).all() and (final["omega1"] > 0.1).all()
 
-OPTION_CASES = [("linear-spring-dashpot", {"limitForce": "on"}), ("linear-spring-dashpot", {"tangential_damping": "off"}),
-                ("linear-spring-dashpot", {"ktToKnUser": "on"}), ("linear-spring-dashpot", {"tangential": "no_history"}),
+OPTION_CASES = [("linear-spring-dashpot", {"limitForce": "on"}),
+                ("linear-spring-dashpot", {"tangential_damping": "off"}),
+                ("linear-spring-dashpot", {"ktToKnUser": "on"}),
+                ("linear-spring-dashpot", {"tangential": "no_history"}),
                 ("hertz-mindlin", {"limitForce": "on"}), ("hertz-mindlin", {"tangential": "no_history"}),
                 ("hertz-mindlin", {"tangential_damping": "off"}), ("thornton", {"tangential_damping": "off"})]
 
@@ -99,7 +101,7 @@ def test_options_change_engine_and_dialect_alike(name, options, tmp_path):
     scale = np.array([1.0, 1.0, 1.0 / scene.radius]) * scene.speed
     assert (np.abs(engine - reference) / np.maximum(np.abs(reference), 1e-9 * scale)).max() < 1e-6
     default, _, _ = engine_and_dialect(name, scene, 0.3, tmp_path=tmp_path)
-    ignored = name == "thornton"                      # thornton_ning ignores tangential_damping (docs/liggghts-dialect.md)
+    ignored = name == "thornton"          # thornton_ning ignores tangential_damping (docs/liggghts-dialect.md)
     assert np.array_equal(default, engine) == ignored
 
 
@@ -184,7 +186,8 @@ def test_version_is_the_installed_packages():
 def test_missing_binary_is_reported_not_raised(tmp_path, monkeypatch):
     monkeypatch.setenv(liggghts.BINARY_VARIABLE, str(tmp_path / "nowhere"))
     status = liggghts.ENGINE.status("hertz-mindlin")
-    assert not status.available and status.reason == f"HARNESS_LIGGGHTS={str(tmp_path / 'nowhere')!r} is not an executable file"
+    nowhere = str(tmp_path / "nowhere")
+    assert not status.available and status.reason == f"HARNESS_LIGGGHTS={nowhere!r} is not an executable file"
     with pytest.raises(EngineFailure, match="not found"):
         run_engine([str(tmp_path / "nowhere")], str(tmp_path), 5)
 
@@ -246,7 +249,8 @@ def test_rendered_deck_holds_only_the_expected_commands():
 
 @needs_liggghts
 def test_thornton_ning_energy_gain_is_reported_as_a_finding():
-    """LIGGGHTS thornton_ning's tangential damping has the wrong sign (docs/liggghts-dialect.md): the sphere leaves with more
+    """LIGGGHTS thornton_ning's tangential damping has the wrong sign (docs/liggghts-dialect.md): the sphere leaves with
+    more
     tangential + rotational energy than it had; compare must say so, for the engine itself."""
     from harness.analyses.findings import findings
     scene = Scene(**EXAMPLE, e_n=(0.5,), angles_deg=(10.0, 20.0, 60.0))   # mu 0.3: at 10 deg it sticks
@@ -262,7 +266,8 @@ def test_thornton_ning_energy_gain_is_reported_as_a_finding():
 @needs_liggghts
 def test_compare_cli_prints_agreement_deviation_attribution(tmp_path):
     proc = subprocess.run([sys.executable, "-m", "harness", "compare", "--model", "linear-spring-dashpot",
-                           "--en", "0.5", "--angles", "0,30,60", "--engines", "liggghts", "--verbose", "-o", str(tmp_path)],
+                           "--en", "0.5", "--angles", "0,30,60", "--engines", "liggghts", "--verbose",
+                           "-o", str(tmp_path)],
                           capture_output=True, text=True, timeout=600)
     assert proc.returncode == 0, proc.stdout + proc.stderr
     out = proc.stdout

@@ -1,7 +1,8 @@
 """Observe mode of the engine adapters: per-impact contact time, peak normal force and peak overlap as each engine
 sees them, checked against the engine's reference dialect at equal dt; unobserved decks and scripts unchanged.
 
-Oracles (the reference dialect reproduces the engine's steps to round-off, docs/liggghts-dialect.md, docs/yade-dialect.md):
+Oracles (the reference dialect reproduces the engine's steps to round-off, docs/liggghts-dialect.md,
+docs/yade-dialect.md):
 - the engine reports the largest per-step value; so does the dialect's per-step history (same samples, to 1e-8);
 - `simulate` takes the peak from the parabola through the largest sample y1 and its neighbours y0, y2, which
   exceeds y1 by (y0 - y2)^2 / (8 |y0 - 2 y1 + y2|) <= |y0 - 2 y1 + y2| / 8 ~ |F''| dt^2 / 8, i.e. O(1/N^2)
@@ -27,13 +28,13 @@ from harness.solver import layout as L
 from harness.solver.simulate import batch_at, run_kernel, simulate
 
 STEPS = 200
-ROUND_OFF = 1e-8                 # engine vs dialect at equal dt, relative (docs/liggghts-dialect.md, docs/yade-dialect.md: ~1e-15 .. 4e-9)
+ROUND_OFF = 1e-8     # engine vs dialect at equal dt, relative (docs/liggghts-dialect.md, yade-dialect.md: 1e-15..4e-9)
 ANGLES = (0.0, 30.0, 60.0)
 CASES = ([("liggghts", name, {}, e_n) for name in liggghts.DIALECTS for e_n in (0.5, 0.1)]
          + [("yade", name, {}, e_n) for name in yade.DIALECTS for e_n in (0.5, 0.1)]
          + [("yade", "linear-spring-dashpot", {"linear": "cundall-strack"}, 0.5)]
          + [("lammps", name, {}, e_n) for name in lammps.DIALECTS for e_n in (0.5, 0.1)])
-CONTACT_OFFSET = {"liggghts": 0, "yade": -1, "lammps": 0}     # engine minus dialect contact time, in steps (docstring above)
+CONTACT_OFFSET = {"liggghts": 0, "yade": -1, "lammps": 0}     # engine minus dialect contact time, in steps (see above)
 
 
 def peak_and_bound(samples):
@@ -48,7 +49,8 @@ def peak_and_bound(samples):
 
 def dialect_samples(batch, steps):
     """The dialect's normal force and overlap at every step (history stride 1 over 3 contact times); the force
-    row starts with the force at first touch (a constant dashpot acts from overlap 0, docs/liggghts-dialect.md, docs/yade-dialect.md)."""
+    row starts with the force at first touch (a constant dashpot acts from overlap 0, docs/liggghts-dialect.md,
+    docs/yade-dialect.md)."""
     out, history, _ = run_kernel(batch, history_points=3 * steps)
     recorded = ~np.isnan(history[:, :, 0])
     force = np.where(recorded, history[:, :, 2], np.nan)
@@ -110,8 +112,10 @@ def test_observing_does_not_change_the_run(engine, tmp_path):
         p.name for p in (tmp_path / "seen").iterdir() if not p.name.startswith("observe"))
 
 
-RENDER_CASES = ([(liggghts, name, {}) for name in liggghts.DIALECTS] + [(liggghts, "hertz-mindlin", {"limitForce": "on"})]
-                + [(yade, name, {}) for name in yade.DIALECTS] + [(yade, "linear-spring-dashpot", {"linear": "cundall-strack"})]
+RENDER_CASES = ([(liggghts, name, {}) for name in liggghts.DIALECTS]
+                + [(liggghts, "hertz-mindlin", {"limitForce": "on"})]
+                + [(yade, name, {}) for name in yade.DIALECTS]
+                + [(yade, "linear-spring-dashpot", {"linear": "cundall-strack"})]
                 + [(lammps, name, {}) for name in lammps.DIALECTS])
 
 

@@ -1,7 +1,6 @@
 """No command writes into the installed package: each command's cheapest use, run from a scratch
 directory, leaves every file of the package directory as it was (Python's own __pycache__ aside)."""
 import hashlib
-import os
 import pathlib
 import subprocess
 import sys

@@ -8,8 +8,8 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from harness.analyses.published import GOAL, curve_distance, meets_goal, published_distances
-from harness.digitised import path, points_of, provenance, published_curves_apply, published_points
+from harness.analyses.published import curve_distance, meets_goal, published_distances
+from harness.digitised import path, provenance, published_curves_apply, published_points
 from harness.laws import compose
 from harness.paper import PSI1_GRID, oblique_curves, paper_scene
 from harness.scene import Scene

@@ -414,7 +414,7 @@ def test_ctrl_c_inside_the_compiled_kernel_stops_at_once_and_says_nothing_was_wr
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                             preexec_fn=interruptible)
     deadline = time.time() + 60
-    while not catches_sigint(proc.pid):   # Python's own handler installed (a busy machine may take seconds to get there)
+    while not catches_sigint(proc.pid):   # Python's own handler installed (a busy machine may take seconds)
         assert time.time() < deadline and proc.poll() is None
         time.sleep(0.05)
     time.sleep(4.0)                       # start-up and the cached kernel's load, then well inside the loop

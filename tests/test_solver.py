@@ -248,7 +248,8 @@ def test_graded_ladder_costs_a_fraction_of_brute_force_refinement(count_kernel_s
 def test_hysteresis_dialects_leave_their_latched_dent_at_low_e_n(engine):
     """Engine hysteresis laws keep the contact at zero force until the gap opens: after unloading (K2 = K1/e^2) the
     sphere crosses the dent alpha_max (1 - e^2) at e V, so t_c = sqrt(m/K1) [pi/2 (1 + e) + (1 - e^2)/e] (docs/laws.md,
-    hysteresis, plus the dent), 64 contact-time estimates at e_n = 0.01: the step cap must allow for it (it stopped at 40)."""
+    hysteresis, plus the dent), 64 contact-time estimates at e_n = 0.01: the step cap must allow for it (it stopped at
+    40)."""
     from harness.engines import ENGINES
     e = 0.01
     scene = Scene(e_n=(e,), angles_deg=(0.0,))

@@ -28,7 +28,8 @@ def duration_k(contact, speed):
 @pytest.mark.parametrize("e_n", [0.9, 0.5, 0.1])
 def test_explicit_linear_spring_dashpot_limit_is_the_damped_oscillator_one(e_n):
     """LIGGGHTS hooke (velocity Verlet, dashpot at the half-step velocity): h_c = 2/w (sqrt(1 + z^2) - z),
-    w = sqrt(k/m), z = -ln e/sqrt(pi^2 + ln^2 e) (contact ending at alpha = 0, docs/laws.md); mu = 0, so the normal mode alone."""
+    w = sqrt(k/m), z = -ln e/sqrt(pi^2 + ln^2 e) (contact ending at alpha = 0, docs/laws.md); mu = 0, so the normal mode
+    alone."""
     scene = Scene(e_n=(e_n,), angles_deg=(0.0,), mu=0.0)
     law = liggghts.dialect("linear-spring-dashpot")
     c = scene.contact

@@ -14,7 +14,10 @@ def order_conditions(a, b):
     a_c = [sum(x * y for x, y in zip(row, c)) for row in a]
     a_c2 = [sum(x * y * y for x, y in zip(row, c)) for row in a]
     a_a_c = [sum(x * y for x, y in zip(row, a_c)) for row in a]
-    dot = lambda u: sum(x * y for x, y in zip(b, u))
+
+    def dot(u):
+        return sum(x * y for x, y in zip(b, u))
+
     return [sum(b), dot(c), dot([x * x for x in c]), dot(a_c), dot([x ** 3 for x in c]),
             dot([x * y for x, y in zip(c, a_c)]), dot(a_c2), dot(a_a_c)]
 

@@ -56,7 +56,7 @@ def probe(tmp_path, *args):
     path.write_text(PROBE)
     proc = subprocess.run([yade.python(), str(path), *args], capture_output=True, text=True, timeout=120,
                           env=yade.environment("double"))
-    line = [l for l in proc.stdout.splitlines() if l.startswith("LISTENING")]
+    line = [text for text in proc.stdout.splitlines() if text.startswith("LISTENING")]
     assert line, proc.stdout + proc.stderr
     return int(line[0].split()[1])
 
@@ -139,7 +139,8 @@ def test_crash_hang_truncation_give_clear_failures(tmp_path, monkeypatch):
 
 @needs_yade
 def test_viscel_against_a_wall_uses_half_the_mass():
-    """docs/yade-dialect.md: against a Wall, ViscEl's reduced mass is m/2 while the sphere moves with m, so its damping ratio
+    """docs/yade-dialect.md: against a Wall, ViscEl's reduced mass is m/2 while the sphere moves with m, so its damping
+    ratio
     is g_A(e)/sqrt2 and, with the force clipped at zero, the sphere leaves with Schwager & Poeschel's e of that
     ratio (tests/oracles.py), not with the input e: en 0.5 -> 0.644."""
     import math
@@ -172,9 +173,9 @@ def test_unknown_precision_is_a_user_error():
 def test_hostile_values_cannot_reach_the_script(value):
     from harness.render import RenderError, render
     with pytest.raises(RenderError):
-        render(yade.TEMPLATES, "batch.py.j2", harness_version="0", law="x", law2="Law2_ScGeom_MindlinPhys_Mindlin", e_n=value,
-               material="FrictMat", young=1e9, poisson=0.3, rho=1.0, friction_angle=0.3, radius=0.1, spheres=[],
-               ig2="Ig2_Wall_Sphere_ScGeom", hertzian=True, ip2="Ip2_FrictMat_FrictMat_MindlinPhys",
+        render(yade.TEMPLATES, "batch.py.j2", harness_version="0", law="x", law2="Law2_ScGeom_MindlinPhys_Mindlin",
+               e_n=value, material="FrictMat", young=1e9, poisson=0.3, rho=1.0, friction_angle=0.3, radius=0.1,
+               spheres=[], ig2="Ig2_Wall_Sphere_ScGeom", hertzian=True, ip2="Ip2_FrictMat_FrictMat_MindlinPhys",
                ip2_args=[("en", value)], dt=1e-7, chunk=10, max_chunks=1)
 
 
@@ -213,7 +214,7 @@ def test_compare_with_both_engines_prints_the_engine_against_engine_attribution(
     assert "yade against liggghts" in proc.stdout
     assert "attribution (liggghts dialect -> yade dialect" in proc.stdout
     for ingredient in ("damping", "end", "tangential", "integrator", "lever", "slip"):
-        assert f"\n  {ingredient} " in proc.stdout or f"\n {ingredient} " in proc.stdout or f" {ingredient}  " in proc.stdout
+        assert any(form in proc.stdout for form in (f"\n  {ingredient} ", f"\n {ingredient} ", f" {ingredient}  "))
     import pandas as pd
     frame = pd.read_csv(tmp_path / "results.csv")
     assert ("yade", "yade") in set(zip(frame.engine, frame.dialect))

@@ -65,7 +65,8 @@ def deviation(frame, engine, dialect, against=("reference", "paper")):
             rows.append({"engine": engine, "dialect": dialect, "e_n_target": e_n, "metric": metric,
                          "max_abs_diff": float(abs(diff[worst])), "signed": float(diff[worst]),
                          "theta_deg": float(group.theta_deg.iloc[worst]),
-                         against[0] if against[0] != "reference" else "paper": float(group[metric + "_ref"].iloc[worst]),
+                         against[0] if against[0] != "reference" else "paper":
+                             float(group[metric + "_ref"].iloc[worst]),
                          "engine_value": float(group[metric].iloc[worst])})
     return pd.DataFrame(rows)
 

@@ -14,7 +14,7 @@ from .misses import IMPACT, closed_share, misses, misses_at, with_paper
 
 METRICS = ("e_n", "e_t", "omega_star", "psi2_star", "v_n1", "v_t1", "omega1", "coulomb_ratio", "ke_ratio")
 FIELDS = {key: key.replace("-", "_") for key in SUBMODEL_KEYS}
-STEPPING = ("integrator", "coulomb", "geometry", "touch")    # switched together where no stepper takes one without the others
+STEPPING = ("integrator", "coulomb", "geometry", "touch")    # switched together: no stepper takes one without the rest
 NOTES = {   # what switching an ingredient carries with it, beyond its name
     "integrator": "the scheme's own conventions go with it: the paper scheme's implicit tangential dashpot and sliding "
                   "kick, release located inside the step; the velocity-Verlet dialects also their force at first touch",

@@ -66,7 +66,8 @@ def findings(frame, gravity=0.0, cause=no_cause):
 
 def under_friction(frame, gravity=0.0, cause=no_cause):
     """The Coulomb bound from below: impacts the paper law slides throughout (|J_t| = mu J_n) where an engine or
-    its formulas transmit less tangential impulse than mu J_n (by more than 0.1%), one finding per engine and dialect."""
+    its formulas transmit less tangential impulse than mu J_n (by more than 0.1%), one finding per engine and
+    dialect."""
     ok = frame[frame.status == "ok"].assign(coulomb=lambda f: coulomb_ratio(f, gravity))
     is_paper = (ok.engine == "reference") & (ok.dialect == "paper")
     sliding = ok[is_paper & ((ok.coulomb - 1.0).abs() <= SLIDING_TOLERANCE)]

@@ -63,7 +63,8 @@ def invariant_breaks(frame, gravity=0.0):
     """Rows breaking an invariant, one line per (row, kind): 'non-finite result', 'energy gain' (ke_ratio > 1 + tol),
     'no separation', 'long contact' (t_contact > contact_time_bound), 'e_n off target' (|e_n - target| > 1% of
     target: at normal incidence against the calibration target, since every law calibrates e_n for the normal impact
-    at the scene speed; at every angle against the paper law's e_n at the same impact where the table holds it), 'friction at
+    at the scene speed; at every angle against the paper law's e_n at the same impact where the table holds it),
+    'friction at
     mu = 0' (v_t or R omega changed with mu = 0) and 'Coulomb bound' (|J_t| > mu J_n: the tangential impulse
     m |v_t1 - v_t0| beyond mu times the normal impulse m (v_n0 + v_n1) + m g t_c). Failed runs are not judged: they
     have no results."""

@@ -100,7 +100,8 @@ def severity(record):
     """'126 of 180 impacts, 587x the tolerance'."""
     times = record["times_tolerance"]
     size = "a tolerance of 0" if math.isinf(times) else f"{times:.0f}x" if times >= 100 else f"{times:.2g}x"
-    return f"{record['failing']} of {counted(record['impacts'], 'impact')}, {size}{'' if math.isinf(times) else ' the tolerance'}"
+    of = "" if math.isinf(times) else " the tolerance"
+    return f"{record['failing']} of {counted(record['impacts'], 'impact')}, {size}{of}"
 
 
 def _check(name, excess, tolerance, pairs, describe, allowance=0.0, brief=None):
@@ -116,8 +117,9 @@ def _check(name, excess, tolerance, pairs, describe, allowance=0.0, brief=None):
         record.update(worst=float(excess[worst]), row=worst, **_where(pairs, worst))
         record["times_tolerance"] = record["worst"] / tolerance if tolerance > 0 else math.inf
         record["text"] = describe(worst) + (f"; {severity(record)}" if failing.any() else "")
+        none = f"0 of {counted(record['impacts'], 'impact')}"
         record["short"] = (f"{brief(worst)} at {_at(_where(pairs, worst))} ("
-                           + (severity(record) if failing.any() else f"0 of {counted(record['impacts'], 'impact')}") + ")")
+                           + (severity(record) if failing.any() else none) + ")")
     if failing.any():
         record["grade"] = grade(record["worst"], tolerance, record["failing"], record["impacts"])
         record["failing_at"] = failing

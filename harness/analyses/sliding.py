@@ -14,7 +14,8 @@ import numpy as np
 
 @dataclass(frozen=True)
 class Threshold:
-    """The smallest Psi1* found sliding throughout (NaN when none up to the search's PSI_MAX), the bracket width, how it was
+    """The smallest Psi1* found sliding throughout (NaN when none up to the search's PSI_MAX), the bracket width, how it
+    was
     found, and the derived condition with its formula where one applies."""
     e_n: float
     simulated: float

@@ -84,7 +84,7 @@ def calibrate(engine, law, scene, steps=1000, tolerances=None, timestep_toleranc
     table, chosen = choose(engine, law, scene, steps, tolerances, paper, choices, ends, searched)
     frame = pd.concat([paper, given, chosen.rows], ignore_index=True)
     remaining, remaining_rows = attribute(law, chosen.dialect, scene,
-                                          lambda l, s: simulate(l, s, steps_per_contact=steps)[0], tolerances)
+                                          lambda law_, s: simulate(law_, s, steps_per_contact=steps)[0], tolerances)
     advice = advise(chosen.dialect, scene, chosen.inputs, timestep_tolerance)
     to_type = typed(engine, law, scene, steps, chosen.options, [(i.target, i.value) for i in chosen.reachable])
     failures, agreement, confirmed, skipped = [], None, None, ""

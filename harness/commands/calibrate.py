@@ -39,6 +39,6 @@ def main(args):
         return code
     if not args.quiet:
         print_calibration(calibration)
-    print(f"calibrate: wrote {record_path}, the tables, {counted(len(calibration.typed), calibration.engine + ' input')} "
-          f"and {report}")
+    inputs = counted(len(calibration.typed), calibration.engine + " input")
+    print(f"calibrate: wrote {record_path}, the tables, {inputs} and {report}")
     return code

@@ -44,7 +44,8 @@ def main(args):
         write_csv(shown_rows(pd.concat(frames, ignore_index=True), request.engines), results_path)
 
     with exclusive(args.output), Progress(f"compare {request.model}", quiet=args.quiet or args.json) as progress:
-        partial = RunCache(Store(args.store, drop_damaged=args.drop_damaged)) if args.store else PartialRuns(args.output)
+        partial = (RunCache(Store(args.store, drop_damaged=args.drop_damaged)) if args.store else
+                   PartialRuns(args.output))
         try:
             comparison = compare_request(request, on_frame=keep, progress=progress, partial=partial)
         except KeyboardInterrupt:

@@ -182,8 +182,8 @@ def check_parser(sub, describe):
     p.set_defaults(func=runs("check"))
     p = describe(sub, "baseline", "harness baseline --update --baseline baselines")
     p.add_argument("--update", action="store_true", help="required: rewriting expectations is deliberate")
-    p.add_argument("--baseline", metavar="DIR", help="required: the baseline directory to write (the committed one in a "
-                                                     "checkout: baselines)")
+    p.add_argument("--baseline", metavar="DIR",
+                   help="required: the baseline directory to write (the committed one in a checkout: baselines)")
     p.add_argument("--engines", default=None, metavar="LIST", help="engine builds to run instead of the defaults")
     add_output_options(p)
     p.set_defaults(func=runs("check", "main_update"))
@@ -219,9 +219,9 @@ def query_parser(sub, describe):
                  "engine\"")
     p.add_argument("store", metavar="STORE", help="a campaign store (the directory `harness campaign -o` wrote)")
     p.add_argument("sql", metavar="SQL", help="one SELECT (or WITH, DESCRIBE, SHOW, SUMMARIZE) over the view results "
-                   "(one row per impact: the columns of results.csv, docs/results.md, and task_key, log_tail, material, "
-                   "wall, target, speed; `DESCRIBE results` lists them) or the views deviations, agreement, deviation_map (docs/campaigns.md); nothing that writes, "
-                   "reads other files, attaches or installs")
+                   "(one row per impact: the columns of results.csv, docs/results.md, and task_key, log_tail, "
+                   "material, wall, target, speed; `DESCRIBE results` lists them) or the views deviations, agreement, "
+                   "deviation_map (docs/campaigns.md); nothing that writes, reads other files, attaches or installs")
     p.add_argument("--csv", action="store_true", help="print CSV instead of a table")
     p.add_argument(DROP, action="store_true", help=DROP_HELP)
     p.set_defaults(func=runs("query"))

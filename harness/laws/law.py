@@ -40,8 +40,8 @@ class Law:
     slip: str = "lever"                  # slip V_t - lever omega, or the noRatch form with the wall's reference
                                          # radius 1e8 R ('noratch', flat wall) or R ('noratch-sphere'), or
                                          # with two spheres' R1 + R2 ('noratch-pair')
-    torque: str = "lever"                # torque lever: the slip's ('lever'), or each body's R_i - d/2 ('contact-point',
-                                         # Verlet schemes)
+    torque: str = "lever"                # torque lever: the slip's ('lever'), or each body's R_i - d/2
+                                         # ('contact-point', Verlet schemes)
     touch: str = "gap"                   # contact from gap 0 (force at first touch) or from overlap > 0 (none)
     summary: str = ""
     dialect: str = "paper"               # whose formulas these are: the paper's, or an engine's
@@ -95,7 +95,8 @@ def _choice(key, spec, allowed):
 
 
 def replace_submodels(law, overrides, dialect=None):
-    """`law` with the given sub-models replaced ({'tangential': 'mindlin:total', 'end': 'tension'}, ...); `dialect` renames its dialect."""
+    """`law` with the given sub-models replaced ({'tangential': 'mindlin:total', 'end': 'tension'}, ...); `dialect`
+    renames its dialect."""
     changes = {} if dialect is None else {"dialect": dialect}
     for key, spec in (overrides or {}).items():
         if key == "normal":

@@ -160,7 +160,8 @@ def write_report(out_dir, comparison=None, cost=None):
         if part is not None:
             part["figures"] = filed(out_dir, part["figures"])
     context = {"compare": compare, "cost": cost_part,
-               "conventions": CONVENTIONS, "files": files, "version": __version__, "dialect_styles": style.dialect_styles(),
+               "conventions": CONVENTIONS, "files": files, "version": __version__,
+               "dialect_styles": style.dialect_styles(),
                "title": comparison.law.name if comparison is not None else cost_part["model"]}
     html = env.get_template("report.html.j2").render(**context)
     return write_text(os.path.join(out_dir, "report.html"), html)
@@ -223,7 +224,8 @@ def compare_context(comparison, files=()):
                 partial=comparison.partial,
                 summary=records(summary), skipped=comparison.skipped, rows=len(frame),
                 ran=engines_ran(frame), facts=records(run_facts(frame, comparison.arithmetic)),
-                agreement=records(comparison.agreement), physics=records(checks), deviation=records(comparison.deviation), cross=cross,
+                agreement=records(comparison.agreement), physics=records(checks),
+                deviation=records(comparison.deviation), cross=cross,
                 findings=records(comparison.findings), failures=comparison.failures, precision=records(precision),
                 ratios=ratios, sliding=records(sliding), published=records(distances),
                 attributions=[(name, records(table)) for name, table in comparison.attribution.items()],

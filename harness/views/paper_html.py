@@ -88,7 +88,8 @@ def write_paper_report(out_dir, oblique, normal, sliding, command, published=Non
     at_paper_en = normal[normal.e_n_target.isin(sorted(set(oblique.e_n_target) - {1.0}))]
     html = environment(autoescape=True).get_template("paper.html.j2").render(
         figures=figures, laws=[LAWS[n] for n in names], sliding=records(sliding.drop(columns=["method"])),
-        methods=sorted(set(sliding.method)), normal=records(at_paper_en.rename(columns=NORMAL_COLUMNS)), conventions=CONVENTIONS,
+        methods=sorted(set(sliding.method)), normal=records(at_paper_en.rename(columns=NORMAL_COLUMNS)),
+        conventions=CONVENTIONS,
         psi_points=len(PSI1_GRID), psi_from=PSI1_GRID[0], command=command, version=__version__,
         published=records(published) if published is not None and not published.empty else None,
         goal=GOAL, provenance=provenance(), date=datetime.datetime.now().strftime("%Y-%m-%d %H:%M"),

@@ -3,7 +3,7 @@ from ..analyses.cost import (MEASURE, METRICS, NOT_RESOLVED, RAYLEIGH_FRACTION, 
                               convergence_orders, per_rung, rayleigh_time, step_times)
 from ..analyses.cost_answer import answers, key, notes, recommendations, steps_text, verdict
 from ..analyses.causes import MENTION
-from ..analyses.physics import CHECK_WORDS, Tolerances
+from ..analyses.physics import Tolerances
 from ..analyses.published import GOAL, meets_goal
 from ..wording import counted
 
@@ -64,8 +64,9 @@ def print_summary(record, comparison, written):
         print("largest deviation from the paper law (relative to the incident speed V; the spin as R omega1/V):")
         for e in engines:
             for d in e["deviation"]:
-                print(f"  {e['engine']:{max(10, len(e['engine']))}s} {d['metric']:7s} {d['difference']:+11.4g} {d['unit']:6s} "
-                      f"{d['relative']:+8.2%} of {d['relative_to']:4s} at e_n {d['e_n_target']:g}, {d['theta_deg']:g} deg")
+                print(f"  {e['engine']:{max(10, len(e['engine']))}s} {d['metric']:7s} {d['difference']:+11.4g} "
+                      f"{d['unit']:6s} {d['relative']:+8.2%} of {d['relative_to']:4s} at e_n {d['e_n_target']:g}, "
+                      f"{d['theta_deg']:g} deg")
     print_versions(comparison.versions)
     for engine, build in comparison.builds.items():
         if build.get("note"):
@@ -205,7 +206,8 @@ def print_comparison(comparison, written):
     if comparison.compared:
         print("\nagreement (engine vs its dialect in the reference, equal dt):")
         print(text_table(comparison.agreement, ["engine", "metric", "max_rel_diff", "e_n_target", "theta_deg",
-                                                "tolerance", "pass"], {"max_rel_diff": "{:.2e}", "tolerance": "{:.0e}"}))
+                                                "tolerance", "pass"],
+                         {"max_rel_diff": "{:.2e}", "tolerance": "{:.0e}"}))
         print("\ndeviation (engine vs the paper law):")
         print(text_table(comparison.deviation, ["engine", "e_n_target", "metric", "max_abs_diff", "theta_deg", "paper",
                                                 "engine_value"], {"max_abs_diff": "{:.4g}", "paper": "{:.5g}",
@@ -260,8 +262,8 @@ def print_cost(table, uncertainty, law, scene, ladder, skipped, failures, verbos
         say(f"skipped {name}: {reason}")
     refused = table[table.status == "refused"].drop_duplicates(["engine", "dialect", "rung"])
     if not refused.empty:
-        say(f"refused above a stability limit: " + ", ".join(f"{r.engine}/{r.dialect} at {r.rung}"
-                                                              for r in refused.itertuples()))
+        say("refused above a stability limit: " + ", ".join(f"{r.engine}/{r.dialect} at {r.rung}"
+                                                             for r in refused.itertuples()))
     for failure in failures:
         say(f"{failure.engine} failed at e_n = {failure.e_n:g}: {failure.message}")
         if verbose:
@@ -279,9 +281,9 @@ def verdict_table(table, found=None):
                                                 for v in verdicts["s/impact-step"]],
                                "truth uncertainty": [f"{v:.1e}" if v == v else "-"
                                                      for v in verdicts["truth uncertainty"]]})
-    for key in ("1%", "0.1%"):
-        shown[f"steps/contact for {key}"] = [steps_text(v, how) for v, how in zip(shown[f"steps/contact for {key}"],
-                                                                                   shown[f"how for {key}"])]
+    for level in ("1%", "0.1%"):
+        shown[f"steps/contact for {level}"] = [steps_text(v, how) for v, how in
+                                               zip(shown[f"steps/contact for {level}"], shown[f"how for {level}"])]
     for column in ("s/impact for 1%", "x paper for 1%", "s/impact for 0.1%", "x paper for 0.1%", "20% T_R error"):
         shown[column] = [f"{v:.3g}" if v == v else "-" for v in shown[column]]
     names = {"engine": "curve", "s/impact-step": "s/impact-step", "truth uncertainty": "truth +-",
@@ -320,7 +322,7 @@ def cost_tables(table, uncertainty, found=None):
     for tol in TOLERANCES:
         column = f"steps/contact for {key(tol)}"
         rec[column] = [steps_text(v, how) for v, how in zip(rec[column], rec[f"how for {key(tol)}"])]
-    cols = [c for c in rec.columns if c.startswith("dt for") or c.startswith("steps/contact")] + ["error at 20% Rayleigh"]
+    cols = [c for c in rec.columns if c.startswith(("dt for", "steps/contact"))] + ["error at 20% Rayleigh"]
     print(text_table(rec, ["engine", "dialect", *cols], {c: "{:.3g}" for c in cols if not c.startswith("steps")}))
     for note in notes(found if found is not None else answers(table)):
         print(wrapped(note, indent=4))
