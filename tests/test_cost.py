@@ -17,7 +17,7 @@ from conftest import needs
 from scipy.optimize import brentq
 
 from harness.analyses.cost import (ADAPTIVE, ADAPTIVE_RUNGS, EXTRAPOLATED, METRICS, TOLERANCES, convergence_orders,
-                                   fastest, per_rung, rayleigh_time, rebound_errors, relative_errors)
+                                   fastest, per_rung, rayleigh_time, relative_errors)
 from harness.analyses.cost_answer import recommendations
 from harness.cost_plan import FIRST_IMPACTS, cost_table, step_time
 from harness.cost_truth import truth_of

@@ -269,7 +269,8 @@ def test_neighbouring_inputs_give_neighbouring_outputs(parameter, value):
 def test_mu_down_to_zero_is_continuous():
     """mu = 0 and its neighbours 1e-6 .. 4e-6: rebound velocities approach the frictionless ones linearly."""
     for name in LAWS:
-        frame = pd.concat([simulate(compose(name), Scene(**{**BASE_SCENE, "mu": mu}, e_n=(0.5,), angles_deg=(45.0, 89.5)))[0]
+        frame = pd.concat([simulate(compose(name), Scene(**{**BASE_SCENE, "mu": mu}, e_n=(0.5,),
+                                                         angles_deg=(45.0, 89.5)))[0]
                            for mu in (0.0, 1e-6, 2e-6, 3e-6, 4e-6)], ignore_index=True)
         assert discontinuities(frame, "mu", floor=1e-12).empty, name
         assert np.abs(frame.v_t1 - frame.v_t0).max() < 1e-4 * PAPER.speed
@@ -399,16 +400,16 @@ def test_engine_agrees_with_its_dialect_on_every_hard_case(engine, engine_runs):
 
 
 EXPECTED_FINDINGS = {      # (engine, law, linear option) -> finding kinds beyond failed runs, each documented
-    ("liggghts", "thornton", ""): {"energy gain", "tangential energy gain", "e_n off target",    # docs/liggghts-dialect.md
+    ("liggghts", "thornton", ""): {"energy gain", "tangential energy gain", "e_n off target",  # liggghts-dialect.md
                                    "Coulomb bound"},     # its tangential dashpot pushes: J_t beyond mu J_n
     ("liggghts", "linear-spring-dashpot", ""): {"friction at mu = 0",    # first-touch dashpot (test_liggghts.py)
                                                 "Coulomb bound"},        # |J_t| > mu J_n (docs/findings.md)
-    ("yade", "linear-spring-dashpot", ""): {"e_n off target",             # ViscEl: reduced mass m/2 (docs/yade-dialect.md)
+    ("yade", "linear-spring-dashpot", ""): {"e_n off target",             # ViscEl: reduced mass m/2 (yade-dialect.md)
                                             "Coulomb bound"},
     ("yade", "linear-spring-dashpot", "cundall-strack"): {"e_n off target", "energy gain", "tangential energy gain"},
     ("liggghts", "hertz-mindlin", ""): {"Coulomb bound"},            # |J_t| > mu J_n (docs/findings.md)
     ("yade", "hertz-mindlin", ""): {"Coulomb bound"},                # |J_t| > mu J_n: its leapfrog step
-    ("lammps", "hertz-mindlin", ""): {"e_n off target"},      # Tsuji's polynomial 1/sqrt2 short (docs/lammps-dialect.md)
+    ("lammps", "hertz-mindlin", ""): {"e_n off target"},      # Tsuji's polynomial 1/sqrt2 short (lammps-dialect.md)
     ("lammps", "hertz-kuwabara-kono", ""): {"e_n off target",  # the wall's E_w = (1 + nu) E* (docs/lammps-dialect.md)
                                             "Coulomb bound"},
     ("lammps", "linear-spring-dashpot", ""): {"e_n off target",   # the paper's dashpot, calibrated for a clipped
@@ -430,7 +431,8 @@ def test_engine_invariant_breaks_come_out_as_the_documented_findings(engine, eng
 @pytest.mark.engine
 def test_liggghts_defects_have_the_documented_direction(engine_runs):
     """thornton_ning: the sphere leaves faster along the wall than it came (wrong-sign damping) and its normal e_n
-    falls below Thornton's e (R unmodified on unloading keeps unloading stiffer... docs/liggghts-dialect.md), at every e_n run."""
+    falls below Thornton's e (R unmodified on unloading keeps unloading stiffer... docs/liggghts-dialect.md), at every
+    e_n run."""
     frame, _ = engine_run(engine_runs, "liggghts")
     ok = frame[(frame.model == "thornton") & (frame.status == "ok")]
     grip = ok[(ok.case == "mu = 2") & (ok.theta_deg == 45.0)]
@@ -442,7 +444,8 @@ def test_liggghts_defects_have_the_documented_direction(engine_runs):
 @pytest.mark.engine
 def test_yade_defects_match_their_theory(engine_runs):
     """CundallStrack has no damping: e_n = 1 at every target; with nu < 0 its k_s = nu k_n < 0 pushes the sphere
-    along: more kinetic energy out than in. ViscEl with en = 0.5 rebounds at e(g_A(0.5)/sqrt2) = 0.644 (docs/yade-dialect.md)."""
+    along: more kinetic energy out than in. ViscEl with en = 0.5 rebounds at e(g_A(0.5)/sqrt2) = 0.644
+    (docs/yade-dialect.md)."""
     from oracles import lsd_notension_e
     frame, _ = engine_run(engine_runs, "yade")
     cs = frame[(frame.linear == "cundall-strack") & (frame.status == "ok")]

@@ -54,7 +54,8 @@ def test_integrators_know_capabilities_not_names():
 def test_no_stepper_branches_by_hand_on_a_sub_model_code():
     """A row's sub-model codes reach the solver's steppers only through the generated dispatch and capability
     tables: no hand-written module compares a code column with anything but TANGENTIAL_NONE."""
-    compared = re.compile(r"I_(NORMAL|END|TANGENTIAL|INTEGRATOR|COULOMB|GEOMETRY|TOUCH)\]\s*[=!]=\s*(?![\s]|TANGENTIAL_NONE)")
+    compared = re.compile(r"I_(NORMAL|END|TANGENTIAL|INTEGRATOR|COULOMB|GEOMETRY|TOUCH)\]\s*[=!]=\s*"
+                          r"(?![\s]|TANGENTIAL_NONE)")
     for name, text in solver_sources():
         assert not compared.search(text), (name, compared.search(text).group(0))
 
@@ -82,7 +83,8 @@ def test_each_kernel_slot_has_its_named_column_in_its_family_block():
         start, end = layout.BLOCKS[family], getattr(layout, f"{generate.ident(family)}_BLOCK_END")
         for kernel in registry.BUILT_IN[family]:
             for k, slot in enumerate(kernel.slots):
-                column = getattr(layout, f"{generate.ident(family)}_{generate.ident(kernel.name)}_{generate.ident(slot)}")
+                name = f"{generate.ident(family)}_{generate.ident(kernel.name)}_{generate.ident(slot)}"
+                column = getattr(layout, name)
                 assert column == start + k < end
 
 
@@ -220,7 +222,8 @@ def test_a_complete_normal_module_is_taken_with_its_slot_names(tmp_path, monkeyp
     ("normal", 'SUMMARY = "x"\nADAPTIVE = False\nSLOTS = ()\n' + function("force"), "constant NAME"),
     ("normal", 'NAME = "x"\nADAPTIVE = False\nSLOTS = ()\n' + function("force"), "constant SUMMARY"),
     ("normal", HEAD + 'SLOTS = ()\n' + function("force"), "constant ADAPTIVE (bool)"),
-    ("normal", HEAD + 'ADAPTIVE = False\nSLOTS = ("a", "b", "c", "d", "e")\n' + function("force"), "SLOTS as at most 4"),
+    ("normal", HEAD + 'ADAPTIVE = False\nSLOTS = ("a", "b", "c", "d", "e")\n' + function("force"),
+     "SLOTS as at most 4"),
     ("normal", HEAD + 'ADAPTIVE = False\nSLOTS = ("a", "a")\n' + function("force"), "distinct names"),
     ("normal", HEAD + 'ADAPTIVE = False\nSLOTS = ()\n' + function("step"), "constant HISTORY_RESET"),
     ("normal", HEAD + 'ADAPTIVE = False\nSLOTS = ()\nHISTORY_RESET = (0.0,)\n', "function step"),
@@ -228,7 +231,8 @@ def test_a_complete_normal_module_is_taken_with_its_slot_names(tmp_path, monkeyp
     ("tangential", HEAD + 'SLOTS = ("k",)\n' + function("stiffness", "k, a"), "function spring"),
     ("tangential", HEAD + 'SLOTS = ("k",)\nIMPLICIT = True\n' + function("stiffness", "k, a")
      + function("spring", "k, *rest"), "function force_from_w (IMPLICIT)"),
-    ("tangential", HEAD + 'SLOTS = ("k", "g")\nVISCOUS = True\n' + function("stiffness", "k, g, a"), "SLOTS as at most 1"),
+    ("tangential", HEAD + 'SLOTS = ("k", "g")\nVISCOUS = True\n' + function("stiffness", "k, g, a"),
+     "SLOTS as at most 1"),
     ("tangential", HEAD + 'SLOTS = ("k",)\nVISCOUS = 1\n' + function("stiffness", "k, a"), "constant VISCOUS (bool)"),
     ("coulomb", HEAD + 'SLOTS = ()\n' + function("cpa"), "function cap"),
     ("coulomb", HEAD + 'SLOTS = ("factor",)\n' + function("cap", "factor, *rest"), "function parameters(law, scene)"),
@@ -271,7 +275,7 @@ def test_parameters_named_otherwise_than_the_kernels_slots_are_refused():
 
 
 # ---- a made-up Coulomb rule: one module and one registry line ------------------------------------------------------
-DOUBLED = '''"""Coulomb rule 'doubled' (made up for a test): the spring capped at 2 mu |F_n|, its dashpot added below it."""
+DOUBLED = '''"""Coulomb rule 'doubled' (made up for a test): the spring capped at 2 mu |F_n|, its dashpot below it."""
 import math
 
 from ...jit import compiled

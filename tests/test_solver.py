@@ -157,7 +157,8 @@ def test_psi_and_vt_scenes_hold_the_normal_speed():
         assert np.allclose(frame.e_n, 0.3, atol=1e-4)
     frame = simulate(compose("thornton"), Scene(e_n=(0.3,), angles_deg=None, v_t=(0.0, 0.5, 3.0), speed=2.0),
                      steps_per_contact=200)[0]
-    assert np.allclose(frame.v_t0, [0.0, 0.5, 3.0]) and np.allclose(frame.theta_deg, np.degrees(np.arctan2([0, .5, 3], 2)))
+    assert np.allclose(frame.v_t0, [0.0, 0.5, 3.0])
+    assert np.allclose(frame.theta_deg, np.degrees(np.arctan2([0, .5, 3], 2)))
 
 
 NO_DASHPOT = {"tangential-damping": "none"}
@@ -165,7 +166,8 @@ NO_DASHPOT = {"tangential-damping": "none"}
 
 @pytest.mark.parametrize("name, overrides, e_n, angle", [
     ("thornton", {}, 0.5, 30.0), ("linear-spring-dashpot", {}, 0.5, 85.0), ("linear-spring-dashpot", {}, 0.5, 30.0),
-    ("hertz-mindlin", {}, 0.5, 25.0), ("hertz-mindlin", NO_DASHPOT, 0.5, 25.0), ("hertz-mindlin", NO_DASHPOT, 0.5, 41.0),
+    ("hertz-mindlin", {}, 0.5, 25.0), ("hertz-mindlin", NO_DASHPOT, 0.5, 25.0),
+    ("hertz-mindlin", NO_DASHPOT, 0.5, 41.0),
     ("partially-latching-spring", {}, 0.9, 1.0), ("stronge", {}, 0.5, 30.0)])
 def test_regime_changes_located_in_their_step_make_the_error_smooth(name, overrides, e_n, angle):
     """Turning point, yield and stick-slip transitions (also inside the release step) are located inside their
@@ -257,7 +259,8 @@ def test_hysteresis_dialects_leave_their_latched_dent_at_low_e_n(engine):
     assert row.status == "ok", row.message
     c = scene.contact
     v = scene.speed
-    k1 = 16.0 / 15.0 * math.sqrt(c.radius) * c.E_star * (15.0 * c.mass * v * v / (16.0 * math.sqrt(c.radius) * c.E_star)) ** 0.2
+    k1 = (16.0 / 15.0 * math.sqrt(c.radius) * c.E_star
+          * (15.0 * c.mass * v * v / (16.0 * math.sqrt(c.radius) * c.E_star)) ** 0.2)
     t_c = math.sqrt(c.mass / k1) * (math.pi / 2.0 * (1.0 + e) + (1.0 - e * e) / e)
     assert row.t_contact == pytest.approx(t_c, rel=5e-3)        # the exit time inherits e_n's 3e-3 at 1000 steps
     assert row.e_n == pytest.approx(e, rel=1e-2)

@@ -1,6 +1,7 @@
 """A fourth engine added as its author would add it: a subclass of the Engine base class in its own package
 (tests/standin, a stand-in that declares itself as one), registered for each test alone (the registry's one
-entry); every command that runs engines runs it. Its agreement with its own dialect is exact (it runs that dialect in the reference's kernel), so any difference
+entry); every command that runs engines runs it. Its agreement with its own dialect is exact (it runs that dialect in
+the reference's kernel), so any difference
 is the harness' plumbing."""
 import pandas as pd
 import pytest

@@ -47,7 +47,8 @@ class Engine:
         return self.NAME if self._binary else self.DIALECT or self.NAME
 
     def sources(self):
-        """The folders of source whose change changes its results (its own subpackage): stored runs are keyed on them."""
+        """The folders of source whose change changes its results (its own subpackage): stored runs are keyed on
+        them."""
         return (os.path.dirname(os.path.abspath(sys.modules[type(self).__module__].__file__)),)
 
     # --- where it is and what it is -----------------------------------------------------------------------------
@@ -70,7 +71,8 @@ class Engine:
         return present(self.VARIABLE, self.EXECUTABLE)
 
     def default_origin(self):
-        """Where the default build comes from: the variable naming it, else PATH (and the package that puts it there)."""
+        """Where the default build comes from: the variable naming it, else PATH (and the package that puts it
+        there)."""
         if self.VARIABLE and self.VARIABLE in os.environ:
             return f"${self.VARIABLE}"
         return f"PATH (Debian package {self.PACKAGE})" if self.PACKAGE else "PATH"

@@ -21,7 +21,7 @@ from . import layout as L
 from .adaptive_work import copy_into, row_work, work_arrays
 from .compile_notice import announce_compiling
 from .contact_ode import (A_DFN, A_FN, A_TRIAL, E_RELEASE, E_REVERSAL, E_SLIP, E_STICK, E_TURN, M_AMAX, M_DENT,
-                          M_DIR, M_LOADING, M_SIGN, M_STAR, M_STICKS, M_TANGENTIAL, N_AUX, N_EVENTS, N_MODE, N_Y, SLIDE, STICK,
+                          M_DIR, M_LOADING, M_SIGN, M_STAR, M_STICKS, M_TANGENTIAL, N_EVENTS, N_Y, SLIDE, STICK,
                           Y_ALPHA, Y_FS, Y_RATE, Y_VX, Y_W, cone_rate, coulomb_cone, edge_w, evaluate, events,
                           slip_velocity)
 from .dispatch import TANGENTIAL_ANY_IMPLICIT, TANGENTIAL_IMPLICIT, TANGENTIAL_NONE, normal_residual, tangential_onset_w
@@ -203,7 +203,8 @@ def reverse(p, ints, y, mode, f_n, spring):
 
 @compiled
 def implicit_onset(p, ints, y, mode, dy, aux, scale, spring, ext):
-    """An implicit spring (Walton-Braun's) at first touch: sticking in the direction of V_s from T* = 0. Where mu N starts from 0
+    """An implicit spring (Walton-Braun's) at first touch: sticking in the direction of V_s from T* = 0. Where mu N
+    starts from 0
     at a finite rate, x starts at its self-similar value, 1 - x = beta x^(1/3) with beta = k_t0 |V_s|/(mu N'):
     the h -> 0 limit of the scheme's first steps; from 0 where N' starts from 0 (the spring rides the cone)."""
     v_s = slip_velocity(p, y)

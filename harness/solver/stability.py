@@ -75,7 +75,8 @@ def check_time_step(law, scene, e_n, dt, contact_time, tangential=True):
     """Refuse dt above the stability limit: one line naming the limit and the steps per contact it allows."""
     limit = stability_limit(law, scene, e_n, tangential)
     if dt > limit.dt:
-        raise UnstableTimeStep(f"time step {dt:.4g} s is too large for {law.name} ({law.dialect} dialect, {law.integrator} "
-                        f"scheme) at e_n = {e_n:g}: stability limit {limit.describe()}; use dt <= {limit.dt:.4g} s "
-                        f"(at least {math.ceil(contact_time / limit.dt)} steps per contact)", limit)
+        raise UnstableTimeStep(f"time step {dt:.4g} s is too large for {law.name} ({law.dialect} dialect, "
+                               f"{law.integrator} scheme) at e_n = {e_n:g}: stability limit {limit.describe()}; "
+                               f"use dt <= {limit.dt:.4g} s (at least {math.ceil(contact_time / limit.dt)} steps "
+                               "per contact)", limit)
     return limit

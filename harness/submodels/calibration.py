@@ -76,7 +76,8 @@ def polynomial_tsuji_A(e):
 
 
 def tsuji_tension_A(e):
-    """A = sqrt5 beta, beta = -ln e / sqrt(ln^2 e + pi^2): exact for F = k a^3/2 + A sqrt(mk) a^1/4 a' ending at a = 0."""
+    """A = sqrt5 beta, beta = -ln e / sqrt(ln^2 e + pi^2): exact for F = k a^3/2 + A sqrt(mk) a^1/4 a' ending at a =
+    0."""
     return math.sqrt(5.0) * lsd_tension_g(e)
 
 
@@ -164,14 +165,16 @@ def yield_pressure(r, speed, E_star, rho):
 
 def hertz_equivalent_stiffness(E_star, radius, mass, speed):
     """k_n = 16/15 sqrt(R) E* [15 m V^2/(16 sqrt(R) E*)]^1/5: linear spring with Hertz's peak overlap at V."""
-    return 16.0 / 15.0 * math.sqrt(radius) * E_star * (15.0 * mass * speed ** 2 / (16.0 * math.sqrt(radius) * E_star)) ** 0.2
+    return (16.0 / 15.0 * math.sqrt(radius) * E_star
+            * (15.0 * mass * speed ** 2 / (16.0 * math.sqrt(radius) * E_star)) ** 0.2)
 
 
 HERTZ_DURATION = 2.0 * math.sqrt(math.pi) * math.gamma(1.4) / math.gamma(0.9) * (15.0 / 16.0) ** 0.4   # 2.868...
 
 
 def hertz_contact_time(E_star, radius, mass, speed):
-    """t_H = 2 sqrt(pi) G(7/5)/G(9/10) (15/16)^2/5 (m^2/(R E*^2 V))^1/5 = 2.8683 (...)^1/5: elastic Hertz (Johnson 1985)."""
+    """t_H = 2 sqrt(pi) G(7/5)/G(9/10) (15/16)^2/5 (m^2/(R E*^2 V))^1/5 = 2.8683 (...)^1/5: elastic Hertz (Johnson
+    1985)."""
     return HERTZ_DURATION * (mass ** 2 / (radius * E_star ** 2 * speed)) ** 0.2
 
 

@@ -131,7 +131,8 @@ BUILT_IN = {"normal": NORMAL_KERNELS, "end": END_KERNELS, "tangential": TANGENTI
             "touch": TOUCH_KERNELS}
 
 # sub-models by the name --with takes; engine dialects' own sub-models are listed apart (engines name them)
-NORMAL_MODELS = {cls.name: cls for cls in (LinearSpring, Hertz, WaltonBraun, PartiallyLatchingSpring, Thornton, Stronge)}
+NORMAL_MODELS = {cls.name: cls for cls in
+                 (LinearSpring, Hertz, WaltonBraun, PartiallyLatchingSpring, Thornton, Stronge)}
 ENGINE_NORMAL_MODELS = {cls.name: cls for cls in (LudingPeak, ThorntonNing, CundallStrackSpring, LudingIncremental,
                                                    HertzWallModulus, LinearModulus)}
 TANGENTIAL_MODELS = {cls.name: cls for cls in (LinearTangential, Mindlin, MindlinDeresiewicz, WaltonBraunTangential,

@@ -93,8 +93,8 @@ class Kratos(Engine):
         if "input" in dict(options or {}):
             return ""                       # a user's own input gives both spheres its YOUNG_MODULUS and POISSON_RATIO
         if (target.E, target.nu) != (projectile.E, projectile.nu):
-            return "its lever arms split the overlap by the moduli (R_i - d E_j/(E_i + E_j)): no dialect for a target " \
-                   "of other moduli yet"
+            return ("its lever arms split the overlap by the moduli (R_i - d E_j/(E_i + E_j)): no dialect for a "
+                    "target of other moduli yet")
         return ""
 
     def run_inputs(self, flavour, count, timeout_s, workdir):

@@ -2,7 +2,6 @@
 against one rigid face, run by the Kratos venv's python in its batch's directory, and the velocities it reads from
 the model part back (docs/kratos-dialect.md)."""
 import json
-import math
 import os
 from pathlib import Path
 

@@ -88,7 +88,8 @@ class LammpsInput(EngineInput):
             normal, damping, tangential = {
                 "gran/hooke": ("hooke", "mass_velocity", f"linear_nohistory {share!r} {v['xmu']!r}"),
                 "gran/hooke/history": ("hooke", "mass_velocity", f"linear_history {v['kt']!r} {share!r} {v['xmu']!r}"),
-                "gran/hertz/history": ("hertz", "viscoelastic", f"mindlin {v['kt']!r} {share!r} {v['xmu']!r}")}[self.style]
+                "gran/hertz/history": ("hertz", "viscoelastic", f"mindlin {v['kt']!r} {share!r} {v['xmu']!r}"),
+            }[self.style]
             return [f"{normal} {v['kn']!r} {v['gamman']!r} damping {damping} tangential {tangential}{limit}"]
         forms = {("hooke", "mass_velocity", "linear_history"): "gran/hooke/history",
                  ("hooke", "mass_velocity", "linear_nohistory"): "gran/hooke",
@@ -118,9 +119,9 @@ class LammpsInput(EngineInput):
             if strict:
                 negative = [n for n, v in self.values if v != "NULL" and v < 0 and n not in ("nu",)]
                 if negative:
-                    refuse("lammps", f"Illegal {self.normal if negative[0] in NORMAL_ARGUMENTS[self.normal] else self.tangential} "
-                                     f"model: {negative[0]} {self.named[negative[0]]:g} < 0 (LAMMPS {near} refuses "
-                                     "negative coefficients)")
+                    model = self.normal if negative[0] in NORMAL_ARGUMENTS[self.normal] else self.tangential
+                    refuse("lammps", f"Illegal {model} model: {negative[0]} {self.named[negative[0]]:g} < 0 "
+                                     f"(LAMMPS {near} refuses negative coefficients)")
         return self
 
     def flags(self, version=None):

@@ -44,7 +44,8 @@ def check_options(law_name, options):
     """The LIGGGHTS options given, validated; one clear line for a bad one (no_history exists for hooke and hertz
     only)."""
     options = check_declared("liggghts", OPTIONS, options)
-    if options.get("tangential", "history") != "history" and COUNTERPARTS.get(law_name) not in HONOURED_BY["tangential"]:
+    honoured = COUNTERPARTS.get(law_name) in HONOURED_BY["tangential"]
+    if options.get("tangential", "history") != "history" and not honoured:
         raise UserError(f"tangential no_history is offered with hooke and hertz only, not {COUNTERPARTS.get(law_name)}")
     return options
 

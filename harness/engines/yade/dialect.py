@@ -2,8 +2,9 @@
 from ...errors import UserError
 from ..protocol import Option, check_options as check_declared
 
-COUNTERPARTS = {"hertz-mindlin": "Law2_ScGeom_MindlinPhys_Mindlin", "linear-spring-dashpot": "Law2_ScGeom_ViscElPhys_Basic",
-          "walton-braun": "Law2_ScGeom_LudingPhys_Basic"}
+COUNTERPARTS = {"hertz-mindlin": "Law2_ScGeom_MindlinPhys_Mindlin",
+                "linear-spring-dashpot": "Law2_ScGeom_ViscElPhys_Basic",
+                "walton-braun": "Law2_ScGeom_LudingPhys_Basic"}
 DIALECTS = {                    # sub-models that make the paper law compute what YADE computes
     "hertz-mindlin": {"damping": "tsuji:appendix-b", "end": "no-tension", "tangential": "mindlin:incremental",
                       "tangential-damping": "normal-ratio", "integrator": "leapfrog", "coulomb": "spring",

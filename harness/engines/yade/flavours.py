@@ -60,6 +60,8 @@ def environment(precision):
 def missing_reason(precision="double"):
     """What was looked for, and where, when YADE cannot run."""
     if which(python()) is None:
-        where = f"{PYTHON_VARIABLE}={os.environ[PYTHON_VARIABLE]!r}" if PYTHON_VARIABLE in os.environ else "/usr/bin/python3.11"
+        where = (f"{PYTHON_VARIABLE}={os.environ[PYTHON_VARIABLE]!r}" if PYTHON_VARIABLE in os.environ else
+                 "/usr/bin/python3.11")
         return f"no Python interpreter at {where} (YADE runs as a module of Debian's python3.11)"
-    return f"no YADE {precision} module directory {flavour_path(precision)} (apt-get install -y yade, or bash tools/setup.sh)"
+    return (f"no YADE {precision} module directory {flavour_path(precision)} "
+            "(apt-get install -y yade, or bash tools/setup.sh)")

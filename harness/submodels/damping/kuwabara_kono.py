@@ -7,7 +7,8 @@ from . import Dashpot
 
 
 class KuwabaraKonoDashpot:
-    """F = k[alpha^3/2 + 3/2 A alpha^1/2 alpha_dot]; A from y = A (k/m)^2/5 V^1/5 solving e(y) = e_n at V (docs/laws.md)."""
+    """F = k[alpha^3/2 + 3/2 A alpha^1/2 alpha_dot]; A from y = A (k/m)^2/5 V^1/5 solving e(y) = e_n at V
+    (docs/laws.md)."""
     name = "kuwabara-kono"
     calibration = "exact"
 

@@ -31,6 +31,7 @@ class TsujiDashpot:
 
     def dashpot(self, normal, contact, e_n, speed, end):
         a = self.coefficient_A(e_n, end)
-        e_star = normal.parameters(contact, e_n, speed).values[0] if self.calibration == "polynomial" else contact.E_star
+        e_star = (normal.parameters(contact, e_n, speed).values[0] if self.calibration == "polynomial" else
+                  contact.E_star)
         k = 4.0 / 3.0 * e_star * math.sqrt(contact.radius)
         return Dashpot(a * math.sqrt(contact.mass * k), 0.25, a / math.sqrt(6.0))

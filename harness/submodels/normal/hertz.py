@@ -23,9 +23,9 @@ class Hertz(NormalModel):
     name, kernel, plastic = "hertz", NAME, False
 
     def parameters(self, contact, e_n, speed):
-        return NormalParameters.named(cal.hertz_equivalent_stiffness(contact.E_star, contact.radius, contact.mass, speed),
-                                      cal.hertz_contact_time(contact.E_star, contact.radius, contact.mass, speed),
-                                      E_star=contact.E_star)
+        stiffness = cal.hertz_equivalent_stiffness(contact.E_star, contact.radius, contact.mass, speed)
+        return NormalParameters.named(stiffness, cal.hertz_contact_time(contact.E_star, contact.radius, contact.mass,
+                                                                        speed), E_star=contact.E_star)
 
     def peak(self, contact, e_n, speed):
         """Elastic Hertz bounds damped impacts: alpha_max = (5 m V^2/(4 k_h))^2/5, dF/dalpha = 2 E* sqrt(R alpha)."""

@@ -14,7 +14,8 @@ HISTORY_RESET = (0.0, 0.0, 0.0)
 
 
 class LudingIncremental(LudingPeak):
-    """Luding's incremental spring against a huge fixed sphere: k1 as the linear spring, kp = k1 (2/e^2 - 1), DeltPMax = 2x the
+    """Luding's incremental spring against a huge fixed sphere: k1 as the linear spring, kp = k1 (2/e^2 - 1), DeltPMax =
+    2x the
     normal peak overlap, so k2 = K1/e^2 at the scene speed; DeltPNull = PhiF 2R* with R* = R_big R/(R_big + R) of
     the huge sphere, kc = 0, G0 = 0."""
     name, kernel = "luding-incremental", NAME
