@@ -4,10 +4,10 @@ Run: .venv/bin/python benchmarks/bench_engine_batch.py [liggghts|yade] [--smoke]
 
 --smoke runs the smallest size: four angles at 100 steps per contact.
 """
-import copy
 import sys
 import tempfile
 import time
+from dataclasses import replace
 
 import numpy as np
 
@@ -20,11 +20,11 @@ STEPS = 1000
 
 
 def one_row(batch, i):
-    """The batch reduced to its i-th impact."""
-    single = copy.copy(batch)
-    for name in ("params", "ints", "v_n0", "v_t0", "omega0", "theta_deg"):
-        setattr(single, name, getattr(batch, name)[i:i + 1])
-    return single
+    """The batch reduced to its i-th impact (its spec's incident conditions and its kernel rows)."""
+    spec = replace(batch.spec, **{name: getattr(batch.spec, name)[i:i + 1]
+                                  for name in ("theta_deg", "v_n0", "v_t0", "omega0")})
+    return replace(batch, spec=spec, **{name: getattr(batch, name)[i:i + 1]
+                                        for name in ("params", "ints", "tangential_active")})
 
 
 def timed_run(engine, law, scene, batch):

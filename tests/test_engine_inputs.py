@@ -514,6 +514,7 @@ def test_a_kratos_input_steps_as_the_kratos_dialect_of_a_scene_with_its_numbers(
     """The input's composition, on a scene of other E, nu and e_n, steps as the Kratos dialect of the paper's path
     (tested against Kratos in tests/test_kratos.py) on a scene that carries the input's E, nu and e: equal outputs."""
     from harness.engines import get_engine
+    from harness.resolution import run_spec
     from harness.solver.batch import batch_of
     from harness.solver.simulate import run_kernel
     young, nu = (5e10, 0.3) if name == "hertz" else (2e9, 0.25)
@@ -523,7 +524,8 @@ def test_a_kratos_input_steps_as_the_kratos_dialect_of_a_scene_with_its_numbers(
     kratos, law_name = get_engine("kratos"), "hertz-mindlin" if name == "hertz" else "linear-spring-dashpot"
     given = kratos.dialect(law_name, {"input": KRATOS_INPUTS[name]}, target)
     paper = kratos.dialect(law_name, None, target)
-    a, b = run_kernel(batch_of(given, mine, 0.5, 200))[0], run_kernel(batch_of(paper, theirs, 0.6, 200))[0]
+    a = run_kernel(batch_of(given, mine, run_spec(given, mine, 0.5, 200)))[0]
+    b = run_kernel(batch_of(paper, theirs, run_spec(paper, theirs, 0.6, 200)))[0]
     assert np.allclose(a, b, rtol=1e-12, atol=1e-12 * 5.0)
 
 
