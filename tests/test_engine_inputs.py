@@ -241,16 +241,22 @@ def test_classic_styles_agree_on_walls_and_pairs(release, style, target):
 
 @needs_lammps
 def test_results_and_records_hold_the_input_verbatim_with_its_composition(tmp_path):
-    text = "hooke 1e7 3000 damping mass_velocity tangential linear_history 2.8e6 0.5 0.4"
+    compared_and_recorded(tmp_path, "lammps", "hooke 1e7 3000 damping mass_velocity tangential linear_history 2.8e6 "
+                                              "0.5 0.4")
+
+
+def compared_and_recorded(tmp_path, engine, text):
+    """compare of linear-spring-dashpot with `text` as the engine's input: it runs (exit 0 or 1), and run.json and
+    the report hold the input verbatim with its composition (k_n = 1e7)."""
     out = tmp_path / "out"
     run = subprocess.run([sys.executable, "-m", "harness", "compare", "--model", "linear-spring-dashpot",
-                          "--engines", "lammps", "--engine-input", f"lammps={text}", "--en", "0.5",
+                          "--engines", engine, "--engine-input", f"{engine}={text}", "--en", "0.5",
                           "--angles", "10,40", "-o", str(out), "--quiet"], capture_output=True, text=True,
                          timeout=900)
     assert run.returncode in (0, 1), run.stderr[-2000:]
     record = json.loads((out / "run.json").read_text())
-    assert record["engine_inputs"]["lammps"]["text"] == text
-    assert record["engine_inputs"]["lammps"]["composition"]["normal"] == "linear(k_n=1e+07)"
+    assert record["engine_inputs"][engine]["text"] == text
+    assert record["engine_inputs"][engine]["composition"]["normal"] == "linear(k_n=1e+07)"
     assert text in (out / "report.html").read_text()
 
 
@@ -457,17 +463,7 @@ def test_yade_viscel_composition_halves_each_constant_and_takes_pournin_with_the
 def test_a_yade_input_runs_through_compare_with_its_precision_check_and_is_recorded(tmp_path):
     """compare runs the input in double and, for YADE's arithmetic check, in mpfr150 (both with the input), and
     records it verbatim with its composition: kn/2 = 1e7 for one ViscElMat on both sides."""
-    text = "ViscElMat(kn=2e7, ks=5.7e6, cn=1000, cs=300, frictionAngle=0.38)"
-    out = tmp_path / "out"
-    run = subprocess.run([sys.executable, "-m", "harness", "compare", "--model", "linear-spring-dashpot",
-                          "--engines", "yade", "--engine-input", f"yade={text}", "--en", "0.5",
-                          "--angles", "10,40", "-o", str(out), "--quiet"], capture_output=True, text=True,
-                         timeout=900)
-    assert run.returncode in (0, 1), run.stderr[-2000:]
-    record = json.loads((out / "run.json").read_text())
-    assert record["engine_inputs"]["yade"]["text"] == text
-    assert record["engine_inputs"]["yade"]["composition"]["normal"] == "linear(k_n=1e+07)"
-    assert text in (out / "report.html").read_text()
+    compared_and_recorded(tmp_path, "yade", "ViscElMat(kn=2e7, ks=5.7e6, cn=1000, cs=300, frictionAngle=0.38)")
 
 
 # --- Kratos ---------------------------------------------------------------------------------------------------------

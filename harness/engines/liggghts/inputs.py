@@ -10,7 +10,7 @@ from ...engine_inputs import EngineInput, not_modelled, refuse
 from ...errors import UserError
 from ...submodels.normal.given import GivenLinear
 
-MODELS = ("hooke", "hertz")
+MODEL_WORDS = ("hooke", "hertz")
 OTHER_MODELS = ("hooke/stiffness", "hertz/stiffness", "hooke/hysteresis", "thornton_ning", "edinburgh", "luding")
 TANGENTIAL = ("history", "no_history", "off")
 SETTINGS = {"limitForce": ("off", "on"), "tangential_damping": ("on", "off"), "ktToKnUser": ("off", "on")}
@@ -19,7 +19,7 @@ PROPERTIES = ("youngsModulus", "poissonsRatio", "coefficientRestitution", "coeff
 NEEDS = {"hertz": PROPERTIES[:4], "hooke": PROPERTIES}
 KT_TO_KN_USER = 0.285714286          # the literal LIGGGHTS multiplies by (normal_model_hooke.h)
 COMMON = {"end": "tension", "integrator": "velocity-verlet", "coulomb": "spring", "lever": "0.5"}
-VOCABULARY = (f"model {', '.join(MODELS)}; tangential {', '.join(TANGENTIAL)}; {', '.join(SETTINGS)}; "
+VOCABULARY = (f"model {', '.join(MODEL_WORDS)}; tangential {', '.join(TANGENTIAL)}; {', '.join(SETTINGS)}; "
               f"{', '.join(PROPERTIES)}")
 
 
@@ -160,7 +160,7 @@ def parse(text, version=None):
     model = words[1]
     if model in OTHER_MODELS:
         not_modelled(f"LIGGGHTS model {model} as your own input (its formulas run through --model; a later issue)")
-    if model not in MODELS:
+    if model not in MODEL_WORDS:
         refuse("liggghts", "Invalid model specified (check for typos and enable at least one model)")
     tangential, settings, properties, i = "off", {}, {}, 2
     while i < len(words):
