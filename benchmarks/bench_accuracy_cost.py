@@ -13,13 +13,13 @@ import time
 import numpy as np
 
 from harness.analyses.cost import relative_errors
-from harness.cost_plan import startup_seconds
-from harness.cost_truth import truth_of
+from harness.studies.cost_plan import startup_seconds
+from harness.studies.cost_truth import truth_of
 from harness.engines import ENGINES, EXTERNAL
-from harness.execute import execute
+from harness.runs.execute import execute
 from harness.laws import compose
-from harness.plan import engine_runs
-from harness.scene import Scene
+from harness.runs.plan import engine_runs
+from harness.scenes.scene import Scene
 from harness.solver.simulate import simulate
 from harness.solver.stability import UnstableTimeStep
 

@@ -11,9 +11,9 @@ import sys
 import tempfile
 import time
 
-from harness.campaign.driver import run_campaign
-from harness.campaign.executors import InProcess, executor
-from harness.campaign.spec import from_dict
+from harness.studies.campaign.driver import run_campaign
+from harness.studies.campaign.executors import InProcess, executor
+from harness.studies.campaign.spec import from_dict
 from harness.engines import ENGINES
 
 

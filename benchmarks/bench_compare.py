@@ -20,16 +20,17 @@ import numpy as np
 import pandas as pd
 
 from harness.analyses.precision import precision_gap
-from harness.api import compare_request, measurements, statuses
-from harness.comparison import Comparison
+from harness.api.requests import compare_request, measurements
+from harness.runs.availability import statuses
+from harness.runs.comparison import Comparison
 from harness.engines import ENGINES
 from harness.engines.yade.dialect import dialect as yade_dialect
 from harness.engines.yade.precision import HIGH, available
-from harness.plan import Run
-from harness.outputs import save_comparison
-from harness.plan import compare_plan
-from harness.request import Request
-from harness.results import write_csv
+from harness.runs.plan import Run
+from harness.runs.outputs import save_comparison
+from harness.runs.plan import compare_plan
+from harness.runs.request import Request
+from harness.data.results import write_csv
 from harness.views import drawing
 from harness.views.html import rebuild
 

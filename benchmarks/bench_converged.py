@@ -22,9 +22,9 @@ import time
 import numpy as np
 
 from harness.analyses.cost import relative_errors
-from harness.cost_truth import truth_of
+from harness.studies.cost_truth import truth_of
 from harness.laws import LAWS, compose
-from harness.scene import Scene
+from harness.scenes.scene import Scene
 from harness.solver import simulate as simulation
 from harness.solver.simulate import adaptive_batch, simulate, simulate_adaptive
 

@@ -11,10 +11,10 @@ import time
 import numpy as np
 
 from harness.engines import ENGINES, EXTERNAL
-from harness.execute import execute
+from harness.runs.execute import execute
 from harness.laws import compose
-from harness.plan import engine_runs, run_spec
-from harness.scene import DEFAULT_ANGLES, Scene
+from harness.runs.plan import engine_runs, run_spec
+from harness.scenes.scene import DEFAULT_ANGLES, Scene
 from harness.solver import codes as C
 from harness.solver.batch import batch_of
 from harness.solver.simulate import run_kernel

@@ -14,7 +14,7 @@ import numpy as np
 from harness.engines import ENGINES
 from harness.laws import compose
 from harness.solver.simulate import batch_at
-from harness.scene import Scene
+from harness.scenes.scene import Scene
 
 STEPS = 1000
 

@@ -19,7 +19,7 @@ def main():
     parser.add_argument("--repeat", type=int, default=5)
     args = parser.parse_args()
     repeat = 1 if args.smoke else args.repeat
-    from harness.explain import explain
+    from harness.studies.explain import explain
     start = time.perf_counter()
     explain("lammps", INPUT)
     first = time.perf_counter() - start

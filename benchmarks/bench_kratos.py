@@ -17,9 +17,9 @@ import numpy as np
 
 from harness.engines import ENGINES
 from harness.laws import compose
-from harness.plan import RunSpec
+from harness.runs.plan import RunSpec
 from harness.solver.simulate import batch_at
-from harness.scene import Scene
+from harness.scenes.scene import Scene
 
 LAW = compose("hertz-mindlin")
 REPEATS = 2

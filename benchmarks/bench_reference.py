@@ -14,7 +14,7 @@ import numpy as np
 
 from harness.engines import liggghts
 from harness.laws import LAWS, compose
-from harness.scene import Scene
+from harness.scenes.scene import Scene
 from harness.solver import codes as C
 from harness.solver.extension import table as extension_table
 from harness.solver.kernel import integrate

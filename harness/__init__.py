@@ -10,7 +10,7 @@ import importlib as _importlib
 import sys as _sys
 import types as _types
 
-from .version import __version__
+from .infra.version import __version__
 
 _COMMANDS = ("run", "compare", "calibrate", "cost", "paper", "benchmark", "campaign", "plot", "explain")
 __all__ = [*_COMMANDS, "columns", "__version__"]
@@ -19,10 +19,10 @@ __all__ = [*_COMMANDS, "columns", "__version__"]
 def __getattr__(name):
     """The commands and `columns`, imported on first use: `import harness` loads neither numba nor pandas."""
     if name in _COMMANDS:
-        from . import notebook
+        from .api import notebook
         return getattr(notebook, name)
     if name == "columns":
-        from .descriptions import columns
+        from .data.descriptions import columns
         return columns()
     raise AttributeError(f"module 'harness' has no attribute {name!r}")
 
@@ -33,13 +33,7 @@ def __dir__():
 
 
 class _Harness(_types.ModuleType):
-    """The package, whose commands stay functions when their namesake subpackages are imported (harness.campaign,
-    harness.paper: reached as modules through sys.modules and `from harness.campaign import ...`)."""
-
-    def __setattr__(self, name, value):
-        if name in _COMMANDS and isinstance(value, _types.ModuleType):
-            return
-        super().__setattr__(name, value)
+    """The package, pickled by name."""
 
     def __reduce__(self):
         """Pickled by name, as any module (Dask's workers pickle what refers to the package)."""

@@ -9,7 +9,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 # The scene many tests were calibrated on before the paper's scene became the default: the engine notes' example
 # (R 5 mm, mu 0.3, impacts at 1 m/s). Tests whose expectations are specific to that scene (a finding measured at
-# a given angle, a stick-slip row) pin it; everything else runs on the paper's scene (harness.scene.Scene()).
+# a given angle, a stick-slip row) pin it; everything else runs on the paper's scene (harness.scenes.scene.Scene()).
 EXAMPLE = dict(radius=5e-3, mu=0.3, speed=1.0, material="example-5mm")
 
 
@@ -44,7 +44,7 @@ def assert_head_on_pair_is_wall(pair, wall_form):
     what the same law with the submodels `wall_form` gives on the equivalent sphere against a wall, to round-off."""
     import numpy as np
     from harness.laws.law import replace_submodels
-    from harness.request import scene_from
+    from harness.runs.request import scene_from
     from harness.solver.simulate import simulate
     scene = scene_from(en=(0.3, 0.8), angles=(0.0,), target="sphere", target_radius=0.04)
     a = simulate(pair, scene, steps_per_contact=300)[0]
@@ -141,9 +141,9 @@ SMALL_CAMPAIGN = dict(laws=["thornton"], e_n=[0.5, 0.9], angles=[10.0, 50.0, 85.
 @pytest.fixture(scope="session")
 def small_store(tmp_path_factory):
     """A store of SMALL_CAMPAIGN's 2 tasks, 6 rows (compacted into one data file), built once; copy it to change it."""
-    from harness.campaign.driver import run_campaign
-    from harness.campaign.executors import InProcess
-    from harness.campaign.spec import from_dict
+    from harness.studies.campaign.driver import run_campaign
+    from harness.studies.campaign.executors import InProcess
+    from harness.studies.campaign.spec import from_dict
     path = tmp_path_factory.mktemp("small-store") / "store"
     run_campaign(from_dict(SMALL_CAMPAIGN), path, InProcess())
     return path

@@ -8,7 +8,7 @@ from hypothesis import strategies as st
 
 import oracles
 from harness.laws import compose
-from harness.scene import Scene
+from harness.scenes.scene import Scene
 from harness.solver import codes as C
 from harness.solver import layout as L
 from harness.solver.simulate import adaptive_batch, run_adaptive, simulate

@@ -8,7 +8,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from harness.laws import compose
-from harness.scene import Scene
+from harness.scenes.scene import Scene
 from harness.solver import codes as C
 from harness.solver.simulate import adaptive_batch, run_adaptive, simulate, simulate_extrapolated
 

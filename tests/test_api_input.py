@@ -1,11 +1,11 @@
 """The catalogue of bad input through the Python API: a keyword of the wrong type is a TypeError naming it, a bad
-value a ValueError, both harness.errors.UserError (the line the CLI prints), raised before anything runs; and
+value a ValueError, both harness.infra.errors.UserError (the line the CLI prints), raised before anything runs; and
 `Comparison.ok` holds only when agreement holds for what was asked, as `compare` exits 0."""
 import pytest
 
 import harness
 from harness.commands import main
-from harness.errors import UserError, UserTypeError
+from harness.infra.errors import UserError, UserTypeError
 
 BASE = dict(en=[0.5], angles=[10.0])
 
@@ -94,7 +94,7 @@ def test_a_bad_value_is_a_value_error_not_a_type_error(call, keywords, name):
 def test_numbers_of_any_real_type_are_taken_as_floats():
     """numpy scalars and arrays, ints and tuples are numbers and lists of numbers, as the CLI's floats are."""
     import numpy as np
-    from harness.request import Request
+    from harness.runs.request import Request
     request = Request.from_keywords("hertz-mindlin", en=np.array([0.5]), angles=(10,), mu=np.float32(0.25),
                                     speed=2, steps_per_contact=np.int64(200))
     assert request.scene.e_n == (0.5,) and request.scene.angles_deg == (10.0,) and request.resolution == 200

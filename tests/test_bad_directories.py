@@ -186,7 +186,7 @@ def test_report_refuses_a_run_record_that_is_not_one(saved, tmp_path, capfd, nam
 
 OUTPUT_ENTRIES = ("report.html", "results.csv", "run.json", "attribution.csv", "attribution-rows.csv", "histories.csv",
                   "failures.csv", "precision.csv", "sliding.csv", "cost.csv", "cost.json", "cost-truth.csv",
-                  ".harness.lock")
+                  ".harness.infra.lock")
 
 
 def occupied(directory, name, how):
@@ -262,7 +262,7 @@ def test_render_checks_every_input_it_would_write_before_writing_one(tmp_path, c
 
 
 PAPER_ENTRIES = ("paper.csv", "paper-normal.csv", "paper-sliding.csv", "paper-published.csv", "paper.html",
-                 ".harness.lock")
+                 ".harness.infra.lock")
 
 
 @pytest.mark.parametrize("how", ["fifo", "directory", "link"])

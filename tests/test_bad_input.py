@@ -202,7 +202,7 @@ def test_report_refuses_a_damaged_directory_in_one_line(tmp_path, capfd, damage,
 
 
 def test_a_header_only_or_non_numeric_baseline_is_refused(tmp_path, capfd):
-    from harness.baseline import BASELINE_FILE, DEFAULT_BASELINE
+    from harness.studies.baseline import BASELINE_FILE, DEFAULT_BASELINE
     text = Path(DEFAULT_BASELINE, BASELINE_FILE).read_text().splitlines()
     (tmp_path / BASELINE_FILE).write_text(text[0] + "\n")
     assert main(["check", "--baseline", str(tmp_path)]) == 2
@@ -223,7 +223,7 @@ def test_a_header_only_or_non_numeric_baseline_is_refused(tmp_path, capfd):
 ])
 def test_an_overlap_beyond_small_strain_is_not_ok(keywords, reason):
     import harness
-    from harness.results import SMALL_STRAIN
+    from harness.data.results import SMALL_STRAIN
     frame = harness.run("hertz-mindlin", en=[0.5], angles=[0, 30], **keywords)
     overlap = frame.overlap_max / frame.radius
     assert (overlap > SMALL_STRAIN).all()                # the premise: a Hertz overlap beyond a = 0.3 R
@@ -234,8 +234,8 @@ def test_an_overlap_beyond_small_strain_is_not_ok(keywords, reason):
 def test_rows_with_a_negative_e_n_or_a_non_finite_energy_are_invalid():
     """The rule applied to rows as an engine could return them (YADE once gave e_n -0.88 in an ok row)."""
     from harness.laws import compose
-    from harness.results import impact_frame
-    from harness.scene import Scene
+    from harness.data.results import impact_frame
+    from harness.scenes.scene import Scene
     from harness.solver.simulate import batch_at
     scene = Scene(e_n=(0.5,), angles_deg=(10.0, 20.0, 30.0))
     batch = batch_at(compose("thornton"), scene, 0.5, 100)
@@ -257,8 +257,8 @@ def test_a_numeric_wall_that_is_not_one_is_a_one_line_error(wall, tmp_path, caps
 def _rows(engine="reference", angles=(10.0, 20.0, 30.0), mu=0.1, **measured):
     """Result rows as a batch of `engine` could return them: every impact rebounding at half its normal speed."""
     from harness.laws import compose
-    from harness.results import impact_frame
-    from harness.scene import Scene
+    from harness.data.results import impact_frame
+    from harness.scenes.scene import Scene
     from harness.solver.simulate import batch_at
     scene = Scene(e_n=(0.5,), angles_deg=angles, mu=mu)
     batch = batch_at(compose("thornton"), scene, 0.5, 100)
@@ -272,7 +272,7 @@ def _rows(engine="reference", angles=(10.0, 20.0, 30.0), mu=0.1, **measured):
 def test_an_ok_row_holds_no_nan_where_its_value_is_defined():
     """A reference row's contact time, peak force and overlap are measured, so a non-finite one is not a result; a
     ratio is NaN only where its denominator is 0 (e_t = v_t1/v_t0 at v_t0 != 0 is not)."""
-    from harness.results import mark_invalid
+    from harness.data.results import mark_invalid
     frame = _rows(t_contact=np.array([np.nan, 1e-5, 1e-5]), f_n_max=np.array([1.0, np.inf, 1.0]))
     assert frame.status.tolist() == ["invalid", "invalid", "ok"]
     assert "t_contact" in frame.message[0] and "f_n_max" in frame.message[1]

@@ -4,9 +4,9 @@ from pathlib import Path
 import pandas as pd
 import pytest
 
-from harness import baseline
+from harness.studies import baseline
 from harness.laws import compose
-from harness.results import read_csv, write_csv
+from harness.data.results import read_csv, write_csv
 from harness.solver.simulate import simulate
 
 REFERENCE = Path(__file__).resolve().parent.parent / "baselines"
@@ -58,7 +58,7 @@ def test_deliberately_broken_damping_is_caught(now, monkeypatch):
 
 
 def test_check_without_baseline_is_a_user_error(tmp_path):
-    from harness.errors import UserError
+    from harness.infra.errors import UserError
     with pytest.raises(UserError, match="no baseline"):
         baseline.check(str(tmp_path))
 

@@ -4,7 +4,7 @@ import os
 
 import pytest
 
-from harness.baseline import BASELINE_FILE, DEFAULT_BASELINE
+from harness.studies.baseline import BASELINE_FILE, DEFAULT_BASELINE
 from harness.commands import main
 
 

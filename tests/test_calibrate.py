@@ -11,11 +11,11 @@ import pandas as pd
 import pytest
 from conftest import needs
 
-from harness.calibration.restitution import normal_e, restitution_input
+from harness.studies.calibration.restitution import normal_e, restitution_input
 from harness.commands import main
 from harness.engines import ENGINES
 from harness.laws import compose
-from harness.scene import Scene
+from harness.scenes.scene import Scene
 
 SCENE = ["--angles", "0,20,40,60,80"]
 

@@ -10,14 +10,14 @@ import pandas as pd
 import pytest
 
 from conftest import interruptible, needs
-from harness.campaign.driver import dry_run, keyed, run_campaign
-from harness.campaign.executors import InProcess, executor
-from harness.campaign.slurm import forget_credentials, slurm_cluster
-from harness.campaign.spec import from_dict, load
-from harness.campaign.store import KEY, Store
+from harness.studies.campaign.driver import dry_run, keyed, run_campaign
+from harness.studies.campaign.executors import InProcess, executor
+from harness.studies.campaign.slurm import forget_credentials, slurm_cluster
+from harness.studies.campaign.spec import from_dict, load
+from harness.studies.campaign.store import KEY, Store
 from harness.commands import main
-from harness.errors import UserError
-from harness.plan import compare_plan
+from harness.infra.errors import UserError
+from harness.runs.plan import compare_plan
 
 SMALL = dict(laws=["hertz-mindlin", "thornton"], e_n=[0.5, 0.9], angles=[10, 50, 85], steps_per_contact=[500])
 METRICS = ["v_n1", "v_t1", "omega1", "e_n", "e_t", "omega_star"]

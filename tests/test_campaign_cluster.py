@@ -18,10 +18,10 @@ import psutil
 import pytest
 
 from conftest import fake_executable
-from harness.campaign import clusters
-from harness.campaign.executors import executor
-from harness.campaign.limits import max_workers
-from harness.campaign.slurm import forget_credentials, slurm_cluster
+from harness.studies.campaign import clusters
+from harness.studies.campaign.executors import executor
+from harness.studies.campaign.limits import max_workers
+from harness.studies.campaign.slurm import forget_credentials, slurm_cluster
 from harness.commands import main
 
 TOML = 'laws = ["thornton"]\ne_n = [0.5]\nangles = [10, 50]\nsteps_per_contact = [500]\n'
@@ -168,7 +168,7 @@ def test_the_slurm_scheduler_speaks_tls_only_with_private_credentials_and_no_htt
         for path in paths:
             assert stat.S_IMODE(os.stat(path).st_mode) == 0o600
             assert stat.S_IMODE(os.stat(os.path.dirname(path)).st_mode) == 0o700
-        assert "--preload harness.campaign.no_http" in script and "--local-directory" in script
+        assert "--preload harness.studies.campaign.no_http" in script and "--local-directory" in script
         found = listeners(os.getpid()) - before
         assert {p for _, p in found} == {port(address)}, found          # the scheduler's TLS port alone
         from distributed import Client
@@ -442,7 +442,7 @@ def test_dask_jobqueue_leaves_ctrl_c_to_harness():
     """dask-jobqueue's runner sets SIGINT to sys.exit() on import: Ctrl-C would end a campaign with status 0 and no
     word. Imported by harness, from a thread first (where setting a handler fails), the handler is Python's."""
     code = ("import signal, threading\n"
-            "from harness.campaign.slurm import slurm_cluster_class\n"
+            "from harness.studies.campaign.slurm import slurm_cluster_class\n"
             "thread = threading.Thread(target=slurm_cluster_class)\n"
             "thread.start(); thread.join()\n"
             "slurm_cluster_class()\n"

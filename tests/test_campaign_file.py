@@ -8,9 +8,9 @@ import time
 
 import pytest
 
-from harness.campaign.driver import keyed
-from harness.campaign.limits import MAX_TASKS
-from harness.campaign.spec import from_dict
+from harness.studies.campaign.driver import keyed
+from harness.studies.campaign.limits import MAX_TASKS
+from harness.studies.campaign.spec import from_dict
 from harness.commands import main
 
 LAW = 'laws = ["thornton"]\n'

@@ -127,7 +127,7 @@ def test_each_deviation_map_has_a_colour_key_from_zero_to_its_largest_value(tmp_
     """Under each e_n x angle map, swatches from white at 0 to the colour of the map's largest cell, each labelled
     with the value it stands for."""
     import re
-    from harness.campaign.page import PageData, Shown
+    from harness.studies.campaign.page import PageData, Shown
     from harness.views.campaign_html import write_campaign_report
     grid = pd.DataFrame({"e_n_target": [0.5, 0.9], "20.0": [0.012, 0.03], "60.0": [0.25, float("nan")]})
     table = pd.DataFrame({"status": ["ok"], "task_key": ["k"], "model": ["hertz-mindlin"], "engine": ["liggghts"]})

@@ -14,14 +14,14 @@ import pyarrow.parquet as pq
 import pytest
 from conftest import SMALL_CAMPAIGN, snapshot
 
-from harness.campaign.driver import run_campaign
-from harness.campaign.executors import InProcess
-from harness.campaign.spec import from_dict
-from harness.campaign.store import KEY, Store
+from harness.studies.campaign.driver import run_campaign
+from harness.studies.campaign.executors import InProcess
+from harness.studies.campaign.spec import from_dict
+from harness.studies.campaign.store import KEY, Store
 from harness.commands import main
-from harness.keys import run_key
-from harness.plan import compare_plan
-from harness.request import Request
+from harness.runs.keys import run_key
+from harness.runs.plan import compare_plan
+from harness.runs.request import Request
 
 TOML = 'laws = ["thornton"]\ne_n = [0.5, 0.9]\nangles = [10, 50, 85]\nsteps_per_contact = [500]\n'
 

@@ -8,11 +8,11 @@ from conftest import needs
 
 import harness
 from harness.engines import get_engine
-from harness.execute import execute
+from harness.runs.execute import execute
 from harness.laws import compose
 from harness.laws.law import replace_submodels
-from harness.plan import engine_runs
-from harness.scene import Scene
+from harness.runs.plan import engine_runs
+from harness.scenes.scene import Scene
 from harness.solver.simulate import simulate
 
 TOLERANCE = 1e-3              # the Coulomb check's

@@ -12,7 +12,7 @@ import pytest
 import oracles
 from conftest import needs
 from harness.commands import main
-from harness.verification import chung_ooi as suite
+from harness.studies.verification import chung_ooi as suite
 from harness.views.chung_ooi_html import headline
 
 # The published tests as their independent reproductions give them, read from these files (not from harness):

@@ -64,7 +64,8 @@ def test_plain_pip_install_ships_templates_and_baselines(tmp_path):
     work = tmp_path / "elsewhere"
     work.mkdir()
     env = {**os.environ, "PYTHONPATH": str(target)}
-    where = subprocess.run([sys.executable, "-c", "import harness, harness.baseline as b, harness.render as r; "
+    where = subprocess.run([sys.executable, "-c", "import harness, harness.studies.baseline as b, "
+                            "harness.infra.render as r; "
                             "print(harness.__file__); print(b.DEFAULT_BASELINE); print(r.REPORT_TEMPLATES)"],
                            cwd=work, env=env, capture_output=True, text=True)
     module, baseline, templates = where.stdout.split()

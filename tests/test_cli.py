@@ -7,7 +7,7 @@ import pandas as pd
 import pytest
 
 from conftest import needs
-from harness.results import COLUMNS
+from harness.data.results import COLUMNS
 
 
 def harness(*args, cwd=None, env=None):

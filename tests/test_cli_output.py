@@ -68,7 +68,7 @@ def test_an_engine_that_disagrees_with_its_formulas_exits_1(tmp_path, capsys, mo
 
 
 def test_an_internal_error_exits_4_with_its_traceback(tmp_path, capsys, monkeypatch):
-    import harness.api as api            # `harness run` imports run_request from it when it runs
+    import harness.api.requests as api            # `harness run` imports run_request from it when it runs
 
     def broken(request, **keywords):
         raise ZeroDivisionError("a bug")

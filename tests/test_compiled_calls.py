@@ -1,5 +1,5 @@
-"""A compiled internal function carries no Python wrapper (harness/jit.py): Python calling it would jump to a null
-address. So no plain Python function of harness calls one; tests go through harness.jit.python_twin."""
+"""A compiled internal function carries no Python wrapper (harness/infra/jit.py): Python calling it would jump to a null
+address. So no plain Python function of harness calls one; tests go through harness.infra.jit.python_twin."""
 import ast
 import importlib
 import importlib.util
@@ -81,7 +81,7 @@ def test_the_check_finds_such_a_call(tmp_path):
 
 PYTHON_CALL = """
 import math
-from harness.jit import python_twin
+from harness.infra.jit import python_twin
 from harness.solver.spring import mean_radius
 from harness.submodels.coulomb import clip
 print(python_twin(mean_radius)(1.0, 1.0), flush=True)
@@ -98,7 +98,7 @@ def test_a_python_call_of_a_compiled_function_raises_naming_its_twin():
     still work (the kernel integrates a batch first)."""
     import subprocess
     import sys
-    script = ("import numpy as np\nfrom harness.laws import compose\nfrom harness.scene import Scene\n"
+    script = ("import numpy as np\nfrom harness.laws import compose\nfrom harness.scenes.scene import Scene\n"
               "from harness.solver.simulate import simulate\n"
               "frame = simulate(compose('hertz-mindlin'), Scene(e_n=(0.5,), angles_deg=(30.0,)), 100)[0]\n"
               "print('status', frame.status.iloc[0], flush=True)\n" + PYTHON_CALL)
@@ -107,4 +107,4 @@ def test_a_python_call_of_a_compiled_function_raises_naming_its_twin():
     lines = done.stdout.splitlines()
     assert lines[0] == "status ok" and float(lines[1]) == 1.0
     assert lines[2] == ("TypeError: clip is compiled for compiled callers only (no Python wrapper); from Python call "
-                        "harness.jit.python_twin(clip)")
+                        "harness.infra.jit.python_twin(clip)")

@@ -19,11 +19,11 @@ from scipy.optimize import brentq
 from harness.analyses.cost import (ADAPTIVE, ADAPTIVE_RUNGS, EXTRAPOLATED, METRICS, TOLERANCES, convergence_orders,
                                    fastest, per_rung, rayleigh_time, relative_errors)
 from harness.analyses.cost_answer import recommendations
-from harness.cost_plan import FIRST_IMPACTS, cost_table, step_time
-from harness.cost_truth import truth_of
+from harness.studies.cost_plan import FIRST_IMPACTS, cost_table, step_time
+from harness.studies.cost_truth import truth_of
 from harness.engines import ENGINES, EXTERNAL
 from harness.laws import compose
-from harness.scene import Scene
+from harness.scenes.scene import Scene
 
 LIGGGHTS = ENGINES["liggghts"]
 
@@ -282,13 +282,14 @@ def test_cli_writes_cost_csv_and_a_report_that_rebuilds(tmp_path):
 @needs("liggghts")
 def test_an_interrupted_study_keeps_its_rows_and_reports(tmp_path, monkeypatch):
     """Ctrl-C during the engine part: exit 130, cost.csv holds every row measured before, the report rebuilds."""
-    import harness.cost_plan
+    import harness.studies.cost_plan
     from harness.commands import main
     from harness.views.html import rebuild
 
     def interrupted(*args, **kwargs):
         raise KeyboardInterrupt
-    monkeypatch.setattr(harness.cost_plan, "truth_of", _truth_then(harness.cost_plan.truth_of, interrupted))
+    cost_plan = harness.studies.cost_plan
+    monkeypatch.setattr(cost_plan, "truth_of", _truth_then(cost_plan.truth_of, interrupted))
     out = tmp_path / "c"
     code = main(["cost", "--model", "hertz-mindlin", "--engines", "liggghts", "--en", "0.5", "--angles", "0,40",
                  "--ladder", "20,100", "-o", str(out)])
@@ -456,14 +457,14 @@ def test_compare_json_is_strict(tmp_path):
 def test_cost_json_is_written_strict(tmp_path):
     """cost.json through the strict writer: a value that is not a number (here a failure's e_n) is null."""
     from harness.engines.batches import FailedRun
-    from harness.outputs import save_cost
+    from harness.runs.outputs import save_cost
     failure = FailedRun("yade", np.float64(np.nan), "crashed", "")
     save_cost(str(tmp_path), pd.DataFrame(), {}, compose("hertz-mindlin"), Scene(), {}, [], [failure])
     assert strict_json((tmp_path / "cost.json").read_text())["failures"][0]["e_n"] is None
 
 
 def test_strict_json_writes_null_for_nan_and_infinity():
-    from harness.views.strict_json import dumps
+    from harness.infra.strict_json import dumps
     assert strict_json(dumps({"a": float("nan"), "b": [np.inf, np.float64(-np.inf), np.int64(3)]})) == \
         {"a": None, "b": [None, None, 3]}
 
@@ -510,7 +511,7 @@ def test_a_truth_that_still_changes_is_refined_impact_by_impact():
     steps per contact (the first step's dashpot beyond the Coulomb cap, docs/lammps-dialect.md), at 40 deg by far
     less. Only the 11-degree impact is run again, at 2^19, 2^20, ... until its last change is below 1e-4 of V or
     2^21; the truth is that finest run and its uncertainty that last change, as the solver gives them."""
-    from harness.cost_truth import TRUTH_MAX_STEPS, TRUTH_TARGET
+    from harness.studies.cost_truth import TRUTH_MAX_STEPS, TRUTH_TARGET
     from harness.solver.simulate import simulate
     dialect = ENGINES["lammps"].dialect("hertz-mindlin", {})
     scene = Scene(e_n=(0.25,), angles_deg=(11.0, 40.0))
@@ -536,8 +537,8 @@ def test_lammps_1_percent_is_priced_on_its_formulas_beyond_its_ladder_and_the_bi
     per contact, so 1% is priced on its formulas' refined converged reference: 524288 steps (2^19), marked as such.
     The binary itself, at 11 deg against its own 2^21 steps per contact: more than 1% of V off at 2^18, within 1% at
     2^19."""
-    from harness.execute import execute
-    from harness.plan import engine_runs
+    from harness.runs.execute import execute
+    from harness.runs.plan import engine_runs
     proc = lammps_cost_json[0]
     assert proc.returncode == 0, proc.stderr
     found = strict_json(proc.stdout)

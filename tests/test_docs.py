@@ -169,7 +169,7 @@ def runnable(command):
     """A command that can run as it stands: no placeholder, and for harness, all the arguments its command needs."""
     if PLACEHOLDER.search(command):
         return False
-    from harness.errors import UserError
+    from harness.infra.errors import UserError
     words = shlex.split(command)
     if words[:3] == ["python", "-m", "harness"]:
         words = ["harness", *words[3:]]
@@ -261,9 +261,9 @@ def resolves(dotted):
 
 
 def test_every_python_name_a_doc_gives_exists():
-    """`harness.keys.run_key`, `harness.plan.RunSpec`, ...: each module or attribute is there (a positive control:
-    a name that is not)."""
-    assert resolves("harness.keys.run_key") and not resolves("harness.plan.run_key")
+    """`harness.runs.keys.run_key`, `harness.solver.resolution.RunSpec`, ...: each module or attribute is there (a
+    positive control: a name that is not)."""
+    assert resolves("harness.runs.keys.run_key") and not resolves("harness.runs.plan.run_key")
     wrong = [f"{doc.name}: {name}" for doc in DOCS
              for name in re.findall(r"`(harness(?:\.\w+)+)(?:\([^`]*\))?`", doc.read_text()) if not resolves(name)]
     assert not wrong, wrong

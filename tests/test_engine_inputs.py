@@ -1,4 +1,4 @@
-"""A user's own engine inputs (--engine-input ENGINE=TEXT, harness.engine_inputs): parsed with the engine's own
+"""A user's own engine inputs (--engine-input ENGINE=TEXT, harness.engines.user_inputs): parsed with the engine's own
 vocabulary, refused with its reasons, composed of neutral sub-models with the input's numbers; the real binaries
 against those compositions on walls and pairs, per release; results that record the input verbatim."""
 import json
@@ -11,13 +11,13 @@ import pytest
 from conftest import agreement, needs
 
 import oracles
-from harness.engine_inputs import parse
+from harness.engines.user_inputs import parse
 from harness.engines import lammps
-from harness.errors import UserError
-from harness.execute import execute
+from harness.infra.errors import UserError
+from harness.runs.execute import execute
 from harness.laws import compose
-from harness.plan import engine_plan
-from harness.request import Request, scene_from
+from harness.runs.plan import engine_plan
+from harness.runs.request import Request, scene_from
 
 ANGLES = (0.0, 20.0, 45.0, 70.0)
 needs_lammps = needs("lammps")
@@ -266,7 +266,7 @@ def test_explain_gives_the_achieved_restitution_and_the_nearest_paper_law():
     """hooke k with a mass_velocity dashpot d: e_n = exp(-z pi/sqrt(1 - z^2)), z = d m/(2 sqrt(m k)) (the linear
     oscillator, tension allowed), contact time pi/(w0 sqrt(1 - z^2)); at normal incidence every paper law, compared at
     that e_n, rebounds as the input does (each is calibrated to return it)."""
-    from harness.explain import explain
+    from harness.studies.explain import explain
     x = explain("lammps", "hooke 1e7 3000 damping mass_velocity tangential linear_history 2.8e6 0.5 0.4",
                 angles=[0.0, 20.0, 50.0])
     m = scene_from(en=[0.5], angles=[0.0]).contact.mass
@@ -281,7 +281,7 @@ def test_explain_gives_the_achieved_restitution_and_the_nearest_paper_law():
 
 
 def test_explain_refuses_a_scene_e_n_in_one_line():
-    from harness.explain import explain
+    from harness.studies.explain import explain
     with pytest.raises(UserError, match="explain takes e_n and mu from the input"):
         explain("lammps", "hooke 1e7 3000 damping mass_velocity tangential linear_history 2.8e6 0.5 0.4", en=[0.5])
 
@@ -290,7 +290,7 @@ def test_explain_refuses_a_scene_e_n_in_one_line():
 def test_explain_translates_a_classic_style_into_granular_words_that_run_alike():
     """On a 2021.9.29.2 wall gran/hooke/history computes what hooke + mass_velocity + linear_history computes:
     explain names the granular words, and the engine run with each gives the same rebounds."""
-    from harness.explain import explain
+    from harness.studies.explain import explain
     engine = build("2021.9.29.2")
     x = explain("lammps@2021.9.29.2", CLASSIC, angles=[0.0, 30.0, 60.0])
     ((_, granular),) = x.translations
@@ -347,7 +347,7 @@ def test_explain_translates_a_liggghts_input_into_lammps_words_that_run_alike():
     the input's within 1e-6 of V), and the two engines run with them return the same e_n at normal incidence (their
     steppers differ at first touch by a step: within 1e-3)."""
     from harness.engines import get_engine
-    from harness.explain import explain
+    from harness.studies.explain import explain
     x = explain("liggghts", LIGGGHTS_INPUTS["hertz"], angles=[0.0, 20.0, 60.0])
     ((where, text),) = x.translations
     assert where == "lammps 2024.8.29.3" and text.startswith("hertz/material 1000000000.0 0.5 0.3 damping "
@@ -364,7 +364,7 @@ def test_explain_translates_a_liggghts_input_into_lammps_words_that_run_alike():
 
 
 def test_a_campaign_takes_engine_inputs_and_refuses_a_friction_sweep_against_them():
-    from harness.campaign.spec import from_dict
+    from harness.studies.campaign.spec import from_dict
     text = "hooke 1e7 3000 damping mass_velocity tangential linear_history 2.8e6 0.5 0.4"
     campaign = from_dict({"laws": ["linear-spring-dashpot"], "engines": ["lammps"], "e_n": [0.5], "angles": [10, 30],
                           "engine_inputs": {"lammps": text}})
@@ -510,7 +510,7 @@ def test_a_kratos_input_steps_as_the_kratos_dialect_of_a_scene_with_its_numbers(
     """The input's composition, on a scene of other E, nu and e_n, steps as the Kratos dialect of the paper's path
     (tested against Kratos in tests/test_kratos.py) on a scene that carries the input's E, nu and e: equal outputs."""
     from harness.engines import get_engine
-    from harness.resolution import run_spec
+    from harness.solver.resolution import run_spec
     from harness.solver.batch import batch_of
     from harness.solver.simulate import run_kernel
     young, nu = (5e10, 0.3) if name == "hertz" else (2e9, 0.25)
@@ -568,7 +568,7 @@ def test_explain_translates_a_yade_viscel_input_into_lammps_words_that_run_alike
     input's within 1e-6 of V), and YADE and Debian's LAMMPS run with them return the same e_n at normal incidence
     (leapfrog against velocity Verlet at t_c/1000: within 1e-3)."""
     from harness.engines import get_engine
-    from harness.explain import explain
+    from harness.studies.explain import explain
     text = YADE_INPUTS["viscel kn ks cn cs"]
     x = explain("yade", text, angles=[0.0, 20.0, 60.0])
     ((where, words),) = x.translations

@@ -9,7 +9,7 @@ import harness
 from harness.engines import ENGINES, EXTERNAL, get_engine
 from harness.engines.base import Engine
 from harness.engines.protocol import Option, Status
-from harness.errors import UserError
+from harness.infra.errors import UserError
 from harness.laws import LAWS
 
 ENGINE_NAMES = ("engine", "adapter", "found")      # what callers call an engine object
@@ -94,11 +94,11 @@ def test_decks_sharing_one_process_each_get_their_own_step_budget(name):
     """`clear` keeps LIGGGHTS' and LAMMPS' loop variables: a deck's `variable chunk loop` would carry on an earlier
     deck's count and stop before its spheres separate. 120 decks of one two-sphere impact in one process (each uses
     ~10 of its ~400 chunks, so without the deletion the later ones run out) all return the same, separated rebound."""
-    from harness.bodies import Sphere
+    from harness.scenes.bodies import Sphere
     from harness.laws import compose
-    from harness.plan import engine_runs
-    from harness.scene import Scene
-    from harness.two_spheres import reduce
+    from harness.runs.plan import engine_runs
+    from harness.scenes.scene import Scene
+    from harness.solver.two_spheres import reduce
     engine = ENGINES[name]
     scene = Scene(e_n=(0.5,), angles_deg=None, v_t=(0.0,), speed=0.4, radius=0.1, E=7e10, nu=0.33, rho=2700.0)
     (run,) = engine_runs(engine, compose("hertz-mindlin"), reduce(scene, Sphere(0.1, 7e10, 0.33, 2700.0)), 100)
@@ -113,8 +113,8 @@ def test_a_run_spec_covers_its_step_cap_in_tenths_of_a_contact():
     a start-up run's own cap is part of its key, a plain run's key does not change."""
     from dataclasses import replace
     from harness.laws import compose
-    from harness.plan import engine_runs
-    from harness.scene import Scene
+    from harness.runs.plan import engine_runs
+    from harness.scenes.scene import Scene
     scene = Scene(e_n=(0.5,), angles_deg=(0.0, 40.0))
     for steps in (20, 1000, 4567):
         (run,) = engine_runs(ENGINES["liggghts"], compose("hertz-mindlin"), scene, steps)
@@ -134,8 +134,8 @@ def test_the_step_cap_of_a_run_reaches_the_engine(name):
     with the plan's own cap every one does: the engine stepped as far as the spec said."""
     from dataclasses import replace
     from harness.laws import compose
-    from harness.plan import engine_runs
-    from harness.scene import Scene
+    from harness.runs.plan import engine_runs
+    from harness.scenes.scene import Scene
     engine = ENGINES[name]
     (run,) = engine_runs(engine, compose("hertz-mindlin"), Scene(e_n=(0.5,), angles_deg=(0.0, 30.0)), 1000)
     (capped, failure), (full, _) = engine.run([replace(run, step_cap=1), run])

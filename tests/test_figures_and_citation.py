@@ -14,9 +14,9 @@ import pytest
 
 import harness
 from conftest import needs
-from harness.citation import DOCS_URL, PROJECT_URL
+from harness.infra.citation import DOCS_URL, PROJECT_URL
 from harness.commands import main
-from harness.version import RELEASED
+from harness.infra.version import RELEASED
 
 ROOT = Path(__file__).resolve().parent.parent
 MU_SPEED = """name = "mu-speed"
@@ -233,15 +233,15 @@ def test_citation_cff_names_this_version_date_and_address():
      "give radius in materials or radii, not both"),
 ])
 def test_a_scene_list_of_the_wrong_kind_is_one_line(extra, words):
-    from harness.campaign.spec import from_dict
-    from harness.errors import UserError
+    from harness.studies.campaign.spec import from_dict
+    from harness.infra.errors import UserError
     with pytest.raises(UserError) as caught:
         from_dict({"laws": ["hertz-mindlin"], **extra})
     assert words in str(caught.value) and "\n" not in str(caught.value)
 
 
 def test_each_scene_list_reaches_the_requests():
-    from harness.campaign.spec import from_dict
+    from harness.studies.campaign.spec import from_dict
     campaign = from_dict({"laws": ["hertz-mindlin"], "mus": [0.1, 0.4], "radii": [0.005, 0.01], "walls": ["rigid"]})
     assert sorted((r.scene.mu, r.scene.radius, r.scene.wall) for r in campaign.requests) == [
         (0.1, 0.005, "rigid"), (0.1, 0.01, "rigid"), (0.4, 0.005, "rigid"), (0.4, 0.01, "rigid")]
@@ -251,11 +251,11 @@ def test_each_scene_list_reaches_the_requests():
 def test_the_deviations_view_is_the_pandas_pairing_of_the_rows(tmp_path):
     """The view `deviations` (DuckDB) gives per mu the worst |e_t(LIGGGHTS) - e_t(paper law)| that pairing the
     store's rows impact by impact in pandas gives."""
-    from harness.campaign.driver import run_campaign
-    from harness.campaign.executors import InProcess
-    from harness.campaign.query import query
-    from harness.campaign.spec import from_dict
-    from harness.campaign.store import Store
+    from harness.studies.campaign.driver import run_campaign
+    from harness.studies.campaign.executors import InProcess
+    from harness.studies.campaign.query import query
+    from harness.studies.campaign.spec import from_dict
+    from harness.studies.campaign.store import Store
     store = tmp_path / "store"
     for mu in (0.1, 0.3):
         run_campaign(from_dict({"laws": ["hertz-mindlin"], "engines": ["reference", "liggghts"], "e_n": [0.5],

@@ -17,7 +17,7 @@ for root, _, names in os.walk(disk):
     for name in names:
         path = os.path.join(root, name)
         files[os.path.relpath(path, disk)] = open(path, "rb").read().decode("utf-8", "replace")
-        if name == ".harness.lock":
+        if name == ".harness.infra.lock":
             with open(path) as handle:
                 try:
                     fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)

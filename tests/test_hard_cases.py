@@ -1,7 +1,7 @@
-"""Hard cases (issue 6, harness/hard_cases.py): every registry law on every catalogue case through the reference, and
-where supported through LIGGGHTS and YADE (one batched run per law, e_n and material): finite results, no kinetic
-energy gain, separation within the bound, normal-impact e_n on target, outcomes continuous in the inputs. Engine
-breaks must come out of `findings` (what `harness compare` prints); refusals must be one line naming the range.
+"""Hard cases (issue 6, harness/studies/hard_cases.py): every registry law on every catalogue case through the
+reference, and where supported through LIGGGHTS and YADE (one batched run per law, e_n and material): finite results,
+no kinetic energy gain, separation within the bound, normal-impact e_n on target, outcomes continuous in the inputs.
+Engine breaks must come out of `findings` (what `harness compare` prints); refusals must be one line naming the range.
 Oracles: tests/oracles.py (independent integrations and the closed forms of docs/laws.md) and dimensional analysis."""
 import math
 from concurrent.futures import ThreadPoolExecutor
@@ -16,11 +16,12 @@ from scipy.optimize import brentq
 
 from harness.analyses.findings import findings
 from harness.engines import ENGINES, EXTERNAL
-from harness.hard_cases import BASE_SCENE, CATALOGUE, HardCase, get_case, material_key, run_engine, run_reference
+from harness.studies.hard_cases import (BASE_SCENE, CATALOGUE, HardCase, get_case, material_key, run_engine,
+                                        run_reference)
 from harness.analyses.invariants import (PARAMETER_METRICS, discontinuities, invariant_breaks, jump_floor, max_jump)
 from harness.laws import LAWS, compose
-from harness.results import SMALL_STRAIN
-from harness.scene import Scene
+from harness.data.results import SMALL_STRAIN
+from harness.scenes.scene import Scene
 from harness.solver.simulate import simulate
 
 PAPER = Scene(**BASE_SCENE)

@@ -8,7 +8,7 @@ from numba.core.registry import CPUDispatcher
 
 import harness.solver
 import harness.submodels
-from harness.sources import source_digest
+from harness.infra.sources import source_digest
 
 
 def compiled_functions():
@@ -21,7 +21,7 @@ def compiled_functions():
 
 
 def test_every_cached_kernel_lives_in_the_directory_of_the_current_sources():
-    digest = source_digest("solver", "submodels", "jit.py")
+    digest = source_digest("solver", "submodels", "infra/jit.py")
     paths = {f"{f.py_func.__module__}.{f.__name__}": f._cache._cache_path for f in compiled_functions()}
     assert len(paths) > 50
     assert config.CACHE_DIR.endswith(digest)
@@ -29,14 +29,15 @@ def test_every_cached_kernel_lives_in_the_directory_of_the_current_sources():
 
 
 def test_the_digest_follows_every_compiled_source(tmp_path, monkeypatch):
-    import harness.sources as sources
+    import harness.infra.sources as sources
     for name in ("solver", "submodels"):
         (tmp_path / name).mkdir()
         (tmp_path / name / "a.py").write_text("x = 1\n")
-    (tmp_path / "jit.py").write_text("")
+    (tmp_path / "infra").mkdir()
+    (tmp_path / "infra" / "jit.py").write_text("")
     monkeypatch.setattr(sources, "ROOT", tmp_path)
-    before = sources.source_digest("solver", "submodels", "jit.py")
+    before = sources.source_digest("solver", "submodels", "infra/jit.py")
     (tmp_path / "submodels" / "a.py").write_text("x = 2\n")
-    after = sources.source_digest("solver", "submodels", "jit.py")
-    (tmp_path / "jit.py").write_text("# changed\n")
-    assert len({before, after, sources.source_digest("solver", "submodels", "jit.py")}) == 3
+    after = sources.source_digest("solver", "submodels", "infra/jit.py")
+    (tmp_path / "infra" / "jit.py").write_text("# changed\n")
+    assert len({before, after, sources.source_digest("solver", "submodels", "infra/jit.py")}) == 3

@@ -13,12 +13,12 @@ from conftest import PAIR_TARGETS, agreement, fake_executable, needs
 from harness.commands import main
 from harness.engines import kratos
 from harness.engines.runner import EngineFailure
-from harness.execute import execute
+from harness.runs.execute import execute
 from harness.laws import compose
-from harness.plan import engine_plan, engine_runs
-from harness.render import RenderError, render
-from harness.request import scene_from
-from harness.scene import Scene
+from harness.runs.plan import engine_plan, engine_runs
+from harness.infra.render import RenderError, render
+from harness.runs.request import scene_from
+from harness.scenes.scene import Scene
 
 needs_kratos = needs("kratos")
 ENGINE = kratos.ENGINE

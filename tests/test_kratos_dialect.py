@@ -5,20 +5,20 @@ import math
 import numpy as np
 import pytest
 
-from harness.bodies import Sphere
+from harness.scenes.bodies import Sphere
 from harness.engines.kratos.dialect import DIALECTS, PAIR_DIALECTS
-from harness.jit import python_twin
+from harness.infra.jit import python_twin
 from harness.laws import compose
 from harness.laws.law import replace_submodels
-from harness.scene import Scene
-from harness.plan import FixedTimeStep, run_spec
+from harness.scenes.scene import Scene
+from harness.runs.plan import FixedTimeStep, run_spec
 from harness.solver.simulate import simulate
 from harness.submodels import calibration as cal
 from harness.submodels.coulomb import total_cases
 from harness.submodels.normal.linear_modulus import LinearModulus
 from harness.submodels.tangential import mindlin_unloading
 from harness.submodels.tangential.state import N_TSTATE
-from harness.two_spheres import reduce
+from harness.solver.two_spheres import reduce
 
 LAST_HALF_BRACKET = 16.0 / 2 ** 19      # [0, 16] halved until at most 1e-4 wide (18 halvings), then its midpoint
 

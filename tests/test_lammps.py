@@ -10,10 +10,10 @@ import pytest
 from conftest import PAIR_TARGETS, agreement, assert_head_on_pair_is_wall, fake_executable, needs
 
 from harness.engines import lammps
-from harness.execute import execute
+from harness.runs.execute import execute
 from harness.laws import compose
-from harness.plan import engine_plan, engine_runs
-from harness.scene import Scene
+from harness.runs.plan import engine_plan, engine_runs
+from harness.scenes.scene import Scene
 from harness.submodels import calibration as cal
 
 needs_lammps = needs("lammps")
@@ -130,7 +130,7 @@ def test_each_mindlin_form_and_style_changes_what_lammps_computes():
 
 
 def test_options_where_their_law_has_none_are_one_line_errors():
-    from harness.errors import UserError
+    from harness.infra.errors import UserError
     with pytest.raises(UserError, match="no older wall style for hertz-mindlin"):
         lammps.dialect("hertz-mindlin", {"style": "history"})
     with pytest.raises(UserError, match="Mindlin springs are for the granular style's hertz/material laws"):
@@ -145,7 +145,7 @@ def test_lammps_two_spheres_agree_with_their_dialect_at_equal_dt(name, pair, ome
     """pair granular between two spheres, every supported law x 3 e_n x 6 angles, with and without spin, against
     targets free or frozen, of the same or another size and material: the real binary within 1e-6 of its dialect
     (the relative motion with the turning normal, solver/pair.py)."""
-    from harness.request import scene_from
+    from harness.runs.request import scene_from
     scene = scene_from(en=(0.3, 0.6, 0.9), angles=ANGLES, omega0=omega0, target="sphere", **PAIR_TARGETS[pair])
     dialect = lammps.dialect(name, {}, "sphere")
     frame, failures = execute(engine_plan(lammps.ENGINE, compose(name), scene, 200))
@@ -165,7 +165,7 @@ def test_the_pair_stepper_head_on_is_the_wall_stepper():
 def test_a_pair_deck_names_both_materials_and_the_pair_mixing():
     """pair_coeff 1 2 carries the E and nu whose own mixing is the pair's E* and G* (LAMMPS' automatic mixing of 1 1
     and 2 2 is unusable in this version), a frozen target is frozen, and the dump has x for the separation."""
-    from harness.request import scene_from
+    from harness.runs.request import scene_from
     scene = scene_from(en=(0.5,), angles=(30.0,), target="sphere", target_radius=0.01,
                        target_material="E=2.1e11,nu=0.29,rho=7800", target_fixed=True)
     run = engine_runs(lammps.ENGINE, compose("hertz-mindlin"), scene, 200)[0]
@@ -184,8 +184,8 @@ def test_lammps_pairs_observed_contact_agrees_with_the_dialect():
     """Observe mode of the pair deck: contact time to the step (both from the touch at step 0 to the first step out),
     peak normal force F1.n and overlap R1 + R2 - |r| within the parabola's O(1/N^2) of the dialect's interpolated peaks
     (tests/test_observe.py: up to 30/N^2), here with the normal turning (40 and 70 deg)."""
-    from harness.plan import reference_runs
-    from harness.request import scene_from
+    from harness.runs.plan import reference_runs
+    from harness.runs.request import scene_from
     scene = scene_from(en=(0.5,), angles=(0.0, 40.0, 70.0), omega0=20.0, target="sphere", target_radius=0.04)
     law = compose("hertz-mindlin")
     seen, failures = execute(engine_runs(lammps.ENGINE, law, scene, 200, observe=True))
@@ -207,7 +207,7 @@ def test_lammps_walls_of_another_material_agree_with_the_dialect(name, options, 
     """Where the deck gives the wall's stiffnesses as numbers (granular hooke, hooke/history, hertz/history), they
     are the scene's contact's, so any wall runs and agrees with the dialect; the steel wall changed the rebound (a
     rigid one, doubling E* and G* together, leaves these e_n-calibrated laws' rebound as it was: see the deck test)."""
-    from harness.request import wall_fields
+    from harness.runs.request import wall_fields
     kwargs = dict(e_n=(0.3, 0.9), angles_deg=(0.0, 30.0, 60.0), psi1_star=None, omega0=-20.0)
     scene = Scene(**kwargs, **wall_fields(wall))
     frame, failures = execute(engine_plan(lammps.ENGINE, compose(name), scene, 200, options))
@@ -221,7 +221,7 @@ def test_lammps_walls_of_another_material_agree_with_the_dialect(name, options, 
 def test_lammps_wall_stiffness_numbers_follow_the_wall_and_hertz_material_keeps_its_own():
     """hertz/history's k_n = 4/3 E* in the deck: E/(1 - nu^2) against a rigid wall, half that against the sphere's
     own material; hertz/material (hertz-mindlin, granular hertz-kuwabara-kono) offers only the latter."""
-    from harness.request import wall_fields
+    from harness.runs.request import wall_fields
     coefficients = {}
     for wall in ("same", "rigid"):
         scene = Scene(e_n=(0.5,), angles_deg=(30.0,), **(wall_fields(wall) if wall != "same" else {}))

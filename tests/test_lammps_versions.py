@@ -12,11 +12,11 @@ from conftest import PAIR_TARGETS, agreement
 
 from harness.engines import lammps
 from harness.engines.builds import directory
-from harness.errors import UserError
-from harness.execute import execute
+from harness.infra.errors import UserError
+from harness.runs.execute import execute
 from harness.laws import compose
-from harness.plan import engine_plan
-from harness.scene import Scene
+from harness.runs.plan import engine_plan
+from harness.scenes.scene import Scene
 
 ROOT = directory()
 WHEELS = {"2022.6.23.4": "2022.6.23.4.0", "2023.8.2.3": "2023.8.2.3.1", "2024.8.29.3": "2024.8.29.3.0",
@@ -73,7 +73,7 @@ def test_an_unchecked_release_gets_the_nearest_dialect_and_says_so():
 def test_the_2023_ingredients_hold_from_2023_8_2_and_only_where_they_act():
     """gap 0 no contact and the classic spring k a xi from 2023.8.2 on; the numbers the classic styles' deck gives are
     the same in every release."""
-    from harness.scene import Scene as WallScene
+    from harness.scenes.scene import Scene as WallScene
     before, after = (lammps.dialect("linear-spring-dashpot", {"style": "history"}, "wall", v) for v in
                      ("2022.6.23.4", "2023.8.2.3"))
     assert (before.touch, after.touch) == ("gap", "overlap")
@@ -137,7 +137,7 @@ def test_each_release_agrees_with_its_dialect_against_a_wall(release, name, opti
 @pytest.mark.parametrize("name", sorted(lammps.PAIR_DIALECTS))
 def test_each_release_agrees_with_its_dialect_between_two_spheres(release, name, use):
     """pair granular, every law x 3 e_n x 6 angles x every target, with and without spin: within 1e-6."""
-    from harness.request import scene_from
+    from harness.runs.request import scene_from
     use(release)
     for pair in sorted(PAIR_TARGETS):
         for omega0 in (0.0, 20.0):

@@ -11,11 +11,11 @@ from conftest import EXAMPLE, PAIR_TARGETS, agreement, fake_executable, needs
 
 from harness.engines import liggghts
 from harness.engines.runner import EngineFailure, run_engine
-from harness.execute import execute
+from harness.runs.execute import execute
 from harness.laws import compose
-from harness.plan import engine_runs
-from harness.render import RenderError, render
-from harness.scene import Scene
+from harness.runs.plan import engine_runs
+from harness.infra.render import RenderError, render
+from harness.scenes.scene import Scene
 from harness.solver import codes as C
 from harness.solver.simulate import batch_at, run_kernel
 
@@ -106,7 +106,7 @@ def test_options_change_engine_and_dialect_alike(name, options, tmp_path):
 
 
 def test_bad_liggghts_options_are_user_errors():
-    from harness.errors import UserError
+    from harness.infra.errors import UserError
     for name, options in (("hertz-mindlin", {"limitForce": "maybe"}), ("hertz-mindlin", {"speed": "on"}),
                           ("thornton", {"tangential": "no_history"})):
         with pytest.raises(UserError):
@@ -304,8 +304,8 @@ def test_render_writes_runnable_decks_and_refuses_what_liggghts_cannot_take(tmp_
 def test_walls_of_another_material_run_and_agree_with_the_dialect(name, wall):
     """A second atom type for the wall (a rigid one at youngsModulus 1e300): LIGGGHTS mixes E* and G* as the scene
     does, so the engine agrees with its dialect on the scene's contact; and the wall changed the rebound."""
-    from harness.plan import engine_plan
-    from harness.request import wall_fields
+    from harness.runs.plan import engine_plan
+    from harness.runs.request import wall_fields
     scene = Scene(e_n=(0.3, 0.9), angles_deg=(0.0, 30.0, 60.0), psi1_star=None, omega0=-20.0, **wall_fields(wall))
     frame, failures = execute(engine_plan(liggghts.ENGINE, compose(name), scene, 200))
     assert failures == []
@@ -318,8 +318,8 @@ def test_walls_of_another_material_run_and_agree_with_the_dialect(name, wall):
 
 @needs_liggghts
 def test_models_with_per_type_properties_skip_other_walls_with_the_reason():
-    from harness.api import statuses
-    from harness.request import Request
+    from harness.runs.availability import statuses
+    from harness.runs.request import Request
     request = Request.from_keywords("thornton", engines=["liggghts"], wall="rigid")
     (status,) = statuses(request)
     assert not status.available and status.reason == "its thornton inputs use a wall of the sphere's own material"
@@ -334,8 +334,8 @@ def test_liggghts_two_spheres_agree_with_their_dialect_at_equal_dt(name, pair, o
     """pair gran between two spheres, hertz, hooke and hooke/hysteresis x 3 e_n x 6 angles, with and without spin:
     the real binary within 1e-6 of its dialect (slip and torque from each sphere's own R_i - d/2, both spins stepped;
     the normal turning, solver/pair.py; hooke's characteristicVelocity from the pair's R*, m* and E*)."""
-    from harness.plan import engine_plan
-    from harness.request import scene_from
+    from harness.runs.plan import engine_plan
+    from harness.runs.request import scene_from
     scene = scene_from(en=(0.3, 0.6, 0.9), angles=(0.0, 10.0, 30.0, 50.0, 70.0, 85.0), omega0=omega0,
                        target="sphere", **PAIR_TARGETS[pair])
     frame, failures = execute(engine_plan(liggghts.ENGINE, compose(name), scene, 200))
@@ -344,7 +344,7 @@ def test_liggghts_two_spheres_agree_with_their_dialect_at_equal_dt(name, pair, o
 
 
 def test_liggghts_takes_a_sphere_target_for_all_but_thornton_ning():
-    from harness.request import scene_from
+    from harness.runs.request import scene_from
     law = "hertz-mindlin"
     assert liggghts.ENGINE.target_reason(law, scene_from(target="sphere")) == ""
     assert liggghts.ENGINE.target_reason(law, scene_from(target="sphere", target_radius=0.01, target_fixed=True)) == ""

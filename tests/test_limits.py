@@ -30,6 +30,6 @@ def test_work_beyond_a_bound_is_refused_in_one_line(tmp_path, name):
 
 def test_the_largest_ladder_allowed_is_accepted():
     from harness.commands.cost import ladder_from_text
-    from harness.cost_plan import MAX_RUNGS
+    from harness.studies.cost_plan import MAX_RUNGS
     assert ladder_from_text(",".join(str(n) for n in range(1, MAX_RUNGS + 1))) == tuple(range(1, MAX_RUNGS + 1))
     assert ladder_from_text("1000000,") == (1000000,)

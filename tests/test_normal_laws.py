@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 from harness.laws import compose
-from harness.scene import Scene
+from harness.scenes.scene import Scene
 from harness.solver import codes as C
 from harness.solver import layout as L
 from harness.solver.dispatch import END_NO_TENSION

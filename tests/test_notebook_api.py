@@ -10,7 +10,7 @@ import sys
 import pytest
 
 import harness
-from harness.errors import UserError, UserTypeError
+from harness.infra.errors import UserError, UserTypeError
 
 from conftest import needs
 
@@ -26,8 +26,8 @@ def test_import_harness_stays_cheap_and_lists_the_api():
     assert loaded == "[]"
     for name in ("run", "compare", "calibrate", "cost", "paper", "benchmark", "campaign", "columns", "plot"):
         assert name in harness.__all__ and repr(name) in names
-    importlib.import_module("harness.campaign.spec")     # the subpackages named as commands, imported
-    importlib.import_module("harness.paper")
+    importlib.import_module("harness.studies.campaign.spec")     # the modules named as commands, imported
+    importlib.import_module("harness.studies.paper")
     assert callable(harness.campaign) and callable(harness.paper) and inspect.isfunction(harness.paper)
 
 
@@ -44,17 +44,17 @@ def test_every_function_has_an_explicit_signature_and_a_docstring(name):
 
 def test_the_columns_carry_units_and_the_docs_show_the_same_table():
     """harness.columns covers exactly the results table's columns; docs/results.md holds the table generated from
-    it (harness.descriptions.markdown)."""
+    it (harness.data.descriptions.markdown)."""
     import pathlib
-    from harness.descriptions import markdown
-    from harness.results import COLUMNS
+    from harness.data.descriptions import markdown
+    from harness.data.results import COLUMNS
     columns = harness.columns
     assert list(columns.index) == list(COLUMNS)
     assert columns.loc["v_n1", "unit"] == "m/s" and columns.loc["theta_deg", "unit"] == "deg"
     assert columns.loc["omega1", "unit"] == "rad/s" and columns.loc["f_n_max", "unit"] == "N"
     assert columns.loc["e_n", "unit"] == "" and columns.description.str.len().min() > 3
     docs = (pathlib.Path(__file__).parents[1] / "docs" / "results.md").read_text()
-    assert markdown() in docs, "docs/results.md's Units table differs from harness/descriptions.py:\n" + markdown()
+    assert markdown() in docs, "docs/results.md's Units table differs from harness/data/descriptions.py:\n" + markdown()
 
 
 def test_run_reads_units_and_draws_a_figure(tmp_path):

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from harness.laws import LAWS, compose
-from harness.scene import Scene
+from harness.scenes.scene import Scene
 
 VISCOUS = ("linear-spring-dashpot", "hertz-mindlin", "hertz-kuwabara-kono")
 PSI_SLIDING = (10.0, 20.0, 40.0)     # the paper's Psi1*; a rigid sphere slides throughout from 7

@@ -22,7 +22,7 @@ from harness.engines import lammps, liggghts, yade
 from harness.engines import ENGINES
 from harness.engines.runner import EngineFailure
 from harness.laws import compose
-from harness.scene import Scene
+from harness.scenes.scene import Scene
 from harness.solver import codes as C
 from harness.solver import layout as L
 from harness.solver.simulate import batch_at, run_kernel, simulate
@@ -181,8 +181,8 @@ def test_sweep_fills_the_observed_columns_only_when_asked(engine):
     """Runs planned with observe=True, two e_n sharing one engine process: t_contact, f_n_max, overlap_max of the
     engine rows match the dialect within the quantisation bounds above (contact steps exactly, with the engine's
     offset); observe=False leaves them NaN."""
-    from harness.execute import execute
-    from harness.plan import engine_runs
+    from harness.runs.execute import execute
+    from harness.runs.plan import engine_runs
     adapter = ENGINES[engine]
     if not adapter.available():
         pytest.skip(f"{engine} is not installed")

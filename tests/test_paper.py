@@ -11,8 +11,8 @@ from scipy.optimize import brentq
 
 import oracles
 from harness.laws import compose
-from harness.materials import get_material
-from harness.scene import Scene
+from harness.scenes.materials import get_material
+from harness.scenes.scene import Scene
 from harness.solver.simulate import simulate
 
 
@@ -58,7 +58,7 @@ def test_tangential_dashpot_options():
     """'sphere-mass': c_t = 2 g sqrt(m_t k_t) with m_t = m/(1 + m R^2/I) = 2/7 m for a solid sphere on a wall;
     'classical': g_t = -ln e/sqrt(ln^2 e + pi^2); 'total' and the default 'spring-first' set the kernel's Coulomb
     test; an unknown option is one line of bad input."""
-    from harness.errors import UserError
+    from harness.infra.errors import UserError
     from harness.solver import layout as L
     from harness.solver.simulate import batch_at
     scene = Scene(e_n=(0.5,), angles_deg=(30.0,))

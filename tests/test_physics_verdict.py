@@ -13,11 +13,11 @@ from harness.analyses.physics import (DEVIATES, MARGINAL, NOT_CHECKED, REPRODUCE
                                       grade, overall)
 from harness.analyses.verdict import verdict
 from harness.commands import main
-from harness.comparison import Comparison
-from harness.errors import UserError
+from harness.runs.comparison import Comparison
+from harness.infra.errors import UserError
 from harness.laws import compose
-from harness.results import impact_frame
-from harness.scene import Scene
+from harness.data.results import impact_frame
+from harness.scenes.scene import Scene
 from harness.views.html import write_report
 from harness.views.terminal import print_summary, verdict_line
 
@@ -204,8 +204,8 @@ def test_the_damping_calibration_and_the_end_rule_are_also_one_cause_together():
 def test_a_report_rebuilt_from_the_files_names_the_same_causes(tmp_path):
     """compare saves the attribution's rows of every impact (attribution-rows.csv): the comparison read back from the
     directory (what `harness report DIR` shows) has the same grades, causes and shares."""
-    from harness.outputs import load_comparison, save_comparison
-    from harness.results import write_csv
+    from harness.runs.outputs import load_comparison, save_comparison
+    from harness.data.results import write_csv
     scene, frame = made_up(faster_slide, at=10.0)
     left = {"damping": 0.7, "end": 0.4, "lever": 0.95, "integrator+coulomb": 0.35, "coulomb": 0.35,
             "damping+coulomb": 0.03}
@@ -334,7 +334,7 @@ def test_a_stepping_field_no_stepper_takes_alone_is_switched_with_the_others_and
     from harness.analyses.attribution import attribution
     from harness.engines import ENGINES
     from harness.laws import compose
-    from harness.scene import Scene
+    from harness.scenes.scene import Scene
     from harness.solver.simulate import simulate
 
     dialect, paper = ENGINES["lammps"].dialect("hertz-mindlin", {}), compose("hertz-mindlin")

@@ -10,8 +10,8 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from harness.laws import LAWS, compose
-from harness.results import SMALL_STRAIN
-from harness.scene import Scene
+from harness.data.results import SMALL_STRAIN
+from harness.scenes.scene import Scene
 from harness.solver.simulate import simulate
 
 # stronge is left out: its provisional reconstruction gains energy just above yield (tests/test_oblique.py)

@@ -9,10 +9,10 @@ import pandas as pd
 import pytest
 
 from harness.analyses.published import curve_distance, meets_goal, published_distances
-from harness.digitised import path, provenance, published_curves_apply, published_points
+from harness.data.digitised import path, provenance, published_curves_apply, published_points
 from harness.laws import compose
-from harness.paper import PSI1_GRID, oblique_curves, paper_scene
-from harness.scene import Scene
+from harness.studies.paper import PSI1_GRID, oblique_curves, paper_scene
+from harness.scenes.scene import Scene
 from harness.solver.simulate import simulate
 
 PAPER_LAWS = ("linear-spring-dashpot", "hertz-mindlin")

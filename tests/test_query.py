@@ -89,7 +89,7 @@ def test_a_query_that_is_not_one_small_read_is_refused_in_one_line(tmp_path, sto
 def test_a_query_that_runs_too_long_is_stopped_in_one_line(tmp_path, store, capfd, monkeypatch):
     """With the limit set to 1 s: a count over 10^13 rows would run for hours. Nothing is printed meanwhile (no
     progress bar on stdout)."""
-    from harness.campaign import query
+    from harness.studies.campaign import query
     monkeypatch.setattr(query, "MAX_QUERY_S", 1.0)
     started = time.perf_counter()
     code = main(["query", str(store), "SELECT count(*) FROM range(10000000000000)"])

@@ -16,8 +16,8 @@ import pytest
 from numba import njit
 
 import oracles
-from harness.jit import python_twin
-from harness.scene import Scene
+from harness.infra.jit import python_twin
+from harness.scenes.scene import Scene
 from harness.solver import dispatch, layout
 from harness.solver.extension import FORCE, SIGNATURE, SLOPE
 from harness.submodels import generate, registry
@@ -243,7 +243,7 @@ def test_a_complete_normal_module_is_taken_with_its_slot_names(tmp_path, monkeyp
 ])
 def test_a_module_lacking_what_its_family_needs_is_refused_naming_it(tmp_path, monkeypatch, family, text, missing):
     """One made-up module per refusal, each refused with a line naming what it lacks."""
-    from harness.errors import UserError
+    from harness.infra.errors import UserError
     module = throwaway(tmp_path, monkeypatch, text)
     with pytest.raises(UserError, match=re.escape(missing)) as refused:
         registry.kernel_module(family, module)
@@ -256,7 +256,7 @@ def test_a_viscous_tangential_module_needs_no_spring(tmp_path, monkeypatch):
 
 
 def test_register_normal_refuses_a_module_or_class_that_is_not_one(tmp_path, monkeypatch):
-    from harness.errors import UserError
+    from harness.infra.errors import UserError
     before = list(registry.EXTENSIONS)
     with pytest.raises(UserError, match="function extension"):
         registry.register_normal(Quadratic, throwaway(tmp_path, monkeypatch, NORMAL + FORCE_KC))
@@ -266,7 +266,7 @@ def test_register_normal_refuses_a_module_or_class_that_is_not_one(tmp_path, mon
 
 
 def test_parameters_named_otherwise_than_the_kernels_slots_are_refused():
-    from harness.errors import UserError
+    from harness.infra.errors import UserError
     from harness.submodels.normal.hertz import Hertz
     contact = Scene().contact
     assert registry.check_parameters(Hertz(), Hertz().parameters(contact, 0.5, 1.0)) == (contact.E_star,)

@@ -13,7 +13,7 @@ from conftest import needs
 
 from harness.analyses.versions import IDENTICAL, version_changes
 from harness.engines.builds import directory
-from harness.releases import in_release_order
+from harness.infra.releases import in_release_order
 
 WHEELS = {"2022.6.23.4": "2022.6.23.4.0", "2023.8.2.3": "2023.8.2.3.1", "2024.8.29.3": "2024.8.29.3.0"}
 DEBIAN = "/usr/bin/lmp"             # LAMMPS 2021.9.29.2
@@ -107,7 +107,7 @@ def test_builds_finishing_in_a_scrambled_order_show_in_release_order_in_every_vi
     record = json.loads((out / "run.json").read_text())
     assert list(record["builds"]) == names
 
-    from harness.outputs import load_comparison
+    from harness.runs.outputs import load_comparison
     from harness.analyses.verdict import verdict
     from harness.views.terminal import print_summary
     os.remove(out / "report.html")
@@ -162,7 +162,7 @@ def test_the_campaign_pages_sql_lists_builds_in_release_order_where_a_string_sor
     lammps@2021.9.29.2 before lammps@2021.10.1, which a string sort inverts, through the SQL function every query
     connection has (release_order), in the page's agreement, failed-task and map lists."""
     import duckdb
-    from harness.campaign import page_views
+    from harness.studies.campaign import page_views
     db = duckdb.connect(":memory:")
     page_views.register_release_order(db)
     rows = [("lammps@2021.10.1", "x"), ("lammps@2021.9.29.2", "y"), ("lammps@2023.8.2.3", "z")]

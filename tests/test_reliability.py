@@ -177,10 +177,10 @@ def test_a_hung_engine_costs_one_timeout_not_one_per_batch(tmp_path, monkeypatch
     """Three e_n batches of a LIGGGHTS that hangs: each process times out once, and its batches are not rerun one
     by one (which cost one more timeout each)."""
     from harness.engines import ENGINES, batches
-    from harness.execute import execute
+    from harness.runs.execute import execute
     from harness.laws import compose
-    from harness.plan import engine_runs
-    from harness.scene import Scene
+    from harness.runs.plan import engine_runs
+    from harness.scenes.scene import Scene
     monkeypatch.setattr(batches, "TIMEOUT_FLOOR_S", 2.0)
     monkeypatch.setenv(liggghts.BINARY_VARIABLE, fake_executable(tmp_path, "echo started; exec sleep 60"))
     runs = engine_runs(ENGINES["liggghts"], compose("hertz-mindlin"), Scene(e_n=(0.9, 0.5, 0.25), angles_deg=(10.0,)),
@@ -274,7 +274,7 @@ def test_compare_refuses_an_output_directory_it_cannot_use(tmp_path, capfd, path
 
 
 def test_a_second_writer_is_refused_and_told_who_holds_the_directory(tmp_path, capfd):
-    from harness.lock import LOCK, exclusive
+    from harness.infra.lock import LOCK, exclusive
     with exclusive(str(tmp_path)):
         code, out, err = harness_main(capfd, "compare", "--model", "thornton", "--engines", "reference", "--en",
                                       "0.5", "--angles", "10", "-o", str(tmp_path))
@@ -430,7 +430,7 @@ def test_ctrl_c_while_the_measurements_beside_the_engines_run_exits_at_once(tmp_
     """What runs beside the engines (attribution, sliding threshold, histories; compiling on a first run) must not
     hold harness after Ctrl-C: made to take ten minutes here, the interrupted compare still ends within a minute
     even under load (a wait for the measurements would take the ten minutes)."""
-    code = ("import sys, time, harness.api as api\n"
+    code = ("import sys, time, harness.api.requests as api\n"
             "api.measurements = lambda *a: time.sleep(600)\n"
             "from harness.commands import main\n"
             f"sys.exit(main(['compare', '--model', 'hertz-mindlin', '--en', '0.5', '--angles', '10', '--engines', "
@@ -456,7 +456,7 @@ def test_ctrl_c_while_the_measurements_beside_the_engines_run_exits_at_once(tmp_
 # --- an interrupt at a rename ----------------------------------------------------------------------------------------
 
 class ReplaceThenInterrupt:
-    """The os module as harness.files sees it, but Ctrl-C arrives just after results.csv is renamed into place."""
+    """The os module as harness.infra.files sees it, but Ctrl-C arrives just after results.csv is renamed into place."""
 
     def __getattr__(self, name):
         return getattr(os, name)
@@ -470,8 +470,8 @@ class ReplaceThenInterrupt:
 
 def test_ctrl_c_just_after_a_rename_is_an_interruption_and_the_file_is_whole(tmp_path, monkeypatch, capfd):
     import pandas as pd
-    import harness.files
-    monkeypatch.setattr(harness.files, "os", ReplaceThenInterrupt())
+    import harness.infra.files
+    monkeypatch.setattr(harness.infra.files, "os", ReplaceThenInterrupt())
     out = tmp_path / "out"
     code, _, err = harness_main(capfd, "compare", "--model", "hertz-mindlin", "--en", "0.5", "--angles", "10",
                                 "--engines", "reference", "-o", str(out), "--quiet")

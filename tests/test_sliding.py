@@ -7,9 +7,9 @@ import pytest
 
 import oracles
 from harness.laws import compose
-from harness.scene import Scene
+from harness.scenes.scene import Scene
 from harness.analyses.sliding import derived_threshold, impulse_deficit
-from harness.sliding_search import sliding_thresholds
+from harness.studies.sliding_search import sliding_thresholds
 from harness.solver.simulate import simulate
 
 PAPER_EN = (0.25, 0.5, 0.75, 0.9)

@@ -6,7 +6,7 @@ import pytest
 from conftest import EXAMPLE
 
 from harness.laws import LAWS, compose
-from harness.scene import Scene
+from harness.scenes.scene import Scene
 from harness.solver import layout as L
 from harness.solver import dispatch as D
 from harness.solver.simulate import batch_at, simulate
@@ -139,8 +139,8 @@ def test_wall_of_another_material_combines_both_compliances():
 
 
 def test_material_presets_give_valid_scenes():
-    from harness.materials import MATERIALS
-    from harness.scene import from_material
+    from harness.scenes.materials import MATERIALS
+    from harness.scenes.scene import from_material
     for name, mat in MATERIALS.items():
         scene = from_material(name, e_n=(0.5,), angles_deg=(30.0,))
         assert scene.radius == mat.radius and mat.source
@@ -193,7 +193,7 @@ def test_regime_changes_located_in_their_step_make_the_error_smooth(name, overri
 def test_graded_mesh_grows_like_s4_from_both_ends_and_covers_its_span():
     """Phi(s) of the converged mode's mesh: 0 and 1 at the ends, increasing, Phi ~ c s^4 at first touch and
     1 - Phi ~ c (1 - s)^4 at the end (so alpha^(1/4) ~ s there: smooth), uniform steps in the middle."""
-    from harness.jit import python_twin
+    from harness.infra.jit import python_twin
     from harness.solver import mesh
     graded_step, graded_time = python_twin(mesh.graded_step), python_twin(mesh.graded_time)
     assert graded_time(0.0) == 0.0 and graded_time(1.0) == pytest.approx(1.0, abs=1e-15)
@@ -318,7 +318,7 @@ def test_the_spring_first_rule_keeps_coulombs_bound_and_converges_to_the_paper_s
 
 
 def test_touch_overlap_is_refused_where_the_stepper_has_no_such_rule():
-    from harness.errors import UserError
+    from harness.infra.errors import UserError
     with pytest.raises(UserError, match="applies touch rule gap, not overlap"):
         compose("linear-spring-dashpot", {"touch": "overlap"})
 

@@ -10,7 +10,7 @@ import pytest
 
 from harness.engines import liggghts, yade
 from harness.laws import compose
-from harness.scene import Scene
+from harness.scenes.scene import Scene
 from harness.solver import codes as C
 from harness.solver.extension import table as extension_table
 from harness.solver import kernel
@@ -42,7 +42,7 @@ def test_the_specialised_integrator_is_the_general_one_bit_for_bit(name):
 
 FIRST_RUN = """
 from harness.laws import compose
-from harness.scene import Scene
+from harness.scenes.scene import Scene
 from harness.solver.simulate import simulate
 import sys
 from harness.submodels.normal import hertz, thornton, stronge

@@ -10,10 +10,10 @@ import pytest
 import oracles
 
 from harness.engines import liggghts
-from harness.errors import UserError
+from harness.infra.errors import UserError
 from harness.laws import LAWS, compose
-from harness.scene import Scene
-from harness.plan import FixedTimeStep, run_spec
+from harness.scenes.scene import Scene
+from harness.runs.plan import FixedTimeStep, run_spec
 from harness.solver.simulate import simulate
 
 

@@ -44,9 +44,9 @@ def test_cost_runs_it(registered, tmp_path, monkeypatch):
     """Its runs report no wall time (they run as they are read), so its time per impact-step is never resolved: the
     timing rounds grow to their caps, here lowered so that they end in seconds (at 2^16 steps and 4096 impacts they
     took minutes)."""
-    import harness.cost_plan
-    monkeypatch.setattr(harness.cost_plan, "MAX_TIMING_STEPS", 2 ** 10)
-    monkeypatch.setattr(harness.cost_plan, "MAX_TIMING_IMPACTS", 512)
+    import harness.studies.cost_plan
+    monkeypatch.setattr(harness.studies.cost_plan, "MAX_TIMING_STEPS", 2 ** 10)
+    monkeypatch.setattr(harness.studies.cost_plan, "MAX_TIMING_IMPACTS", 512)
     assert main(["cost", "--model", "hertz-mindlin", "--engines", "stand-in", "--en", "0.5", "--angles", "30",
                  "--ladder", "50,100", "-o", str(tmp_path)]) == 0
     table = pd.read_csv(tmp_path / "cost.csv", dtype={"rung": str})
@@ -79,7 +79,7 @@ def test_its_stored_runs_are_keyed_on_its_own_source(registered, tmp_path):
     import shutil
 
     import standin
-    from harness.sources import source_digest
+    from harness.infra.sources import source_digest
     folder = tmp_path / "standin"
     shutil.copytree(standin.__path__[0], folder)
     empty = hashlib.sha256(b"").hexdigest()[:12]
@@ -101,8 +101,8 @@ def test_cost_says_how_long_before_it_starts_and_gives_each_tolerance_a_number_o
     converged reference's uncertainty (cost-truth.csv's largest), and for 1% and 0.1% a number, with a sentence
     saying how it was found unless it was measured on its own ladder, or '-' and the reason."""
     import harness.commands.cost as command
-    import harness.cost_plan
-    monkeypatch.setattr(harness.cost_plan, "MAX_TIMING_ROUNDS", 1)    # its time is never resolved: one round
+    import harness.studies.cost_plan
+    monkeypatch.setattr(harness.studies.cost_plan, "MAX_TIMING_ROUNDS", 1)    # its time is never resolved: one round
     said_before = []
     study = command.cost_table
     def started(*args, **kwargs):

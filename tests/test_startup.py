@@ -49,7 +49,7 @@ def test_listing_and_an_unknown_law_load_no_kernel_table_or_plot(argv, tmp_path)
     code, modules = imported(argv, tmp_path)
     assert code == (2 if "nosuch" in argv else 0)
     assert not [m for m in modules if m.split(".")[0] in HEAVY], modules
-    assert not [m for m in modules if m in ("harness.plan", "harness.solver.batch", "harness.api",
+    assert not [m for m in modules if m in ("harness.runs.plan", "harness.solver.batch", "harness.api.requests",
                                             "harness.laws.named")], modules
 
 
@@ -96,7 +96,7 @@ def test_every_command_is_listed_and_its_module_builds_it():
 
 def cache_directory(env):
     """numba's cache directory as harness sets it, in a fresh interpreter with `env`."""
-    code = "import harness.jit, numba; print(numba.config.CACHE_DIR)"
+    code = "import harness.infra.jit, numba; print(numba.config.CACHE_DIR)"
     return subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True,
                           check=True).stdout.strip()
 
@@ -173,7 +173,7 @@ def test_without_compiling_the_estimate_is_the_rate_of_the_steps_done():
 def test_the_compile_clock_counts_numba_compiling():
     from numba import njit
 
-    from harness.compiling import spent
+    from harness.infra.compiling import spent
     import harness.solver.compile_notice  # noqa: F401  (its clock listens to numba's compile events)
     before = spent()
     njit(lambda x: x * 2.0 + 1.0)(3.0)

@@ -3,7 +3,7 @@ from fractions import Fraction
 
 import numpy as np
 
-from harness.jit import python_twin
+from harness.infra.jit import python_twin
 from harness.solver import steppers
 from harness.solver.steppers import SD_A, SD_E, SD_GAMMA
 

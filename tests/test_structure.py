@@ -11,9 +11,9 @@ import harness
 PACKAGE = pathlib.Path(harness.__file__).parent
 
 
-def imports_of(path):
+def imports_of(path, package=None):
     """Absolute names of the harness modules a file imports (at any depth, lazily or not)."""
-    parts = path.relative_to(PACKAGE.parent).with_suffix("").parts
+    parts = path.relative_to((package or PACKAGE).parent).with_suffix("").parts
     package = ".".join(parts[:-1])
     found = set()
     for node in ast.walk(ast.parse(path.read_text())):
@@ -42,23 +42,71 @@ def test_nothing_below_a_command_imports_a_command():
     assert not [o for o in offenders if o[1]], offenders
 
 
+FLOORS = {"infra": 0, "scenes": 1, "submodels": 1, "data": 2, "laws": 2, "solver": 3, "engines": 4, "analyses": 4,
+          "runs": 5, "studies": 6, "views": 7, "api": 8, "commands": 9}
+# infra: files, errors, compiling; scenes and sub-models; the tables and shipped data, the laws; the solver; the
+# engines and the analyses (neither imports the other); runs: request, plan, execute, outputs; studies: calibration,
+# cost, campaigns, verification; views; the Python API; the command line
+
+
+def root_entries(package=None):
+    """The package root's entries (caches aside)."""
+    return sorted(p.name for p in (package or PACKAGE).iterdir() if p.name != "__pycache__")
+
+
+def test_the_root_holds_a_few_subpackages_named_by_their_role():
+    entries = root_entries()
+    assert len(entries) <= 15, entries
+    assert set(entries) == {"__init__.py", "__main__.py", *FLOORS}, set(entries) ^ {"__init__.py", "__main__.py",
+                                                                                     *FLOORS}
+
+
+def floor_breaks(package=None):
+    """[(module, the module it imports on its own floor or above)] over every subpackage of FLOORS."""
+    package = package or PACKAGE
+    breaks = []
+    for path in sorted(package.rglob("*.py")):
+        parts = path.relative_to(package.parent).with_suffix("").parts
+        if len(parts) < 3 or parts[1] not in FLOORS:
+            continue
+        name = ".".join(parts)
+        for target in sorted(imports_of(path, package)):
+            floor = target.split(".")[1] if target.count(".") else ""
+            if floor in FLOORS and floor != parts[1] and FLOORS[floor] >= FLOORS[parts[1]]:
+                breaks.append((name, target))
+    return breaks
+
+
+def test_no_import_runs_back_up_a_floor():
+    """Every subpackage imports only from the floors below its own (FLOORS), at any depth, lazily or not."""
+    assert not floor_breaks()
+
+
+def test_the_floor_check_sees_an_upward_import(tmp_path):
+    """The check above fails on an infra module importing the plan, even inside a function."""
+    root = tmp_path / "harness"
+    (root / "infra").mkdir(parents=True)
+    (root / "infra" / "files.py").write_text("def f():\n    from ..runs.plan import Run\n")
+    assert floor_breaks(root) == [("harness.infra.files", "harness.runs.plan"),
+                                  ("harness.infra.files", "harness.runs.plan.Run")]
+
+
 @pytest.mark.parametrize("layer", ["harness.analyses", "harness.views", "harness.submodels", "harness.solver",
                                    "harness.laws"])
 def test_lower_layers_do_not_import_the_layers_above(layer):
-    """Analyses and views read tables (the plan runs, analyses read its results, a view asks no engine or solver);
-    sub-models, the solver and the laws know nothing of plans, engines or outputs."""
-    running = ("harness.execute", "harness.plan", "harness.engines", "harness.solver.simulate", "harness.solver.batch",
-               "harness.cost_plan", "harness.cost_truth", "harness.cost_estimate", "harness.sliding_search",
-               "harness.paper")
-    above = {"harness.analyses": ("harness.views", "harness.api", "harness.outputs") + running,
+    """Analyses and views read tables (the plan runs, analyses read its results, a view asks no engine or solver:
+    only the colours engines declare); sub-models, the solver and the laws know nothing of plans, engines or
+    outputs."""
+    running = ("harness.runs.execute", "harness.runs.plan", "harness.engines", "harness.solver.simulate",
+               "harness.solver.batch", "harness.studies.cost_plan", "harness.studies.cost_truth",
+               "harness.studies.cost_estimate", "harness.studies.sliding_search", "harness.studies.paper")
+    beside = ("harness.runs.plan", "harness.engines", "harness.analyses", "harness.views", "harness.api",
+              "harness.runs.outputs")
+    above = {"harness.analyses": ("harness.views", "harness.api", "harness.runs.outputs") + running,
              "harness.views": ("harness.api",) + running,
-             "harness.submodels": ("harness.plan", "harness.engines", "harness.analyses", "harness.views",
-                                   "harness.api", "harness.outputs"),
-             "harness.solver": ("harness.plan", "harness.engines", "harness.analyses", "harness.views", "harness.api",
-                                "harness.outputs"),
-             "harness.laws": ("harness.plan", "harness.engines", "harness.analyses", "harness.views", "harness.api",
-                              "harness.outputs")}[layer]
-    offenders = {name: sorted(i for i in imports_of(path) if i.startswith(above))
+             "harness.submodels": beside, "harness.solver": beside, "harness.laws": beside}[layer]
+    offenders = {name: sorted(i for i in imports_of(path) if i.startswith(above)
+                              and not i.startswith("harness.engines.styles"))
                  for name, path in modules() if name.startswith(layer)}
     assert not {k: v for k, v in offenders.items() if v}
 
@@ -96,7 +144,7 @@ def test_modules_stay_small():
 
 
 def test_the_committed_baseline_ships_with_the_package():
-    from harness.baseline import BASELINE_FILE, DEFAULT_BASELINE
+    from harness.studies.baseline import BASELINE_FILE, DEFAULT_BASELINE
     shipped = pathlib.Path(DEFAULT_BASELINE) / BASELINE_FILE
     committed = PACKAGE.parent / "baselines" / BASELINE_FILE
     assert shipped.is_file()

@@ -10,11 +10,11 @@ from scipy.integrate import quad
 
 from harness.commands import main
 from harness.engines import liggghts
-from harness.errors import UserError
+from harness.infra.errors import UserError
 from harness.laws import compose
-from harness.scene import Scene
+from harness.scenes.scene import Scene
 from harness.solver.simulate import simulate
-from harness.two_spheres import Sphere, collide
+from harness.solver.two_spheres import Sphere, collide
 
 ELASTIC = compose("hertz-mindlin", {"damping": "none"})
 
@@ -131,9 +131,9 @@ def test_a_negative_e_n_between_two_spheres_is_named_by_the_turning_line_of_cent
     """Grazing two identical spheres (89 deg): the engines' line of centres turns as they pass, so the relative
     velocity along the first one can end negative; the row says that, not that the sphere failed to rebound, and the
     paper law (the normal fixed: the equivalent wall impact) rebounds."""
-    from harness.execute import execute
-    from harness.plan import reference_runs
-    from harness.request import scene_from
+    from harness.runs.execute import execute
+    from harness.runs.plan import reference_runs
+    from harness.runs.request import scene_from
     scene = scene_from(en=(0.25,), angles=(89.0,), target="sphere")
     turning, _ = execute(reference_runs(compose("hertz-mindlin"), scene, 200,
                                         liggghts.dialect("hertz-mindlin", {}, "sphere")))

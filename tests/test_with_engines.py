@@ -7,7 +7,7 @@ from conftest import agreement, needs
 from harness import compare
 from harness.commands import main
 from harness.engines import ENGINES
-from harness.errors import UserError
+from harness.infra.errors import UserError
 
 SCENE = dict(en=[0.5], angles=[10, 40], omega0=-50.0)
 

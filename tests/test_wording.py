@@ -6,7 +6,7 @@ import harness
 from harness.analyses.findings import findings
 from harness.analyses.physics import engine_physics
 from harness.views.terminal import physics_phrase
-from harness.wording import counted, more_or_less, verb
+from harness.infra.wording import counted, more_or_less, verb
 
 
 def test_counts_verbs_and_signed_amounts():

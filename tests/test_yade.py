@@ -11,9 +11,9 @@ from conftest import PAIR_TARGETS, agreement, assert_head_on_pair_is_wall, fake_
 
 from harness.engines import yade
 from harness.engines.runner import EngineFailure
-from harness.execute import execute
+from harness.runs.execute import execute
 from harness.laws import compose
-from harness.scene import Scene
+from harness.scenes.scene import Scene
 from harness.solver.simulate import batch_at
 
 needs_yade = needs("yade")
@@ -164,14 +164,14 @@ def test_cundall_strack_is_elastic_whatever_e_n():
 
 
 def test_unknown_precision_is_a_user_error():
-    from harness.errors import UserError
+    from harness.infra.errors import UserError
     with pytest.raises(UserError, match="precision must be one of"):
         yade.flavour_path("quad")
 
 
 @pytest.mark.parametrize("value", ["0.5\")\nimport os; os.system(\"id\")  #", "__import__('os')", float("nan")])
 def test_hostile_values_cannot_reach_the_script(value):
-    from harness.render import RenderError, render
+    from harness.infra.render import RenderError, render
     with pytest.raises(RenderError):
         render(yade.TEMPLATES, "batch.py.j2", harness_version="0", law="x", law2="Law2_ScGeom_MindlinPhys_Mindlin",
                e_n=value, material="FrictMat", young=1e9, poisson=0.3, rho=1.0, friction_angle=0.3, radius=0.1,
@@ -225,7 +225,7 @@ def test_compare_with_both_engines_prints_the_engine_against_engine_attribution(
 def test_precision_gap_double_against_mpfr150_is_round_off():
     """The report's precision figure: double and mpfr150 differ on a smooth impact at round-off level only."""
     from harness.analyses.precision import precision_gap
-    from harness.execute import execute
+    from harness.runs.execute import execute
     if not yade.ENGINE.available("mpfr150"):
         pytest.skip("yade-mpfr150 is not installed")
     double, high = yade.precision_runs(compose("hertz-mindlin"), Scene(e_n=(0.5,), angles_deg=(10.0, 30.0, 60.0)))
@@ -241,8 +241,8 @@ def test_precision_gap_double_against_mpfr150_is_round_off():
 def test_luding_at_e_n_1_is_refused_with_one_line_not_an_abort():
     """kp = k1 (2/e^2 - 1) = k1 at e_n = 1, which YADE's Ip2_LudingMat_LudingMat_LudingPhys rejects by throwing (the
     interpreter aborted with signal 6): harness refuses it with the reason, and the other e_n still run."""
-    from harness.execute import execute
-    from harness.plan import engine_runs
+    from harness.runs.execute import execute
+    from harness.runs.plan import engine_runs
     frame, failures = execute(engine_runs(yade.ENGINE, compose("walton-braun"),
                                           Scene(e_n=(0.5, 1.0), angles_deg=(0.0, 45.0)),
                                           200))
@@ -259,8 +259,8 @@ def test_yade_two_spheres_agree_with_their_dialect_at_equal_dt(pair, omega0):
     angles, with and without spin, against targets free or fixed, of the same or another size and material: the real
     module within 1e-6 of its dialect (noRatch slip from R1 + R2, the shear vector turned with the normal, torques
     from R_i - d/2, the dashpot on the plain normal speed: solver/pair.py)."""
-    from harness.plan import engine_plan
-    from harness.request import scene_from
+    from harness.runs.plan import engine_plan
+    from harness.runs.request import scene_from
     scene = scene_from(en=(0.3, 0.6, 0.9), angles=(0.0, 10.0, 30.0, 50.0, 70.0, 85.0), omega0=omega0,
                        target="sphere", **PAIR_TARGETS[pair])
     frame, failures = execute(engine_plan(yade.ENGINE, compose("hertz-mindlin"), scene, 200))
@@ -277,8 +277,8 @@ def test_the_yade_pair_stepper_head_on_is_the_wall_stepper():
 
 
 def test_yade_takes_a_sphere_target_for_hertz_mindlin_only():
-    from harness.errors import UserError
-    from harness.request import scene_from
+    from harness.infra.errors import UserError
+    from harness.runs.request import scene_from
     assert yade.ENGINE.target_reason("hertz-mindlin", scene_from(target="sphere", target_fixed=True)) == ""
     assert yade.ENGINE.target_reason("walton-braun", scene_from(target="sphere")) == \
         "its walton-braun inputs have no sphere target yet"
@@ -292,9 +292,9 @@ def test_yade_takes_a_sphere_target_for_hertz_mindlin_only():
 def test_yade_walls_of_another_material_agree_with_the_dialect(wall):
     """A wall of its own FrictMat (a rigid one at young 1e100): Ip2_FrictMat_FrictMat_MindlinPhys mixes E* and G* as
     the scene does, so the module agrees with its dialect on the scene's contact; and the wall changed the rebound."""
-    from harness.execute import execute
-    from harness.plan import engine_plan, engine_runs
-    from harness.request import wall_fields
+    from harness.runs.execute import execute
+    from harness.runs.plan import engine_plan, engine_runs
+    from harness.runs.request import wall_fields
     kwargs = dict(e_n=(0.3, 0.9), angles_deg=(0.0, 30.0, 60.0), psi1_star=None, omega0=-20.0)
     scene = Scene(**kwargs, **wall_fields(wall))
     frame, failures = execute(engine_plan(yade.ENGINE, compose("hertz-mindlin"), scene, 200))
@@ -311,9 +311,9 @@ def test_yade_pairs_observed_contact_agrees_with_the_dialect():
     """Observe mode of the pair script: contact time to the step (one step less than the dialect, which counts the
     step that sees the negative overlap, as against a wall: tests/test_observe.py), peak normal force and overlap
     within the parabola's O(1/N^2) of the dialect's interpolated peaks, with the normal turning."""
-    from harness.execute import execute
-    from harness.plan import engine_runs, reference_runs
-    from harness.request import scene_from
+    from harness.runs.execute import execute
+    from harness.runs.plan import engine_runs, reference_runs
+    from harness.runs.request import scene_from
     scene = scene_from(en=(0.5,), angles=(0.0, 40.0, 70.0), omega0=20.0, target="sphere", target_radius=0.04)
     law = compose("hertz-mindlin")
     seen, failures = execute(engine_runs(yade.ENGINE, law, scene, 200, observe=True))

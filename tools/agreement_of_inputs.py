@@ -8,10 +8,10 @@ sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "tests"))
 from conftest import agreement
 from test_engine_inputs import ANGLES, KRATOS_INPUTS, YADE_INPUTS
 from harness.engines import get_engine
-from harness.execute import execute
+from harness.runs.execute import execute
 from harness.laws import compose
-from harness.plan import engine_plan
-from harness.request import scene_from
+from harness.runs.plan import engine_plan
+from harness.runs.request import scene_from
 
 for engine, inputs, mu in (("yade", YADE_INPUTS, math.tan(0.38)), ("kratos", KRATOS_INPUTS, 0.1)):
     for name, text in sorted(inputs.items()):

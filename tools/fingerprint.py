@@ -17,8 +17,8 @@ import pandas as pd
 
 from harness.engines import ENGINES, EXTERNAL
 from harness.laws import LAWS, compose
-from harness.request import scene_from
-from harness.scene import Scene
+from harness.runs.request import scene_from
+from harness.scenes.scene import Scene
 from harness.solver.simulate import simulate
 
 COLUMNS = ("v_n1", "v_t1", "omega1", "t_contact", "f_n_max", "overlap_max", "steps_per_contact", "dt")

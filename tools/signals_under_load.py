@@ -56,7 +56,7 @@ def catches_sigterm(pid):
 
 def lock_free(out):
     """The output directory's lock is absent or can be taken at once."""
-    path = os.path.join(out, ".harness.lock")
+    path = os.path.join(out, ".harness.infra.lock")
     if not os.path.exists(path):
         return True
     with open(path) as handle:

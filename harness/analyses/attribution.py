@@ -6,7 +6,7 @@ from dataclasses import replace
 import numpy as np
 import pandas as pd
 
-from ..errors import UserError
+from ..infra.errors import UserError
 from ..laws.law import SUBMODEL_KEYS, check_composition
 from .invariants import coulomb_ratio
 from .causes import BASE, COUPLED, combined, explained_alone, strongest, units

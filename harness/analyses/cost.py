@@ -1,4 +1,4 @@
-"""What accuracy costs in time, from the cost study's results (harness.cost_plan runs it): per rung of each curve the
+"""What accuracy costs in time, from the cost study's results (studies/cost_plan.py runs it): per rung of each curve the
 errors of the rebound velocities, contact time and peak force against the converged reference of the same dialect;
 timings and the orders of convergence. What a tolerance costs per curve: analyses/cost_answer.py."""
 import math
@@ -6,7 +6,7 @@ import math
 import numpy as np
 import pandas as pd
 
-from ..wording import counted
+from ..infra.wording import counted
 
 LADDER = (5, 10, 20, 50, 100, 200, 500, 1000, 5000)
 VELOCITIES = ("v_n1", "v_t1", "omega1")          # as a fraction of the impact's incident speed V (omega1: R omega1)

@@ -3,7 +3,7 @@ status does not already say, failed runs."""
 import numpy as np
 import pandas as pd
 
-from ..wording import counted, verb
+from ..infra.wording import counted, verb
 from .invariants import ENERGY_TOLERANCE, coulomb_ratio, invariant_breaks
 
 SLIDING_TOLERANCE = 1e-3    # |J_t| = mu J_n within 0.1%: the paper law slides throughout (the physics verdict's bound)

@@ -26,7 +26,7 @@ REFERENCE_ONLY = ("t_contact", "f_n_max", "overlap_max")   # engines report no f
 CONTINUITY_METRICS = ("v_n1", "v_t1", "omega1")      # per impact speed: bounded, unlike e_t ~ 1/theta
 PARAMETER_METRICS = ("e_n", "e_t", "omega_star")
 SWEEP_IDENTITY = ("engine", "dialect", "model", "e_n_target", "mu", "theta_deg", "omega0", "radius", "E", "nu", "rho",
-                  "case")       # "case": a hard-case label (harness.hard_cases), where the table has one
+                  "case")       # "case": a hard-case label (harness.studies.hard_cases), where the table has one
 COLUMNS = ["engine", "dialect", "model", "e_n_target", "theta_deg", "kind", "value", "limit", "row"]
 
 

@@ -7,11 +7,11 @@ from dataclasses import asdict, dataclass, fields
 
 import numpy as np
 
-from ..errors import UserError
+from ..infra.errors import UserError
 from .causes import EXPLAINS, MENTION, check_causes, phrase
 from .misses import IMPACT  # noqa: F401 (the calibration imports it from here)
 from .misses import VELOCITIES, coulomb_miss, e_n_miss, energy_miss, velocity_miss, with_paper
-from ..wording import counted, more_or_less
+from ..infra.wording import counted, more_or_less
 
 REPRODUCES, MARGINAL, DEVIATES, NOT_CHECKED = "reproduces", "marginal", "deviates", "not checked"
 MARGINAL_TIMES = 10.0      # a failed check is marginal when its worst miss is at most this many times its tolerance

@@ -1,10 +1,10 @@
-"""Distance of the reference's curves from the paper's published points (harness/digitised.py): per law, e_n and
+"""Distance of the reference's curves from the paper's published points (harness/data/digitised.py): per law, e_n and
 quantity, the RMS and worst |reference - published|, the reference interpolated linearly in Psi1* at each published
 Psi1*; e_t's distances counted x10 (its range is a tenth of the others')."""
 import numpy as np
 import pandas as pd
 
-from ..digitised import points_of, published_points
+from ..data.digitised import points_of, published_points
 
 SCALE = {"psi2_star": 1.0, "omega_star": 1.0, "e_t": 10.0}
 GOAL = {"worst": 0.2, "rms": 0.1}         # issue 27: every law, e_n and quantity within these (e_t x10)

@@ -1,4 +1,4 @@
-"""Where an impact slides throughout: the smallest Psi1* found from simulation (harness.sliding_search runs the
+"""Where an impact slides throughout: the smallest Psi1* found from simulation (harness.studies.sliding_search runs the
 search) beside the conditions derived for it (docs/laws.md#sliding-throughout).
 
 Sliding throughout means |F_t| = mu F_n during the whole contact: no step of the reference kernel ends with the

@@ -3,7 +3,7 @@ release to the next, by how much and at which impact, and the ingredient of thei
 switched alone (the pair attribution of the two dialects)."""
 import pandas as pd
 
-from ..releases import in_release_order
+from ..infra.releases import in_release_order
 
 MOVED = 1e-6        # a metric that changes less between two builds did not move (round-off between builds ~1e-13)
 

@@ -6,9 +6,9 @@ import signal
 import sys
 import time
 
-from ..errors import EngineMissing, UserError
-from ..programs import absolute_path
-from ..version import __version__
+from ..infra.errors import EngineMissing, UserError
+from ..infra.programs import absolute_path
+from ..infra.version import __version__
 from .options import EXIT_CODES, EXIT_ENGINE, EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_USAGE, Parser
 from .stopping import Stopped, stop_behind, stop_on_signals
 

@@ -4,15 +4,15 @@ import os
 import sys
 
 from ..engines import ENGINES
-from ..lock import LOCK, exclusive
-from ..results import write_csv
-from ..verification.chung_ooi import LAW, known_engines, run_suite, verdict
+from ..infra.lock import LOCK, exclusive
+from ..data.results import write_csv
+from ..studies.verification.chung_ooi import LAW, known_engines, run_suite, verdict
 from ..views.chung_ooi_html import CSV, PAGE, summary, write_chung_ooi_report
 from ..views.figure_files import FIGURES
 from ..views.progress import Progress
 from ..views.terminal import text_table
-from ..views import strict_json
-from ..wording import counted, verb
+from ..infra import strict_json
+from ..infra.wording import counted, verb
 from .options import EXIT_DISAGREE, EXIT_ENGINE, EXIT_OK, check_entries, check_output_directory
 
 

@@ -3,15 +3,15 @@ confirmed by running the engine; the time step a tolerance needs; tables, the en
 import os
 import sys
 
-from ..api import calibrate_request, check_timestep_tolerance
-from ..calibration.files import RECORD, TABLES, save, summary
-from ..files import write_text
-from ..request import Request
-from ..views import strict_json
+from ..api.requests import calibrate_request, check_timestep_tolerance
+from ..studies.calibration.files import RECORD, TABLES, save, summary
+from ..infra.files import write_text
+from ..runs.request import Request
+from ..infra import strict_json
 from ..views.calibration_html import write_calibration_report
 from ..views.calibration_terminal import print_calibration, print_not_run
 from ..views.figure_files import FIGURES
-from ..wording import counted
+from ..infra.wording import counted
 from .options import EXIT_ENGINE, EXIT_OK, check_entries, check_output_directory, keywords
 
 

@@ -5,21 +5,21 @@ import sys
 import tempfile
 from contextlib import closing
 
-from ..campaign.clusters import Unavailable, remove
-from ..campaign.driver import dry_run, run_campaign
-from ..campaign.executors import executor
-from ..campaign.limits import max_workers
-from ..campaign.page import page_data
-from ..campaign.slurm import forget_credentials, preflight, shell_safe, slurm_cluster, slurm_options
-from ..campaign.spec import load
-from ..campaign.store import Store
-from ..errors import UserError
-from ..files import refuse_unless_regular
-from ..lock import exclusive
+from ..studies.campaign.clusters import Unavailable, remove
+from ..studies.campaign.driver import dry_run, run_campaign
+from ..studies.campaign.executors import executor
+from ..studies.campaign.limits import max_workers
+from ..studies.campaign.page import page_data
+from ..studies.campaign.slurm import forget_credentials, preflight, shell_safe, slurm_cluster, slurm_options
+from ..studies.campaign.spec import load
+from ..studies.campaign.store import Store
+from ..infra.errors import UserError
+from ..infra.files import refuse_unless_regular
+from ..infra.lock import exclusive
 from ..views.campaign_html import figures_folder, write_campaign_report
 from ..views.progress import Progress
-from ..views import strict_json
-from ..wording import counted
+from ..infra import strict_json
+from ..infra.wording import counted
 from .options import EXIT_ENGINE, EXIT_OK, check_entries, check_output_directory
 
 

@@ -1,13 +1,13 @@
 """`harness check` and `harness baseline --update`: the regression check against the committed baseline."""
 
-from ..baseline import DEFAULT_BASELINE, check, update
-from ..request import engines_asked
-from ..campaign.store import RunCache, Store
-from ..errors import UserError
+from ..studies.baseline import DEFAULT_BASELINE, check, update
+from ..runs.request import engines_asked
+from ..studies.campaign.store import RunCache, Store
+from ..infra.errors import UserError
 from ..views.progress import Progress
 from ..views.terminal import text_table, wrapped
-from ..views import strict_json
-from ..wording import counted
+from ..infra import strict_json
+from ..infra.wording import counted
 from .options import EXIT_DISAGREE, EXIT_OK, engines_from
 
 

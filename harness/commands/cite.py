@@ -1,9 +1,9 @@
 """`harness cite [DIR]`: BibTeX for harness, the paper and benchmark it uses, and each engine with its versions:
-those installed here, or those a compare in DIR ran (harness.citation)."""
-from ..citation import bibliography, engine_entry
+those installed here, or those a compare in DIR ran (harness.infra.citation)."""
+from ..infra.citation import bibliography, engine_entry
 from ..engines import ENGINES, EXTERNAL
 from ..engines.builds import builds
-from ..errors import UserError
+from ..infra.errors import UserError
 from .options import EXIT_OK
 
 
@@ -15,7 +15,7 @@ def installed():
 
 def ran(directory):
     """{engine: [versions]} of the engines whose own runs are in a compare's results directory."""
-    from ..outputs import kinds, load_comparison
+    from ..runs.outputs import kinds, load_comparison
     has_compare, _ = kinds(directory)
     if not has_compare:
         raise UserError(f"{directory} holds a cost study, whose results name no engine version: give a compare's "

@@ -8,19 +8,19 @@ import pandas as pd
 
 from ..analyses.physics import DEVIATES, MARGINAL
 from ..analyses.verdict import DISAGREE, NOT_COMPARED, verdict
-from ..api import compare_request
-from ..campaign.store import RunCache, Store
-from ..comparison import Comparison, shown_rows
-from ..files import discard
-from ..lock import exclusive
-from ..outputs import save_comparison, start_comparison
-from ..partial import PartialRuns
-from ..request import Request
-from ..results import write_csv
+from ..api.requests import compare_request
+from ..studies.campaign.store import RunCache, Store
+from ..runs.comparison import Comparison, shown_rows
+from ..infra.files import discard
+from ..infra.lock import exclusive
+from ..runs.outputs import save_comparison, start_comparison
+from ..runs.partial import PartialRuns
+from ..runs.request import Request
+from ..data.results import write_csv
 from ..views.html import rebuild
 from ..views.progress import Progress
 from ..views.terminal import print_comparison, print_summary, verdict_line
-from ..views import strict_json
+from ..infra import strict_json
 from .options import EXIT_DISAGREE, EXIT_ENGINE, EXIT_OK, check_results_directory, check_store, keywords
 
 

@@ -2,15 +2,15 @@
 import time
 
 from ..laws.table import LAWS, known_law
-from ..wording import counted
+from ..infra.wording import counted
 from .options import EXIT_OK
 
 
 def main(args):
     laws = tuple(known_law(name.strip()) for name in args.laws.split(",")) if args.laws else tuple(LAWS)
-    from ..jit import cache_base            # numba: once the laws are known
+    from ..infra.jit import cache_base            # numba: once the laws are known
     from ..views.progress import Progress
-    from ..warm_up import compile_laws
+    from ..runs.warm_up import compile_laws
     start = time.perf_counter()
     with Progress("compile", quiet=args.quiet, compiling=lambda: 0.0) as progress:    # every step compiles
         seconds = compile_laws(laws, progress)

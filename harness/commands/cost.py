@@ -7,25 +7,25 @@ import pandas as pd
 
 from ..analyses.cost import COLUMNS, LADDER, MEASURE, convergence_orders, step_times
 from ..analyses.cost_answer import answers, notes, recommendations, verdict
-from ..api import able_engines
-from ..campaign.store import RunCache, Store
-from ..cost_estimate import said, study_seconds
-from ..cost_plan import check_ladder, cost_table
-from ..errors import UserError
-from ..files import discard
-from ..lock import exclusive
-from ..outputs import COST, save_cost
-from ..request import Request
-from ..results import write_csv
+from ..runs.availability import able_engines
+from ..studies.campaign.store import RunCache, Store
+from ..studies.cost_estimate import said, study_seconds
+from ..studies.cost_plan import check_ladder, cost_table
+from ..infra.errors import UserError
+from ..infra.files import discard
+from ..infra.lock import exclusive
+from ..runs.outputs import COST, save_cost
+from ..runs.request import Request
+from ..data.results import write_csv
 from ..views.html import rebuild
 from ..views.progress import Progress
 from ..views.terminal import print_cost
-from ..views import strict_json
+from ..infra import strict_json
 from .options import EXIT_ENGINE, EXIT_OK, check_results_directory, check_store, keywords
 
 
 def ladder_from_text(text):
-    """--ladder '5,10,20' as whole steps per contact, checked (harness.cost_plan.check_ladder)."""
+    """--ladder '5,10,20' as whole steps per contact, checked (harness.studies.cost_plan.check_ladder)."""
     if text is None:
         return LADDER
     try:

@@ -1,5 +1,5 @@
-"""`harness explain ENGINE TEXT`: what a user's own engine input computes (harness.explain), printed."""
-from ..explain import explain
+"""`harness explain ENGINE TEXT`: what a user's own engine input computes (studies/explain.py), printed."""
+from ..studies.explain import explain
 from ..views.explain_terminal import print_explanation
 from .options import EXIT_OK
 

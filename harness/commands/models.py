@@ -3,7 +3,7 @@ import json
 
 from ..engines import ENGINES
 from ..laws.table import LAWS
-from ..materials import MATERIALS
+from ..scenes.materials import MATERIALS
 from .options import EXIT_OK
 
 

@@ -1,14 +1,14 @@
 """What every command shares: the exit codes, argument types, the scene and resolution options, engine options, and
-the keywords they become (the Python API's names, harness.request)."""
+the keywords they become (the Python API's names, harness.runs.request)."""
 import argparse
 import math
 import os
 import re
 import sys
 
-from ..errors import UserError
-from ..keywords import repeats
-from ..files import refuse_unless_regular
+from ..infra.errors import UserError
+from ..runs.keywords import repeats
+from ..infra.files import refuse_unless_regular
 
 EXIT_OK, EXIT_DISAGREE, EXIT_USAGE, EXIT_ENGINE, EXIT_INTERNAL, EXIT_INTERRUPTED = 0, 1, 2, 3, 4, 130
 EXIT_CODES = """exit codes:
@@ -135,7 +135,7 @@ def engine_option(text):
 def add_scene_options(parser, resolution=True):
     """Options that describe the scene, the law's sub-models, the engines' options and (unless the command sets its
     own) the time step."""
-    from ..scene import DEFAULT_EN          # numpy's: when a command with a scene is parsed, not for `harness --help`
+    from ..scenes.scene import DEFAULT_EN     # numpy's: when a command with a scene is parsed, not for `harness --help`
     g = parser.add_argument_group("scene")
     g.add_argument("--en", type=number_list, default=DEFAULT_EN, metavar="LIST",
                    help="target normal restitution coefficients, e.g. 0.9,0.5,0.1 (default: the paper's "
@@ -213,7 +213,7 @@ def add_engine_options(parser):
 
 
 def add_engine_input(parser):
-    """--engine-input ENGINE=TEXT (harness.engine_inputs)."""
+    """--engine-input ENGINE=TEXT (harness.engines.user_inputs)."""
     parser.add_argument("--engine-input", dest="engine_inputs", action="append", default=[], metavar="ENGINE=TEXT",
                         help="your own contact input as the engine takes it, repeatable: lammps='hooke 1e6 0.5 "
                              "tangential linear_history 2.8e5 0.5 0.4' (the words after pair_coeff * *, or a "
@@ -234,7 +234,7 @@ def engines_from(text):
 
 
 def keywords(args, resolution=True):
-    """The options as the API's keywords (harness.request.Request.from_keywords)."""
+    """The options as the API's keywords (harness.runs.request.Request.from_keywords)."""
     out = dict(en=args.en, angles=args.angles, psi=args.psi, vt=args.vt, mu=args.mu, material=args.material,
                radius=args.radius, E=args.E, nu=args.nu, rho=args.rho, speed=args.speed,
                normal_speed=args.normal_speed, omega0=args.omega0, gravity=args.gravity, wall=args.wall,
@@ -299,9 +299,9 @@ def check_results_directory(directory):
     """A compare's or cost study's -o DIR: a directory whose entries (the tables, run records and report that
     `compare`, `cost` and `report` write or read, the lock, the partial runs, the figures' folder) may all be
     written."""
-    from ..lock import LOCK
-    from ..outputs import DIRECTORY_FILES
-    from ..partial import PARTIAL
+    from ..infra.lock import LOCK
+    from ..runs.outputs import DIRECTORY_FILES
+    from ..runs.partial import PARTIAL
     from ..views.figure_files import FIGURES
     check_output_directory(directory)
     check_entries(directory, DIRECTORY_FILES + (LOCK,), (PARTIAL, FIGURES))

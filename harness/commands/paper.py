@@ -2,12 +2,12 @@
 import os
 import sys
 
-from ..lock import LOCK, exclusive
-from ..paper import checked, figure_set
-from ..results import write_csv
+from ..infra.lock import LOCK, exclusive
+from ..studies.paper import checked, figure_set
+from ..data.results import write_csv
 from ..views.paper_html import FILES, NORMAL, OBLIQUE, PUBLISHED, SLIDING, write_paper_report
 from ..views.progress import Progress
-from ..sliding_search import PSI_MAX
+from ..studies.sliding_search import PSI_MAX
 from ..views.terminal import published_summary, sliding_summary
 from ..views.figure_files import FIGURES
 from .options import EXIT_OK, check_entries, check_output_directory

@@ -3,8 +3,8 @@ implementation, imported by `runs` when the command runs), so that `harness COMM
 load none of it."""
 import importlib
 
-from ..campaign.drop import DROP, DROP_HELP
-from ..campaign.limits import max_workers
+from ..studies.campaign.drop import DROP, DROP_HELP
+from ..studies.campaign.limits import max_workers
 from ..engines.names import EXTERNAL
 from ..laws.table import law_name
 from .options import (BENCHMARK_EXIT_CODES, add_engine_input, add_engine_options, add_output_options, add_scene_options,

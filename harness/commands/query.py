@@ -1,11 +1,11 @@
 """`harness query STORE "SQL"`: one read-only SELECT over a campaign store with DuckDB; the store is the view
-`results`, each task's rows once (harness.campaign.query says what a query may and may not do)."""
+`results`, each task's rows once (harness.studies.campaign.query says what a query may and may not do)."""
 import pandas as pd
 
-from ..campaign.limits import MAX_CELL_CHARS
-from ..campaign.query import query
-from ..campaign.store import Store
-from ..errors import UserError
+from ..studies.campaign.limits import MAX_CELL_CHARS
+from ..studies.campaign.query import query
+from ..studies.campaign.store import Store
+from ..infra.errors import UserError
 from .options import EXIT_OK
 
 

@@ -1,14 +1,14 @@
 """`harness render`: an engine's input deck or script for every e_n of the scene, without running it."""
 import os
 
-from ..api import options_for
-from ..calibration.files import read, rendered
+from ..runs.availability import options_for
+from ..studies.calibration.files import read, rendered
 from ..engines import get_engine
-from ..errors import UserError
-from ..files import write_text
-from ..plan import engine_runs
-from ..request import Request
-from ..wording import counted
+from ..infra.errors import UserError
+from ..infra.files import write_text
+from ..runs.plan import engine_runs
+from ..runs.request import Request
+from ..infra.wording import counted
 from .options import EXIT_OK, check_entries, check_output_directory, keywords
 
 
@@ -41,7 +41,7 @@ def write_inputs(args, texts, engine):
 
 
 def from_calibration(args):
-    """The engine's inputs at the values a calibration found (harness.calibration.files.rendered)."""
+    """The engine's inputs at the values a calibration found (harness.studies.calibration.files.rendered)."""
     if args.model or args.engine:
         raise UserError("--calibration takes its law and engine from the file: give neither --model nor --engine")
     record = read(args.calibration)

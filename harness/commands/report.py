@@ -1,5 +1,5 @@
 """`harness report DIR`: rebuild DIR/report.html from the files of a compare or cost directory, simulating nothing."""
-from ..outputs import REPORT
+from ..runs.outputs import REPORT
 from ..views.figure_files import FIGURES
 from ..views.html import rebuild
 from .options import EXIT_OK, check_entries

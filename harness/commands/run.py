@@ -1,12 +1,12 @@
 """`harness run`: one law over a scene on the reference solver; a results CSV."""
-from ..wording import counted
+from ..infra.wording import counted
 from .options import EXIT_OK, check_output_file, keywords
 
 
 def main(args):
-    from ..api import run_request
-    from ..request import Request
-    from ..results import write_csv
+    from ..api.requests import run_request
+    from ..runs.request import Request
+    from ..data.results import write_csv
     from ..views.progress import Progress
     request = Request.from_keywords(args.model, **keywords(args))
     check_output_file(args.output)

@@ -7,8 +7,8 @@ import os
 import sys
 from functools import lru_cache
 
-from ..errors import UserError
-from ..programs import which
+from ..infra.errors import UserError
+from ..infra.programs import which
 from .builds import sha256
 from .executable import banner, chosen, missing, present
 from .protocol import InputRange, Status, check_options as check_declared
@@ -168,7 +168,7 @@ class Engine:
         """The law as this engine computes it (a harness.laws.Law), for the options given, against a wall or a
         sphere (the two-sphere dialect, reduced to the equivalent wall impact). An option `with:KEY` (with_options)
         replaces sub-model KEY of the dialect, which the engine's inputs then follow."""
-        from ..engine_inputs import INPUT_OPTION
+        from .user_inputs import INPUT_OPTION
         from ..laws import replace_submodels
         options, submodels = split_submodels(options)
         text = options.pop(INPUT_OPTION, None)
@@ -179,8 +179,8 @@ class Engine:
 
     def input_dialect(self, law_name, text, target):
         """What this build computes with a user's own input `text` (--engine-input), named as the law it is compared
-        with: its vocabulary's composition for this release (harness.engine_inputs)."""
-        from ..engine_inputs import parse
+        with: its vocabulary's composition for this release (harness.engines.user_inputs)."""
+        from .user_inputs import parse
         version = self.version()
         law = parse(self.code, text, version).composition(target, version)
         return dataclasses.replace(law, name=law_name)
@@ -251,8 +251,8 @@ class Engine:
 
     # --- running it ---------------------------------------------------------------------------------------------
     def render_batch(self, paper_law, scene, spec, options=None, observe=False):
-        """The text of the input that runs one run's spec (harness.plan.RunSpec: its impacts, time step, step cap and
-        output cadence); an EngineFailure refuses it, with the reason."""
+        """The text of the input that runs one run's spec (solver/resolution.py's RunSpec: its impacts, time step, step
+        cap and output cadence); an EngineFailure refuses it, with the reason."""
         raise NotImplementedError(f"{self.NAME} renders no input")
 
     def run_inputs(self, flavour, count, timeout_s, workdir):
@@ -268,7 +268,7 @@ class Engine:
     def run(self, runs):
         """Each run of the plan (one batch: a law, an e_n, every impact) as (results frame, failure or None), each
         told what to run by run.spec; the runs of one flavour share processes, one per core."""
-        from .batches import run_grouped        # loaded by harness.before_threads; here, not when engines are listed
+        from .batches import run_grouped        # loaded by runs/before_threads.py; here, not when engines are listed
         return run_grouped(self.NAME, self.build(), runs, self.INPUT_NAME,
                            lambda run: self.render_batch(run.law, run.scene, run.spec, run.options_dict, run.observe),
                            lambda run: self.flavour(run.options_dict), self.run_inputs,

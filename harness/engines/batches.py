@@ -1,12 +1,12 @@
 """One run of the plan through an external engine as result rows (a failed batch keeps its log); an engine learns
-what to run from the run's spec (harness.plan.RunSpec)."""
+what to run from the run's spec (RunSpec)."""
 import os
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 
 import numpy as np
 
-from ..results import impact_frame
+from ..data.results import impact_frame
 from ..solver.threads import THREADS
 from .runner import EngineFailure, read_tail, run_engine, scratch
 

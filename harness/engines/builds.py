@@ -7,9 +7,9 @@ import hashlib
 import os
 from functools import lru_cache
 
-from ..errors import EngineMissing, UserError
-from ..programs import directory_from, which
-from ..releases import release_key
+from ..infra.errors import EngineMissing, UserError
+from ..infra.programs import directory_from, which
+from ..infra.releases import release_key
 
 DIRECTORY_VARIABLE = "HARNESS_ENGINES_DIR"
 DEFAULT_DIRECTORY = "/opt/harness/engines"
@@ -71,7 +71,7 @@ def prefix_binaries(engine):
 
 
 def builds(engine):
-    """Every build of `engine` as its own Engine, in release order (harness.releases)."""
+    """Every build of `engine` as its own Engine, in release order (harness.infra.releases)."""
     every = [engine.at(binary, origin) for binary, origin in found(engine)]
     return sorted(every, key=lambda build: release_key(build.version()))
 

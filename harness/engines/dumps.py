@@ -4,7 +4,7 @@ import os
 
 import numpy as np
 
-from ..wording import counted
+from ..infra.wording import counted
 from .runner import EngineFailure
 
 DUMP_HEADER_LINES = 9           # TIMESTEP, NUMBER OF ATOMS, BOX BOUNDS (3 lines) and ATOMS items

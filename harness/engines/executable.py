@@ -4,7 +4,7 @@ the head of what it prints for `-h` (read in a temporary directory, where the bi
 the user's)."""
 import os
 
-from ..programs import from_variable, which
+from ..infra.programs import from_variable, which
 from .runner import EngineFailure, run_engine, scratch
 
 BANNER_TIMEOUT_S = 5.0          # the banner comes in well under a second; a hung binary costs no more

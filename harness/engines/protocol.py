@@ -2,7 +2,7 @@
 import math
 from dataclasses import dataclass
 
-from ..errors import UserError
+from ..infra.errors import UserError
 
 
 @dataclass(frozen=True)
@@ -43,7 +43,7 @@ class InputRange:
 
 def check_options(name, declared, options):
     """The options given, validated against an engine's declared ones: one clear line for an unknown key or value."""
-    from ..engine_inputs import INPUT_OPTION          # an engine input travels as an option (harness.engine_inputs)
+    from .user_inputs import INPUT_OPTION          # an engine input travels as an option (harness.engines.user_inputs)
     options = dict(options or {})
     for key, value in options.items():
         if key == INPUT_OPTION:

@@ -3,7 +3,7 @@ an engine, resolved on first use."""
 import os
 import re
 
-from ..errors import UserError
+from ..infra.errors import UserError
 from .kratos import ENGINE as KRATOS
 from .lammps import ENGINE as LAMMPS
 from .liggghts import ENGINE as LIGGGHTS

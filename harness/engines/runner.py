@@ -1,6 +1,6 @@
 """Run an engine as a subprocess in its own directory and process group, with a timeout, its log streamed to disk
 and only its tail read; killed with harness (SIGKILL on the parent's death), listening on no network interface;
-every program found by its absolute path (harness.programs), and the engine's PATH without relative entries."""
+every program found by its absolute path (harness.infra.programs), and the engine's PATH without relative entries."""
 import os
 import shutil
 import signal
@@ -10,7 +10,7 @@ import time
 from dataclasses import dataclass
 from functools import lru_cache
 
-from ..programs import search_path, which
+from ..infra.programs import search_path, which
 
 LOG_TAIL_LINES = 40
 LOG_TAIL_BYTES = 64 * 1024

@@ -1,6 +1,6 @@
 """A law of given numbers: an engine input's spring, dashpot and friction as neutral sub-models whose parameters are
 the input's numbers, not calibrated from e_n (docs/laws.md#given-numbers)."""
-from ..engine_inputs import not_modelled
+from ..infra.errors import not_modelled
 from ..submodels.damping.fixed import FixedDashpot
 from ..submodels.normal.given import GivenHertz, GivenLinear
 from ..submodels.tangential.given import GivenContactRadiusSpring, GivenLinearTangential, GivenMindlin, GivenViscous

@@ -2,7 +2,7 @@
 scheme that integrates them, built and checked from the registry's names."""
 from dataclasses import dataclass, replace
 
-from ..errors import UserError
+from ..infra.errors import UserError
 from ..submodels.damping.kuwabara_kono import KuwabaraKonoDashpot
 from ..submodels.damping.linear import LinearDashpot
 from ..submodels.damping.none import NoDamping

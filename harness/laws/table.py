@@ -4,7 +4,7 @@ this table, and the kernels load only when a law is run."""
 import argparse
 from dataclasses import dataclass
 
-from ..errors import UserError
+from ..infra.errors import UserError
 
 PAPER_STEPPING = {"integrator": "paper", "coulomb": "spring-first", "geometry": "wall", "lever": "R", "slip": "lever",
                   "torque": "lever", "touch": "gap"}     # what every named law integrates with (the paper's scheme)

@@ -1,2 +1,2 @@
 """The reference solver: compiled integrators of the contact laws, their plans and their results."""
-from ..jit import compiled  # noqa: F401  (numba's cache directory is chosen before anything is compiled)
+from ..infra.jit import compiled  # noqa: F401  (numba's cache directory is chosen before anything is compiled)

@@ -15,7 +15,7 @@ import math
 import numpy as np
 from numba import njit
 
-from ..jit import compiled
+from ..infra.jit import compiled
 from . import codes as C
 from . import layout as L
 from .adaptive_work import copy_into, row_work, work_arrays

@@ -6,7 +6,7 @@ from collections import namedtuple
 import numpy as np
 from numba import njit
 
-from ..jit import compiled
+from ..infra.jit import compiled
 from .contact_ode import N_AUX, N_EVENTS, N_MODE, N_Y
 from .steppers import STAGES
 

@@ -5,7 +5,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..resolution import joined, needs_tangential, step_caps
+from .resolution import joined, needs_tangential, step_caps
 from ..submodels.geometry.pair import centres_less_radius
 from ..submodels.registry import check_parameters, code_of, kernel_code, kernel_of
 from ..submodels.stepping import STEPPERS
@@ -22,7 +22,7 @@ STEPPING = (("end", "end"), ("integrator", "integrator"), ("coulomb", "coulomb")
 class Batch:
     """Kernel input for one spec (one sweep at one target e_n, its time step and step cap), with the incident
     conditions kept for the results table."""
-    spec: object                # harness.resolution.RunSpec
+    spec: object                # harness.solver.resolution.RunSpec
     params: np.ndarray
     ints: np.ndarray
     tangential_active: np.ndarray

@@ -1,5 +1,5 @@
 """Whether a compiled integrator must be compiled before it runs, so that a first run says so, once, on the log; and
-the time compiling takes, counted (harness.compiling) from numba's compile events."""
+the time compiling takes, counted (harness.infra.compiling) from numba's compile events."""
 import logging
 import os
 import threading
@@ -7,7 +7,7 @@ import time
 
 from numba.core import event
 
-from ..compiling import add, first_clock
+from ..infra.compiling import add, first_clock
 
 LOG = logging.getLogger("harness")
 _announced = set()
@@ -31,7 +31,7 @@ def announce_compiling(dispatcher, what):
 
 class CompileClock(event.Listener):
     """Adds the wall time of each outermost compile (a compile nests the compiles of the functions it calls) to
-    harness.compiling."""
+    harness.infra.compiling."""
 
     def __init__(self):
         self.depth, self.start, self.lock = 0, 0.0, threading.Lock()

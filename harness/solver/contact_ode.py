@@ -13,7 +13,7 @@ import math
 
 from numba import njit
 
-from ..jit import compiled
+from ..infra.jit import compiled
 from . import layout as L
 from .dispatch import (END_PULLS, TANGENTIAL_ANY_IMPLICIT, TANGENTIAL_IMPLICIT, TANGENTIAL_LOG_RATE, normal_below,
                        normal_force, normal_slope, tangential_edge_w, tangential_force_from_w, tangential_stiffness,

@@ -6,7 +6,7 @@ import math
 
 import numpy as np
 
-from ..jit import compiled
+from ..infra.jit import compiled
 from ..submodels.normal import linear as normal_linear
 from ..submodels.normal import hertz as normal_hertz
 from ..submodels.normal import walton_braun as normal_walton_braun

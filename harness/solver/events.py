@@ -2,7 +2,7 @@
 and the release, each by Illinois false position on the step fraction, and the step split there."""
 from numba import njit
 
-from ..jit import compiled
+from ..infra.jit import compiled
 from ..submodels.tangential.state import T_HELD, T_MARGIN, T_STEP
 from . import layout as L
 from .dispatch import END_PULLS, TANGENTIAL_IMPLICIT, TANGENTIAL_NONE, TANGENTIAL_VISCOUS

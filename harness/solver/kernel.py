@@ -15,7 +15,7 @@ from collections import namedtuple
 import numpy as np
 from numba import njit
 
-from ..jit import compiled
+from ..infra.jit import compiled
 from ..submodels.stepping import STEPPER_NAMES
 from ..submodels.tangential.state import N_TSTATE, T_HELD, T_MARGIN
 from . import codes as C

@@ -1,6 +1,6 @@
 """The graded mesh of the converged ladder (steps that shrink like s^3 at both ends of the contact) and the
 interpolated peak of F_n from its last samples."""
-from ..jit import compiled
+from ..infra.jit import compiled
 
 PEAK_POINTS = 5           # samples of F_n through which its peak is interpolated (paper scheme)
 

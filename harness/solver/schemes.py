@@ -7,7 +7,7 @@ import math
 
 from numba import njit
 
-from ..jit import compiled
+from ..infra.jit import compiled
 from ..submodels.coulomb import clip
 from ..submodels.integrator.paper import drift
 from ..submodels.tangential.state import N_TSTATE, T_HELD

@@ -4,9 +4,9 @@ import time
 import numpy as np
 import pandas as pd
 
-from ..version import __version__
-from ..kinematics import rebound_quantities
-from ..results import impact_frame
+from ..infra.version import __version__
+from ..scenes.kinematics import rebound_quantities
+from ..data.results import impact_frame
 from .stability import UnstableTimeStep
 from . import codes as C
 from . import layout as L
@@ -14,7 +14,7 @@ from .adaptive import integrate_adaptive, stepper_names, supports
 from .extension import table as extension_table
 from .kernel import integrate
 from .mesh import graded_largest_step
-from ..resolution import FixedTimeStep, run_spec
+from .resolution import FixedTimeStep, run_spec
 from .batch import batch_of
 
 CONVERGED_START = 64             # steps per contact of the first level of the converged ladder
@@ -24,7 +24,7 @@ STATUS_TEXT = {C.STATUS_OK: "ok", C.STATUS_NO_SEPARATION: "no-separation", C.STA
 
 
 def batch_at(law, scene, e_n, resolution, **spec_options):
-    """The kernel rows of `law` on the scene at target e_n and a resolution (its RunSpec: harness.resolution)."""
+    """The kernel rows of `law` on the scene at target e_n and a resolution (its RunSpec: harness.solver.resolution)."""
     return batch_of(law, scene, run_spec(law, scene, e_n, resolution, **spec_options))
 
 
@@ -117,7 +117,7 @@ def simulate_extrapolated(law, scene, n):
 
 
 def results_frame(law, scene, batch, out, wall, steps, dt, messages):
-    """The results table of one batch from the kernel's output rows (harness/results.py columns)."""
+    """The results table of one batch from the kernel's output rows (harness/data/results.py columns)."""
     return impact_frame(
         scene, batch, model=law.name, dialect=law.dialect, engine="reference", engine_version=__version__, dt=dt,
         steps_per_contact=steps, v_n1=out[:, C.O_VZ], v_t1=out[:, C.O_VX], omega1=out[:, C.O_W],

@@ -10,7 +10,7 @@ from pathlib import Path
 
 from numba.core import config
 
-from ..files import write_text
+from ..infra.files import write_text
 from ..submodels.generate import dispatch_source, switches_source
 from ..submodels.registry import code_of, kernels
 

@@ -1,7 +1,7 @@
 """The tangential spring's pieces every kernel shares: the mean contact radius of a step and the trial spring force
 from the registered kernels (dispatch.tangential_spring)."""
 
-from ..jit import compiled
+from ..infra.jit import compiled
 from ..submodels.tangential.state import T_AOLD
 from .dispatch import tangential_spring
 

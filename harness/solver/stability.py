@@ -9,7 +9,7 @@ g = c/(2 m_eff), i.e. w h < 2 (sqrt(1 + z^2) - z) with z the damping ratio (O'Su
 import math
 from dataclasses import dataclass
 
-from ..errors import UserError
+from ..infra.errors import UserError
 from ..submodels.registry import code_of, kernel_code, kernel_of, python_point
 
 

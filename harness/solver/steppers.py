@@ -5,7 +5,7 @@ import math
 import numpy as np
 from numba import njit
 
-from ..jit import compiled
+from ..infra.jit import compiled
 from . import layout as L
 from .contact_ode import A_FN, M_TANGENTIAL, N_Y, STICK, Y_ALPHA, Y_FS, coulomb_cone, evaluate, spring_w_of
 from .dispatch import TANGENTIAL_IMPLICIT

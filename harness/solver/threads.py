@@ -1,14 +1,15 @@
 """Rows of a batch split between threads: the compiled integrators release the GIL, so threads run them in parallel
 without numba's parallel compilation (which multiplies the first run's compile time). The threads are daemons and
 the caller only waits for them, so Ctrl-C or SIGTERM stops harness at once, not when a compiled loop returns."""
-import os
 import queue
 import threading
 from concurrent.futures import Future
 
 import numpy as np
 
-THREADS = len(os.sched_getaffinity(0))     # the cores this process may use
+from ..infra.cores import CORES
+
+THREADS = CORES                             # the cores this process may use
 CHUNKS_PER_THREAD = 4
 _pool = []                                  # one pool for the process, made on first use
 

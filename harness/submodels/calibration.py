@@ -3,7 +3,7 @@ where a calibration needs it (it takes 0.3 s to load)."""
 import math
 from functools import lru_cache
 
-from ..errors import UserError
+from ..infra.errors import UserError
 
 APPENDIX_B = (-6.918798, -16.41105, 146.8049, -796.4559, 2928.711,
               -7206.864, 11494.29, -11342.18, 6276.757, -1489.915)

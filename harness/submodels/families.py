@@ -7,7 +7,7 @@ generate.py writes, from these declarations, the codes, the column layout and on
 import inspect
 from dataclasses import dataclass
 
-from ..errors import UserError
+from ..infra.errors import UserError
 
 REQUIRED = object()        # a capability a module must declare
 

@@ -210,7 +210,8 @@ def dispatch_source(normal=None, tangential=None):
         HEADER.format("Kernel codes, capability tables and the dispatch of every compiled sub-model function "
                       "(docs/design.md)."),
         "import math\n\nimport numpy as np\n",
-        "\n".join(["from ..jit import compiled"] + [line for f, ks in BUILT_IN.items() for line in imports(f, ks)]),
+        "\n".join(["from ..infra.jit import compiled"]
+                  + [line for f, ks in BUILT_IN.items() for line in imports(f, ks)]),
         "from .extension import BELOW, FORCE, KINK, RESIDUAL, SLOPE, call",
         wrapped("from .layout import ", ["NORMAL_BLOCK", "NORMAL_BLOCK_END"] + used) + "  # noqa: F401",
         "",

@@ -6,7 +6,7 @@ extension table the integrators carry, without recompiling them."""
 import importlib
 from dataclasses import dataclass
 
-from ..errors import UserError
+from ..infra.errors import UserError
 from .base import N_SLOTS
 from .families import FAMILIES, check_module
 from .damping.kuwabara_kono import KuwabaraKonoDashpot

@@ -2,7 +2,7 @@
 A spec is a rule for g_t, then options: 'total' (Coulomb's test on spring plus dashpot) and 'sphere-mass'."""
 import math
 
-from ..errors import UserError
+from ..infra.errors import UserError
 
 RULES = ("none", "normal-ratio", "normal-coefficient", "proportional", "beta", "reversed-beta", "classical")
 CONES = ("spring-first", "total")        # the paper scheme's Coulomb test: the spring's first, or the sum's

@@ -7,9 +7,9 @@ import os
 
 import numpy as np
 
-from ..files import write_text
-from ..render import environment
-from ..version import __version__
+from ..infra.files import write_text
+from ..infra.render import environment
+from ..infra.version import __version__
 from .figure_files import filed, one
 from .paper_axes import PAPER_PANELS, PSI1_RANGE, draw_rigid_body, in_window, set_paper_axes
 from .pieces import figure_svg, legend_below, records

@@ -1,7 +1,7 @@
 """What a person reads after calibrate: the choices with their price on the physics checks and the rule that chose,
 what to type per target e_n (every value and the lines to paste), the deviation from the paper law before and after,
 what the engine run confirmed, what remains and why, the time-step advice; and, on stderr, what did not run."""
-from ..wording import counted
+from ..infra.wording import counted
 from .terminal import wrapped
 
 

@@ -10,12 +10,12 @@ import numpy as np
 import pandas as pd
 
 from ..analyses.agreement import AGREEMENT_TOLERANCE
-from ..citation import doc_link
-from ..files import write_text
+from ..infra.citation import doc_link
+from ..infra.files import write_text
 from .drawing import draw_all
 from .figure_files import filed
 from .pieces import figure_svg, legend_below
-from ..wording import counted
+from ..infra.wording import counted
 
 def figures_folder(path):
     """The folder, beside the page, of its figures' files: STORE-figures for STORE.html."""
@@ -108,7 +108,7 @@ def metric_figure(table, parameter, label, metric, metric_label):
 def deviation_figure(table, parameter, label):
     """Each engine's worst deviation from the paper law against `parameter`: one panel per metric, one line per law,
     engine and e_n."""
-    from ..campaign.sweeps import DEVIATION_METRICS
+    from ..studies.campaign.sweeps import DEVIATION_METRICS
     plt, fig, axes = _axes(len(DEVIATION_METRICS))
     for ax, (column, words) in zip(axes, DEVIATION_METRICS.items()):
         for (model, engine, e_n), rows in table.groupby(["model", "engine", "e_n_target"], sort=True):
@@ -133,7 +133,7 @@ def _table_html(frame):
 
 def sweep_sections(sweeps, directory, folder, store):
     """The HTML of each swept parameter: its figures (filed as SVG and PDF) over the tables and their SQL."""
-    from ..campaign.sweeps import METRICS
+    from ..studies.campaign.sweeps import METRICS
     calls, entries = [], []
     for sweep in sweeps:
         for metric, words in METRICS.items():

@@ -1,16 +1,16 @@
-"""The Chung & Ooi benchmark as one HTML page, from the suite's table (harness.verification.chung_ooi)."""
+"""The Chung & Ooi benchmark as one HTML page, from the suite's table (harness.studies.verification.chung_ooi)."""
 import datetime
 import os
 
-from ..files import write_text
-from ..render import environment
-from ..verification import chung_ooi as suite
-from ..verification.chung_ooi_cases import TESTS
-from ..version import __version__
+from ..infra.files import write_text
+from ..infra.render import environment
+from ..studies.verification import chung_ooi as suite
+from ..studies.verification.chung_ooi_cases import TESTS
+from ..infra.version import __version__
 from .figure_files import one
 from .pieces import figure_svg, legend_below, records
 from .style import colour
-from ..wording import counted, verb
+from ..infra.wording import counted, verb
 
 CSV, PAGE = "chung-ooi.csv", "chung-ooi.html"
 

@@ -7,7 +7,7 @@ from .pieces import figure_svg, legend_below, number, records
 from ..analyses.cost import (ADAPTIVE, EXTRAPOLATED, MEASURE, METRICS, NOT_RESOLVED, TOLERANCES, convergence_orders,
                              ladder_rows, per_rung, step_times)
 from ..analyses.cost_answer import answers, notes, recommendations, steps_text, verdict
-from ..outputs import COST, COST_RUN, COST_TRUTH
+from ..runs.outputs import COST, COST_RUN, COST_TRUTH
 
 LABELS = {"v_n1": "v_n1 (of V)", "v_t1": "v_t1 (of V)", "omega1": "R omega1 (of V)",
           "t_contact": "contact time (of its largest)", "f_n_max": "peak force (of its largest)", "max": "worst metric"}

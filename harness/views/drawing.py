@@ -7,7 +7,7 @@ import os
 import signal
 from concurrent.futures import ProcessPoolExecutor
 
-from ..solver.threads import THREADS
+from ..infra.cores import CORES
 
 PR_SET_PDEATHSIG = 1            # prctl(2): the signal this process gets when the thread that forked it ends
 
@@ -24,12 +24,12 @@ def die_with(parent):
 
 def draw_all(calls):
     """[function(*args) for function, args in calls], drawn in parallel where the machine has cores to spare."""
-    if len(calls) < 2 or THREADS < 2 or "fork" not in multiprocessing.get_all_start_methods():
+    if len(calls) < 2 or CORES < 2 or "fork" not in multiprocessing.get_all_start_methods():
         return [function(*args) for function, args in calls]
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot  # noqa: F401  (loaded once here, inherited by the workers)
-    pool = ProcessPoolExecutor(max_workers=min(THREADS, len(calls)), mp_context=multiprocessing.get_context("fork"),
+    pool = ProcessPoolExecutor(max_workers=min(CORES, len(calls)), mp_context=multiprocessing.get_context("fork"),
                                initializer=die_with, initargs=(os.getpid(),))
     try:
         futures = [pool.submit(function, *args) for function, args in calls]

@@ -1,4 +1,4 @@
-"""What `harness explain` prints: an Explanation (harness.explain) as lines."""
+"""What `harness explain` prints: an Explanation (studies/explain.py) as lines."""
 import math
 
 

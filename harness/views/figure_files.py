@@ -5,7 +5,7 @@ import re
 
 from markupsafe import Markup, escape
 
-from ..files import write_bytes, write_text
+from ..infra.files import write_bytes, write_text
 
 FIGURES = "figures"                 # the folder beside a report that holds its figures' files
 LONGEST = 80                        # characters of a file name's stem

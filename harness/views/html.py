@@ -8,12 +8,12 @@ import pandas as pd
 from ..analyses.physics import CHECK_WORDS, MARGINAL_SHARE, MARGINAL_TIMES, Tolerances
 from ..analyses.published import published_distances
 from ..analyses.verdict import verdict
-from ..digitised import points_of, published_curves_apply
-from ..files import write_text
-from ..kinematics import CONVENTIONS
-from ..outputs import kinds, load_comparison, load_cost
-from ..render import environment
-from ..version import __version__
+from ..data.digitised import points_of, published_curves_apply
+from ..infra.files import write_text
+from ..scenes.kinematics import CONVENTIONS
+from ..runs.outputs import kinds, load_comparison, load_cost
+from ..infra.render import environment
+from ..infra.version import __version__
 from . import style
 from .cost_html import cost_section
 from .drawing import draw_all

@@ -2,7 +2,7 @@
 hidden: a point far off gets a marker on the edge and a count), with the rigid-body lines and the published points."""
 import numpy as np
 
-from ..wording import counted
+from ..infra.wording import counted
 
 PSI1_RANGE = (0.0, 14.0)                 # the paper's Psi1* axis
 RIGID_ONSET = 7.0                        # a rigid sphere slides throughout from Psi1* = 7
@@ -28,7 +28,7 @@ def rigid_body(column, psi1):
 
 
 def draw_published(ax, points, colour, label=None):
-    """The paper's published points of one curve (harness/digitised.py), open markers in the curve's colour."""
+    """The paper's published points of one curve (harness/data/digitised.py), open markers in the curve's colour."""
     ax.plot(points.psi1_star, points.value, ls="none", marker="o", ms=4, mfc="none", mew=1.0, color=colour,
             label=label, zorder=4, gid="published-points")
 

@@ -4,14 +4,14 @@ import os
 
 import numpy as np
 
-from ..files import write_text
-from ..kinematics import CONVENTIONS
+from ..infra.files import write_text
+from ..scenes.kinematics import CONVENTIONS
 from ..laws import LAWS
 from ..analyses.published import GOAL
-from ..digitised import points_of, provenance
-from ..figures import ELASTIC, PSI1_GRID
-from ..render import environment
-from ..version import __version__
+from ..data.digitised import points_of, provenance
+from ..analyses.paper_axis import ELASTIC, PSI1_GRID
+from ..infra.render import environment
+from ..infra.version import __version__
 from .drawing import draw_all
 from .figure_files import filed
 from .paper_axes import PAPER_PANELS, draw_published, draw_rigid_body, set_paper_axes

@@ -4,7 +4,7 @@ nothing when quiet."""
 import sys
 import time
 
-from ..compiling import spent
+from ..infra.compiling import spent
 
 QUIET_START_S = 2.0       # plain lines only after this long: a quick command prints none
 

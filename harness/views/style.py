@@ -3,7 +3,7 @@ own), the same in every figure; an engine's own run wide and pale under the thin
 reference, so both stay visible."""
 from itertools import cycle
 
-from ..figures import engine_styles
+from ..engines.styles import engine_styles
 
 COLOURS, DASHES, _ = engine_styles()
 _spare_colours = cycle(["tab:red", "tab:brown", "tab:pink", "tab:olive", "tab:cyan"])

@@ -5,7 +5,7 @@ from ..analyses.cost_answer import answers, key, notes, recommendations, steps_t
 from ..analyses.causes import MENTION
 from ..analyses.physics import Tolerances
 from ..analyses.published import GOAL, meets_goal
-from ..wording import counted
+from ..infra.wording import counted
 
 
 def summary_lines(frame):

@@ -5,7 +5,7 @@ bin/python imports Kratos, or the interpreter HARNESS_KRATOS_PYTHON names; its d
 and output in script.py, the interpreter's probe in venv.py."""
 import os
 
-from ...programs import from_variable, which
+from ...infra.programs import from_variable, which
 from ..base import Engine
 from ..builds import directory, prefix_binaries, sha256
 from .dialect import COUNTERPARTS, DIALECTS, PAIR_DIALECTS

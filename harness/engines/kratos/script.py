@@ -7,9 +7,9 @@ from pathlib import Path
 
 import numpy as np
 
-from ...render import render
-from ...version import __version__
-from ...wording import counted
+from ...infra.render import render
+from ...infra.version import __version__
+from ...infra.wording import counted
 from ..dumps import pair_rebound, rebound
 from ..runner import EngineFailure, read_tail, run_engine
 from .dialect import COUNTERPARTS
@@ -75,8 +75,8 @@ def pair_spheres(scene, spec):
 
 
 def script(law, scene, spec, observe=False, own=None):
-    """The script text of a run's spec (harness.plan.RunSpec; validated numbers and fixed words only, see
-    harness.render); `own`, a user's own input (its law, E, nu, e and mu), for every material and the relation."""
+    """The script text of a run's spec (RunSpec; validated numbers and fixed words only, see
+    harness.infra.render); `own`, a user's own input (its law, E, nu, e and mu), for every material and the relation."""
     target = "sphere" if scene.spheres else "wall"
     place = pair_spheres if scene.spheres else wall_spheres
     spheres, materials, wall = place(scene, spec)
@@ -158,8 +158,8 @@ def read_observation(path, spec):
 
 def render_batch(paper_law, scene, spec, options=None, observe=False):
     """The script text of one run's spec, as Engine.run_batch would run it (with a user's own input, the option
-    `input` (harness.engine_inputs), its variables as given)."""
-    from ...engine_inputs import INPUT_OPTION, parse
+    `input` (harness.engines.user_inputs), its variables as given)."""
+    from ..user_inputs import INPUT_OPTION, parse
     text = dict(options or {}).get(INPUT_OPTION)
     own = parse("kratos", text).deck_values() if text is not None else None
     return script(paper_law, scene, spec, observe, own)

@@ -5,7 +5,7 @@ import json
 import os
 from functools import lru_cache
 
-from ...programs import which
+from ...infra.programs import which
 from ..runner import EngineFailure, run_engine, scratch
 
 PYTHON_VARIABLE = "HARNESS_KRATOS_PYTHON"     # another interpreter with Kratos (a custom install, a test's fake)

@@ -5,8 +5,8 @@ import os
 from pathlib import Path
 
 
-from ...render import render
-from ...version import __version__
+from ...infra.render import render
+from ...infra.version import __version__
 from ..base import split_submodels
 from ..dumps import read_final, read_observed, read_pair_batch, rebound
 from ..runner import EngineFailure
@@ -120,8 +120,8 @@ def pair_deck(law, scene, spec, options=None, observe=False, version=None, own=N
 
 
 def input_words(options, version):
-    """{pair_style, pair_coeff, wall} words of a user's own input (the option `input`: harness.engine_inputs), or {}."""
-    from ...engine_inputs import INPUT_OPTION, parse
+    """{pair_style, pair_coeff, wall} words of a user's own input (option `input`: engines/user_inputs.py), or {}."""
+    from ..user_inputs import INPUT_OPTION, parse
     text = dict(options or {}).get(INPUT_OPTION)
     if text is None:
         return {}
@@ -130,8 +130,8 @@ def input_words(options, version):
 
 
 def deck(law, scene, spec, options=None, observe=False, version=None):
-    """Render the batched deck of a run's spec (harness.plan.RunSpec; validated numbers and fixed words only, see
-    harness.render) for LAMMPS `version`; `observe` adds the per-step contact dump (OBSERVE_DUMP). A user's own input
+    """Render the batched deck of a run's spec (RunSpec; validated numbers and fixed words only, see
+    infra/render.py) for LAMMPS `version`; `observe` adds the per-step contact dump (OBSERVE_DUMP). A user's own input
     (the option `input`) gives its contact words verbatim to pair_style, pair_coeff * * and fix wall/gran."""
     own = input_words(options, version)
     if scene.spheres:
@@ -157,12 +157,12 @@ NO_INPUT = dict(input_style=(), input_coeff=(), input_wall=())
 
 def run_inputs(lmp, count, timeout_s, workdir):
     """The decks batch<k>/in.harness in one process of the LAMMPS executable `lmp` (batches.in_one_process)."""
-    from ..batches import in_one_process    # loaded by harness.before_threads; here, not when engines are listed
+    from ..batches import in_one_process    # loaded by harness.runs.before_threads; here, not when engines are listed
     return in_one_process([lmp, "-log", "none", "-echo", "none", "-nocite"], INPUT, count, timeout_s, workdir)
 
 
 def read_batch(scene, spec, directory, observe=False):
-    """Rebound velocities and separation of one run's spec (harness.plan.RunSpec) run in `directory` (and what
+    """Rebound velocities and separation of one run's spec (RunSpec) run in `directory` (and what
     observe mode saw)."""
     if scene.spheres:
         return read_pair_batch(directory, scene, spec, observe, "LAMMPS", OBSERVE_DUMP)
@@ -179,6 +179,6 @@ def read_outputs(directory, spec, radius, observe):
 
 
 def render_batch(paper_law, scene, spec, options=None, observe=False, version=None):
-    """The deck text of one run's spec (harness.plan.RunSpec; for `harness render` and the runs) for LAMMPS
+    """The deck text of one run's spec (RunSpec; for `harness render` and the runs) for LAMMPS
     `version`."""
     return deck(paper_law, scene, spec, options, observe, version)

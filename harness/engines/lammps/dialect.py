@@ -1,6 +1,6 @@
 """What LAMMPS computes for each law through `fix wall/gran` and `fix nve/sphere`, as a composition of sub-models
 keyed on the release (docs/lammps-dialect.md#versions), and its options."""
-from ...errors import UserError
+from ...infra.errors import UserError
 from ..protocol import Option, check_options as check_declared
 from .versions import NEWEST, checked, holds, nearest, spelled
 
@@ -97,7 +97,7 @@ def walls(law_name, options=None):
     """Any wall where the deck gives the wall's stiffnesses as numbers (granular hooke, the older hooke/history and
     hertz/history styles): harness computes them from the contact's E* and G*. hertz/material takes one E and nu and
     mixes them with themselves, so its wall is of the sphere's own material."""
-    from ...engine_inputs import INPUT_OPTION
+    from ..user_inputs import INPUT_OPTION
     if INPUT_OPTION in (options or {}):
         return ("same", "other", "rigid")         # a user's input gives the contact's numbers whatever the wall
     if law_name not in DIALECTS:

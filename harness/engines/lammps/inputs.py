@@ -5,8 +5,9 @@ composed of neutral sub-models: what the release computes with them against a wa
 import math
 from dataclasses import dataclass
 
-from ...engine_inputs import EngineInput, Flag, not_modelled, refuse
-from ...errors import UserError
+from ..user_inputs import EngineInput, Flag, refuse
+from ...infra.errors import not_modelled
+from ...infra.errors import UserError
 from ...submodels.calibration import polynomial_tsuji_A
 from .versions import NEWEST, holds, nearest, spelled
 

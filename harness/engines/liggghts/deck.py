@@ -5,8 +5,8 @@ import os
 from dataclasses import dataclass
 from pathlib import Path
 
-from ...version import __version__
-from ...render import render
+from ...infra.version import __version__
+from ...infra.render import render
 from ..dumps import read_final, read_observed, read_pair_batch, rebound
 from ..executable import chosen
 from ..runner import EngineFailure, run_engine
@@ -140,9 +140,9 @@ def pair_deck(law, scene, spec, observe=False, own=None):
 
 
 def deck(law, scene, spec, options=None, observe=False):
-    """Render the batched deck of a run's spec (harness.plan.RunSpec; validated numbers and fixed words only, see
-    harness.render); `observe` adds the per-step contact dump (OBSERVE_DUMP)."""
-    from ...engine_inputs import INPUT_OPTION, parse
+    """Render the batched deck of a run's spec (RunSpec; validated numbers and fixed words only, see
+    harness.infra.render); `observe` adds the per-step contact dump (OBSERVE_DUMP)."""
+    from ..user_inputs import INPUT_OPTION, parse
     options = dict(options or {})
     text = options.pop(INPUT_OPTION, None)
     own = parse("liggghts", text).deck_values() if text is not None else None
@@ -207,13 +207,13 @@ def run_deck(text, n_atoms, timeout_s, workdir):
 
 def run_inputs(liggghts, count, timeout_s, workdir):
     """The decks batch<k>/in.harness in one process of the LIGGGHTS executable (batches.in_one_process)."""
-    from ..batches import in_one_process    # loaded by harness.before_threads; here, not when engines are listed
+    from ..batches import in_one_process    # loaded by harness.runs.before_threads; here, not when engines are listed
     return in_one_process([liggghts, "-log", "none", "-echo", "none"], "in.harness", count, timeout_s, workdir,
                           env={**os.environ, "OMP_NUM_THREADS": "1"})
 
 
 def read_batch(scene, spec, directory, observe=False):
-    """The final state of one run's spec (harness.plan.RunSpec) run in `directory` (and what observe mode saw)."""
+    """The final state of one run's spec (RunSpec) run in `directory` (and what observe mode saw)."""
     if scene.spheres:
         return read_pair_batch(directory, scene, spec, observe, "LIGGGHTS", OBSERVE_DUMP)
     final = rebound(read_dump(os.path.join(directory, "final.dump"), spec.impacts), scene.radius)
@@ -223,5 +223,5 @@ def read_batch(scene, spec, directory, observe=False):
 
 
 def render_batch(paper_law, scene, spec, options=None, observe=False):
-    """The deck text of one run's spec (harness.plan.RunSpec), as Engine.run_batch would run it."""
+    """The deck text of one run's spec (RunSpec), as Engine.run_batch would run it."""
     return deck(paper_law, scene, spec, options, observe).text

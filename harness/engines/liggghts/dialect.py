@@ -1,6 +1,6 @@
 """What LIGGGHTS 3.8.0 computes for each law, as a composition of sub-models (docs/liggghts-dialect.md), and what
 its contact options change."""
-from ...errors import UserError
+from ...infra.errors import UserError
 from ..protocol import Option, check_options as check_declared
 
 COUNTERPARTS = {                      # harness law -> LIGGGHTS normal model

@@ -6,8 +6,9 @@ neutral sub-models with those numbers."""
 import math
 from dataclasses import dataclass
 
-from ...engine_inputs import EngineInput, not_modelled, refuse
-from ...errors import UserError
+from ..user_inputs import EngineInput, refuse
+from ...infra.errors import not_modelled
+from ...infra.errors import UserError
 from ...submodels.normal.given import GivenLinear
 
 MODEL_WORDS = ("hooke", "hertz")

@@ -3,7 +3,7 @@ compiled kernels of harness/solver, at a number of steps per contact, a time ste
 import os
 
 from ...laws.table import LAWS
-from ...version import __version__
+from ...infra.version import __version__
 from ..base import Engine
 
 
@@ -39,7 +39,7 @@ class Reference(Engine):
 
     def run(self, runs):
         """(results frame, None) of each run: `simulate` of its dialect at its resolution."""
-        from ...plan import CONVERGED
+        from ...solver.resolution import CONVERGED
         from ...solver.simulate import simulate
         out = []
         for run in runs:
@@ -50,7 +50,7 @@ class Reference(Engine):
         return out
 
     def render(self, run):
-        from ...errors import UserError
+        from ...infra.errors import UserError
         raise UserError("the reference solver reads no input file; `harness render` writes engines' inputs")
 
 

@@ -3,8 +3,8 @@ yade launcher; its dialects are in dialect.py, its input and output in script.py
 flavours.py. It also checks its own arithmetic (precision.py)."""
 import os
 
-from ...errors import UserError
-from ...programs import which
+from ...infra.errors import UserError
+from ...infra.programs import which
 from ..base import Engine
 from ..builds import sha256
 from .dialect import COUNTERPARTS, DIALECTS, OPTIONS, PAIR_DIALECTS, check_options, dialect

@@ -1,5 +1,5 @@
 """What YADE 2023.02a computes for each law, as a composition of sub-models (docs/yade-dialect.md), and its options."""
-from ...errors import UserError
+from ...infra.errors import UserError
 from ..protocol import Option, check_options as check_declared
 
 COUNTERPARTS = {"hertz-mindlin": "Law2_ScGeom_MindlinPhys_Mindlin",

@@ -4,8 +4,8 @@ import os
 import re
 from functools import lru_cache
 
-from ...errors import UserError
-from ...programs import from_variable, which
+from ...infra.errors import UserError
+from ...infra.programs import from_variable, which
 
 PYTHON_VARIABLE = "HARNESS_YADE_PYTHON"    # another interpreter (a test's fake); default Debian's python3.11
 FLAVOURS = {"double": "yade-double", "long-double": "yade-longdouble", "float128": "yade-float128",

@@ -8,8 +8,9 @@ import math
 import re
 from dataclasses import dataclass
 
-from ...engine_inputs import EngineInput, Flag, not_modelled, refuse
-from ...errors import UserError
+from ..user_inputs import EngineInput, Flag, refuse
+from ...infra.errors import not_modelled
+from ...infra.errors import UserError
 from ...submodels.normal.given import GivenLinear
 
 MATERIALS = {

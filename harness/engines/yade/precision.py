@@ -16,7 +16,7 @@ def precision_runs(law, scene, dialect_of=None, given=None):
     """(double run, mpfr150 run) of the impacts of the first e_n nearest SAMPLE_ANGLES at a coarse time step, or ()
     where the high-precision flavour is not installed; with a user's own input `given` (its text), both run it and
     `dialect_of(law name, options, target)` (the engine's) composes it."""
-    from ...plan import Run         # the plan's import loads the solver: here, not when the engines are listed
+    from ..run import Run         # loads the solver: here, not when the engines are listed
     if not available(HIGH):
         return ()
     angles = np.asarray(scene.impacts(scene.e_n[0])[3])

@@ -5,9 +5,9 @@ from pathlib import Path
 
 import numpy as np
 
-from ...version import __version__
-from ...render import render
-from ...wording import counted
+from ...infra.version import __version__
+from ...infra.render import render
+from ...infra.wording import counted
 from ..dumps import pair_rebound
 from ..runner import EngineFailure, remove_engine_tmpdir, run_engine
 from .dialect import COUNTERPARTS
@@ -29,8 +29,8 @@ def viscel_contact_time(law, scene, e_n):
 
 
 def script(law, scene, spec, linear="viscel", observe=False):
-    """Render the batched script of a run's spec (harness.plan.RunSpec; validated numbers and fixed words only, see
-    harness.render); `observe` adds the per-step PyRunner that writes OBSERVE_FILE."""
+    """Render the batched script of a run's spec (RunSpec; validated numbers and fixed words only, see
+    harness.infra.render); `observe` adds the per-step PyRunner that writes OBSERVE_FILE."""
     import math
     e_n, v_n0, v_t0, omega0 = spec.e_n, spec.v_n0, spec.v_t0, spec.omega0
     radius = scene.radius
@@ -162,7 +162,7 @@ def run_inputs(precision, count, timeout_s, workdir):
 
 
 def read_batch(scene, spec, directory, observe=False):
-    """The final state of one run's spec (harness.plan.RunSpec) run in `directory` (and what observe mode saw)."""
+    """The final state of one run's spec (RunSpec) run in `directory` (and what observe mode saw)."""
     n = spec.impacts
     if scene.spheres:
         rows = read_result(os.path.join(directory, "result.txt"), n, columns=PAIR_COLUMNS)
@@ -193,9 +193,9 @@ def read_observation(path, n_spheres, dt):
 
 
 def render_batch(paper_law, scene, spec, options=None, observe=False):
-    """The script text of one run's spec (harness.plan.RunSpec), as Engine.run_batch would run it (with a user's own
-    input, the option `input` (harness.engine_inputs), its material and functors verbatim)."""
-    from ...engine_inputs import INPUT_OPTION, parse
+    """The script text of one run's spec (solver/resolution.py's RunSpec), as Engine.run_batch would run it (with a
+    user's own input, the option `input` (engines/user_inputs.py), its material and functors verbatim)."""
+    from ..user_inputs import INPUT_OPTION, parse
     options = dict(options or {})
     text = options.pop(INPUT_OPTION, None)
     if text is not None:

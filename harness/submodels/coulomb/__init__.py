@@ -1,7 +1,7 @@
 """Coulomb rules: what the friction cap mu |F_n| bounds, the spring alone or the spring with its tangential dashpot.
 Each rule's `cap(f_s, damping, k_t, slip, limit)` returns (F_t, the spring force kept, whether the spring was cut);
 the tangential dashpot is c_t = damping sqrt(k_t), none where damping is 0."""
-from ...jit import compiled
+from ...infra.jit import compiled
 
 
 @compiled

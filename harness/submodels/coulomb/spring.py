@@ -1,7 +1,7 @@
 """Coulomb rule 'spring': the spring capped at mu |F_n|; the tangential dashpot added only below the cap."""
 import math
 
-from ...jit import compiled
+from ...infra.jit import compiled
 from . import clip
 
 NAME = "spring"

@@ -2,7 +2,7 @@
 clipped."""
 import math
 
-from ...jit import compiled
+from ...infra.jit import compiled
 from . import clip
 
 NAME = "spring-first"

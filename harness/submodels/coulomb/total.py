@@ -1,7 +1,7 @@
 """Coulomb rule 'total': spring and tangential dashpot capped together at mu |F_n|."""
 import math
 
-from ...jit import compiled
+from ...infra.jit import compiled
 from . import clip
 
 NAME = "total"

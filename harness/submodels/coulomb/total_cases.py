@@ -1,7 +1,7 @@
 """Coulomb rule 'total-cases': spring F_s and dashpot F_d = -c_t V_s capped together at mu |F_n| by four cases."""
 import math
 
-from ...jit import compiled
+from ...infra.jit import compiled
 from . import clip
 
 NAME = "total-cases"

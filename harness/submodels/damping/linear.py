@@ -1,7 +1,7 @@
 """Linear dashpot c_n = 2 g sqrt(m k_n), g calibrated for the end rule (docs/laws.md#normal-laws)."""
 import math
 
-from ...errors import UserError
+from ...infra.errors import UserError
 from .. import calibration as cal
 from . import Dashpot
 

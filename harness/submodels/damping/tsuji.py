@@ -2,7 +2,7 @@
 exactly for the end rule (docs/laws.md#normal-laws)."""
 import math
 
-from ...errors import UserError
+from ...infra.errors import UserError
 from .. import calibration as cal
 from . import Dashpot
 

@@ -1,5 +1,5 @@
 """End rule 'no-tension': the normal force never pulls; the contact ends when it returns to 0."""
-from ...jit import compiled
+from ...infra.jit import compiled
 
 NAME = "no-tension"
 SUMMARY = "no tension: F_n clipped at 0, the contact ends when the force returns to 0"

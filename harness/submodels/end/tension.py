@@ -1,5 +1,5 @@
 """End rule 'tension': the normal force may pull; the contact ends when the overlap returns to 0."""
-from ...jit import compiled
+from ...infra.jit import compiled
 
 NAME = "tension"
 SUMMARY = "tension allowed: the contact ends when the overlap returns to 0"

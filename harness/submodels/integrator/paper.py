@@ -1,5 +1,5 @@
 """Integrator 'paper': second-order splitting on u = m alpha_dot + D(alpha)."""
-from ...jit import compiled
+from ...infra.jit import compiled
 
 NAME = "paper"
 SUMMARY = "second-order splitting on u = m alpha_dot + D(alpha), release and regime changes located in the step"

@@ -1,7 +1,7 @@
 """Hertz F = 4/3 E* R^1/2 alpha^3/2 (paper eq. 1)."""
 import math
 
-from ...jit import compiled
+from ...infra.jit import compiled
 from .. import calibration as cal
 from ..base import NormalModel, NormalParameters
 from .hertz_shapes import hertz, hertz_slope

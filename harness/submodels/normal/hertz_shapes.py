@@ -1,6 +1,6 @@
 """Shared Hertzian pieces of the normal kernels: F = 4/3 E* R^1/2 alpha^3/2 and its slope (paper eq. 1-2)."""
 import math
-from ...jit import compiled
+from ...infra.jit import compiled
 
 
 FOUR_THIRDS = 4.0 / 3.0

@@ -2,8 +2,8 @@
 overlap (docs/laws.md#normal-laws)."""
 import math
 
-from ...errors import UserError
-from ...jit import compiled
+from ...infra.errors import UserError
+from ...infra.jit import compiled
 from .. import calibration as cal
 from ..base import NormalModel, NormalParameters
 

@@ -1,7 +1,7 @@
 """Luding's hysteretic spring in its incremental form without adhesion (kc = 0), against a huge fixed sphere standing
 in for the wall: the plastic overlap DeltNull carried step to step (Luding 2008)."""
 
-from ...jit import compiled
+from ...infra.jit import compiled
 from ..base import NormalParameters
 from .luding_peak import LudingPeak
 

@@ -2,7 +2,7 @@
 grows with the peak up to a limit overlap (Luding 2008)."""
 import math
 
-from ...jit import compiled
+from ...infra.jit import compiled
 from .. import calibration as cal
 from ..base import NormalModel, NormalParameters
 

@@ -2,7 +2,7 @@
 unloading with R_c (docs/laws.md#normal-laws)."""
 import math
 
-from ...jit import compiled
+from ...infra.jit import compiled
 from .hertz_shapes import FOUR_THIRDS, hertz, hertz_slope
 from .thornton import Thornton
 

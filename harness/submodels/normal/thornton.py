@@ -2,7 +2,7 @@
 unloading with the radius R_p (docs/laws.md#normal-laws)."""
 import math
 
-from ...jit import compiled
+from ...infra.jit import compiled
 from .. import calibration as cal
 from ..base import NormalModel, NormalParameters
 from .hertz import Hertz

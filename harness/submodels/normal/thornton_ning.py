@@ -1,7 +1,7 @@
 """Thornton & Ning's incremental elastoplastic normal law without adhesion: dF = 2E* a dd (Thornton & Ning 1998)."""
 import math
 
-from ...jit import compiled
+from ...infra.jit import compiled
 from .thornton import Thornton
 
 NAME = "thornton-ning"

@@ -2,7 +2,7 @@
 e = sqrt(K1/K2) (docs/laws.md#normal-laws)."""
 import math
 
-from ...jit import compiled
+from ...infra.jit import compiled
 from .. import calibration as cal
 from ..base import NormalModel, NormalParameters
 

@@ -2,8 +2,8 @@
 tangential displacement xi; after the Coulomb cap xi = -F/k, the displacement of the spring k alone, so that the
 next step scales the capped force by a once more; its dashpot is (c_t/c_n) c_n, not a number without a normal dashpot
 (docs/laws.md#tangential-laws)."""
-from ...errors import UserError
-from ...jit import compiled
+from ...infra.errors import UserError
+from ...infra.jit import compiled
 from ..base import TangentialModel
 from .ratio import parse_ratio, ratio_label, ratio_value
 from .state import T_AUX1

@@ -1,6 +1,6 @@
 """Linear tangential spring: dF_t = -k_t V_s dt, k_t = q k_n, capped by Coulomb (docs/laws.md#tangential-laws)."""
 
-from ...jit import compiled
+from ...infra.jit import compiled
 from ..base import TangentialModel
 from .ratio import parse_ratio, ratio_label, ratio_value
 

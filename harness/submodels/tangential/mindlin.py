@@ -1,8 +1,8 @@
 """No-slip Mindlin k_t = 8 G* a in three forms: the paper's eq. 18b (rescale on unloading), incremental (not reduced
 as a falls) and on the total displacement (docs/laws.md#tangential-laws); each form's kernel is a module of its own
 (mindlin_rescale.py, ...)."""
-from ...errors import UserError
-from ...jit import compiled
+from ...infra.errors import UserError
+from ...infra.jit import compiled
 from ..base import TangentialModel
 
 FORMS = {"rescale": "mindlin:rescale", "incremental": "mindlin:incremental", "total": "mindlin:total"}

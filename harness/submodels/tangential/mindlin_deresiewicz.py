@@ -1,7 +1,7 @@
 """Mindlin-Deresiewicz as Thornton & Yin (1991): dT = 8 G* a theta_k dd + (-1)^k mu dN (1 - theta_k)
 (docs/laws.md#tangential-laws)."""
 
-from ...jit import compiled
+from ...infra.jit import compiled
 from .mindlin import Mindlin, stiffness
 from .state import N_TSTATE, T_AUX1, T_AUX2, T_DIR, T_MODE
 

@@ -1,5 +1,5 @@
 """Mindlin k_t = 8 G* a, incremental: the stored force not reduced as a falls (docs/laws.md#tangential-laws)."""
-from ...jit import compiled
+from ...infra.jit import compiled
 from .mindlin import stiffness  # noqa: F401  (its dispatch point: k_t = 8 G a)
 
 NAME = "mindlin:incremental"

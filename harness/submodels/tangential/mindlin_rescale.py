@@ -2,7 +2,7 @@
 (docs/laws.md#tangential-laws)."""
 import math
 
-from ...jit import compiled
+from ...infra.jit import compiled
 from .mindlin import stiffness  # noqa: F401  (its dispatch point: k_t = 8 G a)
 
 NAME = "mindlin:rescale"

@@ -1,5 +1,5 @@
 """Mindlin k_t = 8 G* a on the total tangential displacement: F = -k_t xi (docs/laws.md#tangential-laws)."""
-from ...jit import compiled
+from ...infra.jit import compiled
 from .mindlin import stiffness  # noqa: F401  (its dispatch point: k_t = 8 G a)
 from .state import T_AUX1
 

@@ -1,6 +1,6 @@
 """Mindlin k_t = 8 G a on the total displacement xi, xi rescaled by a/a_old while a falls
 (docs/laws.md#tangential-laws)."""
-from ...jit import compiled
+from ...infra.jit import compiled
 from .mindlin import stiffness  # noqa: F401  (its dispatch point: k_t = 8 G a)
 from .mindlin_total import after_cap  # noqa: F401  (xi = -F/k_t after the cap)
 from .state import T_AUX1

@@ -1,6 +1,6 @@
 """Mindlin k_t = 8 G* a with the stored force rescaled on unloading only: F_s sqrt(delta/delta_old) - k_t dd while
 the overlap falls, F_s - k_t dd otherwise (docs/laws.md#tangential-laws)."""
-from ...jit import compiled
+from ...infra.jit import compiled
 from ..base import TangentialModel
 from .mindlin import stiffness  # noqa: F401  (its dispatch point: k_t = 8 G* a)
 

@@ -1,7 +1,7 @@
 """k_t/k_n of the springs that take a ratio: 'kappa', 'nu', a fraction or a number."""
 from fractions import Fraction
 
-from ...errors import UserError
+from ...infra.errors import UserError
 
 
 def parse_ratio(text):

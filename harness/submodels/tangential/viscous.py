@@ -2,8 +2,8 @@
 'tangential no_history'); needs a tangential-damping rule."""
 import math
 
-from ...errors import UserError
-from ...jit import compiled
+from ...infra.errors import UserError
+from ...infra.jit import compiled
 from ..base import TangentialModel
 
 FORMS = {"linear": "viscous:linear", "mindlin": "viscous:mindlin"}

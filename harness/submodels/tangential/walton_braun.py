@@ -4,7 +4,7 @@ k_t0 [1 - (T* - T)/(mu N + T*)]^1/3 while it falls, T* set at each reversal and 
 w = x^1/3, x = (mu N - d T)/(mu N - d T*), where F_s = -d mu N (1 - (1 - d sigma*) w^3) and F_s' = -k_t0 w V_s."""
 import numpy as np
 
-from ...jit import compiled
+from ...infra.jit import compiled
 from .linear import LinearTangential
 from .ratio import ratio_label
 from .state import N_TSTATE, T_AUX1, T_DIR

@@ -1,5 +1,5 @@
 """Touch rule 'gap': contact from gap 0."""
-from ...jit import compiled
+from ...infra.jit import compiled
 
 NAME = "gap"
 SUMMARY = ("contact from gap 0: a sphere placed touching feels the force of zero overlap before its first step (a "

@@ -1,5 +1,5 @@
 """Touch rule 'overlap': contact from overlap > 0."""
-from ...jit import compiled
+from ...infra.jit import compiled
 
 NAME = "overlap"
 SUMMARY = "contact from overlap > 0: no force before the first step; the first kick is force-free"
