@@ -1,1 +1,1 @@
-"""scenes"""
+"""What is simulated: the scene, its materials and bodies, and the rebound kinematics of an impact."""
