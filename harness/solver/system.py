@@ -43,16 +43,17 @@ def integrate_systems(bodies, pairs, params, ints, gravity, ceiling, dt, steps, 
         touching = np.zeros(n_pairs, dtype=np.int64)
         changed = np.zeros(n_pairs, dtype=np.int64)
         work = np.zeros(2 * N_TSTATE + NORMAL_HISTORY)
+        touched = np.zeros((n_pairs, 2))
         for k in range(n_pairs):
             clear(contacts[k], tangential[k], ints[v, k, L.I_NORMAL])
         integrate_variant(bodies[v], pairs, params[v], ints[v], gravity[v], ceiling[v], dt[v], steps[v], grid,
                           gain_from[v], trace[v], energy[v], events[v], final[v], metrics[v], forces, contacts,
-                          tangential, touching, changed, work, ext)
+                          tangential, touching, changed, touched, work, ext)
 
 
 @compiled
 def integrate_variant(bodies, pairs, p, ints, g, ceiling, h, steps, grid, gain_from, trace, energy, events, final,
-                      metrics, forces, contacts, tangential, touching, changed, work, ext):
+                      metrics, forces, contacts, tangential, touching, changed, touched, work, ext):
     """One variant from its initial state for `steps` steps of h (or to a non-finite state)."""
     ot, scratch, history = work[0:N_TSTATE], work[N_TSTATE:2 * N_TSTATE], work[2 * N_TSTATE:]
     next_time = record(bodies, pairs, p, ints, g, contacts, tangential, touching, grid, 0, 0.0, h, trace, energy)
@@ -62,12 +63,12 @@ def integrate_variant(bodies, pairs, p, ints, g, ceiling, h, steps, grid, gain_f
     done = 0
     for step in range(steps):
         kick_drift(bodies, forces, g, h)
-        collide(bodies, forces, pairs, p, ints, ceiling, h, contacts, tangential, touching, changed, ot, scratch,
-                history, ext)
+        collide(bodies, forces, pairs, p, ints, ceiling, h, contacts, tangential, touching, changed, touched, ot,
+                scratch, history, ext)
         kick(bodies, forces, g, h)
         done = step + 1
         t = done * h
-        n_events = note_events(bodies, pairs, ceiling, changed, t, events, n_events)
+        n_events = note_events(bodies, pairs, ceiling, changed, touched, t, events, n_events)
         if not finite(bodies):
             status = STATUS_NONFINITE
             break
@@ -114,10 +115,11 @@ def kick(bodies, forces, g, h):
 
 
 @njit(cache=True, inline="always")
-def collide(bodies, forces, pairs, p, ints, ceiling, h, contacts, tangential, touching, changed, ot, scratch,
-            history, ext):
+def collide(bodies, forces, pairs, p, ints, ceiling, h, contacts, tangential, touching, changed, touched, ot,
+            scratch, history, ext):
     """Every contact's forces at the drifted positions into `forces` (F_x, F_z, torque per body); a contact
-    created where its overlap turns positive, cleared where it ends (changed: +1, -1, else 0)."""
+    created where its overlap turns positive (its V_n and slip before any of its force acts into `touched`),
+    cleared where it ends (changed: +1, -1, else 0)."""
     for b in range(bodies.shape[0]):
         forces[b, 0] = forces[b, 1] = forces[b, 2] = 0.0
     for k in range(pairs.shape[0]):
@@ -125,9 +127,10 @@ def collide(bodies, forces, pairs, p, ints, ceiling, h, contacts, tangential, to
         alpha, nx, nz = geometry(bodies, i, j, ceiling)
         changed[k] = 0
         if alpha > 0.0:
+            rate, slip = relative_motion(bodies, i, j, nx, nz)
             if touching[k] == 0:
                 touching[k], changed[k] = 1, 1
-            rate, slip = relative_motion(bodies, i, j, nx, nz)
+                touched[k, 0], touched[k, 1] = -rate, slip
             f_n, f_t = contact_forces(contacts[k], tangential[k], ot, p[k], ints[k], h, scratch, history, alpha,
                                       rate, slip, ext)
             fx, fz = f_n * nx + f_t * nz, f_n * nz - f_t * nx
@@ -144,17 +147,21 @@ def collide(bodies, forces, pairs, p, ints, ceiling, h, contacts, tangential, to
 
 
 @njit(cache=True, inline="always")
-def note_events(bodies, pairs, ceiling, changed, t, events, n_events):
-    """Each contact created or cleared this step, with its bodies' relative normal velocity (> 0 parting) and slip
-    at the step's end; events beyond the room kept are counted, not written."""
+def note_events(bodies, pairs, ceiling, changed, touched, t, events, n_events):
+    """Each contact created or cleared this step, with its bodies' relative normal velocity (> 0 parting) and slip:
+    at a touch before the contact's force acts (the half-step velocities), at a parting at the step's end; events
+    beyond the room kept are counted, not written."""
     for k in range(pairs.shape[0]):
         if changed[k] != 0:
-            _, nx, nz = geometry(bodies, pairs[k, 0], pairs[k, 1], ceiling)
-            rate, slip = relative_motion(bodies, pairs[k, 0], pairs[k, 1], nx, nz)
+            v_n, slip = touched[k, 0], touched[k, 1]
+            if changed[k] < 0:
+                _, nx, nz = geometry(bodies, pairs[k, 0], pairs[k, 1], ceiling)
+                rate, slip = relative_motion(bodies, pairs[k, 0], pairs[k, 1], nx, nz)
+                v_n = -rate
             if n_events < events.shape[0]:
                 e = events[n_events]
-                e[E_TIME], e[E_KIND], e[E_CONTACT], e[E_VN], e[E_SLIP] = t, TOUCH if changed[k] > 0 else PART, \
-                    k, -rate, slip
+                e[E_TIME], e[E_CONTACT], e[E_VN], e[E_SLIP] = t, k, v_n, slip
+                e[E_KIND] = TOUCH if changed[k] > 0 else PART
             n_events += 1
     return n_events
 
