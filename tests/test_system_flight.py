@@ -63,3 +63,29 @@ def contact_time(law, radius, e_n, speed):
     contact = contact_properties(radius, None, **GLASS)
     params, _ = contact_row(law, contact, e_n, speed, 0.0, 9.81, 1.0)
     return math.pi * math.sqrt(contact.mass / params[L.NORMAL_LINEAR_K_N])
+
+
+def test_a_contact_starts_afresh_at_each_touch():
+    """A plastic law keeps its largest overlap while in contact: Thornton's second bounce on the wall must rebound as
+    a first impact at the same speed would (a second variant starting there), not on the first bounce's unloading
+    curve (a history not cleared at parting would make it nearly elastic)."""
+    g, radius, speed = 9.81, 1e-3, 1.0
+    law = compose("thornton")
+    t_c = contact_time_of(law, radius, 0.5, speed)
+    dt = t_c / 1000
+    first = Variant((Sphere(radius, z=radius, vz=-speed),), law, mu=0.0, e_n=0.5, speed=speed, dt=dt,
+                    steps=int((2.02 * speed / g + 3.0 * t_c) / dt), gravity=g, **GLASS)
+    bounced = simulate_system([first], [0.0])
+    events = bounced.events[0, :bounced.n_events[0]]
+    assert list(events[:4, E_KIND]) == [TOUCH, PART, TOUCH, PART]
+    again = Variant((Sphere(radius, z=radius, vz=events[2, E_VN]),), law, mu=0.0, e_n=0.5, speed=speed, dt=dt,
+                    steps=int(3.0 * t_c / dt), gravity=g, **GLASS)
+    fresh = simulate_system([again], [0.0])
+    assert events[3, E_VN] == pytest.approx(fresh.events[0, 1, E_VN], rel=1e-3)
+    assert events[3, E_VN] / -events[2, E_VN] < 0.9
+
+
+def contact_time_of(law, radius, e_n, speed):
+    """The law's contact-time estimate (its normal parameters, an input)."""
+    from harness.solver.system_rows import contact_properties
+    return law.normal.parameters(contact_properties(radius, None, **GLASS), e_n, speed).contact_time
