@@ -60,7 +60,8 @@ def contact_properties(r1, r2, E, nu, rho):
 def contact_row(law, contact, e_n, speed, mu, gravity, dt):
     """(params, ints): the kernel row of one contact of `law` at target e_n calibrated at impact speed `speed`:
     the normal block, the dashpot, the tangential kernel and its dashpot (none where mu = 0), the end, Coulomb and
-    touch rules. The lever, slip and stepper columns are the impact steppers' and stay 0."""
+    touch rules. The impact's own columns (incident velocities, step cap, grading, levers, slip form) and the
+    integrator, geometry and stepper codes are the impact steppers' and stay 0."""
     normal = law.normal.parameters(contact, e_n, speed)
     dashpot = law.damping.dashpot(law.normal, contact, e_n, speed, law.end)
     params = np.zeros(L.N_PARAMS)
