@@ -10,7 +10,7 @@ import math
 import numpy as np
 from numba import njit
 
-from ..jit import compiled
+from ..infra.jit import compiled
 from ..submodels.tangential.state import N_TSTATE
 from . import layout as L
 from .dispatch import NORMAL_HISTORY

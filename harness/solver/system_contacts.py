@@ -10,7 +10,7 @@ import math
 
 from numba import njit
 
-from ..jit import compiled
+from ..infra.jit import compiled
 from ..submodels.tangential.state import N_TSTATE, T_AOLD
 from . import layout as L
 from .dispatch import NORMAL_HISTORY, TANGENTIAL_NONE, end_clip, normal_step, tangential_stiffness
