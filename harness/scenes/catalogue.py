@@ -131,7 +131,8 @@ SCENES = {kind.NAME: kind for kind in (
                          low_open=True),
                Parameter("bounces", 5, "-", "number of bounces simulated", kind=int, low=1, high=1000), GRAVITY),
               frozenset({"gravity", "wall"}),
-              (Check("rebound-speed-ratio", "v_(k+1)/v_k, rebound over incident speed of each bounce",
+              (Check("rebound-speed-ratio", "v_(k+1)/v_k, rebound over incident speed of each bounce "
+                                            "(linear spring-dashpot laws)",
                      closed_forms.linear_restitution, 1e-3, False, "Schaefer, Dippel & Wolf 1996"),
                Check("apex-height", "h_k, the height of the k-th apex above the wall", closed_forms.apex_height,
                      1e-3, True, "Newton 1687"))),
