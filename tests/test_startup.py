@@ -41,7 +41,7 @@ def test_help_version_and_a_refused_option_import_no_library_of_the_physics(argv
     assert not [m for m in modules if m.split(".")[0] in HEAVY + ("numpy",)], modules
 
 
-@pytest.mark.parametrize("argv", [["models"], ["engines"], ["run", "--model", "nosuch", "-o", "r.csv"],
+@pytest.mark.parametrize("argv", [["models"], ["scenes"], ["engines"], ["run", "--model", "nosuch", "-o", "r.csv"],
                                   ["compare", "--model", "nosuch"], ["compile", "--laws", "nosuch"]])
 def test_listing_and_an_unknown_law_load_no_kernel_table_or_plot(argv, tmp_path):
     """The laws' names and labels come from their registration table: no compiled kernel (numba), no table
@@ -54,7 +54,8 @@ def test_listing_and_an_unknown_law_load_no_kernel_table_or_plot(argv, tmp_path)
 
 
 @pytest.mark.parametrize("command", ["compare", "run", "cost", "calibrate", "paper", "benchmark", "campaign", "check",
-                                     "baseline", "render", "report", "query", "compile", "models", "engines", "cite"])
+                                     "baseline", "render", "report", "query", "compile", "models", "scenes", "engines",
+                                     "cite"])
 def test_a_commands_help_imports_none_of_its_implementation(command, tmp_path):
     code, modules = imported([command, "--help"], tmp_path)
     assert code == 0

@@ -18,6 +18,7 @@ EXIT_CLOSED_OUTPUT = 128 + signal.SIGPIPE
 COMMANDS = {   # name -> (its module, its summary): the parser lists every command, parsers.MODULE_parser builds the
     #            chosen one's options and harness.commands.MODULE runs it
     "models": ("models", "the laws, their sub-models and the engines that support each"),
+    "scenes": ("scenes", "every scene kind: its parameters, the effects it needs and its closed-form checks"),
     "engines": ("engines", "every engine and build found here (pick one with --engines ENGINE@VERSION)"),
     "run": ("run", "simulate one law over a scene with the reference solver, write a results CSV"),
     "compare": ("compare", "the paper law against each engine and its dialect; tables, results.csv, report.html"),

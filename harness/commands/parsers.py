@@ -27,6 +27,12 @@ def models_parser(sub, describe):
     p.set_defaults(func=runs("models"))
 
 
+def scenes_parser(sub, describe):
+    p = describe(sub, "scenes", "harness scenes --json")
+    p.add_argument("--json", action="store_true", help="one machine-readable list")
+    p.set_defaults(func=runs("scenes"))
+
+
 def engines_parser(sub, describe):
     p = describe(sub, "engines", "harness engines --json")
     p.add_argument("--json", action="store_true", help="one machine-readable list")
