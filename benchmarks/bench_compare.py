@@ -52,11 +52,11 @@ def serial(request, out_dir):
     comparison = Comparison(law, scene, pd.concat(frames, ignore_index=True), failures=failures,
                             attribution=attributions, attribution_rows=rows, sliding=sliding, histories=histories,
                             precision=precision, tolerances=request.tolerances)
-    threads, drawing.THREADS = drawing.THREADS, 1
+    threads, drawing.CORES = drawing.CORES, 1
     try:
         write_report(comparison, out_dir)
     finally:
-        drawing.THREADS = threads
+        drawing.CORES = threads
     return comparison
 
 

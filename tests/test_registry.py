@@ -278,7 +278,7 @@ def test_parameters_named_otherwise_than_the_kernels_slots_are_refused():
 DOUBLED = '''"""Coulomb rule 'doubled' (made up for a test): the spring capped at 2 mu |F_n|, its dashpot below it."""
 import math
 
-from ...jit import compiled
+from ...infra.jit import compiled
 from . import clip
 
 NAME = "doubled"
