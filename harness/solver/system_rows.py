@@ -2,10 +2,10 @@
 from plain numbers and a law the way batch.py packs an impact's, so that the system integrator runs every
 registered law through the same dispatch."""
 import math
-from dataclasses import dataclass
 
 import numpy as np
 
+from ..scenes.scene import Contact
 from ..submodels.registry import check_parameters, code_of, kernel_code, kernel_of
 from ..submodels.tangential_damping import CONE_CODES
 from . import layout as L
@@ -15,37 +15,15 @@ from .dispatch import TANGENTIAL_NONE
 CONTACT_FAMILIES = (("end", "end"), ("coulomb", "coulomb"), ("touch", "touch"))   # (family, the law's field)
 
 
-@dataclass(frozen=True)
-class ContactProperties:
-    """Effective properties of one contact between bodies of one material (E, nu, rho): R* = R1 R2/(R1 + R2),
-    m* = m1 m2/(m1 + m2), I = 2/5 m* R*^2, E* = E/(2 (1 - nu^2)), G* = G/(2 (2 - nu)) (a wall: R2, m2 -> inf)."""
-    radius: float
-    mass: float
-    inertia: float
-    E_star: float
-    G_star: float
-    nu: float
-    rho: float
-    E: float
-
-    @property
-    def kappa(self):
-        """kappa = 4 G*/E*: Mindlin tangential to Hertz normal stiffness."""
-        return 4.0 * self.G_star / self.E_star
-
-    @property
-    def chi(self):
-        """chi = 3.5 (1 - nu)/(2 - nu) for a solid sphere (Maw, Barber & Fawcett 1976)."""
-        return 3.5 * (1.0 - self.nu) / (2.0 - self.nu)
-
-
 def sphere_mass(radius, rho):
     """m = 4/3 pi R^3 rho."""
     return 4.0 / 3.0 * math.pi * radius ** 3 * rho
 
 
 def contact_properties(r1, r2, E, nu, rho):
-    """The contact of spheres of radii r1 and r2 (r2 None: the wall, of the spheres' material)."""
+    """The contact (scenes' Contact) of spheres of radii r1 and r2 of one material (E, nu, rho): R* = R1 R2/(R1 + R2),
+    m* = m1 m2/(m1 + m2), I = 2/5 m* R*^2, E* = E/(2 (1 - nu^2)), G* = G/(2 (2 - nu)) (r2 None: the wall,
+    R2, m2 -> inf)."""
     m1 = sphere_mass(r1, rho)
     if r2 is None:
         radius, mass = r1, m1
@@ -53,7 +31,7 @@ def contact_properties(r1, r2, E, nu, rho):
         m2 = sphere_mass(r2, rho)
         radius, mass = r1 * r2 / (r1 + r2), m1 * m2 / (m1 + m2)
     G = E / (2.0 * (1.0 + nu))
-    return ContactProperties(radius=radius, mass=mass, inertia=0.4 * mass * radius ** 2,
+    return Contact(radius=radius, mass=mass, inertia=0.4 * mass * radius ** 2,
                              E_star=E / (2.0 * (1.0 - nu ** 2)), G_star=G / (2.0 * (2.0 - nu)), nu=nu, rho=rho, E=E)
 
 
