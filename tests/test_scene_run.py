@@ -1,5 +1,6 @@
 """`harness run --scene NAME` on the reference solver: each scene through the command, checks.csv's rows against
-closed forms computed here (Newton's parabola, restitution e_n and e_n^(2k) h0 apex heights, Hertz's static overlap),
+closed forms computed here (Newton's parabola, restitution e_n and e_n^(2k) h0 apex heights, Hertz's static overlap,
+Routh's slip time and rolling speed),
 a check that must fail seen failing, and bad input as one line and exit 2."""
 import dataclasses
 import json
@@ -98,6 +99,24 @@ def test_rest_holds_hertz_static_overlap_and_json_says_so(tmp_path, capfd):
     assert checks.to_dict(orient="records")[0]["value"] == row["value"]
 
 
+def test_slide_to_roll_ends_its_slip_at_routh_s_time_and_speed(tmp_path, capfd):
+    """Backspin w0 = -40 rad/s on a 5 mm sphere sliding at 1 m/s, mu 0.3: slip ends at 2 (v0 - R w0)/(7 mu g) with
+    v = (5 v0 + 2 R w0)/7 (Routh); while it slides, v = v0 - mu g t in the series."""
+    code, lines, checks, series = scene_run(
+        tmp_path, capfd, "--model", "hertz-mindlin", "--scene", "slide-to-roll", "--scene-param", "w0=-40",
+        "--radius", "5e-3", "--mu", "0.3", "--en", "0.5", "--steps-per-contact", "50", *GLASS)
+    assert code == 0, lines
+    t_s, v_f = 2.0 * (1.0 + 5e-3 * 40.0) / (7.0 * 0.3 * G), (5.0 - 2.0 * 5e-3 * 40.0) / 7.0
+    rows = checks.set_index("check")
+    assert rows.loc["slip-end-time", "expected"] == pytest.approx(t_s, rel=1e-12)
+    assert rows.loc["rolling-speed", "expected"] == pytest.approx(v_f, rel=1e-12)
+    assert rows.loc["slip-end-time", "value"] == pytest.approx(t_s, rel=1e-2)
+    assert rows.loc["rolling-speed", "value"] == pytest.approx(v_f, rel=1e-2)
+    assert checks.passed.all()
+    sliding = series[series.t < 0.9 * t_s]
+    assert sliding.vx.to_numpy() == pytest.approx(1.0 - 0.3 * G * sliding.t.to_numpy(), rel=1e-3)
+
+
 def test_a_wrong_closed_form_flips_passed(tmp_path):
     """The same rest run, measured against a closed form 1% off, fails; against the catalogue's, passes."""
     from harness.api.scene_requests import scene_request
@@ -134,6 +153,8 @@ def test_the_python_api_runs_a_scene_as_the_command_does():
     (["--model", "thornton", "--scene", "rest"], "laws with a Hertz or linear normal force; thornton's is thornton"),
     (["--scene", "free-fall", "--scene-param", "height=0.02"], "scene free-fall: the sphere (radius 0.025 m) reaches"),
     (["--scene", "free-fall", "--converged"], "take --steps-per-contact or --dt, not --converged"),
+    (["--scene", "slide-to-roll", "--mu", "0"], "scene slide-to-roll ends its slip by friction: give --mu above 0"),
+    (["--scene", "slide-to-roll", "--scene-param", "w0=40"], "v0 = R w0 (1 m/s) rolls from the start"),
     (["--scene-param", "target=sphere"], "scene impact takes its own options"),
     (["--json"], "--json prints a scene's checks"),
 ])

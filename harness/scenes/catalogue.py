@@ -144,7 +144,7 @@ SCENES = {kind.NAME: kind for kind in (
               (Check("slip-end-time", "t_s, when the contact point stops slipping", closed_forms.slip_end_time,
                      1e-2, True, "Routh 1905"),
                Check("rolling-speed", "v_f, the speed once rolling", closed_forms.rolling_speed, 1e-2, True,
-                     "Routh 1905"))),
+                     "Routh 1905")), RUNS=True),
     SceneKind("rest", "a sphere settled on a wall under gravity and held for a stated number of steps",
               (Parameter("steps", 1_000_000, "-", "steps held at rest after settling", kind=int, low=1, high=10 ** 9),
                GRAVITY),

@@ -250,6 +250,53 @@ def measured_overlap(law, case, values, result):
            f"after {values['steps']} steps held; largest energy gain while held {gain:.3g} J")
 
 
+# slide-to-roll
+
+
+def slide_to_roll(law, values, scene, e_n, resolution):
+    v0, w0, g = values["v0"], values["w0"], values["g"]
+    slip = abs(v0 - scene.radius * w0)
+    if slip == 0.0:
+        raise UserError(f"scene slide-to-roll: v0 = R w0 ({v0:g} m/s) rolls from the start: nothing slides")
+    if scene.mu <= 0.0:
+        raise UserError("scene slide-to-roll ends its slip by friction: give --mu above 0")
+    contact = wall_contact(scene)
+    dt = time_step(law, contact, e_n, scene.speed, resolution)
+    resting = static_overlap(law, contact, e_n, scene.speed, g)
+    sliding = 2.0 * slip / (7.0 * scene.mu * g)                  # Routh's slip time: how long to simulate
+    sphere = Sphere(scene.radius, z=scene.radius - resting, vx=v0, w=w0)
+    return Case(case_name(e_n), variant(law, scene, e_n, scene.speed, dt, 1.5 * sliding, sphere, g), contact, e_n)
+
+
+def slips(case, result):
+    """(recorded times, slip v - R w at each)."""
+    trace = result.trace[0, :, 0]
+    return result.grid, trace[:, 2] - case.variant.spheres[0].radius * trace[:, 4]
+
+
+def measured_slip_end(law, case, values, result):
+    """The slip's zero, extrapolated from the last two recorded times at which it is above 1% of its start (the
+    slip falls linearly while the sphere slides under Coulomb friction)."""
+    t, slip = slips(case, result)
+    sliding = np.flatnonzero(np.abs(slip) > 0.01 * abs(slip[0]))
+    last = sliding[-1] if len(sliding) else 0
+    arguments = dict(v0=values["v0"], w0=values["w0"], radius=case.variant.spheres[0].radius, mu=case.variant.mu,
+                     g=values["g"])
+    if last < 1 or last + 1 >= len(t) or sliding.size != last + 1:
+        yield "", math.nan, arguments, "the slip did not fall once to 1% of its start before the end of the run"
+        return
+    rate = (slip[last - 1] - slip[last]) / (t[last] - t[last - 1])
+    yield ("", float(t[last] + slip[last] / rate), arguments,
+           f"extrapolated to zero slip from the last two of {len(t)} recorded times still slipping")
+
+
+def measured_rolling_speed(law, case, values, result):
+    t, slip = slips(case, result)
+    vx = result.trace[0, -1, 0, 2]
+    yield ("", float(vx), dict(v0=values["v0"], w0=values["w0"], radius=case.variant.spheres[0].radius),
+           f"at the end of the run, t = {t[-1]:.6g} s; slip then {slip[-1]:.3g} m/s")
+
+
 def not_applicable(check, law):
     """Why a check does not apply to the law ('' where it does)."""
     normal, end = law.normal.name, law.end
@@ -267,4 +314,5 @@ SCENES = {   # scene kind: (what builds a case, {check: what measures it})
     "free-fall": (free_fall, {"height": measured_height}),
     "bounce": (bounce, {"rebound-speed-ratio": measured_rebound_ratio, "apex-height": measured_apex}),
     "rest": (rest, {"hertz-static-overlap": measured_overlap, "linear-static-overlap": measured_overlap}),
+    "slide-to-roll": (slide_to_roll, {"slip-end-time": measured_slip_end, "rolling-speed": measured_rolling_speed}),
 }
