@@ -1,6 +1,6 @@
 """`harness run --scene NAME` on the reference solver: each scene through the command, checks.csv's rows against
 closed forms computed here (Newton's parabola, restitution e_n and e_n^(2k) h0 apex heights, Hertz's static overlap,
-Routh's slip time and rolling speed),
+Routh's slip time and rolling speed, a column's i m g + P),
 a check that must fail seen failing, and bad input as one line and exit 2."""
 import dataclasses
 import json
@@ -117,6 +117,22 @@ def test_slide_to_roll_ends_its_slip_at_routh_s_time_and_speed(tmp_path, capfd):
     assert sliding.vx.to_numpy() == pytest.approx(1.0 - 0.3 * G * sliding.t.to_numpy(), rel=1e-3)
 
 
+@pytest.mark.parametrize("model, walls, preload", [("hertz-mindlin", 1, 0.0), ("linear-spring-dashpot", 2, 0.5)])
+def test_a_stack_carries_i_m_g_and_the_preload_below_the_ith_sphere(tmp_path, capfd, model, walls, preload):
+    """Three 5 mm glass spheres in a column: the contact below the i-th from the top carries i m g, plus the top
+    wall's preload P between two walls (statics)."""
+    code, lines, checks, series = scene_run(
+        tmp_path, capfd, "--model", model, "--scene", "stack", "--scene-param", f"walls={walls}",
+        "--scene-param", f"preload={preload}", "--radius", "5e-3", "--en", "0.5", "--steps-per-contact", "50", *GLASS)
+    assert code == 0, lines
+    weight = 4.0 / 3.0 * math.pi * 5e-3 ** 3 * RHO * G
+    expected = [i * weight + preload for i in (1, 2, 3)]
+    assert list(checks.case) == [f"e_n = 0.5, below sphere {i} from the top" for i in (1, 2, 3)]
+    assert checks.expected.to_numpy() == pytest.approx(expected, rel=1e-12)
+    assert checks.value.to_numpy() == pytest.approx(expected, rel=1e-3)
+    assert checks.passed.all() and sorted(set(series.body)) == [0, 1, 2]
+
+
 def test_a_wrong_closed_form_flips_passed(tmp_path):
     """The same rest run, measured against a closed form 1% off, fails; against the catalogue's, passes."""
     from harness.api.scene_requests import scene_request
@@ -142,7 +158,7 @@ def test_the_python_api_runs_a_scene_as_the_command_does():
 
 @pytest.mark.parametrize("args, says", [
     (["--scene", "nope"], "unknown scene 'nope'"),
-    (["--scene", "stack"], "scene stack is described (harness scenes) but no command runs it yet"),
+    (["--scene", "stack", "--scene-param", "preload=1"], "scene stack: preload = 1.0 needs walls = 2"),
     (["--scene", "bounce", "--scene-param", "bounces=abc"], "scene bounce: bounces = 'abc' is not an integer"),
     (["--scene", "bounce", "--scene-param", "bounces=0"], "scene bounce: bounces = 0 is not an integer >= 1"),
     (["--scene", "bounce", "--scene-param", "colour=red"], "scene bounce has no parameter colour"),
@@ -164,6 +180,15 @@ def test_bad_scene_input_is_one_line_and_exit_2(tmp_path, capfd, args, says):
     err = capfd.readouterr().err
     assert code == 2, err
     assert err.startswith("harness: error: ") and says in err and len(err.strip().splitlines()) == 1, err
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_a_scene_no_command_runs_is_one_line_and_exit_2(tmp_path, capfd, monkeypatch):
+    from harness.scenes import catalogue
+    monkeypatch.setitem(catalogue.SCENES, "stack", dataclasses.replace(catalogue.SCENES["stack"], RUNS=False))
+    code = main(["run", "--model", "hertz-mindlin", "--scene", "stack", "-o", str(tmp_path / "out")])
+    err = capfd.readouterr().err
+    assert code == 2 and err == "harness: error: scene stack is described (harness scenes) but no command runs it yet\n"
     assert list(tmp_path.iterdir()) == []
 
 

@@ -12,7 +12,7 @@ from harness.scenes import closed_forms
 from harness.scenes.catalogue import EFFECT_WORDS, EFFECTS_CHOSEN, SCENES, scene_kind
 
 ISSUE_43_SCENES = {"impact", "free-fall", "bounce", "slide-to-roll", "rest", "stack"}
-RUNNING = {"impact", "free-fall", "bounce", "rest", "slide-to-roll"}    # what `harness run --scene` runs
+RUNNING = ISSUE_43_SCENES    # what `harness run --scene` runs
 
 
 def harness(*args):

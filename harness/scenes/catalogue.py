@@ -162,7 +162,7 @@ SCENES = {kind.NAME: kind for kind in (
                GRAVITY),
               frozenset({"gravity", "wall", "pair", "several-contacts", "long-contact"}),
               (Check("contact-force", "F_i, the force in the contact below the i-th sphere from the top",
-                     closed_forms.stack_contact_force, 1e-3, True, "Newton's first law"),)),
+                     closed_forms.stack_contact_force, 1e-3, True, "Newton's first law"),), RUNS=True),
 )}
 
 

@@ -11,7 +11,8 @@ import pandas as pd
 from ..data.results import write_csv
 from ..infra.errors import UserError
 from ..solver.resolution import CONVERGED, FixedTimeStep
-from ..solver.system import E_KIND, E_VN, F_ALPHA, M_GAIN, M_STATUS, PART, STATUS_OK, TOUCH
+from ..solver.system import E_KIND, E_VN, F_ALPHA, F_FN, M_GAIN, M_STATUS, PART, STATUS_OK, TOUCH
+from ..solver.system_contacts import WALL_BELOW
 from ..solver.system_rows import contact_properties
 from ..solver.system_run import Sphere, Variant, simulate_system
 
@@ -208,10 +209,15 @@ def measured_apex(law, case, values, result):
 
 def static_overlap(law, contact, e_n, speed, g):
     """The overlap at which the law's normal force bears the sphere's weight (Hertz or linear normal laws)."""
+    return overlap_under(law, contact, e_n, speed, contact.mass * g)
+
+
+def overlap_under(law, contact, e_n, speed, force):
+    """The overlap at which the law's normal force is `force`: (3 F/(4 E* sqrt(R*)))^(2/3) (Hertz) or F/k_n."""
     if law.normal.name == "hertz":
-        return (3.0 * contact.mass * g / (4.0 * contact.E_star * math.sqrt(contact.radius))) ** (2.0 / 3.0)
+        return (3.0 * force / (4.0 * contact.E_star * math.sqrt(contact.radius))) ** (2.0 / 3.0)
     if law.normal.name == "linear":
-        return contact.mass * g / law.normal.parameters(contact, e_n, speed).values[0]
+        return force / law.normal.parameters(contact, e_n, speed).values[0]
     raise UserError(f"scenes with a resting contact take laws with a Hertz or linear normal force; {law.name}'s is "
                     f"{law.normal.name}")
 
@@ -297,6 +303,46 @@ def measured_rolling_speed(law, case, values, result):
            f"at the end of the run, t = {t[-1]:.6g} s; slip then {slip[-1]:.3g} m/s")
 
 
+# stack
+
+
+def stack(law, values, scene, e_n, resolution):
+    """N spheres set in a column touching, or between a floor and a ceiling placed where the column at rest presses
+    the ceiling with the preload; settled for 4 N times the damping time of one sphere resting on the wall."""
+    if e_n >= 1.0:
+        raise UserError("scene stack settles the column with the law's damping: give --en below 1")
+    n, g, preload, radius = values["spheres"], values["g"], values["preload"], scene.radius
+    wall = wall_contact(scene)
+    pair = contact_properties(radius, radius, scene.E, scene.nu, scene.rho)
+    dt = min(time_step(law, contact, e_n, scene.speed, resolution) for contact in (wall, pair))
+    weight = wall.mass * g
+    ceiling = None
+    spheres = tuple(Sphere(radius, z=radius * (1 + 2 * k)) for k in range(n))
+    if values["walls"] == 2:
+        closing = (overlap_under(law, wall, e_n, scene.speed, preload)
+                   + sum(overlap_under(law, pair, e_n, scene.speed, preload + i * weight) for i in range(1, n))
+                   + overlap_under(law, wall, e_n, scene.speed, preload + n * weight))
+        ceiling = 2 * n * radius - closing
+        spheres = tuple(Sphere(radius, z=radius + k * (ceiling - 2 * radius) / (n - 1)) for k in range(n))
+    one = Case(case_name(e_n), variant(law, scene, e_n, scene.speed, dt, dt, spheres[0], g), wall, e_n)
+    settle = 4 * n * settle_time(law, one, values)
+    column = Variant(spheres, law, E=scene.E, nu=scene.nu, rho=scene.rho, mu=scene.mu, e_n=e_n, speed=scene.speed,
+                     dt=dt, steps=math.ceil(settle / dt), gravity=g, ceiling=ceiling)
+    return Case(case_name(e_n), column, wall, e_n)
+
+
+def measured_contact_forces(law, case, values, result):
+    """The normal force at the end in the contact below each sphere, counted from the top."""
+    n = values["spheres"]
+    rows = {tuple(pair): k for k, pair in enumerate(result.pairs.tolist())}
+    for i in range(1, n + 1):
+        below = n - i                                      # the sphere's index from the bottom
+        contact = (0, WALL_BELOW) if below == 0 else (below - 1, below)
+        yield (f", below sphere {i} from the top", float(result.final[0, rows[contact], F_FN]),
+               dict(i=i, mass=case.contact.mass, g=values["g"], preload=values["preload"]),
+               f"after {case.variant.steps} steps settling")
+
+
 def not_applicable(check, law):
     """Why a check does not apply to the law ('' where it does)."""
     normal, end = law.normal.name, law.end
@@ -315,4 +361,5 @@ SCENES = {   # scene kind: (what builds a case, {check: what measures it})
     "bounce": (bounce, {"rebound-speed-ratio": measured_rebound_ratio, "apex-height": measured_apex}),
     "rest": (rest, {"hertz-static-overlap": measured_overlap, "linear-static-overlap": measured_overlap}),
     "slide-to-roll": (slide_to_roll, {"slip-end-time": measured_slip_end, "rolling-speed": measured_rolling_speed}),
+    "stack": (stack, {"contact-force": measured_contact_forces}),
 }
