@@ -154,6 +154,7 @@ def test_the_python_api_runs_a_scene_as_the_command_does():
                        en=[0.5], radius=0.01)
     assert done.checks.passed.tolist() == [True]
     assert done.series.z.iloc[-1] == pytest.approx(0.5 - 0.5 * G * 0.05 ** 2, rel=1e-9)
+    assert repr(done) == "SceneRun(free-fall: 1 of 1 checks passed; .series 201 rows, .checks)"
 
 
 @pytest.mark.parametrize("args, says", [

@@ -32,6 +32,11 @@ class SceneRun:
     checks: pd.DataFrame
     skipped: dict
 
+    def __repr__(self):
+        passed = int(self.checks.passed.sum())
+        return (f"SceneRun({self.scene}: {passed} of {len(self.checks)} checks passed; "
+                f".series {len(self.series)} rows, .checks)")
+
 
 @dataclass(frozen=True)
 class Case:
