@@ -21,11 +21,14 @@ from ..views.html import rebuild
 from ..views.progress import Progress
 from ..views.terminal import print_comparison, print_summary, verdict_line
 from ..infra import strict_json
+from ..infra.errors import UserError
 from .options import EXIT_DISAGREE, EXIT_ENGINE, EXIT_OK, check_results_directory, check_store, keywords
 
 
 def main(args):
     """Write DIR/results.csv (after every batch), the other tables and report.html; the exit code is the verdict."""
+    if args.scene != "impact" or args.scene_params:
+        refuse_scene(args)
     request = Request.from_keywords(args.model, tolerances=args.tolerances, **keywords(args))
     check_results_directory(args.output)
     check_store(args.store)
@@ -73,6 +76,20 @@ def main(args):
         print_summary(record, comparison, [results_path, report])
     print(verdict_line(record, reference_only))
     return code
+
+
+def refuse_scene(args):
+    """compare runs the impact scene alone: a scene kind other than impact is one line saying what runs it."""
+    from ..api.scene_requests import runnable_kind
+    if args.scene == "impact":
+        raise UserError("scene impact takes its own options (--target, --en, --angles, ...), not --scene-param")
+    runnable_kind(args.scene)
+    engines = keywords(args).get("engines")
+    if engines is None or set(engines) != {"reference"}:
+        raise UserError(f"engines do not run scenes yet: `harness run --scene {args.scene}` runs it on the "
+                        "reference solver")
+    raise UserError(f"compare runs the impact scene: `harness run --scene {args.scene}` runs it on the reference "
+                    "solver")
 
 
 def command_line():

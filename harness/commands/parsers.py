@@ -42,17 +42,28 @@ def engines_parser(sub, describe):
 def run_parser(sub, describe):
     p = describe(sub, "run", "harness run --model thornton --en 0.9,0.5,0.1 --angles 0:80:10 -o results.csv")
     p.add_argument("--model", required=True, type=law_name, help="law name (see `harness models`)")
+    add_scene_kind(p)
     add_engine_input(p)
     add_scene_options(p)
-    p.add_argument("-o", "--output", required=True, help="results CSV to write")
-    add_output_options(p)
+    p.add_argument("-o", "--output", required=True,
+                   help="results CSV to write (scene impact), or the directory for series.csv and checks.csv")
+    add_output_options(p, json=True)
     p.set_defaults(func=runs("run"))
+
+
+def add_scene_kind(parser):
+    """--scene NAME and its repeatable --scene-param KEY=VALUE (harness scenes lists both)."""
+    parser.add_argument("--scene", default="impact", metavar="NAME",
+                        help="scene kind (see `harness scenes`; default impact, the paper's one collision)")
+    parser.add_argument("--scene-param", dest="scene_params", action="append", default=[], metavar="KEY=VALUE",
+                        help="one of the scene's parameters, repeatable (e.g. --scene-param bounces=3)")
 
 
 def compare_parser(sub, describe):
     p = describe(sub, "compare",
                  "harness compare --model hertz-mindlin --engines liggghts --en 0.5 --require paper -o out/")
     p.add_argument("--model", required=True, type=law_name, help="law name (see `harness models`)")
+    add_scene_kind(p)
     add_engine_options(p)
     add_scene_options(p)
     p.add_argument("-o", "--output", default="harness-out", metavar="DIR",

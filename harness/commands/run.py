@@ -1,9 +1,17 @@
-"""`harness run`: one law over a scene on the reference solver; a results CSV."""
+"""`harness run`: one law over a scene on the reference solver; a results CSV (impact) or a scene's series and
+closed-form checks."""
+from ..infra.errors import UserError
 from ..infra.wording import counted
-from .options import EXIT_OK, check_output_file, keywords
+from .options import EXIT_DISAGREE, EXIT_OK, check_output_directory, check_output_file, keywords
 
 
 def main(args):
+    if args.scene != "impact":
+        return main_scene(args)
+    if args.scene_params:
+        raise UserError("scene impact takes its own options (--target, --en, --angles, ...), not --scene-param")
+    if args.json:
+        raise UserError("--json prints a scene's checks: give --scene and a scene other than impact")
     from ..api.requests import run_request
     from ..runs.request import Request
     from ..data.results import write_csv
@@ -16,3 +24,26 @@ def main(args):
     bad = int((frame.status != "ok").sum())
     print(f"{request.law.name}: {counted(len(frame), 'impact')} -> {args.output}" + (f" ({bad} not ok)" if bad else ""))
     return EXIT_OK
+
+
+def main_scene(args):
+    """A scene other than impact: series.csv and checks.csv in the output directory, one line per check."""
+    from ..api.scene_requests import parameters_from_text, runnable_kind, scene_request
+    from ..studies.scenes import run_scene, write_scene
+    from ..views.scene_terminal import check_lines, checks_json
+    kind = runnable_kind(args.scene)
+    request, kind, values = scene_request(args.model, args.scene, parameters_from_text(kind, args.scene_params),
+                                          **keywords(args))
+    check_output_directory(args.output)
+    run = run_scene(request.law, kind, values, request.scene, request.resolution)
+    write_scene(args.output, run)
+    failed = int((~run.checks.passed).sum())
+    if args.json:
+        print(checks_json(run))
+    else:
+        for line in check_lines(run):
+            if not args.quiet:
+                print(line)
+        print(f"{request.law.name} on scene {kind.NAME}: {len(run.checks) - failed} of "
+              f"{counted(len(run.checks), 'check')} passed -> {args.output}")
+    return EXIT_DISAGREE if failed else EXIT_OK

@@ -1,0 +1,370 @@
+"""A scene kind on the reference solver: the law, the kind's parameter values and the sphere's material become the
+small-system integrator's variants (one per target e_n), and its run becomes a time series and the kind's
+closed-form checks (measured value, expected value, error, tolerance, passed)."""
+import math
+import os
+from dataclasses import dataclass
+
+import numpy as np
+import pandas as pd
+
+from ..data.results import write_csv
+from ..infra.errors import UserError
+from ..solver.resolution import CONVERGED, FixedTimeStep
+from ..solver.system import E_KIND, E_VN, F_ALPHA, F_FN, M_GAIN, M_STATUS, PART, STATUS_OK, TOUCH
+from ..solver.system_contacts import WALL_BELOW
+from ..solver.system_rows import contact_properties
+from ..solver.system_run import Sphere, Variant, simulate_system
+
+CHECK_COLUMNS = ("check", "engine", "case", "quantity", "value", "expected", "error", "tolerance", "passed", "note")
+SERIES_COLUMNS = ("case", "t", "body", "x", "z", "vx", "vz", "w")
+RECORDED = 201                      # times of the series, evenly spaced steps from 0 to the end of the run
+SETTLED = 1e-9                      # what is left of the first oscillation's amplitude when a resting sphere is held
+ENGINE = "reference"
+
+
+@dataclass(frozen=True)
+class SceneRun:
+    """A scene's run: its `series` (one row per case, recorded time and body) and its `checks` (CHECK_COLUMNS), and
+    the checks that do not apply to the law with the reason (`skipped`, {check: reason})."""
+    scene: str
+    series: pd.DataFrame
+    checks: pd.DataFrame
+    skipped: dict
+
+    def __repr__(self):
+        passed = int(self.checks.passed.sum())
+        return (f"SceneRun({self.scene}: {passed} of {len(self.checks)} checks passed; "
+                f".series {len(self.series)} rows, .checks)")
+
+
+@dataclass(frozen=True)
+class Case:
+    """One variant of a scene and what its checks need beside the result: its name, the variant, the contact with
+    the wall (harness.solver.system_rows.ContactProperties) and the target e_n."""
+    name: str
+    variant: Variant
+    contact: object
+    e_n: float
+
+
+def run_scene(law, kind, values, scene, resolution):
+    """The SceneRun of the scene `kind` (harness.scenes.catalogue) with parameter `values` for `law` on the sphere
+    and wall of `scene` (harness.scenes.scene.Scene: radius, E, nu, rho, mu, e_n, speed) at `resolution`."""
+    if scene.wall != "same":
+        raise UserError(f"scene {kind.NAME} puts the sphere on a wall of its own material: give --wall same")
+    build, measures = SCENES[kind.NAME]
+    cases = [build(law, values, scene, e_n, resolution) for e_n in scene.e_n]
+    series, rows, skipped = [], [], {}
+    for case in cases:
+        grid = case.variant.dt * np.unique(np.round(np.linspace(0, case.variant.steps, RECORDED)))
+        gain_from = settle_time(law, case, values) if kind.NAME == "rest" else 0.0
+        result = simulate_system([case.variant], grid, gain_from=gain_from, kept_events=kept_events(values))
+        if result.metrics[0, M_STATUS] != STATUS_OK:
+            raise UserError(f"scene {kind.NAME}, {case.name}: the state became non-finite (a time step too long "
+                            "for the law?): give a larger --steps-per-contact")
+        series.append(series_rows(case.name, grid, result.trace[0]))
+        for check in kind.CHECKS:
+            reason = not_applicable(check.name, law)
+            if reason:
+                skipped[check.name] = reason
+                continue
+            for label, value, arguments, note in measures[check.name](law, case, values, result):
+                rows.append(check_row(check, f"{case.name}{label}", value, arguments, note))
+    return SceneRun(kind.NAME, pd.concat(series, ignore_index=True), pd.DataFrame(rows, columns=CHECK_COLUMNS),
+                    skipped)
+
+
+def check_row(check, case, value, arguments, note):
+    """One row of checks.csv: the measured value against the check's closed form at `arguments`."""
+    expected = check.closed_form(**arguments)
+    error = abs(value - expected) / abs(expected) if check.relative else abs(value - expected)
+    passed = bool(np.isfinite(error) and error <= check.tolerance)
+    return dict(check=check.name, engine=ENGINE, case=case, quantity=check.quantity, value=value, expected=expected,
+                error=error, tolerance=check.tolerance, passed=passed, note=note)
+
+
+def series_rows(case, grid, trace):
+    """The series of one case: each recorded time and body with x, z, vx, vz, w."""
+    n_times, n_bodies, _ = trace.shape
+    frame = pd.DataFrame(trace.reshape(n_times * n_bodies, -1), columns=["x", "z", "vx", "vz", "w"])
+    frame.insert(0, "body", np.tile(np.arange(n_bodies), n_times))
+    frame.insert(0, "t", np.repeat(grid, n_bodies))
+    frame.insert(0, "case", case)
+    return frame
+
+
+def write_scene(directory, run):
+    """series.csv and checks.csv in `directory` (created if missing), each written whole or not at all."""
+    os.makedirs(directory, exist_ok=True)
+    write_csv(run.series, os.path.join(directory, "series.csv"))
+    write_csv(run.checks, os.path.join(directory, "checks.csv"))
+
+
+def kept_events(values):
+    """Room for every touch and parting of the bounces asked for."""
+    return max(256, 2 * values.get("bounces", 0) + 8)
+
+
+def time_step(law, contact, e_n, speed, resolution):
+    """--dt, or the law's contact-time estimate at the calibration speed over --steps-per-contact."""
+    if resolution == CONVERGED:
+        raise UserError("scenes other than impact take --steps-per-contact or --dt, not --converged")
+    if isinstance(resolution, FixedTimeStep):
+        return resolution.seconds
+    return law.normal.parameters(contact, e_n, speed).contact_time / resolution
+
+
+def variant(law, scene, e_n, speed, dt, duration, sphere, gravity):
+    """A one-sphere variant of the scene's material and friction, `duration` long at step `dt`."""
+    return Variant((sphere,), law, E=scene.E, nu=scene.nu, rho=scene.rho, mu=scene.mu, e_n=e_n, speed=speed, dt=dt,
+                   steps=max(1, math.ceil(duration / dt)), gravity=gravity)
+
+
+def wall_contact(scene):
+    return contact_properties(scene.radius, None, scene.E, scene.nu, scene.rho)
+
+
+def case_name(e_n):
+    return f"e_n = {e_n:g}"
+
+
+# free fall
+
+
+def free_fall(law, values, scene, e_n, resolution):
+    contact = wall_contact(scene)
+    z0, v0, g, duration = values["height"], values["v0"], values["g"], values["duration"]
+    t_top = min(max(v0 / g, 0.0), duration)
+    lowest = min(z0 + v0 * t - 0.5 * g * t * t for t in (0.0, t_top, duration))
+    if lowest <= scene.radius:
+        raise UserError(f"scene free-fall: the sphere (radius {scene.radius:g} m) reaches the wall within "
+                        f"{duration:g} s from height {z0:g} m: raise height or shorten duration")
+    dt = time_step(law, contact, e_n, scene.speed, resolution)
+    steps = max(1, math.ceil(duration / dt))
+    dt = duration / steps
+    sphere = Sphere(scene.radius, z=z0, vz=v0)
+    return Case(case_name(e_n), variant(law, scene, e_n, scene.speed, dt, duration, sphere, g), contact, e_n)
+
+
+def measured_height(law, case, values, result):
+    """The height at the recorded time where it is farthest from the parabola."""
+    t = result.grid
+    z = result.trace[0, :, 0, 1]
+    expected = values["height"] + values["v0"] * t - 0.5 * values["g"] * t * t
+    worst = int(np.argmax(np.abs(z - expected) / np.abs(expected)))
+    yield (f", t = {t[worst]:g} s", float(z[worst]), dict(z0=values["height"], v0=values["v0"], g=values["g"],
+                                                            t=float(t[worst])),
+           f"the largest relative error of {len(t)} recorded times")
+
+
+# bounce
+
+
+def bounce(law, values, scene, e_n, resolution):
+    contact = wall_contact(scene)
+    h, g, n = values["height"], values["g"], values["bounces"]
+    speed = math.sqrt(2.0 * g * h)
+    dt = time_step(law, contact, e_n, speed, resolution)
+    t_c = law.normal.parameters(contact, e_n, speed).contact_time
+    flights = sum(2.0 * e_n ** k * speed / g for k in range(1, n))
+    duration = math.sqrt(2.0 * h / g) + flights + 1.5 * n * t_c + 0.5 * e_n ** n * speed / g
+    sphere = Sphere(scene.radius, z=scene.radius + h)
+    return Case(case_name(e_n), variant(law, scene, e_n, speed, dt, duration, sphere, g), contact, e_n)
+
+
+def bounces_of(result, n):
+    """[(incident speed, rebound speed)] of each bounce, from the touch and parting events in order."""
+    events = result.events[0, :result.n_events[0]]
+    kinds, speeds = events[:, E_KIND], events[:, E_VN]
+    pairs = [(-speeds[k], speeds[k + 1]) for k in range(len(kinds) - 1) if kinds[k] == TOUCH and kinds[k + 1] == PART]
+    return pairs[:n]
+
+
+def missing(n, found):
+    return f"only {found} of {n} bounces parted from the wall"
+
+
+def measured_rebound_ratio(law, case, values, result):
+    """Each bounce's rebound speed over its incident speed, against the linear spring-dashpot's restitution."""
+    n = values["bounces"]
+    pairs = bounces_of(result, n)
+    k_n = law.normal.parameters(case.contact, case.e_n, case.variant.speed).values[0]
+    c_n = law.damping.dashpot(law.normal, case.contact, case.e_n, case.variant.speed, law.end).c0
+    arguments = dict(mass=case.contact.mass, k_n=k_n, c_n=c_n)
+    for k in range(n):
+        value = pairs[k][1] / pairs[k][0] if k < len(pairs) else math.nan
+        yield (f", bounce {k + 1}", value, arguments,
+               f"incident {pairs[k][0]:.6g} m/s" if k < len(pairs) else missing(n, len(pairs)))
+
+
+def measured_apex(law, case, values, result):
+    """Each apex's height above the wall, v^2/(2 g) of the parting speed (flight under gravity alone)."""
+    n, g = values["bounces"], values["g"]
+    pairs = bounces_of(result, n)
+    for k in range(n):
+        value = pairs[k][1] ** 2 / (2.0 * g) if k < len(pairs) else math.nan
+        yield (f", apex {k + 1}", value, dict(h0=values["height"], e_n=case.e_n, k=k + 1),
+               "from the parting speed; the closed form takes a restitution that does not change with speed"
+               if k < len(pairs) else missing(n, len(pairs)))
+
+
+# rest
+
+
+def static_overlap(law, contact, e_n, speed, g):
+    """The overlap at which the law's normal force bears the sphere's weight (Hertz or linear normal laws)."""
+    return overlap_under(law, contact, e_n, speed, contact.mass * g)
+
+
+def overlap_under(law, contact, e_n, speed, force):
+    """The overlap at which the law's normal force is `force`: (3 F/(4 E* sqrt(R*)))^(2/3) (Hertz) or F/k_n."""
+    if law.normal.name == "hertz":
+        return (3.0 * force / (4.0 * contact.E_star * math.sqrt(contact.radius))) ** (2.0 / 3.0)
+    if law.normal.name == "linear":
+        return force / law.normal.parameters(contact, e_n, speed).values[0]
+    raise UserError(f"scenes with a resting contact take laws with a Hertz or linear normal force; {law.name}'s is "
+                    f"{law.normal.name}")
+
+
+def settle_time(law, case, values):
+    """Half periods of the resting oscillation (stiffness linearised at the static overlap) for the dashpot to damp
+    it to SETTLED of its first amplitude: ln(SETTLED)/ln(e_n) of them."""
+    contact, g = case.contact, values["g"]
+    delta = static_overlap(law, contact, case.e_n, case.variant.speed, g)
+    stiffness = (1.5 if law.normal.name == "hertz" else 1.0) * contact.mass * g / delta
+    half_period = math.pi * math.sqrt(contact.mass / stiffness)
+    return math.ceil(math.log(SETTLED) / math.log(case.e_n)) * half_period
+
+
+def rest(law, values, scene, e_n, resolution):
+    if e_n >= 1.0:
+        raise UserError("scene rest settles the sphere with the law's damping: give --en below 1")
+    contact = wall_contact(scene)
+    dt = time_step(law, contact, e_n, scene.speed, resolution)
+    sphere = Sphere(scene.radius, z=scene.radius)
+    case = Case(case_name(e_n), variant(law, scene, e_n, scene.speed, dt, 0.0, sphere, values["g"]), contact, e_n)
+    settle = math.ceil(settle_time(law, case, values) / dt)
+    held = Variant(case.variant.spheres, law, E=scene.E, nu=scene.nu, rho=scene.rho, mu=scene.mu, e_n=e_n,
+                   speed=scene.speed, dt=dt, steps=settle + values["steps"], gravity=values["g"])
+    return Case(case.name, held, contact, e_n)
+
+
+def measured_overlap(law, case, values, result):
+    gain = result.metrics[0, M_GAIN]
+    arguments = dict(mass=case.contact.mass, g=values["g"])
+    if law.normal.name == "hertz":
+        arguments.update(E_star=case.contact.E_star, R_star=case.contact.radius)
+    else:
+        arguments.update(k_n=law.normal.parameters(case.contact, case.e_n, case.variant.speed).values[0])
+    yield ("", float(result.final[0, 0, F_ALPHA]), arguments,
+           f"after {values['steps']} steps held; largest energy gain while held {gain:.3g} J")
+
+
+# slide-to-roll
+
+
+def slide_to_roll(law, values, scene, e_n, resolution):
+    v0, w0, g = values["v0"], values["w0"], values["g"]
+    slip = abs(v0 - scene.radius * w0)
+    if slip == 0.0:
+        raise UserError(f"scene slide-to-roll: v0 = R w0 ({v0:g} m/s) rolls from the start: nothing slides")
+    if scene.mu <= 0.0:
+        raise UserError("scene slide-to-roll ends its slip by friction: give --mu above 0")
+    contact = wall_contact(scene)
+    dt = time_step(law, contact, e_n, scene.speed, resolution)
+    resting = static_overlap(law, contact, e_n, scene.speed, g)
+    sliding = 2.0 * slip / (7.0 * scene.mu * g)                  # Routh's slip time: how long to simulate
+    sphere = Sphere(scene.radius, z=scene.radius - resting, vx=v0, w=w0)
+    return Case(case_name(e_n), variant(law, scene, e_n, scene.speed, dt, 1.5 * sliding, sphere, g), contact, e_n)
+
+
+def slips(case, result):
+    """(recorded times, slip v - R w at each)."""
+    trace = result.trace[0, :, 0]
+    return result.grid, trace[:, 2] - case.variant.spheres[0].radius * trace[:, 4]
+
+
+def measured_slip_end(law, case, values, result):
+    """The slip's zero, extrapolated from the last two recorded times at which it is above 1% of its start (the
+    slip falls linearly while the sphere slides under Coulomb friction)."""
+    t, slip = slips(case, result)
+    sliding = np.flatnonzero(np.abs(slip) > 0.01 * abs(slip[0]))
+    last = sliding[-1] if len(sliding) else 0
+    arguments = dict(v0=values["v0"], w0=values["w0"], radius=case.variant.spheres[0].radius, mu=case.variant.mu,
+                     g=values["g"])
+    if last < 1 or last + 1 >= len(t) or sliding.size != last + 1:
+        yield "", math.nan, arguments, "the slip did not fall once to 1% of its start before the end of the run"
+        return
+    rate = (slip[last - 1] - slip[last]) / (t[last] - t[last - 1])
+    yield ("", float(t[last] + slip[last] / rate), arguments,
+           f"extrapolated to zero slip from the last two of {len(t)} recorded times still slipping")
+
+
+def measured_rolling_speed(law, case, values, result):
+    t, slip = slips(case, result)
+    vx = result.trace[0, -1, 0, 2]
+    yield ("", float(vx), dict(v0=values["v0"], w0=values["w0"], radius=case.variant.spheres[0].radius),
+           f"at the end of the run, t = {t[-1]:.6g} s; slip then {slip[-1]:.3g} m/s")
+
+
+# stack
+
+
+def stack(law, values, scene, e_n, resolution):
+    """N spheres set in a column touching, or between a floor and a ceiling placed where the column at rest presses
+    the ceiling with the preload; settled for 4 N times the damping time of one sphere resting on the wall."""
+    if e_n >= 1.0:
+        raise UserError("scene stack settles the column with the law's damping: give --en below 1")
+    n, g, preload, radius = values["spheres"], values["g"], values["preload"], scene.radius
+    wall = wall_contact(scene)
+    pair = contact_properties(radius, radius, scene.E, scene.nu, scene.rho)
+    dt = min(time_step(law, contact, e_n, scene.speed, resolution) for contact in (wall, pair))
+    weight = wall.mass * g
+    ceiling = None
+    spheres = tuple(Sphere(radius, z=radius * (1 + 2 * k)) for k in range(n))
+    if values["walls"] == 2:
+        closing = (overlap_under(law, wall, e_n, scene.speed, preload)
+                   + sum(overlap_under(law, pair, e_n, scene.speed, preload + i * weight) for i in range(1, n))
+                   + overlap_under(law, wall, e_n, scene.speed, preload + n * weight))
+        ceiling = 2 * n * radius - closing
+        spheres = tuple(Sphere(radius, z=radius + k * (ceiling - 2 * radius) / (n - 1)) for k in range(n))
+    one = Case(case_name(e_n), variant(law, scene, e_n, scene.speed, dt, dt, spheres[0], g), wall, e_n)
+    settle = 4 * n * settle_time(law, one, values)
+    column = Variant(spheres, law, E=scene.E, nu=scene.nu, rho=scene.rho, mu=scene.mu, e_n=e_n, speed=scene.speed,
+                     dt=dt, steps=math.ceil(settle / dt), gravity=g, ceiling=ceiling)
+    return Case(case_name(e_n), column, wall, e_n)
+
+
+def measured_contact_forces(law, case, values, result):
+    """The normal force at the end in the contact below each sphere, counted from the top."""
+    n = values["spheres"]
+    rows = {tuple(pair): k for k, pair in enumerate(result.pairs.tolist())}
+    for i in range(1, n + 1):
+        below = n - i                                      # the sphere's index from the bottom
+        contact = (0, WALL_BELOW) if below == 0 else (below - 1, below)
+        yield (f", below sphere {i} from the top", float(result.final[0, rows[contact], F_FN]),
+               dict(i=i, mass=case.contact.mass, g=values["g"], preload=values["preload"]),
+               f"after {case.variant.steps} steps settling")
+
+
+def not_applicable(check, law):
+    """Why a check does not apply to the law ('' where it does)."""
+    normal, end = law.normal.name, law.end
+    if check == "rebound-speed-ratio" and (normal != "linear" or end != "tension"):
+        return ("its closed form is a linear spring-dashpot's whose contact ends at zero overlap "
+                f"({law.name}: normal {normal}, end {end}; --with end=tension)")
+    if check == "hertz-static-overlap" and normal != "hertz":
+        return f"{law.name}'s normal force is {normal}, not Hertz"
+    if check == "linear-static-overlap" and normal != "linear":
+        return f"{law.name}'s normal force is {normal}, not linear"
+    return ""
+
+
+SCENES = {   # scene kind: (what builds a case, {check: what measures it})
+    "free-fall": (free_fall, {"height": measured_height}),
+    "bounce": (bounce, {"rebound-speed-ratio": measured_rebound_ratio, "apex-height": measured_apex}),
+    "rest": (rest, {"hertz-static-overlap": measured_overlap, "linear-static-overlap": measured_overlap}),
+    "slide-to-roll": (slide_to_roll, {"slip-end-time": measured_slip_end, "rolling-speed": measured_rolling_speed}),
+    "stack": (stack, {"contact-force": measured_contact_forces}),
+}
