@@ -41,7 +41,7 @@ class SceneRun:
 @dataclass(frozen=True)
 class Case:
     """One variant of a scene and what its checks need beside the result: its name, the variant, the contact with
-    the wall (harness.solver.system_rows.ContactProperties) and the target e_n."""
+    the wall (harness.scenes.scene.Contact) and the target e_n."""
     name: str
     variant: Variant
     contact: object
@@ -195,7 +195,14 @@ def measured_rebound_ratio(law, case, values, result):
     for k in range(n):
         value = pairs[k][1] / pairs[k][0] if k < len(pairs) else math.nan
         yield (f", bounce {k + 1}", value, arguments,
-               f"incident {pairs[k][0]:.6g} m/s" if k < len(pairs) else missing(n, len(pairs)))
+               f"incident {pairs[k][0]:.6g} m/s; {gravity_share(law, case, values, pairs[k][0])}"
+               if k < len(pairs) else missing(n, len(pairs)))
+
+
+def gravity_share(law, case, values, incident):
+    """g t_c / v: gravity's impulse during the contact over the incident momentum, which the closed forms leave out."""
+    t_c = law.normal.parameters(case.contact, case.e_n, incident).contact_time
+    return f"gravity during contact, left out of the closed form: g t_c / v = {values['g'] * t_c / incident:.2g}"
 
 
 def measured_apex(law, case, values, result):
@@ -205,8 +212,8 @@ def measured_apex(law, case, values, result):
     for k in range(n):
         value = pairs[k][1] ** 2 / (2.0 * g) if k < len(pairs) else math.nan
         yield (f", apex {k + 1}", value, dict(h0=values["height"], e_n=case.e_n, k=k + 1),
-               "from the parting speed; the closed form takes a restitution that does not change with speed"
-               if k < len(pairs) else missing(n, len(pairs)))
+               "from the parting speed; the closed form takes a restitution that does not change with speed; "
+               + gravity_share(law, case, values, pairs[k][0]) if k < len(pairs) else missing(n, len(pairs)))
 
 
 # rest
