@@ -26,7 +26,7 @@ from harness.runs.comparison import Comparison
 from harness.engines import ENGINES
 from harness.engines.yade.dialect import dialect as yade_dialect
 from harness.engines.yade.precision import HIGH, available
-from harness.runs.plan import Run
+from harness.engines.run import Run
 from harness.runs.outputs import save_comparison
 from harness.runs.plan import compare_plan
 from harness.runs.request import Request

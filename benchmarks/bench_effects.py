@@ -13,7 +13,8 @@ import numpy as np
 from harness.engines import ENGINES, EXTERNAL
 from harness.runs.execute import execute
 from harness.laws import compose
-from harness.runs.plan import engine_runs, run_spec
+from harness.solver.resolution import run_spec
+from harness.runs.plan import engine_runs
 from harness.scenes.scene import DEFAULT_ANGLES, Scene
 from harness.solver import codes as C
 from harness.solver.batch import batch_of

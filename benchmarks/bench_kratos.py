@@ -17,7 +17,7 @@ import numpy as np
 
 from harness.engines import ENGINES
 from harness.laws import compose
-from harness.runs.plan import RunSpec
+from harness.solver.resolution import RunSpec
 from harness.solver.simulate import batch_at
 from harness.scenes.scene import Scene
 

@@ -11,7 +11,7 @@ from harness.infra.jit import python_twin
 from harness.laws import compose
 from harness.laws.law import replace_submodels
 from harness.scenes.scene import Scene
-from harness.runs.plan import FixedTimeStep, run_spec
+from harness.solver.resolution import FixedTimeStep, run_spec
 from harness.solver.simulate import simulate
 from harness.submodels import calibration as cal
 from harness.submodels.coulomb import total_cases

@@ -13,7 +13,7 @@ from harness.engines import liggghts
 from harness.infra.errors import UserError
 from harness.laws import LAWS, compose
 from harness.scenes.scene import Scene
-from harness.runs.plan import FixedTimeStep, run_spec
+from harness.solver.resolution import FixedTimeStep, run_spec
 from harness.solver.simulate import simulate
 
 

@@ -14,7 +14,8 @@ from ..infra.errors import UserError
 from ..runs.availability import options_for, statuses
 from ..runs.execute import execute, run_all
 from ..runs.outputs import arithmetic_of
-from ..runs.plan import CONVERGED, compare_plan, reference_runs, specs_of, target_of
+from ..solver.resolution import CONVERGED
+from ..runs.plan import compare_plan, reference_runs, specs_of, target_of
 from ..studies.sliding_search import sliding_thresholds
 from ..solver.simulate import simulate
 from ..solver.two_spheres import with_bodies

@@ -1,5 +1,5 @@
 """The finished runs of an unfinished compare, kept in DIR/.partial/ as one table per run named by the run's key (a
-hash of everything that determines its result: harness.runs.plan.Run.key), so that the next compare into DIR reruns only
+hash of everything that determines its result: engines/run.py's Run.key), so that the next compare into DIR reruns only
 what is missing. A finished compare removes them."""
 import os
 import shutil

@@ -4,8 +4,8 @@ result; its spec is what an engine is told (time step, step cap, impacts, output
 (engines/run.py). compare, cost, check and the hard-case tests all execute plans (execute.py)."""
 from dataclasses import replace
 
-from ..solver.resolution import CONVERGED, MAX_STEPS_PER_CONTACT, FixedTimeStep, RunSpec, joined, run_spec  # noqa: F401
-from ..engines.run import Run  # noqa: F401  (the plan's runs)
+from ..engines.run import Run
+from ..solver.resolution import CONVERGED
 
 
 def specs_of(runs):

@@ -8,7 +8,7 @@ from dataclasses import dataclass, field
 from ..infra.errors import UserError, UserTypeError
 from .keywords import (as_engine_options, as_flag, as_names, as_pairs, as_real, as_text, as_tolerances, as_whole,
                        scene_keywords)
-from .plan import CONVERGED, MAX_STEPS_PER_CONTACT, FixedTimeStep
+from ..solver.resolution import CONVERGED, MAX_STEPS_PER_CONTACT, FixedTimeStep
 from ..infra.releases import in_release_order
 from ..scenes.scene import DEFAULT_ANGLES, DEFAULT_EN, DEFAULT_SPEED, from_material
 

@@ -5,7 +5,8 @@ from ..infra.compiling import spent
 from ..engines import ENGINES, EXTERNAL
 from .execute import execute
 from ..laws import LAWS
-from .plan import CONVERGED, compare_plan, reference_runs
+from ..solver.resolution import CONVERGED
+from .plan import compare_plan, reference_runs
 from .request import Request
 
 

@@ -12,7 +12,8 @@ from ..analyses.cost import (ADAPTIVE, ADAPTIVE_RUNGS, COLUMNS, EXTRAPOLATED, LA
                             priced, rayleigh_time, refused, resolved, step_time_row)
 from .cost_truth import covered, reference, truth_of
 from ..runs.execute import execute
-from ..runs.plan import MAX_STEPS_PER_CONTACT, FixedTimeStep, engine_runs
+from ..solver.resolution import MAX_STEPS_PER_CONTACT, FixedTimeStep
+from ..runs.plan import engine_runs
 from ..infra.errors import UserError
 from ..solver.simulate import CONVERGED_START, simulate, simulate_adaptive, simulate_extrapolated
 from ..solver.stability import UnstableTimeStep

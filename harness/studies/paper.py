@@ -15,7 +15,7 @@ from ..scenes.scene import DEFAULT_EN, Scene
 from ..analyses.published import published_distances
 from ..analyses.sliding import threshold_table
 from .sliding_search import sliding_thresholds
-from ..runs.plan import MAX_STEPS_PER_CONTACT
+from ..solver.resolution import MAX_STEPS_PER_CONTACT
 from ..solver.simulate import simulate
 from ..infra.errors import UserError
 

@@ -7,7 +7,7 @@ import numpy as np
 import pandas as pd
 
 from ...analyses.cost import RAYLEIGH_FRACTION, rayleigh_time, relative_errors
-from ...runs.plan import FixedTimeStep
+from ...solver.resolution import FixedTimeStep
 from ...solver.stability import UnstableTimeStep
 from .alternatives import rows_at
 

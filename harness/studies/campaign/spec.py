@@ -8,7 +8,8 @@ from ...runs.availability import options_for, statuses
 from ...engines import ENGINES
 from ...infra.errors import UserError
 from ...runs.keywords import repeats
-from ...runs.plan import CONVERGED, compare_plan, specs_of
+from ...solver.resolution import CONVERGED
+from ...runs.plan import compare_plan, specs_of
 from ...runs.request import Request
 from ...scenes.scene import DEFAULT_ANGLES
 from .limits import MAX_FILE_BYTES, MAX_TASKS

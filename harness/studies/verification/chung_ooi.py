@@ -14,7 +14,8 @@ from ...engines import ENGINES
 from ...infra.errors import UserError
 from ...runs.execute import run_all
 from ...laws import compose
-from ...runs.plan import FixedTimeStep, engine_runs, reference_runs
+from ...solver.resolution import FixedTimeStep
+from ...runs.plan import engine_runs, reference_runs
 from ...solver.two_spheres import with_bodies
 from ...infra.wording import counted
 from .chung_ooi_cases import cases, published_e
