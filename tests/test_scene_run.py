@@ -54,15 +54,17 @@ def bounce(tmp_path, capfd, steps_per_contact):
 
 def test_bounce_rebounds_at_e_n_and_reaches_e_n_to_the_2k_of_the_drop(tmp_path, capfd):
     """A linear spring-dashpot ending at zero overlap, calibrated to e_n 0.9: each rebound speed ratio is 0.9 and the
-    k-th apex 0.9^(2k) of the 1 cm drop, to the catalogue's 1e-3."""
+    k-th apex 0.9^(2k) of the 1 cm drop, to the catalogue's 1e-3, less what gravity takes during the contact (g t_c / v
+    ~ 1e-6 here: the closed form holds it, so it sits just below 0.9)."""
     code, lines, checks, _ = bounce(tmp_path, capfd, 1000)
     assert code == 0, lines
     ratios = checks[checks.check == "rebound-speed-ratio"]
     apexes = checks[checks.check == "apex-height"]
     assert list(ratios.case) == ["e_n = 0.9, bounce 1", "e_n = 0.9, bounce 2"]
-    assert ratios.expected.to_numpy() == pytest.approx([0.9, 0.9], rel=1e-9)
+    assert ratios.expected.to_numpy() == pytest.approx([0.9, 0.9], rel=3e-6)
+    assert (ratios.expected.to_numpy() < 0.9).all()
     assert (np.abs(ratios.value.to_numpy() - 0.9) <= 1e-3).all()
-    assert apexes.expected.to_numpy() == pytest.approx([0.9 ** 2 * 0.01, 0.9 ** 4 * 0.01], rel=1e-12)
+    assert apexes.expected.to_numpy() == pytest.approx([0.9 ** 2 * 0.01, 0.9 ** 4 * 0.01], rel=1e-5)
     assert (np.abs(apexes.value.to_numpy() / apexes.expected.to_numpy() - 1.0) <= 1e-3).all()
     assert checks.passed.all()
     assert sum(line.startswith("passed ") for line in lines) == 4

@@ -57,7 +57,7 @@ def test_each_scene_needs_the_effects_the_issue_names():
 def test_a_scenes_checks_are_those_of_issue_43():
     names = {name: {c.closed_form.__name__ for c in kind.CHECKS} for name, kind in SCENES.items()}
     assert names == {"impact": set(), "free-fall": {"free_fall_height"},
-                     "bounce": {"linear_restitution", "apex_height"},
+                     "bounce": {"linear_bounce_restitution", "linear_bounce_apex"},
                      "slide-to-roll": {"slip_end_time", "rolling_speed"},
                      "rest": {"hertz_static_overlap", "linear_static_overlap"}, "stack": {"stack_contact_force"}}
 
@@ -65,7 +65,7 @@ def test_a_scenes_checks_are_those_of_issue_43():
 def test_parameters_given_replace_the_defaults():
     assert SCENES["stack"].values({"spheres": 5, "walls": 2, "preload": 3}) == \
         {"spheres": 5, "walls": 2, "preload": 3, "g": 9.81}
-    assert SCENES["bounce"].values() == {"height": 0.1, "bounces": 5, "g": 9.81}
+    assert SCENES["bounce"].values() == {"height": 0.1, "bounces": 3, "g": 9.81}
 
 
 @pytest.mark.parametrize("scene, given, says", [
