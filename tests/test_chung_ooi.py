@@ -13,7 +13,7 @@ import oracles
 from conftest import needs
 from harness.commands import main
 from harness.studies.verification import chung_ooi as suite
-from harness.views.chung_ooi_html import headline
+from harness.views.pieces import checks_headline
 
 # The published tests as their independent reproductions give them, read from these files (not from harness):
 #  K  KratosMultiphysics/Kratos, applications/DEMApplication/tests/DEM3D_chung_ooi_tests/test{1,2,3}_data
@@ -263,8 +263,8 @@ def test_exit_codes_are_the_ones_help_prints(tmp_path, capsys, monkeypatch):
 
 def test_the_page_and_the_terminal_count_passes_and_failures(tmp_path, capsys):
     """Where 252 of 364 pass, the page says 112 fail and 252 pass (it once said 'Some checks fail: 252 of 364')."""
-    assert headline(False, 252, 364) == "112 of 364 checks fail; 252 pass."
-    assert headline(True, 5, 5) == "Every check passes: 5 of 5." and headline(False, 0, 0) == "No check was made."
+    assert checks_headline(252, 364) == "112 of 364 checks fail; 252 pass."
+    assert checks_headline(5, 5) == "Every check passes: 5 of 5." and checks_headline(0, 0) == "No check was made."
     out = tmp_path / "co"
     assert main(["benchmark", "chung-ooi", "--engines", "reference", "-o", str(out)]) == 1
     table = pd.read_csv(out / "chung-ooi.csv")

@@ -29,14 +29,18 @@ def main(args):
 def main_scene(args):
     """A scene other than impact: series.csv and checks.csv in the output directory, one line per check."""
     from ..api.scene_requests import parameters_from_text, runnable_kind, scene_request
-    from ..studies.scenes import run_scene, write_scene
+    from ..studies.scene_files import write_scene
+    from ..studies.scenes import run_scene
+    from ..views.scene_html import write_scene_report
     from ..views.scene_terminal import check_lines, checks_json
+    from .compare import command_line
     kind = runnable_kind(args.scene)
     request, kind, values = scene_request(args.model, args.scene, parameters_from_text(kind, args.scene_params),
                                           **keywords(args))
     check_output_directory(args.output)
     run = run_scene(request.law, kind, values, request.scene, request.resolution)
-    write_scene(args.output, run)
+    write_scene(args.output, run, command_line())
+    write_scene_report(args.output, run, command_line())
     failed = int((~run.checks.passed).sum())
     if args.json:
         print(checks_json(run))

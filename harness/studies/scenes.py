@@ -2,13 +2,11 @@
 small-system integrator's variants (one per target e_n), and its run becomes a time series and the kind's
 closed-form checks (measured value, expected value, error, tolerance, passed)."""
 import math
-import os
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 import pandas as pd
 
-from ..data.results import write_csv
 from ..infra.errors import UserError
 from ..solver.resolution import CONVERGED, FixedTimeStep
 from ..solver.system import E_KIND, E_VN, F_ALPHA, F_FN, M_GAIN, M_STATUS, PART, STATUS_OK, TOUCH
@@ -26,11 +24,15 @@ ENGINE = "reference"
 @dataclass(frozen=True)
 class SceneRun:
     """A scene's run: its `series` (one row per case, recorded time and body) and its `checks` (CHECK_COLUMNS), and
-    the checks that do not apply to the law with the reason (`skipped`, {check: reason})."""
+    the checks that do not apply to the law with the reason (`skipped`, {check: reason}); the law's name, the kind's
+    parameter values and the spheres' radius describe it."""
     scene: str
     series: pd.DataFrame
     checks: pd.DataFrame
     skipped: dict
+    law: str = ""
+    values: dict = field(default_factory=dict)
+    radius: float = math.nan
 
     def __repr__(self):
         passed = int(self.checks.passed.sum())
@@ -72,7 +74,7 @@ def run_scene(law, kind, values, scene, resolution):
             for label, value, arguments, note in measures[check.name](law, case, values, result):
                 rows.append(check_row(check, f"{case.name}{label}", value, arguments, note))
     return SceneRun(kind.NAME, pd.concat(series, ignore_index=True), pd.DataFrame(rows, columns=CHECK_COLUMNS),
-                    skipped)
+                    skipped, law.name, dict(values), scene.radius)
 
 
 def check_row(check, case, value, arguments, note):
@@ -92,13 +94,6 @@ def series_rows(case, grid, trace):
     frame.insert(0, "t", np.repeat(grid, n_bodies))
     frame.insert(0, "case", case)
     return frame
-
-
-def write_scene(directory, run):
-    """series.csv and checks.csv in `directory` (created if missing), each written whole or not at all."""
-    os.makedirs(directory, exist_ok=True)
-    write_csv(run.series, os.path.join(directory, "series.csv"))
-    write_csv(run.checks, os.path.join(directory, "checks.csv"))
 
 
 def kept_events(values):

@@ -8,9 +8,8 @@ from ..studies.verification import chung_ooi as suite
 from ..studies.verification.chung_ooi_cases import TESTS
 from ..infra.version import __version__
 from .figure_files import one
-from .pieces import figure_svg, legend_below, records
+from .pieces import checks_headline, figure_svg, legend_below, records
 from .style import colour
-from ..infra.wording import counted, verb
 
 CSV, PAGE = "chung-ooi.csv", "chung-ooi.html"
 
@@ -53,16 +52,6 @@ def sliding_figure(table, test):
     return svg
 
 
-def headline(ok, passed, checked):
-    """The verdict in words: how many checks passed and how many failed."""
-    if not checked:
-        return "No check was made."
-    if ok:
-        return f"Every check passes: {passed} of {checked}."
-    return (f"{checked - passed} of {counted(checked, 'check')} {verb(checked - passed, 'fails')}; {passed} "
-            f"{verb(passed, 'passes')}.")
-
-
 def write_chung_ooi_report(out_dir, table, command):
     """DIR/chung-ooi.html from the suite's table; returns its path."""
     ok, passed, checked = suite.verdict(table)
@@ -77,7 +66,7 @@ def write_chung_ooi_report(out_dir, table, command):
     html = environment(autoescape=True).get_template("chung-ooi.html.j2").render(
         ok=ok, passed=passed, checked=checked, summary=records(summary(table)), tests=tests, command=command,
         version=__version__, date=datetime.datetime.now().strftime("%Y-%m-%d %H:%M"), csv=CSV, law=suite.LAW,
-        headline=headline(ok, passed, checked), tolerances={"hertz": f"{suite.HERTZ_TOLERANCE:g}",
+        headline=checks_headline(passed, checked), tolerances={"hertz": f"{suite.HERTZ_TOLERANCE:g}",
                                                    "restitution": f"{suite.RESTITUTION_TOLERANCE:g}",
                                                    "sliding": f"{suite.SLIDING_TOLERANCE:g}",
                                                    "psi": f"{suite.GROSS_SLIDING_PSI:g}"})

@@ -6,6 +6,8 @@ import numbers
 
 from markupsafe import Markup
 
+from ..infra.wording import counted, verb
+
 
 class Figure(Markup):
     """Inline SVG markup that also holds the figure as files: `svg` (a whole SVG document) and `pdf` (bytes)."""
@@ -81,3 +83,13 @@ def si(value, unit, digits=4):
         if abs(value) >= factor:
             return f"{number(value / factor, digits)} {prefix}{unit}"
     return f"{number(value, digits)} {unit}"
+
+
+def checks_headline(passed, checked, none="No check was made."):
+    """A verdict in words: how many checks passed and how many failed (`none` where no check was made)."""
+    if not checked:
+        return none
+    if passed == checked:
+        return f"Every check passes: {passed} of {checked}."
+    return (f"{checked - passed} of {counted(checked, 'check')} {verb(checked - passed, 'fails')}; {passed} "
+            f"{verb(passed, 'passes')}.")
