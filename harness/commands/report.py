@@ -3,7 +3,7 @@ a scene run's), simulating nothing."""
 import os
 
 from ..runs.outputs import REPORT
-from ..studies.scene_files import DESCRIPTION, read_scene
+from ..studies.scene_files import DESCRIPTION, load_scene
 from ..views.figure_files import FIGURES
 from ..views.html import rebuild
 from .options import EXIT_OK, check_entries
@@ -13,7 +13,7 @@ def main(args):
     if os.path.isfile(os.path.join(args.directory, DESCRIPTION)):
         from ..views.scene_html import PAGE, write_scene_report
         check_entries(args.directory, (PAGE,), (FIGURES,))
-        print(f"wrote {write_scene_report(args.directory, *read_scene(args.directory))}")
+        print(f"wrote {write_scene_report(args.directory, *load_scene(args.directory))}")
         return EXIT_OK
     check_entries(args.directory, (REPORT,), (FIGURES,))
     print(f"wrote {rebuild(args.directory)}")

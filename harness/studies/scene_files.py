@@ -22,7 +22,7 @@ def write_scene(directory, run, command=""):
     write_text(os.path.join(directory, DESCRIPTION), json.dumps(described, indent=1) + "\n")
 
 
-def read_scene(directory):
+def load_scene(directory):
     """(the SceneRun, the command) a scene's directory holds (write_scene's files)."""
     with open(os.path.join(directory, DESCRIPTION)) as handle:
         described = json.load(handle)

@@ -49,7 +49,7 @@ def case_figure(series, case, radius, g):
 
 
 def write_scene_report(directory, run, command=""):
-    """DIR/scene.html from a SceneRun (harness.studies.scenes; scene_files.read_scene reads one from the files);
+    """DIR/scene.html from a SceneRun (harness.studies.scenes; scene_files.load_scene reads one from the files);
     returns its path."""
     g = float(run.values.get("g", 0.0))
     figures = filed(directory, [(case, case_figure(run.series, case, run.radius, g), f"scene-{run.scene}-{case}")
