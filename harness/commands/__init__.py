@@ -35,7 +35,8 @@ COMMANDS = {   # name -> (its module, its summary): the parser lists every comma
     "explain": ("explain", "what your own engine input computes: achieved e_n, e_t, Omega* and contact time, the "
                            "paper law it is nearest, the same law in other inputs, and calibrate's advice"),
     "render": ("render", "write an engine's input deck/script for the scene without running it"),
-    "report": ("report", "rebuild DIR/report.html from a compare or cost directory, simulating nothing"),
+    "report": ("report", "rebuild DIR/report.html from a compare or cost directory (DIR/scene.html from a scene "
+                         "run's), simulating nothing"),
     "check": ("check", "recompute the baseline matrix; exit 1 listing every metric outside tolerance"),
     "baseline": ("check", "rewrite the committed baseline matrix on purpose"),
     "campaign": ("campaign", "run a matrix of comparisons from a TOML file into a Parquet store that resumes"),
