@@ -170,9 +170,8 @@ def nearest_input(dialect, scene, gap, where, text, law, theirs):
     together = None
     if best is not None and best[1] < 0.5 * gap:
         together = most_together(dialect, law, list(labels), gap, theirs, scene)
-    named = (lambda name: tuple(" + ".join(str(labels[k][i]) for k in name.split("+") if k in labels)
-                                for i in (0, 1)))
-    return NearestInput(where, text, gap, *(((best[0], named(best[0]), best[1] / gap)) if best else (None,) * 3),
+    named = None if best is None else tuple(str(labels[best[0]][i]) if best[0] in labels else best[0] for i in (0, 1))
+    return NearestInput(where, text, gap, *(((best[0], named, best[1] / gap)) if best else (None,) * 3),
                         together=None if together is None else (together[0], together[1] / gap))
 
 
