@@ -1,5 +1,6 @@
 """explain where no other engine computes the input's law: each other engine's nearest input, its distance and the
 ingredient whose swap into the input's composition removes most of it (harness/studies/explain.py)."""
+import json
 import subprocess
 import sys
 from dataclasses import replace
@@ -19,7 +20,8 @@ def worst_difference(a, b):
     """Worst |a - b| of v_n1, v_t1 and R omega1 over the impacts, relative to the incident speed V."""
     a, b = a.sort_values("theta_deg").reset_index(drop=True), b.sort_values("theta_deg").reset_index(drop=True)
     speed = float(np.hypot(a.v_n0, a.v_t0).max())
-    worst = [np.max(np.abs(a[c] - b[c])) for c in ("v_n1", "v_t1")] + [np.max(np.abs(a.omega1 - b.omega1)) * a.radius[0]]
+    worst = [np.max(np.abs(a[c] - b[c])) for c in ("v_n1", "v_t1")]
+    worst.append(np.max(np.abs(a.omega1 - b.omega1)) * a.radius[0])
     return float(max(worst)) / speed
 
 
@@ -31,7 +33,6 @@ def test_a_kratos_input_gets_each_other_engines_nearest_input_in_the_lines_and_t
                          capture_output=True, text=True, check=True).stdout
     lines = [line for line in out.splitlines() if line.startswith("no ")]
     assert len(lines) == 3 and all("harness tried computes this law; nearest" in line for line in lines)
-    import json
     record = json.loads(subprocess.run([sys.executable, "-m", "harness", "explain", "kratos", KRATOS, "--angles",
                                         "0,30,60", "--json"], capture_output=True, text=True, check=True).stdout)
     assert [n["engine"] for n in record["nearest_inputs"]] == [n.engine for n in x.nearest_inputs]
