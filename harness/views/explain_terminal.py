@@ -40,10 +40,7 @@ def nearest_line(n):
     if n.ingredient is None:
         return line + ")"
     mine, theirs = n.labels
-    line += f"; its {n.ingredient}, {theirs} for {mine}, makes {n.share:.0%} of it"
-    if n.together:
-        line += f"; its {n.together[0].replace('+', ' and ')} together {n.together[1]:.0%}"
-    return line + ")"
+    return line + f"; its {n.ingredient}, {theirs} for {mine}, makes {n.share:.0%} of it)"
 
 
 def explanation_record(x):
@@ -56,9 +53,7 @@ def explanation_record(x):
             "nearest_paper_laws": [{"law": law, "distance": d} for law, d in x.nearest],
             "same_law": [{"engine": engine, "input": text} for engine, text in x.translations],
             "nearest_inputs": [{"engine": n.engine, "input": n.text, "distance": n.distance, "ingredient": n.ingredient,
-                                "labels": list(n.labels) if n.labels else None, "share": n.share,
-                                "together": ({"ingredients": n.together[0].split("+"), "share": n.together[1]}
-                                             if n.together else None)}
+                                "labels": list(n.labels) if n.labels else None, "share": n.share}
                                for n in x.nearest_inputs],
             "advice": [line.strip() for line in x.advice], "agreement": x.agreement, "notes": x.notes}
 
