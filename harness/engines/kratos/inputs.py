@@ -56,6 +56,20 @@ class KratosInput(EngineInput):
         return tuple(Flag(name, f"{name} {v[name]:g} not used: " + why.get(name, "harness runs no wear"))
                      for name in UNUSED if name in v)
 
+    def other_engines(self, contact):
+        """[(engine, text, release)]: the other engines' inputs with the same numbers (engines/material_inputs.py); for
+        the linear law LAMMPS hooke with Kratos' k_n on a wall, k_t = 2(1 - nu)/(2 - nu) k_n and x_gamma_t =
+        sqrt(k_t/k_n) (c = 2 g sqrt(m k) on both springs)."""
+        from ..material_inputs import hertz_material, linear_spring
+        v = self.values
+        young, nu, e, mu = (v["YOUNG_MODULUS"], v["POISSON_RATIO"], v["COEFFICIENT_OF_RESTITUTION"],
+                            v["STATIC_FRICTION"])
+        if self.law == "DEM_D_Hertz_viscous_Coulomb":
+            return hertz_material(young, nu, e, mu, skip="kratos")
+        k_n = modulus_stiffness(young / (2.0 * (1.0 - nu * nu)), contact.radius, BETAS["wall"])
+        ratio = 2.0 * (1.0 - nu) / (2.0 - nu)
+        return linear_spring(k_n, ratio * k_n, e, math.sqrt(ratio), mu, skip="kratos")
+
     def deck_values(self):
         """What the script template takes: the law, E, nu (every material), e and mu, as given."""
         v = self.values

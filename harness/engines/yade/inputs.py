@@ -66,14 +66,26 @@ class YadeInput(EngineInput):
         """[(engine, text, release)]: for ViscElMat kn, ks, cn, cs (one material: half of each on the contact), the
         LAMMPS granular words with those numbers, `hooke kn/2 cn/2 damping velocity tangential linear_history ks/2
         cs/cn mu` (velocity damping: a constant c_n; x_gamma_t: c_t/c_n), on 2021.9.29.2, the first release harness
-        runs."""
-        if self.law != "viscel" or self.form != "direct":
+        runs; for FrictMat with Mindlin(en = es), the other engines' Hertz-Mindlin inputs with its numbers."""
+        if self.law == "mindlin":
+            return self._mindlin_candidates()
+        if self.form != "direct":
             return []
         v = self.values
         share = v["cs"] / v["cn"] if v["cn"] else 0.0
         text = (f"hooke {v['kn'] / 2.0!r} {v['cn'] / 2.0!r} damping velocity tangential linear_history "
                 f"{v['ks'] / 2.0!r} {share!r} {self.mu!r} limit_damping")
         return [("lammps", text, "2021.9.29.2")]
+
+    def _mindlin_candidates(self):
+        """The other engines' Hertz-Mindlin inputs with this material's numbers and its en (engines/material_inputs.py),
+        where en and es are one value."""
+        from ..material_inputs import hertz_material
+        v, f = self.values, dict(self.functor)
+        e = f.get("en", f.get("es"))
+        if e is None or f.get("es", e) != e:
+            return []
+        return hertz_material(v["young"], v["poisson"], e, self.mu, skip="yade")
 
     def flags(self, version=None):
         v, out = {**self.values, **dict(self.functor)}, []
