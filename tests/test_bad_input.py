@@ -82,6 +82,8 @@ CHOICES = [   # (extra arguments, what is wrong)
     (["--model", "hertz-mindlin", "--wall", "E=2e11,nu=-5e-324"], "wall nu subnormal"),
     (["--model", "thornton", "--normal-speed", "5", "--angles", "89.9"], "V_n tan(angle) beyond 1e3 m/s"),
     (["--model", "thornton", "--normal-speed", "600", "--angles", "0,30,60"], "V_n tan(angle) beyond 1e3 m/s"),
+    (["--model", "thornton", "--gap", "1e-4", "--converged"], "a gap counts fixed steps"),
+    (["--model", "thornton", "--at-times", "1e-5", "--converged"], "states count fixed steps"),
     (["--model"], "missing value"),
     ([], "no model"),
 ]

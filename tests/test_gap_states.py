@@ -1,10 +1,18 @@
 """A starting gap and states during contact (issue 42 item 4): the options, the run's key, the reference kernel's
 free approach and recorded states against theory."""
+import math
+
+import numpy as np
 import pytest
 
 from harness.commands import main
+from harness.data.states import carried
+from harness.engines import ENGINES
 from harness.engines.run import scene_identity
+from harness.laws import compose
 from harness.runs.request import scene_from
+from harness.solver.simulate import simulate
+from tests import oracles
 
 
 def test_default_gap_and_times_leave_a_runs_identity_as_it_was():
@@ -21,3 +29,71 @@ def test_gap_and_times_are_taken_by_run_and_compare(command, tmp_path, capsys):
     code = main([command, "--model", "linear-spring-dashpot", "--en", "0.5", "--angles", "0", "--gap", "1e-5",
                  "--at-times", "1e-5,2e-5", "--quiet", "-o", str(out), *extra])
     assert code == 0, capsys.readouterr().err
+
+
+# --- the reference kernel: free approach and states, against theory --------------------------------------------------
+V = 5.0
+
+
+def mass_and_estar(scene):
+    """m = 4/3 pi R^3 rho, E* = E/(2 (1 - nu^2)) for a sphere on a wall of its own material."""
+    return 4.0 / 3.0 * math.pi * scene.radius ** 3 * scene.rho, scene.E / (2.0 * (1.0 - scene.nu ** 2))
+
+
+def states_of(law, gap, times, steps=1000, angle=0.0):
+    scene = scene_from(en=(0.5,), angles=(angle,), gap=gap, at_times=tuple(times))
+    frame, _ = simulate(law, scene, steps_per_contact=steps)
+    return scene, frame, carried(frame)
+
+
+@pytest.mark.parametrize("gap_overlaps", [0.0, 2.37])
+def test_linear_spring_dashpot_states_follow_the_damped_oscillator(gap_overlaps):
+    """Paper law linear-spring-dashpot (F = k alpha + c alpha', no tension): states at three times inside the contact
+    against x = V/w_d exp(-g w0 t) sin(w_d t) from touch, t from touch = t - gap/V, to 1e-4 of the peak."""
+    law = compose("linear-spring-dashpot")
+    scene = scene_from(en=(0.5,), angles=(0.0,))
+    m, _ = mass_and_estar(scene)
+    k = law.normal.parameters(scene.contact, 0.5, V)["k_n"]          # the law's input stiffness
+    w0, g = math.sqrt(k / m), oracles.lsd_notension_g(0.5)
+    t_c = oracles.lsd_notension_t_c(g, w0)
+    peak = V / w0                                                      # the overlap's scale
+    gap = gap_overlaps * peak
+    touch = gap / V
+    _, frame, states = states_of(law, gap, [touch + f * t_c for f in (0.15, 0.45, 0.8)])
+    x, x_dot = oracles.damped_oscillator(V, w0, g, states.t.to_numpy() - touch)
+    assert np.all(states.t.to_numpy() - touch < t_c) and frame.steps_per_contact.iloc[0] == 1000
+    assert np.abs(states.overlap - x).max() < 1e-4 * peak
+    assert np.abs(states.f_n - (k * x + 2.0 * g * w0 * m * x_dot)).max() < 1e-4 * k * peak
+    assert np.abs(states.v_n + x_dot).max() < 1e-4 * V
+
+
+def test_hertz_peak_overlap_and_force_after_a_gap():
+    """Elastic Hertz from a gap of a few overlaps: alpha_max = (15 m V^2/(16 E* sqrt R))^(2/5) (Hertz 1882, Johnson
+    1985 eq. 11.24) and F_max = 4/3 E* sqrt(R) alpha_max^(3/2), to 1e-4."""
+    law = compose("hertz-mindlin", {"damping": "none", "end": "tension"})
+    scene = scene_from(en=(0.9,), angles=(0.0,))
+    m, e_star = mass_and_estar(scene)
+    alpha_max = (15.0 * m * V ** 2 / (16.0 * e_star * math.sqrt(scene.radius))) ** 0.4
+    _, frame, _ = states_of(law, 3.3 * alpha_max, [1e-6])
+    row = frame.iloc[0]
+    assert row.overlap_max == pytest.approx(alpha_max, rel=1e-4)
+    assert row.f_n_max == pytest.approx(4.0 / 3.0 * e_star * math.sqrt(scene.radius) * alpha_max ** 1.5, rel=1e-4)
+
+
+@pytest.mark.parametrize("engine", ["lammps", "liggghts"])
+def test_free_approach_reaches_the_wall_at_gap_over_speed(engine):
+    """Before touch the state is the free flight, overlap -(gap - V t) and no force; the first state in contact is
+    the step after gap/V (to one step), at an angle, the incident velocities unchanged until then."""
+    law = ENGINES[engine].dialect("hertz-mindlin")
+    gap, angle = 7.3e-4, 30.0
+    v_n, v_t = V * math.cos(math.radians(angle)), V * math.sin(math.radians(angle))
+    scene = scene_from(en=(0.5,), angles=(angle,))
+    dt = simulate(law, scene, steps_per_contact=1000)[0].dt.iloc[0]
+    near = math.floor(gap / v_n / dt)
+    times = np.concatenate([[0.3 * gap / v_n, 0.7 * gap / v_n], (near + np.arange(-3, 4)) * dt])
+    _, frame, states = states_of(law, gap, times, angle=angle)
+    before = states[states.overlap <= 0]
+    assert np.abs(before.overlap + (gap - v_n * before.t)).max() < 1e-9 * gap
+    assert (before.f_n == 0).all() and np.allclose(before.v_n, -v_n) and np.allclose(before.v_t, v_t)
+    first_touch = states[states.overlap > 0].t.min()
+    assert 0 < first_touch - gap / v_n <= dt * (1 + 1e-9)

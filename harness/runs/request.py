@@ -251,6 +251,8 @@ class Request:
         tolerances = Tolerances.of(as_tolerances(tolerances))
         request = cls(model, scene_from(**keywords), resolution_from(steps_per_contact, dt, converged),
                       tuple(overrides), engines, options, tolerances)
+        if converged and (request.scene.gap or request.scene.at_times):
+            raise UserError("--gap and --at-times count fixed steps: give --steps-per-contact or --dt, not --converged")
         law = request.law                    # unknown law or sub-model: refused here, before anything runs
         if request.scene.spheres:
             from ..solver.two_spheres import refuse_engine_levers
