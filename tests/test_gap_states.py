@@ -97,3 +97,34 @@ def test_free_approach_reaches_the_wall_at_gap_over_speed(engine):
     assert (before.f_n == 0).all() and np.allclose(before.v_n, -v_n) and np.allclose(before.v_t, v_t)
     first_touch = states[states.overlap > 0].t.min()
     assert 0 < first_touch - gap / v_n <= dt * (1 + 1e-9)
+
+
+# --- outputs: states.csv beside the results, --json, the terminal and the report ---------------------------------------
+def test_compare_writes_the_states_beside_the_results_and_in_json(tmp_path, capsys):
+    """The states of the reference in DIR/states.csv, --json and the report: at a time before touch the free flight
+    (overlap -(gap - V t), no force), inside the contact a positive overlap and force; peak overlap measured."""
+    import json
+    import pandas as pd
+    gap, times = 2e-4, (1e-5, 8e-5)
+    argv = ["compare", "--model", "hertz-mindlin", "--engines", "reference", "--en", "0.5", "--angles", "0,30",
+            "--gap", str(gap), "--at-times", ",".join(map(str, times)), "-o", str(tmp_path)]
+    main(argv + ["--json"])
+    record = json.loads(capsys.readouterr().out)
+    states = pd.read_csv(tmp_path / "states.csv")
+    assert record["files"]["states"] == str(tmp_path / "states.csv") and len(record["states"]) == len(states) == 4
+    v_n = states.v_n0.to_numpy()
+    before, inside = states[states.t < 2e-5], states[states.t > 7e-5]
+    assert np.allclose(before.overlap, -(gap - v_n[states.t < 2e-5] * before.t), rtol=0, atol=1e-12)
+    assert (before.f_n == 0).all() and (inside.overlap > 0).all() and (inside.f_n > 0).all()
+    assert pd.read_csv(tmp_path / "results.csv").overlap_max.gt(inside.overlap.min()).all()
+    assert "States during contact" in (tmp_path / "report.html").read_text()
+    main(argv)
+    assert "states at the times asked" in capsys.readouterr().out
+
+
+def test_run_writes_the_states_beside_its_csv(tmp_path, capsys):
+    out = tmp_path / "r.csv"
+    main(["run", "--model", "linear-spring-dashpot", "--en", "0.5", "--angles", "0", "--at-times", "1e-5",
+          "-o", str(out)])
+    assert "r-states.csv" in capsys.readouterr().out
+    assert (tmp_path / "r-states.csv").read_text().startswith("engine,engine_version,dialect,e_n_target,theta_deg")

@@ -6,6 +6,7 @@ import pandas as pd
 KEY = ("engine", "engine_version", "dialect", "e_n_target", "theta_deg", "v_n0", "v_t0", "omega0")
 STATE = ("t", "overlap", "f_n", "f_t", "v_n", "v_t", "omega")
 COLUMNS = KEY + STATE
+NUMBERS = KEY[3:] + STATE
 
 
 def states_frame(results, states):
