@@ -99,7 +99,7 @@ def test_free_approach_reaches_the_wall_at_gap_over_speed(engine):
     assert 0 < first_touch - gap / v_n <= dt * (1 + 1e-9)
 
 
-# --- outputs: states.csv beside the results, --json, the terminal and the report ----------------------------------------
+# --- outputs: states.csv beside the results, --json, the terminal and the report --------------------------------------
 def test_compare_writes_the_states_beside_the_results_and_in_json(tmp_path, capsys):
     """The states of the reference in DIR/states.csv, --json and the report: at a time before touch the free flight
     (overlap -(gap - V t), no force), inside the contact a positive overlap and force; peak overlap measured."""
