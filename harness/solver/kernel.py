@@ -73,6 +73,8 @@ def integrate_row(p, row, out, hist, stride, ext, w):
     for k in range(int(p[L.MAX_STEPS])):
         if grade_n > 0:
             h = graded_step(k, grade_n, p[L.GRADE_T])
+        elif k < 2 and p[L.FIRST_H] > 0.0:       # from a touch between two steps of the grid onto the grid
+            h = p[L.FIRST_H] if k == 0 else p[L.DT]
         indicator, h_last, a_peak, f_peak = advance(v, p, row, h, located, a_peak, f_peak, ext)
         steps = k + 1
         if indicator <= 0.0:
@@ -108,6 +110,8 @@ def integrate_row(p, row, out, hist, stride, ext, w):
             break
     out[C.O_VZ], out[C.O_VX], out[C.O_W] = v.s[S_VZ], v.s[S_VX], v.s[S_W]
     out[C.O_TC] = t_end if status == C.STATUS_OK else t_now
+    if p[L.ALPHA0] < 0.0:                       # its first step began apart: in contact from the step after
+        out[C.O_TC] -= p[L.DT]
     out[C.O_FMAX], out[C.O_AMAX] = f_peak, a_peak
     out[C.O_STEPS], out[C.O_STATUS], out[C.O_STICKING] = steps, status, stick_steps
     out[C.O_ALPHA], out[C.O_X], out[C.O_Z] = v.s[S_ALPHA], v.s[S_X], v.s[S_Z]

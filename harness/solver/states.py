@@ -41,7 +41,9 @@ def states(batch, out, recorded, times, gap):
             result[i, before, 1:] = approach_state(stepper, p, incident, gap, batch.dt, steps[before])
         after = own > out[i, C.O_STEPS]
         if out[i, C.O_STATUS] == C.STATUS_OK:
-            result[i, after, 1:] = flight_state(stepper, p, out[i], own[after] - out[i, C.O_STEPS])
+            start = batch.free_steps[i] * batch.dt + (batch.dt - p[L.FIRST_H] if p[L.FIRST_H] > 0.0 else 0.0)
+            since = steps[after] * batch.dt - (start + out[i, C.O_TC])
+            result[i, after, 1:] = flight_state(stepper, p, out[i], own[after] - out[i, C.O_STEPS], since)
         else:
             result[i, after, 1:] = np.nan
     return result
@@ -71,13 +73,14 @@ def approach_state(stepper, p, incident, gap, dt, steps):
     return np.column_stack([alpha, zeros, zeros, -(v_n + g * k * dt), v_t + zeros, omega + zeros])
 
 
-def flight_state(stepper, p, last, steps):
-    """(overlap, F_n, F_t, v_n, v_t, omega) `steps` after the release: the free flight from the kernel's last state
+def flight_state(stepper, p, last, steps, since):
+    """(overlap, F_n, F_t, v_n, v_t, omega) `steps` after the kernel's last step, `since` seconds after its end (the
+    paper scheme's located release falls inside its last step): the free flight from the kernel's last state
     (velocity Verlet exact under gravity: alpha - v t + g t^2/2; the leapfrog's half-step velocities: g dt^2 m (m +
     1)/2)."""
     dt, g = p[L.DT], gravity_of(stepper, p)
     k = steps.astype(float)
-    t = k * dt
+    t = since
     v_z, v_x, omega = last[C.O_VZ], last[C.O_VX], last[C.O_W]
     fall = g * dt * dt * k * (k + 1) / 2.0 if leapfrog(stepper) else 0.5 * g * t * t
     centres = centres_of(stepper, p)

@@ -10,6 +10,7 @@ from ...infra.version import __version__
 from ..base import split_submodels
 from ..dumps import read_final, read_observed, read_pair_batch, rebound
 from ..runner import EngineFailure
+from ..states_deck import gap_and_states, read_states
 from .dialect import HISTORY_STYLES, dialect, numbers, walls, words
 
 TEMPLATES = Path(__file__).resolve().parent / "templates"
@@ -144,8 +145,9 @@ def deck(law, scene, spec, options=None, observe=False, version=None):
              for i, (vn, vt, w) in enumerate(zip(spec.v_n0, spec.v_t0, spec.omega0))]
     return render(TEMPLATES, "batch.in.j2", harness_version=__version__, law=law.name, mu=scene.mu, e_n=spec.e_n,
                   atoms=atoms, x_lo=-2.0 * radius, x_hi=len(atoms) * spacing, box_half=2.0 * radius, z_lo=-radius,
-                  z_hi=4.0 * radius, skin=0.5 * radius, dt=spec.dt, radius=radius, rho=scene.rho, chunk=spec.chunk,
-                  max_chunks=spec.chunks, observe=bool(observe),
+                  z_hi=4.0 * radius + scene.gap, skin=0.5 * radius, dt=spec.dt, radius=radius, rho=scene.rho,
+                  chunk=spec.chunk, max_chunks=spec.chunks, observe=bool(observe), start_z=radius + scene.gap,
+                  **gap_and_states(scene, spec),
                   **({**INPUT_SETTINGS, **own} if own else {**NO_INPUT, **settings(law, scene, spec.e_n, options,
                                                                                   version)}))
 
@@ -166,7 +168,10 @@ def read_batch(scene, spec, directory, observe=False):
     observe mode saw)."""
     if scene.spheres:
         return read_pair_batch(directory, scene, spec, observe, "LAMMPS", OBSERVE_DUMP)
-    return read_outputs(directory, spec, scene.radius, observe)
+    final = read_outputs(directory, spec, scene.radius, observe)
+    if scene.at_times:
+        final["states"] = read_states(directory, scene, spec, scene.radius, "LAMMPS")
+    return final
 
 
 def read_outputs(directory, spec, radius, observe):
