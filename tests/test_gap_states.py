@@ -195,3 +195,15 @@ def test_lammps_states_after_a_gap_agree_with_its_dialect(release, law_name, use
         use(release)
     ours, theirs, table, dt, near = engine_states("lammps", law_name, GAP)
     assert_states_agree(ours, theirs, table, dt, near, GAP)
+
+
+@pytest.mark.parametrize("engine", ["lammps", "liggghts"])
+def test_two_sphere_decks_refuse_a_gap_rather_than_start_touching(engine):
+    """Their pair decks place the spheres touching: with a gap asked they refuse, in one line, instead of running
+    another impact than their dialect's."""
+    from harness.engines.runner import EngineFailure
+    from harness.runs.plan import engine_runs
+    scene = scene_from(en=(0.5,), angles=(10.0,), target="sphere", gap=1e-4)
+    run = engine_runs(ENGINES[engine], compose("hertz-mindlin"), scene, 1000)[0]
+    with pytest.raises(EngineFailure, match="two spheres do not take a starting gap"):
+        ENGINES[engine].render_batch(run.law, run.scene, run.spec, run.options_dict, run.observe)

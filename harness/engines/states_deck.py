@@ -8,8 +8,17 @@ import numpy as np
 
 from ..solver.states import state_steps
 from .dumps import read_final
+from .runner import EngineFailure
 
 STATE_DUMP = "state{}.dump"
+
+
+def refuse_between_spheres(scene, engine):
+    """An EngineFailure for a gap or states between two spheres, which the decks of the LAMMPS family do not write
+    yet (their wall decks do)."""
+    if scene.gap or scene.at_times:
+        raise EngineFailure(f"{engine}'s decks of two spheres do not take a starting gap or states at given times "
+                            f"yet (its wall decks do)")
 
 
 def approach_steps(scene, spec):

@@ -10,7 +10,7 @@ from ...infra.version import __version__
 from ..base import split_submodels
 from ..dumps import read_final, read_observed, read_pair_batch, rebound
 from ..runner import EngineFailure
-from ..states_deck import gap_and_states, read_states
+from ..states_deck import gap_and_states, read_states, refuse_between_spheres
 from .dialect import HISTORY_STYLES, dialect, numbers, walls, words
 
 TEMPLATES = Path(__file__).resolve().parent / "templates"
@@ -98,6 +98,7 @@ def pair_deck(law, scene, spec, options=None, observe=False, version=None, own=N
     rest, frozen when fixed), touching, their relative velocity the impact's; omega0 is the equivalent spin, so the
     projectile's own is (R* omega0 - R2 omega2)/R1. hertz/material gets each type's E and nu and the pair's mixing
     (pair_material); hooke takes the pair's k_n, damping and k_t as numbers."""
+    refuse_between_spheres(scene, "LAMMPS")
     projectile, target = scene.spheres
     r1, r2, r_star = projectile.radius, target.radius, scene.contact.radius
     spacing = 3.0 * (r1 + r2)

@@ -10,7 +10,7 @@ from ...infra.render import render
 from ..dumps import read_final, read_observed, read_pair_batch, rebound
 from ..executable import chosen
 from ..runner import EngineFailure, run_engine
-from ..states_deck import gap_and_states, read_states
+from ..states_deck import gap_and_states, read_states, refuse_between_spheres
 from .dialect import COUNTERPARTS
 
 BINARY_VARIABLE = "HARNESS_LIGGGHTS"     # path of another liggghts binary (a custom build, or a test's fake)
@@ -113,6 +113,7 @@ def pair_deck(law, scene, spec, observe=False, own=None):
     rest, frozen when fixed), touching, their relative velocity the impact's, each of its own material; omega0 is the
     equivalent spin,
     so the projectile's own is (R* omega0 - R2 omega2)/R1."""
+    refuse_between_spheres(scene, "LIGGGHTS")
     model, tangential, _, properties, restitution = settings(law, scene, spec.e_n, {}) if own is None else \
         (own["model"], own["tangential"], own["options"], own["properties"], own["e_n"])
     if own and own["options"]:
