@@ -207,3 +207,13 @@ def test_two_sphere_decks_refuse_a_gap_rather_than_start_touching(engine):
     run = engine_runs(ENGINES[engine], compose("hertz-mindlin"), scene, 1000)[0]
     with pytest.raises(EngineFailure, match="two spheres do not take a starting gap"):
         ENGINES[engine].render_batch(run.law, run.scene, run.spec, run.options_dict, run.observe)
+
+
+@pytest.mark.parametrize("engine, target", [("yade", "wall"), ("kratos", "wall"), ("lammps", "sphere")])
+def test_an_engine_whose_inputs_start_touching_is_skipped_with_the_reason(engine, target):
+    from harness.runs.availability import statuses
+    from harness.runs.request import Request
+    request = Request.from_keywords("hertz-mindlin", engines=[engine], en=[0.5], angles=[10.0], gap=1e-4,
+                                    target=target)
+    (status,) = statuses(request)
+    assert not status.available and "do not start a gap apart" in status.reason and target in status.reason
