@@ -23,6 +23,7 @@ NUMBERS = {   # option -> values outside its physical range (the bound is named 
     "--omega0": ["1e300", "-1e300", "1e6", "-1e6", "1e-310"],
     "--dt": ["0", "-1e-6", "1e-30", "1e-300", "5e-324"],
     "--steps-per-contact": ["0", "-5", "1.5", "1e9", "1000000000"],
+    "--gap": ["-1e-6", "-1", "1e300", "0.3", "5e-324"],
 }
 LISTS = {
     "--en": ["0", "-0.5", "1.5", "2", "1e-320", "0.5,,0.9", "0.5,abc", "0.5,nan", ",", "5e-324", "0.5,5e-324",
@@ -31,6 +32,7 @@ LISTS = {
                  "0:80:1e-300", "0:80:inf", "0:80:100", "1e-320", "10,1e-320"],
     "--vt": ["-1", "1e300", "nan", "abc", "5000", "5e-324"],
     "--psi": ["-1", "1e300", "nan", "abc", "5e-324"],
+    "--at-times": ["-1e-5", "2e-5,1e-5", "1e-5,1e-5", "1e-5,,2e-5", "1e-5,abc"],
 }
 CHOICES = [   # (extra arguments, what is wrong)
     (["--model", "no-such-law"], "unknown law"),
@@ -80,6 +82,8 @@ CHOICES = [   # (extra arguments, what is wrong)
     (["--model", "hertz-mindlin", "--wall", "E=2e11,nu=-5e-324"], "wall nu subnormal"),
     (["--model", "thornton", "--normal-speed", "5", "--angles", "89.9"], "V_n tan(angle) beyond 1e3 m/s"),
     (["--model", "thornton", "--normal-speed", "600", "--angles", "0,30,60"], "V_n tan(angle) beyond 1e3 m/s"),
+    (["--model", "thornton", "--gap", "1e-4", "--converged"], "a gap counts fixed steps"),
+    (["--model", "thornton", "--at-times", "1e-5", "--converged"], "states count fixed steps"),
     (["--model"], "missing value"),
     ([], "no model"),
 ]

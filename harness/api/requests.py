@@ -9,6 +9,7 @@ from ..analyses.precision import precision_gap
 from ..analyses.sliding import threshold_table
 from ..runs.comparison import Comparison
 from ..studies.calibration.calibrate import calibrate as run_calibration
+from ..data.states import attach, carried, gather
 from ..engines import ENGINES, EXTERNAL
 from ..infra.errors import UserError
 from ..runs.availability import options_for, statuses
@@ -42,7 +43,7 @@ def run_request(request, on_frame=None, progress=None):
         if progress:
             progress.advance(f"e_n {frame.e_n_target.iloc[0]:g}")
     table, _ = execute(runs, done)
-    return with_bodies(table, request.scene) if request.scene.spheres else table
+    return attach(with_bodies(table, request.scene), carried(table)) if request.scene.spheres else table
 
 
 def calibrate_request(request, tolerances=None, timestep_tolerance=1e-2):
@@ -126,6 +127,7 @@ def compare_request(request, on_frame=None, progress=None, partial=None):
     if progress:
         progress.advance("attribution, sliding threshold, force histories")
     results = pd.concat([frame for frame, _ in done[:len(plan)]], ignore_index=True)
+    states = gather([frame for frame, _ in done[:len(plan)]])
     failures = [failure for _, failure in done[:len(plan)] if failure is not None]
     precision, checked = None, iter(done[len(plan):])
     for name, pair in checks:
@@ -138,8 +140,7 @@ def compare_request(request, on_frame=None, progress=None, partial=None):
                       engine_inputs=input_records(law, scene, engines),
                       requested=request.engines, skipped=[(s.name, s.reason) for s in found if not s.available],
                       failures=failures, attribution=attributions, attribution_rows=rows, sliding=sliding,
-                      precision=precision,
-                      histories=histories, tolerances=request.tolerances)
+                      precision=precision, histories=histories, states=states, tolerances=request.tolerances)
 
 
 def input_records(law, scene, engines):

@@ -7,7 +7,8 @@ from ..scenes.catalogue import scene_kind
 IMPACT = "impact"
 # the impact scene's keywords (and their defaults), which no other scene takes, with what to give instead
 IMPACT_ONLY = {"angles": None, "psi": None, "vt": None, "normal_speed": None, "omega0": 0.0, "target": "wall",
-               "target_radius": None, "target_material": "same", "target_omega": 0.0, "target_fixed": False}
+               "target_radius": None, "target_material": "same", "target_omega": 0.0, "target_fixed": False,
+               "gap": 0.0, "at_times": ()}
 INSTEAD = {"gravity": "--scene-param g=..."}
 
 

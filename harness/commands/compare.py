@@ -66,14 +66,17 @@ def main(args):
     record = verdict(comparison)
     reference_only = request.engines is not None and set(request.engines) == {"reference"}
     code = exit_code(record, reference_only, args.require)
+    states_path = os.path.join(args.output, "states.csv") if comparison.states is not None else None
     if args.json:
-        print(strict_json.dumps({**record, "exit_code": code, "files": {"results": results_path, "report": report}},
-                         indent=1, default=str))
+        states = {"states": comparison.states.to_dict("records")} if states_path else {}
+        files = {"results": results_path, "report": report, **({"states": states_path} if states_path else {})}
+        print(strict_json.dumps({**record, **states, "exit_code": code, "files": files}, indent=1, default=str))
         return code
+    written = [results_path, *([states_path] if states_path else []), report]
     if args.verbose:
-        print_comparison(comparison, [results_path, report])
+        print_comparison(comparison, written)
     elif not args.quiet:
-        print_summary(record, comparison, [results_path, report])
+        print_summary(record, comparison, written)
     print(verdict_line(record, reference_only))
     return code
 

@@ -188,6 +188,17 @@ def add_scene_options(parser, resolution=True):
                      help="integrate the exact limit: results within ~1e-6 of the h -> 0 solution")
 
 
+def add_start_options(parser):
+    """--gap and --at-times: where each impact starts, and the times its state is recorded at (states.csv)."""
+    g = parser.add_argument_group("start and states during contact")
+    g.add_argument("--gap", type=number, default=0.0, metavar="METRES",
+                   help="distance between the surfaces at t = 0: the sphere approaches from there (default 0: it "
+                        "starts touching)")
+    g.add_argument("--at-times", dest="at_times", type=number_list, default=(), metavar="T1,T2,...",
+                   help="times [s] from the start at which each impact's state (overlap, forces, velocities) is "
+                        "written to states.csv")
+
+
 def add_output_options(parser, json=False, verbose=False):
     """--quiet (and --verbose, --json where a command has them), meaning the same in every command."""
     out = parser.add_argument_group("output")
@@ -241,6 +252,8 @@ def keywords(args, resolution=True):
                target=args.target, target_radius=args.target_radius, target_material=args.target_material,
                target_omega=args.target_omega, target_fixed=args.target_fixed,
                overrides=tuple(args.overrides))
+    if hasattr(args, "gap"):
+        out.update(gap=args.gap, at_times=args.at_times)
     if resolution:
         out.update(steps_per_contact=args.steps_per_contact, dt=args.dt, converged=args.converged)
     if hasattr(args, "engines"):

@@ -8,7 +8,7 @@ from ..studies.campaign.limits import max_workers
 from ..engines.names import EXTERNAL
 from ..laws.table import law_name
 from .options import (BENCHMARK_EXIT_CODES, add_engine_input, add_engine_options, add_output_options, add_scene_options,
-                      engine_option, number, number_list)
+                      add_start_options, engine_option, number, number_list)
 
 PIN_HELP = ("engine builds to run instead of the defaults, e.g. lammps@2023.8.2 (`harness engines` lists them); a "
             "baseline from another release is checked all the same, and what changed between the releases is said")
@@ -45,6 +45,7 @@ def run_parser(sub, describe):
     add_scene_kind(p)
     add_engine_input(p)
     add_scene_options(p)
+    add_start_options(p)
     p.add_argument("-o", "--output", required=True,
                    help="results CSV to write (scene impact), or the directory for series.csv and checks.csv")
     add_output_options(p, json=True)
@@ -66,6 +67,7 @@ def compare_parser(sub, describe):
     add_scene_kind(p)
     add_engine_options(p)
     add_scene_options(p)
+    add_start_options(p)
     p.add_argument("-o", "--output", default="harness-out", metavar="DIR",
                    help="output directory (default %(default)s)")
     p.add_argument("--store", metavar="STORE", help="a campaign store: runs it holds are taken from it, the others "
@@ -175,6 +177,7 @@ def render_parser(sub, describe):
                    metavar="ENGINE:KEY=VALUE", help="an engine's option (see `harness compare --help`)")
     add_engine_input(p)
     add_scene_options(p)
+    add_start_options(p)
     p.add_argument("-o", "--output", required=True, metavar="DIR", help="directory for the inputs")
     add_output_options(p)
     p.set_defaults(func=runs("render"))

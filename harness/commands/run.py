@@ -1,5 +1,7 @@
 """`harness run`: one law over a scene on the reference solver; a results CSV (impact) or a scene's series and
 closed-form checks."""
+import os
+
 from ..infra.errors import UserError
 from ..infra.wording import counted
 from .options import EXIT_DISAGREE, EXIT_OK, check_output_directory, check_output_file, keywords
@@ -15,15 +17,30 @@ def main(args):
     from ..api.requests import run_request
     from ..runs.request import Request
     from ..data.results import write_csv
+    from ..data.states import carried
+    from ..infra.files import write_text
+    from ..views.terminal import states_text
     from ..views.progress import Progress
     request = Request.from_keywords(args.model, **keywords(args))
     check_output_file(args.output)
     with Progress(f"run {request.model}", quiet=args.quiet) as progress:
         frame = run_request(request, progress=progress)
+    states = carried(frame)
     write_csv(frame, args.output)
+    written = args.output
+    if states is not None:
+        written += " and " + write_text(states_path(args.output), states.to_csv(index=False))
+        if not args.quiet:
+            print(states_text(states, os.path.basename(states_path(args.output))))
     bad = int((frame.status != "ok").sum())
-    print(f"{request.law.name}: {counted(len(frame), 'impact')} -> {args.output}" + (f" ({bad} not ok)" if bad else ""))
+    print(f"{request.law.name}: {counted(len(frame), 'impact')} -> {written}" + (f" ({bad} not ok)" if bad else ""))
     return EXIT_OK
+
+
+def states_path(output):
+    """Where `run -o FILE` writes the states: FILE's name less its .csv, then -states.csv, beside it."""
+    root, extension = os.path.splitext(output)
+    return (root if extension.lower() == ".csv" else output) + "-states.csv"
 
 
 def main_scene(args):

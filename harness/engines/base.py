@@ -40,6 +40,7 @@ class Engine:
     STARTUP_S = 1.0             # campaign --dry-run estimate: seconds per process start
     RESTITUTION_INPUTS = InputRange(0.01)   # the e calibrate searches its inputs over (docs/calibrate.md)
     CONTACT_LINES = ()          # how the lines of its input that set the contact law begin (calibrate prints them)
+    STARTS_APART = ()           # the targets its inputs start a gap apart from and record states at given times for
     SPHERE_STEP_S = 1e-6        # and per sphere-step (docs/performance.md)
 
     @property

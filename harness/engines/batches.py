@@ -7,6 +7,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..data.results import impact_frame
+from ..data.states import attach, states_frame
 from ..solver.threads import THREADS
 from .runner import EngineFailure, read_tail, run_engine, scratch
 
@@ -56,10 +57,11 @@ def result_rows(engine, build, run, final, wall):
     reason = run.dialect.undefined(run.scene.contact, spec.e_n, run.scene.speed) if not finite.all() else ""
     why = (f"non-finite, as its formulas predict: {reason}" if reason else
            "non-finite: the engine returned values that are not numbers, which its formulas do not predict")
-    return impact_frame(run.scene, spec, **identity_of(engine, build, run), v_n1=final["v_n1"],
-                        v_t1=final["v_t1"], omega1=final["omega1"], wall_s=wall / spec.impacts,
-                        status=np.where(~finite, "non-finite", np.where(final["separated"], "ok", "no-separation")),
-                        message=np.where(finite, "", why), **observed)
+    frame = impact_frame(run.scene, spec, **identity_of(engine, build, run), v_n1=final["v_n1"],
+                         v_t1=final["v_t1"], omega1=final["omega1"], wall_s=wall / spec.impacts,
+                         status=np.where(~finite, "non-finite", np.where(final["separated"], "ok", "no-separation")),
+                         message=np.where(finite, "", why), **observed)
+    return attach(frame, states_frame(frame, final["states"]) if run.scene.at_times and "states" in final else None)
 
 
 def run_grouped(engine, build, runs, input_name, render, group_of, run_inputs, read, deadline=None):

@@ -3,7 +3,7 @@ replaced sub-models (--with), with each engine's options."""
 from ..engines import ENGINES, EXTERNAL
 from ..engines.protocol import Status
 from ..infra.errors import UserError
-from .plan import target_of
+from .plan import target_of, wants_states
 
 
 def statuses(request, refuse=True):
@@ -19,6 +19,9 @@ def statuses(request, refuse=True):
         options = request.engine_options.get(name)
         unsupported = (engine.target_reason(request.law.name, scene, options) or
                        ("engine inputs do not model gravity" if scene.gravity else
+                        f"its inputs do not start a gap apart or record states at given times against a "
+                        f"{target_of(scene)} yet" if wants_states(scene) and target_of(scene) not in engine.STARTS_APART
+                        else
                        f"its {request.law.name} inputs use a wall of the sphere's own material"
                        if not scene.spheres and scene.wall not in engine.walls(request.law.name, options) else None))
         if not unsupported and status.available and request.overrides:

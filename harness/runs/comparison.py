@@ -33,6 +33,7 @@ class Comparison:
     sliding: pd.DataFrame | None = None
     precision: dict | None = None
     histories: dict | None = None
+    states: pd.DataFrame | None = None      # each impact's state at the scene's at_times (harness.data.states)
     command: str = ""                   # the command line that made it, when a command did
     date: str = ""                      # when it finished (local time, ISO 8601 to the minute)
     partial: bool = False               # interrupted before every run finished: the results so far

@@ -11,6 +11,7 @@ from .before_threads import import_what_threads_use
 from ..engines import ENGINES
 from ..engines.runner import allow, kill_all
 from ..data.results import COLUMNS
+from ..data.states import attach, gather
 from ..solver.threads import THREADS
 
 
@@ -20,7 +21,7 @@ def execute(runs, on_frame=None, cache=None):
     done = run_all(runs, None if on_frame is None else (lambda run, frame, failure: on_frame(frame)), cache)
     frames = [frame for frame, _ in done]
     table = pd.concat(frames, ignore_index=True) if frames else pd.DataFrame(columns=list(COLUMNS))
-    return table, [failure for _, failure in done if failure is not None]
+    return attach(table, gather(frames)), [failure for _, failure in done if failure is not None]
 
 
 def run_all(runs, on_done=None, cache=None, meanwhile=None):

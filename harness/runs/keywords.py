@@ -175,7 +175,7 @@ SCENE = {    # keyword -> its check
     "material": as_text, "radius": OPTIONAL_REAL, "E": OPTIONAL_REAL, "nu": OPTIONAL_REAL, "rho": OPTIONAL_REAL,
     "speed": OPTIONAL_REAL, "normal_speed": OPTIONAL_REAL, "omega0": as_real, "gravity": as_real,
     "wall": as_text, "target": as_text, "target_radius": OPTIONAL_REAL, "target_material": as_text,
-    "target_omega": as_real, "target_fixed": as_flag,
+    "target_omega": as_real, "target_fixed": as_flag, "gap": as_real, "at_times": as_reals,
 }
 
 

@@ -19,23 +19,24 @@ from ..laws import compose
 from ..infra.reading import read_table
 from ..data.records import COST_FIELDS, RUN_FIELDS, load_record
 from ..data.results import read_csv, write_csv
+from ..data.states import COLUMNS as STATE_COLUMNS, NUMBERS as STATE_NUMBERS
 from ..scenes.scene import scene_of_record
 from ..infra import strict_json
 
 RUN, ATTRIBUTION, HISTORIES, FAILURES, PRECISION = ("run.json", "attribution.csv", "histories.csv", "failures.csv",
                                                     "precision.csv")
-SLIDING, ATTRIBUTION_ROWS = "sliding.csv", "attribution-rows.csv"
+SLIDING, ATTRIBUTION_ROWS, STATES = "sliding.csv", "attribution-rows.csv", "states.csv"
 COST, COST_RUN, COST_TRUTH = "cost.csv", "cost.json", "cost-truth.csv"
 COST_TEXT = ("model", "engine", "dialect", "rung", "timing", "status", "message")
 REPORT, RESULTS = "report.html", "results.csv"
-DIRECTORY_FILES = (RESULTS, RUN, ATTRIBUTION, ATTRIBUTION_ROWS, HISTORIES, FAILURES, PRECISION, SLIDING, COST, COST_RUN,
-                   COST_TRUTH, REPORT)
+DIRECTORY_FILES = (RESULTS, RUN, ATTRIBUTION, ATTRIBUTION_ROWS, HISTORIES, FAILURES, PRECISION, SLIDING, STATES, COST,
+                   COST_RUN, COST_TRUTH, REPORT)
 
 
 def start_comparison(out_dir, comparison):
     """Before the runs: DIR/run.json describes the compare now running, marked partial, and the tables of an earlier
     compare are removed, so DIR never mixes two runs; an interrupted compare leaves a partial run `report` can show."""
-    for name in (ATTRIBUTION, ATTRIBUTION_ROWS, HISTORIES, FAILURES, PRECISION, SLIDING, RESULTS):
+    for name in (ATTRIBUTION, ATTRIBUTION_ROWS, HISTORIES, FAILURES, PRECISION, SLIDING, STATES, RESULTS):
         _remove(out_dir, name)
     _write_run(out_dir, comparison, partial=True)
 
@@ -65,6 +66,7 @@ def save_comparison(out_dir, comparison):
                                            columns=["engine", "e_n", "message", "log_tail"]))
     _table(out_dir, PRECISION, pd.DataFrame([comparison.precision] if comparison.precision else []))
     _table(out_dir, SLIDING, comparison.sliding if comparison.sliding is not None else pd.DataFrame())
+    _table(out_dir, STATES, comparison.states)
 
 
 def _table(out_dir, name, frame):
@@ -93,6 +95,7 @@ TABLES = {   # a saved table -> (columns it must hold, its number columns, its t
                 ("engine", "against", "theta_deg", "failed")),
     SLIDING: (("e_n_target", "simulated"), ("e_n_target", "simulated", "resolution", "derived", "difference"),
               ("model", "formula", "method")),
+    STATES: (STATE_COLUMNS, STATE_NUMBERS, ("engine", "engine_version", "dialect")),
     COST: (COST_COLUMNS, [c for c in COST_COLUMNS if c not in COST_TEXT], COST_TEXT),
     COST_TRUTH: (("curve", "e_n_target", "err_max"), ("e_n_target", *(f"err_{m}" for m in COST_METRICS), "err_max"),
                  ("curve", "truth")),
@@ -158,6 +161,7 @@ def load_comparison(out_dir):
                 for r in failure_table.itertuples()] if not failure_table.empty else []
     precision = _read(out_dir, PRECISION)
     sliding = _read(out_dir, SLIDING)
+    states = _read(out_dir, STATES)
     requested = run.get("requested")
     try:
         tolerances = Tolerances.of(run.get("tolerances") or {})
@@ -172,6 +176,7 @@ def load_comparison(out_dir):
                       attribution_rows=attribution_rows,
                       sliding=sliding if not sliding.empty else None,
                       precision=precision.iloc[0].to_dict() if not precision.empty else None, histories=histories,
+                      states=states if not states.empty else None,
                       command=run.get("command", ""), date=run.get("date", ""), partial=bool(run.get("partial")),
                       tolerances=tolerances)
 

@@ -29,9 +29,15 @@ def reference_runs(law, scene, resolution, dialect=None):
     return [Run("reference", law, dialect or law, s, resolution) for s in per_e_n(scene)]
 
 
+def wants_states(scene):
+    """A gap or times to record states at: the engines then observe the contact too (peak overlap and force)."""
+    return scene.gap > 0.0 or bool(scene.at_times)
+
+
 def engine_runs(engine, law, scene, resolution, options=None, observe=False):
-    """An engine running its dialect of `law` at every e_n."""
+    """An engine running its dialect of `law` at every e_n (observing its contact where the scene wants states)."""
     options = tuple(sorted(dict(options or {}).items()))
+    observe = observe or wants_states(scene)
     dialect = engine.dialect(law.name, dict(options), target_of(scene))
     return [Run(engine.NAME, law, dialect, s, resolution, options, observe) for s in per_e_n(scene)]
 

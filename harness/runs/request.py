@@ -14,13 +14,13 @@ from ..scenes.scene import DEFAULT_ANGLES, DEFAULT_EN, DEFAULT_SPEED, from_mater
 
 SCENE_KEYWORDS = ("en", "angles", "psi", "vt", "mu", "material", "radius", "E", "nu", "rho", "speed", "normal_speed",
                   "omega0", "gravity", "wall", "target", "target_radius", "target_material", "target_omega",
-                  "target_fixed")
+                  "target_fixed", "gap", "at_times")
 TARGETS = ("wall", "sphere")
 
 
 def scene_from(en=DEFAULT_EN, angles=None, psi=None, vt=None, mu=None, material="tcc13", radius=None, E=None,
                nu=None, rho=None, speed=None, normal_speed=None, omega0=0.0, gravity=0.0, wall="same", target="wall",
-               target_radius=None, target_material="same", target_omega=0.0, target_fixed=False):
+               target_radius=None, target_material="same", target_omega=0.0, target_fixed=False, gap=0.0, at_times=()):
     """The validated Scene of the scene keywords (each checked for type first: harness.runs.keywords); with
     target="sphere", the equivalent wall impact of the sphere hitting a target sphere at rest
     (harness.solver.two_spheres.reduce)."""
@@ -28,12 +28,12 @@ def scene_from(en=DEFAULT_EN, angles=None, psi=None, vt=None, mu=None, material=
                                 nu=nu, rho=rho, speed=speed, normal_speed=normal_speed, omega0=omega0,
                                 gravity=gravity, wall=wall, target=target, target_radius=target_radius,
                                 target_material=target_material, target_omega=target_omega,
-                                target_fixed=target_fixed))
+                                target_fixed=target_fixed, gap=gap, at_times=at_times))
     return _scene(**given)
 
 
 def _scene(en, angles, psi, vt, mu, material, radius, E, nu, rho, speed, normal_speed, omega0, gravity, wall, target,
-           target_radius, target_material, target_omega, target_fixed):
+           target_radius, target_material, target_omega, target_fixed, gap, at_times):
     if speed is not None and normal_speed is not None:
         raise UserError("give --speed or --normal-speed, not both")
     if sum(x is not None for x in (angles, psi, vt)) > 1:
@@ -47,7 +47,7 @@ def _scene(en, angles, psi, vt, mu, material, radius, E, nu, rho, speed, normal_
                          speed=DEFAULT_SPEED if speed is None else speed, speed_is=speed_is, e_n=tuple(en),
                          angles_deg=None if angles is None else tuple(angles), psi1_star=None if psi is None else
                          tuple(psi), v_t=None if vt is None else tuple(vt), omega0=omega0, gravity=gravity,
-                         **wall_fields(wall))
+                         gap=gap, at_times=tuple(at_times), **wall_fields(wall))
     if sphere is None:
         return scene
     from ..solver.two_spheres import reduce
@@ -251,6 +251,8 @@ class Request:
         tolerances = Tolerances.of(as_tolerances(tolerances))
         request = cls(model, scene_from(**keywords), resolution_from(steps_per_contact, dt, converged),
                       tuple(overrides), engines, options, tolerances)
+        if converged and (request.scene.gap or request.scene.at_times):
+            raise UserError("--gap and --at-times count fixed steps: give --steps-per-contact or --dt, not --converged")
         law = request.law                    # unknown law or sub-model: refused here, before anything runs
         if request.scene.spheres:
             from ..solver.two_spheres import refuse_engine_levers

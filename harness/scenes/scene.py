@@ -65,6 +65,8 @@ class Scene:
     material: str = "tcc13"
     speed_is: str = "resultant"
     spheres: tuple | None = None
+    gap: float = 0.0
+    at_times: tuple = ()
     extra: dict = field(default_factory=dict, compare=False)
 
     def __post_init__(self):
@@ -146,6 +148,8 @@ OTHER_E_WHY = " (up to 1000x aluminium's, the near-rigid target of Chung & Ooi's
 MIN_E_N = 1e-3                   # below, the damping calibrations leave their range (the linear no-tension one ends
                                  # near 1e-4, Tsuji's Appendix B fit sooner) and an impact is plastic to measurement
 MAX_IMPACTS = 10 ** 6            # per run: e_n values x impacts
+MAX_GAP_RADII = 10.0             # a starting gap of at most ten radii: the approach is stepped like the contact
+MAX_TIMES = 1000                 # times a state is recorded at, per impact
 
 
 def within_bounds(scene):
@@ -250,6 +254,23 @@ def validate(scene):
             if not (math.isfinite(psi) and psi >= 0):
                 raise UserError(f"Psi1* must be >= 0, got {psi!r}")
     within_bounds(scene)
+    check_start(scene)
+
+
+def check_start(scene):
+    """A gap of a finite number of metres in [0, MAX_GAP_RADII R] and times that are finite, >= 0 and increasing."""
+    if not _is_number(scene.gap) or _subnormal(scene.gap) or not 0.0 <= scene.gap <= MAX_GAP_RADII * scene.radius:
+        raise UserError(f"gap must be a distance in [0, {MAX_GAP_RADII:g} radii] = [0, "
+                        f"{MAX_GAP_RADII * scene.radius:g}] m, got {scene.gap!r}")
+    times = scene.at_times
+    if not (isinstance(times, tuple) and all(_is_number(t) for t in times)):
+        raise UserError(f"at_times must be a tuple of finite numbers of seconds, got {times!r}"[:200])
+    if any(t < 0.0 for t in times):
+        raise UserError(f"at_times must be >= 0 s, got {min(times)!r}")
+    if any(b <= a for a, b in zip(times, times[1:])):
+        raise UserError(f"at_times must increase, each time once, got {', '.join(f'{t:g}' for t in times)}"[:200])
+    if len(times) > MAX_TIMES:
+        raise UserError(f"at most {MAX_TIMES} at_times, got {len(times)}")
 
 
 def from_material(name, **overrides):

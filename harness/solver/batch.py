@@ -5,6 +5,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .approach import place
 from .resolution import joined, needs_tangential, step_caps
 from ..submodels.geometry.pair import centres_less_radius
 from ..submodels.registry import check_parameters, code_of, kernel_code, kernel_of
@@ -26,6 +27,7 @@ class Batch:
     params: np.ndarray
     ints: np.ndarray
     tangential_active: np.ndarray
+    free_steps: np.ndarray          # per row, the steps of its free approach before its first row step (approach.py)
 
     e_n = property(lambda self: self.spec.e_n)
     dt = property(lambda self: self.spec.dt)
@@ -38,8 +40,9 @@ class Batch:
 
 def join(batches):
     """One batch holding the impacts of several batches of one material and one dt (one engine run)."""
+    names = ("params", "ints", "tangential_active", "free_steps")
     return Batch(joined([b.spec for b in batches]), *(np.concatenate([getattr(b, name) for b in batches])
-                                                      for name in ("params", "ints", "tangential_active")))
+                                                      for name in names))
 
 
 def contact_point_lever(scene):
@@ -102,7 +105,8 @@ def batch_of(law, scene, spec, every_effect=False):
         ints[:, getattr(L, f"I_{family.upper()}")] = code
         stepping_slots(params, family, kernel_of(family, code), law, scene)
     ints[:, L.I_STEPPER] = list(STEPPERS).index((law.integrator, law.geometry))
-    return Batch(spec, params, ints, tangential)
+    free_steps = place(params, ints, scene.gap).steps if scene.gap > 0.0 else np.zeros(n, dtype=np.int64)
+    return Batch(spec, params, ints, tangential, free_steps)
 
 
 def stepping_slots(params, family, kernel, law, scene):

@@ -7,7 +7,8 @@ O_ACCEPTED = 8              # adaptive integrator: accepted steps (O_STEPS count
 O_STICKING = 9              # kernel: steps ending with |F_t| strictly inside the Coulomb cone (F_n > 0) or on its
                             # other side from the step before (a dashpot can carry it across); adaptive:
                             # stick phases begun, first touch included (an implicit spring: one more, never on it)
-N_OUT = 10
+O_ALPHA, O_X, O_Z = 10, 11, 12   # kernel: the last state's overlap and position (for the free flight after it)
+N_OUT = 13
 
 STATUS_OK = 0
 STATUS_NO_SEPARATION = 1

@@ -26,7 +26,7 @@ from .events import locate_release, split_at_event
 from .mesh import PEAK_POINTS, graded_step, parabola_peak, polynomial_peak
 from .schemes import step_paper
 from .specialise import specialised
-from .state import N_STATE, S_ALPHA, S_C, S_FN, S_FT, S_U, S_VX, S_VZ, S_W, S_Z, reset_history
+from .state import N_STATE, S_ALPHA, S_C, S_FN, S_FT, S_U, S_VX, S_VZ, S_W, S_X, S_Z, reset_history
 from .switches import PAPER, first_touch_with, step_with
 from .threads import in_threads
 
@@ -51,9 +51,9 @@ def integrate_rows(first, last, params, ints, out, history, stride, ext, work):
 @compiled
 def integrate_row(p, row, out, hist, stride, ext, w):
     """One impact from first touch to separation or the step cap: its outcomes into `out`, every stride-th step
-    into `hist`. The paper integrator locates its events and release inside their step (INTEGRATOR_EVENTS); the
-    engines' end the contact at the step. Compiled apart and without reference counting, so that reading its
-    work record (Work) costs no count."""
+    into `hist` (stride < 0: the states at the steps hist[:, 0] names, states.py). The paper integrator locates its
+    events and release inside their step (INTEGRATOR_EVENTS); the engines' end the contact at the step. Compiled
+    apart and without reference counting, so that reading its work record (Work) costs no count."""
     v = work_views(w)
     start(v, p, row, ext)
     located = INTEGRATOR_EVENTS[row[L.I_INTEGRATOR]]
@@ -73,6 +73,8 @@ def integrate_row(p, row, out, hist, stride, ext, w):
     for k in range(int(p[L.MAX_STEPS])):
         if grade_n > 0:
             h = graded_step(k, grade_n, p[L.GRADE_T])
+        elif k < 2 and p[L.FIRST_H] > 0.0:       # from a touch between two steps of the grid onto the grid
+            h = p[L.FIRST_H] if k == 0 else p[L.DT]
         indicator, h_last, a_peak, f_peak = advance(v, p, row, h, located, a_peak, f_peak, ext)
         steps = k + 1
         if indicator <= 0.0:
@@ -98,6 +100,8 @@ def integrate_row(p, row, out, hist, stride, ext, w):
         if stride > 0 and k % stride == 0 and k_rec < hist.shape[0]:
             record(hist[k_rec], t_now, v.o)
             k_rec += 1
+        elif stride < 0:
+            k_rec = record_states(hist, k_rec, steps, v.o)
         accept(v)
         if status == C.STATUS_OK:
             break
@@ -106,10 +110,14 @@ def integrate_row(p, row, out, hist, stride, ext, w):
             break
     out[C.O_VZ], out[C.O_VX], out[C.O_W] = v.s[S_VZ], v.s[S_VX], v.s[S_W]
     out[C.O_TC] = t_end if status == C.STATUS_OK else t_now
+    if p[L.ALPHA0] < 0.0:                       # its first step began apart: in contact from the step after
+        out[C.O_TC] -= p[L.DT]
     out[C.O_FMAX], out[C.O_AMAX] = f_peak, a_peak
     out[C.O_STEPS], out[C.O_STATUS], out[C.O_STICKING] = steps, status, stick_steps
-    for k in range(k_rec, hist.shape[0]):
-        hist[k, 0] = math.nan
+    out[C.O_ALPHA], out[C.O_X], out[C.O_Z] = v.s[S_ALPHA], v.s[S_X], v.s[S_Z]
+    if stride > 0:
+        for k in range(k_rec, hist.shape[0]):
+            hist[k, 0] = math.nan
 
 
 @njit(cache=True, inline="always")
@@ -127,14 +135,19 @@ def work_views(w):
 
 @njit(cache=True, inline="always")
 def start(v, p, row, ext):
-    """The state at first touch: the incident velocities, an incremental law's history, the stand-in sphere's
+    """The state at the row's start (first touch, or the last step of a free approach before it, apart and
+    force-free): the incident velocities, an incremental law's history, the stand-in sphere's
     centre, the force of a constant normal dashpot where the touch rule puts a sphere at gap 0 in contact, and its
     stepper's own first touch (switches.first_touch_with)."""
     s, st = v.s, v.st
     s[S_VZ], s[S_VX], s[S_W] = p[L.VZ0], p[L.VX0], p[L.W0]
     s[S_U] = -p[L.MASS] * p[L.VZ0]
     reset_history(row[L.I_NORMAL], s)
-    s[S_Z] = p[L.RADIUS]                          # stand-in sphere: centre at R above its apex
+    s[S_ALPHA], s[S_X] = p[L.ALPHA0], p[L.X0]     # 0 at first touch, else where the free approach left it
+    s[S_Z] = p[L.RADIUS] + p[L.Z0]                # stand-in sphere: centre at R above its apex at touch
+    if p[L.ALPHA0] < 0.0:                         # apart: no force before the first step
+        st[T_MARGIN] = st[T_HELD] = -1e-300
+        return
     touch_gap = touch_contact(row[L.I_TOUCH], p, 0.0)        # else gap 0 is no contact: no force at first touch
     if p[L.DAMPING_POWER] == 0.0 and touch_gap:
         s[S_FN] = -p[L.DAMPING_C0] * p[L.VZ0]   # a constant dashpot acts from first touch
@@ -188,6 +201,20 @@ def sample(v, t, f_n):
 def record(point, t, o):
     """One history point: t, alpha, F_n, F_t."""
     point[0], point[1], point[2], point[3] = t, o[S_ALPHA], o[S_FN], o[S_FT]
+
+
+@njit(cache=True, inline="always")
+def record_states(states, k_rec, steps, o):
+    """After step `steps`: the state (overlap, F_n, F_t, v_z, v_x, omega) into each row of `states` whose column 0
+    names this step (rows naming earlier steps, before the row's start, skipped); returns the next row."""
+    while k_rec < states.shape[0] and states[k_rec, 0] < steps:
+        k_rec += 1
+    while k_rec < states.shape[0] and states[k_rec, 0] == steps:
+        point = states[k_rec]
+        point[1], point[2], point[3] = o[S_ALPHA], o[S_FN], o[S_FT]
+        point[4], point[5], point[6] = o[S_VZ], o[S_VX], o[S_W]
+        k_rec += 1
+    return k_rec
 
 
 @njit(cache=True, inline="always")

@@ -7,6 +7,7 @@ import pandas as pd
 from ..infra.version import __version__
 from ..scenes.kinematics import rebound_quantities
 from ..data.results import impact_frame
+from ..data.states import attach, gather, states_frame
 from .stability import UnstableTimeStep
 from . import codes as C
 from . import layout as L
@@ -16,6 +17,7 @@ from .kernel import integrate
 from .mesh import graded_largest_step
 from .resolution import FixedTimeStep, run_spec
 from .batch import batch_of
+from .states import kernel_markers, states
 
 CONVERGED_START = 64             # steps per contact of the first level of the converged ladder
 CONVERGED_LIMIT = 2 ** 20        # finest level tried
@@ -28,8 +30,9 @@ def batch_at(law, scene, e_n, resolution, **spec_options):
     return batch_of(law, scene, run_spec(law, scene, e_n, resolution, **spec_options))
 
 
-def run_kernel(batch, history_points=0, rows=None):
-    """Integrate the batch (or the given rows of it); returns (out, history, wall seconds)."""
+def run_kernel(batch, history_points=0, rows=None, times=()):
+    """Integrate the batch (or the given rows of it); returns (out, history, wall seconds): the history of
+    `history_points` points, or with `times` the kernel's records of the states at them (states.py)."""
     params, ints = batch.params, batch.ints
     if rows is not None:
         params, ints = params[rows], ints[rows]
@@ -37,6 +40,8 @@ def run_kernel(batch, history_points=0, rows=None):
     history = np.zeros((len(params), history_points, 4))
     if history_points:
         stride = max(1, int(batch.steps_per_contact * 3 // history_points))   # ~3 contact times recorded
+    elif len(times):
+        stride, history = -1, kernel_markers(batch, times)[slice(None) if rows is None else rows]
     out = np.zeros((len(params), C.N_OUT))
     start = time.perf_counter()
     integrate(params, ints, out, history, stride, extension_table())
@@ -303,15 +308,19 @@ def simulate(law, scene, steps_per_contact=1000, converged=False, history_points
             batch, out, steps, dt, messages, wall = converged_batch(law, scene, e_n, tolerance, extrapolate)
         else:
             batch = batch_at(law, scene, e_n, steps_per_contact)
-            out, history, wall = run_kernel(batch, history_points)
-            if history_points:
+            out, history, wall = run_kernel(batch, 0 if scene.at_times else history_points, times=scene.at_times)
+            if history_points and not scene.at_times:
                 histories[e_n] = history
             messages = ["" if status == C.STATUS_OK else
                         f"{STATUS_TEXT[int(status)]} after {int(steps)} steps ({steps * batch.dt:.3g} s of contact)"
                         for status, steps in zip(out[:, C.O_STATUS], out[:, C.O_STEPS])]
             steps, dt = batch.steps_per_contact, batch.dt
-        frames.append(results_frame(law, scene, batch, out, wall, steps, dt, messages))
-    return pd.concat(frames, ignore_index=True), histories
+        frame = results_frame(law, scene, batch, out, wall, steps, dt, messages)
+        if scene.at_times and not converged and not reason:
+            attach(frame, states_frame(frame, states(batch, out, history, scene.at_times, scene.gap)))
+        frames.append(frame)
+    table = pd.concat(frames, ignore_index=True)
+    return attach(table, gather(frames)), histories
 
 
 def undefined_batch(law, scene, e_n, reason, converged, steps_per_contact):

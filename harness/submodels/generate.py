@@ -29,6 +29,10 @@ OWN = (     # the impact's own columns, before the families' blocks
     ("lever", "c of the slip's lever arm R - c alpha (paper 0)"),
     ("torque_lever", "c of the torque's lever R - c alpha (R_i - c alpha between two spheres)"),
     ("slip_radius", "slip form: 0 -> V_t - lever omega; r1 > 0 -> (r1 + R)/(r1 + R - d) V_t - R omega"),
+    ("alpha0", "the signed overlap at the row's start: 0 at first touch, < 0 after a free approach (approach.py)"),
+    ("x0", "the start's offset along the tangent from the touching position (two spheres, a stand-in sphere)"),
+    ("z0", "the start's offset along the normal from the touching position (> 0 apart)"),
+    ("first_h", "the first step where it is not dt: the paper scheme's, from the exact touch to the next step (0: dt)"),
 )
 FORMS = (("damping", damping.SLOTS, ("the normal dashpot c = c0 alpha^power", "")),
          ("tangential_damping", tangential_damping.SLOTS,

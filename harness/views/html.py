@@ -20,6 +20,7 @@ from .drawing import draw_all
 from .figure_files import filed
 from .paper_axes import (ANGLE_LABELS, PAPER_PANELS, PSI1_RANGE, draw_published, draw_rigid_body, in_window,
                          set_paper_axes)
+from .states_view import first_impacts
 from .pieces import figure_svg, legend_below, number, records, si
 
 
@@ -181,7 +182,8 @@ def scene_facts(scene):
             ("friction coefficient", number(scene.mu)),
             (f"impact speed ({'normal' if scene.speed_is == 'normal' else 'resultant'})", f"{number(scene.speed)} m/s"),
             ("wall", scene.wall), ("initial spin", f"{number(scene.omega0)} rad/s"),
-            ("gravity", f"{number(scene.gravity)} m/s^2"), ("target e_n", ", ".join(number(e) for e in scene.e_n))]
+            ("gravity", f"{number(scene.gravity)} m/s^2"), ("target e_n", ", ".join(number(e) for e in scene.e_n))] + (
+        [("gap before contact", si(scene.gap, "m"))] if scene.gap else [])
 
 
 def compare_context(comparison, files=()):
@@ -231,4 +233,6 @@ def compare_context(comparison, files=()):
                 attributions=[(name, records(table)) for name, table in comparison.attribution.items()],
                 versions=records(comparison.versions) if not comparison.versions.empty else None,
                 notes=[(engine, b["note"]) for engine, b in comparison.builds.items() if b.get("note")],
-                inputs=comparison.engine_inputs)
+                inputs=comparison.engine_inputs, states=records(first_impacts(comparison.states), digits=6),
+                more_states=0 if comparison.states is None else
+                len(comparison.states) - len(first_impacts(comparison.states)))

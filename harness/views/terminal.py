@@ -6,6 +6,7 @@ from ..analyses.causes import MENTION
 from ..analyses.physics import Tolerances
 from ..analyses.published import GOAL, meets_goal
 from ..infra.wording import counted
+from .states_view import FORMATS as STATE_FORMATS, SHOWN_COLUMNS as STATE_COLUMNS, first_impacts
 
 
 def summary_lines(frame):
@@ -35,6 +36,17 @@ def text_table(frame, columns, formats=None, missing=None):
         return "  " + "  ".join(v.ljust(w) if c == "note" else v.rjust(w)
                                 for v, w, c in zip(values, widths, columns)).rstrip()
     return "\n".join([line(columns)] + [line(r) for r in cells])
+
+
+def states_text(states, where="states.csv"):
+    """The first impacts' states (states_view.first_impacts) as a fixed-width table, with a line saying where the
+    rest is; '' when there are none."""
+    shown = first_impacts(states)
+    if shown is None:
+        return ""
+    more = len(states) - len(shown)
+    return ("states at the times asked (first impact of each engine):\n" +
+            text_table(shown, STATE_COLUMNS, STATE_FORMATS) + (f"\n  ({more} more rows in {where})" if more else ""))
 
 
 def print_summary(record, comparison, written):
@@ -77,6 +89,8 @@ def print_summary(record, comparison, written):
         print(f"skipped {skipped['engine']}: {skipped['reason']}")
     for failure in comparison.failures:
         print(f"{failure.engine} failed at e_n = {failure.e_n:g}: {failure.message}\n{failure.log_tail}")
+    if comparison.states is not None:
+        print(states_text(comparison.states))
     print(f"wrote {' and '.join(written)} (every table: --verbose, the CSVs and the report)")
 
 
@@ -233,6 +247,8 @@ def print_comparison(comparison, written):
             print(wrapped(f"  {row.engine} ({row.dialect}): {row.kind}: {row.detail}", indent=4))
     for failure in comparison.failures:
         print(f"\n{failure.engine} failed at e_n = {failure.e_n:g}: {failure.message}\n{failure.log_tail}")
+    if comparison.states is not None:
+        print("\n" + states_text(comparison.states))
     print(f"\nwrote {' and '.join(written)}")
 
 

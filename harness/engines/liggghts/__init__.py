@@ -13,6 +13,7 @@ STEPPING = ("hertz-mindlin", "linear-spring-dashpot")
 
 class Liggghts(Engine):
     NAME = "liggghts"
+    STARTS_APART = ("wall",)
     EXECUTABLE = PACKAGE = "liggghts"
     VERIFIED = ("3.8.0",)       # Debian 12's, the release its dialects were read from and checked on
     VARIABLE = BINARY_VARIABLE

@@ -10,6 +10,7 @@ from ...infra.render import render
 from ..dumps import read_final, read_observed, read_pair_batch, rebound
 from ..executable import chosen
 from ..runner import EngineFailure, run_engine
+from ..states_deck import gap_and_states, read_states, refuse_between_spheres
 from .dialect import COUNTERPARTS
 
 BINARY_VARIABLE = "HARNESS_LIGGGHTS"     # path of another liggghts binary (a custom build, or a test's fake)
@@ -112,6 +113,7 @@ def pair_deck(law, scene, spec, observe=False, own=None):
     rest, frozen when fixed), touching, their relative velocity the impact's, each of its own material; omega0 is the
     equivalent spin,
     so the projectile's own is (R* omega0 - R2 omega2)/R1."""
+    refuse_between_spheres(scene, "LIGGGHTS")
     model, tangential, _, properties, restitution = settings(law, scene, spec.e_n, {}) if own is None else \
         (own["model"], own["tangential"], own["options"], own["properties"], own["e_n"])
     if own and own["options"]:
@@ -164,9 +166,10 @@ def deck(law, scene, spec, options=None, observe=False):
     text = render(TEMPLATES, "batch.in.j2", harness_version=__version__, law=law.name, model=model, e_n=restitution,
                   types=1 + len(walls), E=[scene.E] + [w[0] for w in walls], nu=[scene.nu] + [w[1] for w in walls],
                   atoms=atoms, x_lo=-2.0 * radius, x_hi=len(atoms) * spacing, box_half=2.0 * radius,
-                  z_lo=-radius, z_hi=4.0 * radius, skin=0.5 * radius, mu=scene.mu,
+                  z_lo=-radius, z_hi=4.0 * radius + scene.gap, skin=0.5 * radius, mu=scene.mu,
                   properties=properties, tangential=tangential, options=options, dt=spec.dt, radius=radius,
-                  rho=scene.rho, chunk=spec.chunk, max_chunks=spec.chunks, observe=bool(observe))
+                  rho=scene.rho, chunk=spec.chunk, max_chunks=spec.chunks, observe=bool(observe),
+                  start_z=radius + scene.gap, **gap_and_states(scene, spec))
     return Deck(text, model, len(atoms))
 
 
@@ -178,8 +181,9 @@ def input_deck(law, scene, spec, observe, own):
              for i, (vn, vt, w) in enumerate(zip(spec.v_n0, spec.v_t0, spec.omega0))]
     text = render(TEMPLATES, "batch.in.j2", harness_version=__version__, law=law.name, types=1, atoms=atoms,
                   x_lo=-2.0 * radius, x_hi=len(atoms) * spacing, box_half=2.0 * radius, z_lo=-radius,
-                  z_hi=4.0 * radius, skin=0.5 * radius, dt=spec.dt, radius=radius, rho=scene.rho, chunk=spec.chunk,
-                  max_chunks=spec.chunks, observe=bool(observe), **own)
+                  z_hi=4.0 * radius + scene.gap, skin=0.5 * radius, dt=spec.dt, radius=radius, rho=scene.rho,
+                  chunk=spec.chunk, max_chunks=spec.chunks, observe=bool(observe), start_z=radius + scene.gap,
+                  **gap_and_states(scene, spec), **own)
     return Deck(text, own["model"], len(atoms))
 
 
@@ -219,6 +223,8 @@ def read_batch(scene, spec, directory, observe=False):
     final = rebound(read_dump(os.path.join(directory, "final.dump"), spec.impacts), scene.radius)
     if observe:
         final.update(read_observation(os.path.join(directory, OBSERVE_DUMP), spec.impacts, scene.radius, spec.dt))
+    if scene.at_times:
+        final["states"] = read_states(directory, scene, spec, scene.radius, "LIGGGHTS")
     return final
 
 
