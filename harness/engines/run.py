@@ -63,10 +63,14 @@ class Run:
         return hashlib.sha256(json.dumps(identity, sort_keys=True, default=repr).encode()).hexdigest()[:20]
 
 
+UNKEYED_DEFAULTS = {"spheres": None, "gap": 0.0, "at_times": ()}     # at these values a field leaves the key as it was
+
+
 def scene_identity(scene):
-    """The scene's fields that make a run what it is: not `extra`, nor `spheres` of a wall impact (None); every
-    number a float, so that angles 10 and 10.0 are the same run."""
-    return {k: as_floats(v) for k, v in asdict(scene).items() if k != "extra" and not (k == "spheres" and v is None)}
+    """The scene's fields that make a run what it is: not `extra`, nor the fields at UNKEYED_DEFAULTS; every number a
+    float, so that angles 10 and 10.0 are the same run."""
+    return {k: as_floats(v) for k, v in asdict(scene).items()
+            if k != "extra" and not (k in UNKEYED_DEFAULTS and v == UNKEYED_DEFAULTS[k])}
 
 
 def as_floats(value):

@@ -65,6 +65,8 @@ class Scene:
     material: str = "tcc13"
     speed_is: str = "resultant"
     spheres: tuple | None = None
+    gap: float = 0.0
+    at_times: tuple = ()
     extra: dict = field(default_factory=dict, compare=False)
 
     def __post_init__(self):
