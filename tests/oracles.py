@@ -38,6 +38,7 @@ __all__ = [
     "lsd_notension_e",
     "lsd_notension_t_c",
     "lsd_notension_g",
+    "damped_oscillator",
     "normal_impact",
     "kuwabara_kono_e",
     "thornton_e",
@@ -256,6 +257,17 @@ def lsd_notension_g(e):
     while lsd_notension_e(hi) > e:
         hi *= 2.0
     return brentq(lambda g: lsd_notension_e(g) - e, 0.0, hi, xtol=1e-16, rtol=1e-15, maxiter=500)
+
+
+def damped_oscillator(V, w0, g, t):
+    """Underdamped m x'' + c x' + k x = 0 from x(0) = 0, x'(0) = V (w0 = sqrt(k/m), g = c/(2 m w0) < 1):
+    x = V/w_d exp(-g w0 t) sin(w_d t), w_d = w0 sqrt(1 - g^2), and x' (any textbook, e.g. Meirovitch 2001 eq. 2.38)."""
+    t = np.asarray(t, dtype=float)
+    w_d = w0 * math.sqrt(1.0 - g * g)
+    decay = np.exp(-g * w0 * t)
+    x = V / w_d * decay * np.sin(w_d * t)
+    x_dot = V * decay * (np.cos(w_d * t) - g * w0 / w_d * np.sin(w_d * t))
+    return x, x_dot
 
 
 # ----------------------------------------------------------------------------------------------------------------
