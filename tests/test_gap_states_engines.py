@@ -158,3 +158,23 @@ def test_states_agree_with_the_dialect_at_equal_dt(engine, name, target, tmp_pat
     scales = np.array([spec.dt, overlap_scale, force_scale, force_scale, probe.speed, probe.speed,
                        probe.speed / scene.contact.radius])
     assert np.all(np.abs(seen - expected) <= 1e-6 * scales)
+
+
+def test_a_truncated_or_short_states_file_is_a_failed_run_naming_what_is_missing(tmp_path):
+    """Files as a truncating engine leaves them: no END line, or a named time without its state."""
+    from harness.engines.kratos.script import read_states as kratos_states
+    from harness.engines.runner import EngineFailure
+    from harness.engines.yade.script import read_states as yade_states
+    scene = scene_with(1e-4, (1e-5, 2e-5), 0.5)
+    spec = batch_at(compose("hertz-mindlin"), scene, 0.5, 200).spec
+    row = "0 0 -1e-4 0 0 0 0.025 0 -5 0"
+    (tmp_path / "cut.txt").write_text(row + "\n")
+    with pytest.raises(EngineFailure, match="truncated"):
+        yade_states(str(tmp_path / "cut.txt"), scene, spec)
+    (tmp_path / "short.txt").write_text("\n".join([row, row.replace("0 0", "1 0", 1), row.replace("0 0", "0 1", 1)])
+                                        + "\nEND\n")
+    with pytest.raises(EngineFailure, match="no state of impact 2 at t = 2e-05 s"):
+        yade_states(str(tmp_path / "short.txt"), scene, spec)
+    (tmp_path / "states.json").write_text('{"rows": [[0, 0, -1e-4, 0, 0, 0, 0.025, 0, -5, 0]]}')
+    with pytest.raises(EngineFailure, match="truncated"):
+        kratos_states(str(tmp_path / "states.json"), scene, spec)

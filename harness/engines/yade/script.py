@@ -183,8 +183,6 @@ def read_states(path, scene, spec):
     """The states at Scene.at_times (engines/start.py's array): overlap, forces along the normal and tangent, and
     the velocities and spin as the results table gives them (the half-step velocity the step ends with, a pair's
     relative one); EngineFailure when missing, truncated or short of a state."""
-    pair = bool(scene.spheres)
-    width = 15 if pair else 10
     try:
         with open(path) as handle:
             lines = handle.read().splitlines()
@@ -192,12 +190,15 @@ def read_states(path, scene, spec):
         raise EngineFailure("YADE wrote no states file") from None
     if not lines or lines[-1] != "END":
         raise EngineFailure("YADE states file is truncated (no END line)")
+    widths = (15,) if scene.spheres else (10, 15)  # a target's (or a stand-in sphere's) x, z, vx, vz, omega_y follow
     try:
-        rows = np.array([[float(x) for x in line.split()] for line in lines[:-1]]).reshape(-1, width)
+        rows = np.array([[float(x) for x in line.split()] for line in lines[:-1]], dtype=float)
     except ValueError:
         raise EngineFailure("YADE states file is malformed") from None
+    if rows.ndim != 2 or rows.shape[1] not in widths:
+        raise EngineFailure("YADE states file is malformed")
     bodies = rows[:, 5:]                    # x, z, vx, vz, omega_y of the sphere (and of its target)
-    moved = pair_rebound(bodies.reshape(-1, 5), scene) if pair else rebound(bodies[:, 1:], scene.radius)
+    moved = pair_rebound(bodies.reshape(-1, 5), scene) if scene.spheres else rebound(bodies[:, 1:5], scene.radius)
     values = np.column_stack([rows[:, :5], moved["v_n1"], moved["v_t1"], moved["omega1"]])
     return states_array(values, spec.impacts, scene, spec.dt, "YADE")
 
@@ -245,7 +246,8 @@ def input_script(scene, spec, own, observe=False):
         projectile, target = scene.spheres
         r1, r2, r_star = projectile.radius, target.radius, scene.contact.radius
         drift = approach_drift(scene, v_n0, v_t0)
-        common.update(radius=r1, height=r1 + r2 + scene.gap, rho=projectile.rho, ig2="Ig2_Sphere_Sphere_ScGeom", hertzian=False,
+        common.update(radius=r1, height=r1 + r2 + scene.gap, rho=projectile.rho, ig2="Ig2_Sphere_Sphere_ScGeom",
+                      hertzian=False,
                       target={"radius": r2, "fixed": target.fixed, "omega": target.omega},
                       spheres=[{"x": i * 3.0 * (r1 + r2) + i * drift, "vx": float(vt), "vz": -float(vn),
                                 "omegay": (r_star * float(w) - r2 * target.omega) / r1}
