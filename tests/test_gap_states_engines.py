@@ -127,6 +127,38 @@ def elastic_hertz_peaks_after_a_gap(engine, tmp_path):
     assert final["states"][:, 0, 1] == pytest.approx(-(gap - v_n * final["states"][:, 0, 0]), rel=1e-9)
 
 
+@needs("yade")
+def test_yade_pair_touches_where_the_straight_approach_meets_the_target(tmp_path):
+    pair_approach("yade", tmp_path)
+
+
+@needs("kratos")
+def test_kratos_pair_touches_where_the_straight_approach_meets_the_target(tmp_path):
+    pair_approach("kratos", tmp_path)
+
+
+def pair_approach(engine, tmp_path):
+    """A projectile gap above its free target moves straight at (V_t, -V_n) relative to it: overlap R1 + R2 - |r(t)|,
+    r = (V_t t, R1 + R2 + gap - V_n t), no force, incident velocities before the touch, where |r(t)| = R1 + R2; one
+    step before it no force, two steps after it a repulsive one."""
+    spheres = (Sphere(radius=25e-3), Sphere(radius=40e-3))
+    probe = scene_with(0.0, (), 0.5, spheres)
+    spec = batch_at(ENGINES[engine].dialect("hertz-mindlin", {}, "sphere"), probe, 0.5, STEPS).spec
+    centres, gap, dt = 65e-3, 2e-4, spec.dt
+    v_n, v_t = spec.v_n0, spec.v_t0
+    start = centres + gap
+    touch = (v_n * start - np.sqrt((v_n * start) ** 2 - (v_n ** 2 + v_t ** 2) * (start ** 2 - centres ** 2))) / \
+        (v_n ** 2 + v_t ** 2)
+    times = sorted([0.5 * float(touch.min()), float(touch.min()) - dt, float(touch.max()) + 2.0 * dt])
+    final, spec, _ = run(engine, "hertz-mindlin", scene_with(gap, times, 0.5, spheres), 0.5, tmp_path)
+    states = final["states"]
+    t = states[:, 0, 0]
+    assert states[:, 0, 1] == pytest.approx(centres - np.hypot(v_t * t, start - v_n * t), rel=1e-9)
+    assert np.all(states[:, :2, 2:4] == 0.0)
+    assert states[:, 0, 4] == pytest.approx(-v_n, rel=1e-12) and states[:, 0, 5] == pytest.approx(v_t, abs=1e-12)
+    assert np.all(states[:, 1, 1] < 0.0) and np.all(states[:, 2, 1] > 0.0) and np.all(states[:, 2, 2] > 0.0)
+
+
 @pytest.mark.skip(reason="needs the kernel's states (branch i42-gap)")
 @needs("yade")
 @needs("kratos")
