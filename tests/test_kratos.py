@@ -164,7 +164,7 @@ def test_hostile_values_cannot_reach_a_script(value):
     with pytest.raises(RenderError):
         render(kratos.TEMPLATES, "batch.py.j2", harness_version="0", law="hertz-mindlin",
                counterpart="DEM_D_Hertz_viscous_Coulomb", e_n=value, mu=0.1, impacts=1, target="wall", dt=1e-7,
-               chunk=10, max_chunks=10, observe=False, spheres=[], materials=[], wall=None)
+               chunk=10, max_chunks=10, named=[], observe=False, spheres=[], materials=[], wall=None)
 
 
 @pytest.mark.parametrize("word", ["ball\nimport os", "ball\"", "a b"])
@@ -172,7 +172,7 @@ def test_material_names_outside_the_vocabulary_are_refused(word):
     with pytest.raises(RenderError):
         render(kratos.TEMPLATES, "batch.py.j2", harness_version="0", law="hertz-mindlin",
                counterpart="DEM_D_Hertz_viscous_Coulomb", e_n=0.5, mu=0.1, impacts=1, target="wall", dt=1e-7,
-               chunk=10, max_chunks=10, observe=False, spheres=[], wall=None,
+               chunk=10, max_chunks=10, named=[], observe=False, spheres=[], wall=None,
                materials=[{"name": word, "E": 1e9, "nu": 0.3, "rho": 1.0}])
 
 

@@ -12,12 +12,13 @@ from ...infra.version import __version__
 from ...infra.wording import counted
 from ..dumps import pair_rebound, rebound
 from ..runner import EngineFailure, read_tail, run_engine
+from ..start import approach_drift, stepping, states_array
 from .dialect import COUNTERPARTS
 
 TEMPLATES = Path(__file__).resolve().parent / "templates"
 RIGID_SCALE = 1e20              # a rigid wall: its E this many times the sphere's (Kratos' own tests use 1e20)
 INPUT = "harness_kratos.py"
-RESULT, OBSERVED = "result.json", "observe.json"
+RESULT, OBSERVED, STATES = "result.json", "observe.json", "states.json"
 # every sphere starts CLEARANCE of the contact's size clear of its target: Kratos counts contact from overlap > 0, and
 # at a gap of exactly 0 the round-off of the distance to the face (it grows with x) would decide whether a sphere
 # touches at step 0. The same gap in every batch (batched = alone), above that round-off for batches some metres wide,
@@ -41,30 +42,36 @@ def typed(lines):
     return out
 
 
+def clearance(scene, size):
+    """How far above touching a sphere starts: Scene.gap, else CLEARANCE of the contact's size."""
+    return scene.gap if scene.gap > 0.0 else CLEARANCE * size
+
+
 def wall_spheres(scene, spec):
-    """Every impact's sphere touching the plane z = 0 (CLEARANCE), 4R apart, each over its own square of the wall (3R
-    wide); the materials of the sphere and the wall."""
+    """Every impact's sphere touching the plane z = 0 (CLEARANCE) or Scene.gap above it, 4R apart, each over its own
+    square of the wall (3R wide), both widened by the approach's drift; the materials of the sphere and the wall."""
     radius = scene.radius
-    gap = CLEARANCE * radius
-    spheres = [{"x": i * 4.0 * radius, "z": radius + gap, "radius": radius, "vx": float(vt),
+    gap, drift = clearance(scene, radius), approach_drift(scene, spec.v_n0, spec.v_t0)
+    spheres = [{"x": i * 4.0 * radius + 2.0 * i * drift, "z": radius + gap, "radius": radius, "vx": float(vt),
                 "vz": -float(vn), "omegay": float(w), "material": "ball", "fixed": False}
                for i, (vn, vt, w) in enumerate(zip(spec.v_n0, spec.v_t0, spec.omega0))]
     wall = {"same": (scene.E, scene.nu), "rigid": (scene.E * RIGID_SCALE, scene.nu),
             "other": (scene.wall_E, scene.wall_nu)}[scene.wall]
     materials = [{"name": "ball", "E": scene.E, "nu": scene.nu, "rho": scene.rho},
                  {"name": "wall", "E": wall[0], "nu": wall[1], "rho": scene.rho}]
-    return spheres, materials, 1.5 * radius
+    return spheres, materials, 1.5 * radius + drift
 
 
 def pair_spheres(scene, spec):
-    """Every impact a projectile touching its target below it (CLEARANCE; the target at rest, its own spin, fixed or
-    free), their relative velocity the impact's; omega0 is the equivalent spin, so the projectile's own is
-    (R* omega0 - R2 omega2)/R1."""
+    """Every impact a projectile touching its target below it (CLEARANCE) or Scene.gap above touching (the target at
+    rest, its own spin, fixed or free), their relative velocity the impact's; omega0 is the equivalent spin, so the
+    projectile's own is (R* omega0 - R2 omega2)/R1."""
     projectile, target = scene.spheres
     r1, r2, r_star = projectile.radius, target.radius, scene.contact.radius
-    spheres, gap = [], CLEARANCE * (r1 + r2)
+    spheres, gap = [], clearance(scene, r1 + r2)
+    drift = approach_drift(scene, spec.v_n0, spec.v_t0)
     for i, (vn, vt, w) in enumerate(zip(spec.v_n0, spec.v_t0, spec.omega0)):
-        x = i * 3.0 * (r1 + r2)
+        x = i * 3.0 * (r1 + r2) + i * drift
         spheres.append({"x": x, "z": r1 + r2 + gap, "radius": r1, "vx": float(vt), "vz": -float(vn),
                         "omegay": (r_star * float(w) - r2 * target.omega) / r1, "material": "ball", "fixed": False})
         spheres.append({"x": x, "z": 0.0, "radius": r2, "vx": 0.0, "vz": 0.0, "omegay": target.omega,
@@ -86,7 +93,7 @@ def script(law, scene, spec, observe=False, own=None):
         counterpart, e_n, mu = own["counterpart"], own["e_n"], own["mu"]
     return render(TEMPLATES, "batch.py.j2", harness_version=__version__, law=law.name,
                   counterpart=counterpart, e_n=e_n, mu=mu, impacts=spec.impacts, target=target,
-                  dt=spec.dt, chunk=spec.chunk, max_chunks=spec.chunks, observe=bool(observe), spheres=spheres,
+                  **stepping(scene, spec), observe=bool(observe), spheres=spheres,
                   materials=materials, wall=wall)
 
 
@@ -139,7 +146,25 @@ def read_outputs(scene, spec, directory, observe):
     final = pair_rebound(rows, scene) if scene.spheres else rebound(rows[:, 1:], scene.radius)
     if observe:
         final.update(read_observation(os.path.join(directory, OBSERVED), spec))
+    if scene.at_times:
+        final["states"] = read_states(os.path.join(directory, STATES), scene, spec)
     return final
+
+
+def read_states(path, scene, spec):
+    """The states at Scene.at_times (engines/start.py's array): overlap from the positions, the sphere's total force
+    (TOTAL_FORCES: its one contact's, Kratos keeps no per-contact force) along the normal and tangent, and the
+    velocities and spin as the results table gives them (the symplectic Euler's velocity the step ends with)."""
+    data = read_json(path, "states file")
+    width = 15 if scene.spheres else 10
+    try:
+        rows = np.array(data["rows"], dtype=float).reshape(-1, width)
+    except (KeyError, TypeError, ValueError):
+        raise EngineFailure("Kratos states file is malformed") from None
+    bodies = rows[:, 5:]                    # x, z, vx, vz, omega_y of the sphere (and of its target)
+    moved = pair_rebound(bodies.reshape(-1, 5), scene) if scene.spheres else rebound(bodies[:, 1:], scene.radius)
+    values = np.column_stack([rows[:, :5], moved["v_n1"], moved["v_t1"], moved["omega1"]])
+    return states_array(values, spec.impacts, scene, spec.dt, "Kratos")
 
 
 def read_observation(path, spec):

@@ -8,14 +8,16 @@ import numpy as np
 from ...infra.version import __version__
 from ...infra.render import render
 from ...infra.wording import counted
-from ..dumps import pair_rebound
+from ..dumps import pair_rebound, rebound
 from ..runner import EngineFailure, remove_engine_tmpdir, run_engine
+from ..start import approach_drift, stepping, states_array
 from .dialect import COUNTERPARTS
 from .flavours import environment, python
 
 TEMPLATES = Path(__file__).resolve().parent / "templates"
 
 OBSERVE_FILE = "observe.txt"    # observe mode: per sphere, first and last real step, peak normal force and overlap
+STATES_FILE = "states.txt"      # Scene.at_times: per sphere and named time, its state after the named step
 RIGID_E = 1e100     # a rigid wall's young: (1 - nu^2)/E vanishes beside the sphere's, and YADE's E_a E_b stays finite
 PAIR_COLUMNS = 11   # a pair's result row: index, then x, z, vx, vz, omega_y of the projectile and of its target
 
@@ -37,9 +39,9 @@ def script(law, scene, spec, linear="viscel", observe=False):
     spheres = [{"x": i * 4.0 * radius, "vx": float(vt), "vz": -float(vn), "omegay": float(w)}
                for i, (vn, vt, w) in enumerate(zip(v_n0, v_t0, omega0))]
     common = dict(harness_version=__version__, law=law.name, law2=COUNTERPARTS[law.name], e_n=e_n, rho=scene.rho,
-                  friction_angle=math.atan(scene.mu), radius=radius, height=radius, spheres=spheres,
-                  ig2="Ig2_Wall_Sphere_ScGeom", hertzian=True, dt=spec.dt, chunk=spec.chunk,
-                  max_chunks=spec.chunks, observe=bool(observe), other=None, target=None)
+                  friction_angle=math.atan(scene.mu), radius=radius, height=radius + scene.gap, spheres=spheres,
+                  ig2="Ig2_Wall_Sphere_ScGeom", hertzian=True, **stepping(scene, spec), observe=bool(observe),
+                  other=None, target=None)
     if scene.spheres:
         return pair_script(scene, e_n, v_n0, v_t0, omega0, common)
     if scene.wall != "same":
@@ -54,7 +56,7 @@ def script(law, scene, spec, linear="viscel", observe=False):
         if not kp > k1:             # YADE throws 'k1 have to be less as kp!' and the interpreter aborts (signal 6)
             raise EngineFailure(f"YADE's Luding law needs kp > k1, i.e. e_n < 1; e_n = {e_n:g} was not run")
         big = LudingIncremental.HUGE * radius
-        spacing = 2.0 * math.sqrt(2.0 * big * radius)        # a neighbour's huge sphere stays 4R below
+        spacing = 2.0 * math.sqrt(2.0 * big * radius) + approach_drift(scene, v_n0, v_t0)  # a neighbour's: 4R below
         for i, s in enumerate(spheres):
             s["x"] = i * spacing
         return render(TEMPLATES, "batch.py.j2", **{**common, "ig2": "Ig2_Sphere_Sphere_ScGeom", "hertzian": False},
@@ -90,11 +92,12 @@ def pair_script(scene, e_n, v_n0, v_t0, omega0, common):
     spin, so the projectile's own is (R* omega0 - R2 omega2)/R1."""
     projectile, target = scene.spheres
     r1, r2, r_star = projectile.radius, target.radius, scene.contact.radius
-    spheres = [{"x": i * 3.0 * (r1 + r2), "vx": float(vt), "vz": -float(vn),
+    drift = approach_drift(scene, v_n0, v_t0)
+    spheres = [{"x": i * 3.0 * (r1 + r2) + i * drift, "vx": float(vt), "vz": -float(vn),
                 "omegay": (r_star * float(w) - r2 * target.omega) / r1}
                for i, (vn, vt, w) in enumerate(zip(v_n0, v_t0, omega0))]
     return render(TEMPLATES, "batch.py.j2", **{
-        **common, "radius": r1, "height": r1 + r2, "spheres": spheres, "rho": projectile.rho,
+        **common, "radius": r1, "height": r1 + r2 + scene.gap, "spheres": spheres, "rho": projectile.rho,
         "ig2": "Ig2_Sphere_Sphere_ScGeom", "hertzian": False,
         "other": {"young": target.E, "poisson": target.nu, "rho": target.rho},
         "target": {"radius": r2, "fixed": target.fixed, "omega": target.omega}},
@@ -171,7 +174,33 @@ def read_batch(scene, spec, directory, observe=False):
         final = final_of(read_result(os.path.join(directory, "result.txt"), n))
     if observe:
         final.update(read_observation(os.path.join(directory, OBSERVE_FILE), n, spec.dt))
+    if scene.at_times:
+        final["states"] = read_states(os.path.join(directory, STATES_FILE), scene, spec)
     return final
+
+
+def read_states(path, scene, spec):
+    """The states at Scene.at_times (engines/start.py's array): overlap, forces along the normal and tangent, and
+    the velocities and spin as the results table gives them (the half-step velocity the step ends with, a pair's
+    relative one); EngineFailure when missing, truncated or short of a state."""
+    try:
+        with open(path) as handle:
+            lines = handle.read().splitlines()
+    except OSError:
+        raise EngineFailure("YADE wrote no states file") from None
+    if not lines or lines[-1] != "END":
+        raise EngineFailure("YADE states file is truncated (no END line)")
+    widths = (15,) if scene.spheres else (10, 15)  # a target's (or a stand-in sphere's) x, z, vx, vz, omega_y follow
+    try:
+        rows = np.array([[float(x) for x in line.split()] for line in lines[:-1]], dtype=float)
+    except ValueError:
+        raise EngineFailure("YADE states file is malformed") from None
+    if rows.ndim != 2 or rows.shape[1] not in widths:
+        raise EngineFailure("YADE states file is malformed")
+    bodies = rows[:, 5:]                    # x, z, vx, vz, omega_y of the sphere (and of its target)
+    moved = pair_rebound(bodies.reshape(-1, 5), scene) if scene.spheres else rebound(bodies[:, 1:5], scene.radius)
+    values = np.column_stack([rows[:, :5], moved["v_n1"], moved["v_t1"], moved["omega1"]])
+    return states_array(values, spec.impacts, scene, spec.dt, "YADE")
 
 
 def final_of(rows, log_tail=""):
@@ -210,15 +239,17 @@ def input_script(scene, spec, own, observe=False):
     radius = scene.radius
     spheres = [{"x": i * 4.0 * radius, "vx": float(vt), "vz": -float(vn), "omegay": float(w)}
                for i, (vn, vt, w) in enumerate(zip(v_n0, v_t0, omega0))]
-    common = dict(harness_version=__version__, law="input", e_n=e_n, rho=scene.rho, radius=radius, height=radius,
-                  spheres=spheres, ig2="Ig2_Wall_Sphere_ScGeom", hertzian=True, dt=spec.dt, chunk=spec.chunk,
-                  max_chunks=spec.chunks, observe=bool(observe), other=None, target=None, **own)
+    common = dict(harness_version=__version__, law="input", e_n=e_n, rho=scene.rho, radius=radius,
+                  height=radius + scene.gap, spheres=spheres, ig2="Ig2_Wall_Sphere_ScGeom", hertzian=True,
+                  **stepping(scene, spec), observe=bool(observe), other=None, target=None, **own)
     if scene.spheres:
         projectile, target = scene.spheres
         r1, r2, r_star = projectile.radius, target.radius, scene.contact.radius
-        common.update(radius=r1, height=r1 + r2, rho=projectile.rho, ig2="Ig2_Sphere_Sphere_ScGeom", hertzian=False,
+        drift = approach_drift(scene, v_n0, v_t0)
+        common.update(radius=r1, height=r1 + r2 + scene.gap, rho=projectile.rho, ig2="Ig2_Sphere_Sphere_ScGeom",
+                      hertzian=False,
                       target={"radius": r2, "fixed": target.fixed, "omega": target.omega},
-                      spheres=[{"x": i * 3.0 * (r1 + r2), "vx": float(vt), "vz": -float(vn),
+                      spheres=[{"x": i * 3.0 * (r1 + r2) + i * drift, "vx": float(vt), "vz": -float(vn),
                                 "omegay": (r_star * float(w) - r2 * target.omega) / r1}
                                for i, (vn, vt, w) in enumerate(zip(v_n0, v_t0, omega0))])
     return render(TEMPLATES, "batch.py.j2", **common)
