@@ -209,7 +209,7 @@ def test_two_sphere_decks_refuse_a_gap_rather_than_start_touching(engine):
         ENGINES[engine].render_batch(run.law, run.scene, run.spec, run.options_dict, run.observe)
 
 
-@pytest.mark.parametrize("engine, target", [("yade", "wall"), ("kratos", "wall"), ("lammps", "sphere")])
+@pytest.mark.parametrize("engine, target", [("yade", "sphere"), ("kratos", "sphere"), ("lammps", "sphere")])
 def test_an_engine_whose_inputs_start_touching_is_skipped_with_the_reason(engine, target):
     from harness.runs.availability import statuses
     from harness.runs.request import Request

@@ -15,6 +15,7 @@ from .venv import PYTHON_VARIABLE, probe
 
 class Kratos(Engine):
     NAME = "kratos"
+    STARTS_APART = ("wall",)
     INPUT_SUFFIX, INPUT_NAME = ".py", INPUT
     EXECUTABLE, VARIABLE = "python", PYTHON_VARIABLE      # a prefix's bin/python; another interpreter
     COUNTERPARTS, DIALECTS, PAIR_DIALECTS = COUNTERPARTS, DIALECTS, PAIR_DIALECTS

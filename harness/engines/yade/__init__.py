@@ -19,6 +19,7 @@ LEAPFROG = ("hertz-mindlin", "linear-spring-dashpot")
 
 class Yade(Engine):
     NAME = "yade"
+    STARTS_APART = ("wall",)
     INPUT_SUFFIX, INPUT_NAME = ".py", "harness_yade.py"
     EXECUTABLE, VARIABLE = "/usr/bin/python3.11", PYTHON_VARIABLE
     VERIFIED = ("2023.02a",)    # Debian 12's, the release its dialects were read from and checked on
