@@ -57,7 +57,7 @@ def run_scene(law, kind, values, scene, resolution):
     cases = [build(law, values, scene, e_n, resolution) for e_n in scene.e_n]
     series, rows, skipped = [], [], {}
     for case in cases:
-        grid = case.variant.dt * np.unique(np.round(np.linspace(0, case.variant.steps, RECORDED)))
+        grid = recorded_times(case)
         gain_from = settle_time(law, case, values) if kind.NAME == "rest" else 0.0
         result = simulate_system([case.variant], grid, gain_from=gain_from, kept_events=kept_events(values))
         if result.metrics[0, M_STATUS] != STATUS_OK:
@@ -73,6 +73,11 @@ def run_scene(law, kind, values, scene, resolution):
                 rows.append(check_row(check, f"{case.name}{label}", value, arguments, note))
     return SceneRun(kind.NAME, pd.concat(series, ignore_index=True), pd.DataFrame(rows, columns=CHECK_COLUMNS),
                     skipped)
+
+
+def recorded_times(case):
+    """The times of a case's series: RECORDED evenly spaced steps from 0 to the end of its run."""
+    return case.variant.dt * np.unique(np.round(np.linspace(0, case.variant.steps, RECORDED)))
 
 
 def check_row(check, case, value, arguments, note):
