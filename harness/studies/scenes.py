@@ -2,40 +2,23 @@
 small-system integrator's variants (one per target e_n), and its run becomes a time series and the kind's
 closed-form checks (measured value, expected value, error, tolerance, passed)."""
 import math
-import os
 from dataclasses import dataclass
 
 import numpy as np
 import pandas as pd
 
-from ..data.results import write_csv
 from ..infra.errors import UserError
 from ..solver.resolution import CONVERGED, FixedTimeStep
 from ..solver.system import E_KIND, E_VN, F_ALPHA, F_FN, M_GAIN, M_STATUS, PART, STATUS_OK, TOUCH
 from ..solver.system_contacts import WALL_BELOW
 from ..solver.system_rows import contact_properties
 from ..solver.system_run import Sphere, Variant, simulate_system
+from .scene_rows import CHECK_COLUMNS, SceneRun, check_row, series_rows
+from .scene_engines import agreement_row, dialect_run, engine_run, scene_engines
 
-CHECK_COLUMNS = ("check", "engine", "case", "quantity", "value", "expected", "error", "tolerance", "passed", "note")
-SERIES_COLUMNS = ("case", "t", "body", "x", "z", "vx", "vz", "w")
 RECORDED = 201                      # times of the series at most: every cadence-th step from 0, and the last
 SETTLED = 1e-9                      # what is left of the first oscillation's amplitude when a resting sphere is held
 ENGINE = "reference"
-
-
-@dataclass(frozen=True)
-class SceneRun:
-    """A scene's run: its `series` (one row per case, recorded time and body) and its `checks` (CHECK_COLUMNS), and
-    the checks that do not apply to the law with the reason (`skipped`, {check: reason})."""
-    scene: str
-    series: pd.DataFrame
-    checks: pd.DataFrame
-    skipped: dict
-
-    def __repr__(self):
-        passed = int(self.checks.passed.sum())
-        return (f"SceneRun({self.scene}: {passed} of {len(self.checks)} checks passed; "
-                f".series {len(self.series)} rows, .checks)")
 
 
 @dataclass(frozen=True)
@@ -48,13 +31,15 @@ class Case:
     e_n: float
 
 
-def run_scene(law, kind, values, scene, resolution):
+def run_scene(law, kind, values, scene, resolution, engines=(), engine_options=None):
     """The SceneRun of the scene `kind` (harness.scenes.catalogue) with parameter `values` for `law` on the sphere
-    and wall of `scene` (harness.scenes.scene.Scene: radius, E, nu, rho, mu, e_n, speed) at `resolution`."""
+    and wall of `scene` (harness.scenes.scene.Scene: radius, E, nu, rho, mu, e_n, speed) at `resolution`, on the
+    reference and on each of `engines` (names; {name: options} in `engine_options`) that runs the scene."""
     if scene.wall != "same":
         raise UserError(f"scene {kind.NAME} puts the sphere on a wall of its own material: give --wall same")
-    build, measures = SCENES[kind.NAME]
+    build, _ = SCENES[kind.NAME]
     cases = [build(law, values, scene, e_n, resolution) for e_n in scene.e_n]
+    runners, unavailable = scene_engines(kind.NAME, law.name, engines, engine_options or {})
     series, rows, skipped = [], [], {}
     for case in cases:
         grid = recorded_times(case)
@@ -63,16 +48,35 @@ def run_scene(law, kind, values, scene, resolution):
         if result.metrics[0, M_STATUS] != STATUS_OK:
             raise UserError(f"scene {kind.NAME}, {case.name}: the state became non-finite (a time step too long "
                             "for the law?): give a larger --steps-per-contact")
-        series.append(series_rows(case.name, grid, result.trace[0]))
-        for check in kind.CHECKS:
-            reason = not_applicable(check.name, law)
-            if reason:
-                skipped[check.name] = reason
+        series.append(series_rows(ENGINE, case.name, grid, result.trace[0]))
+        rows += case_checks(ENGINE, law, kind, values, case, result, skipped)
+        for engine, options in runners:
+            if engine.NAME in unavailable:
                 continue
-            for label, value, arguments, note in measures[check.name](law, case, values, result):
-                rows.append(check_row(check, f"{case.name}{label}", value, arguments, note))
+            ran, failure = engine_run(engine, kind.NAME, case, grid, options)
+            if failure:
+                unavailable[engine.NAME] = failure
+                continue
+            series.append(series_rows(engine.NAME, case.name, grid, ran.trace[0]))
+            rows += case_checks(engine.NAME, law, kind, values, case, ran, skipped)
+            dialect = dialect_run(engine, law.name, case, grid, options, gain_from, kept_events(values))
+            rows.append(agreement_row(engine, kind.NAME, case, ran, dialect))
     return SceneRun(kind.NAME, pd.concat(series, ignore_index=True), pd.DataFrame(rows, columns=CHECK_COLUMNS),
-                    skipped)
+                    skipped, unavailable)
+
+
+def case_checks(engine, law, kind, values, case, result, skipped):
+    """The kind's closed-form check rows of one case's result on `engine`."""
+    _, measures = SCENES[kind.NAME]
+    rows = []
+    for check in kind.CHECKS:
+        reason = not_applicable(check.name, law)
+        if reason:
+            skipped[check.name] = reason
+            continue
+        for label, value, arguments, note in measures[check.name](law, case, values, result):
+            rows.append(check_row(check, engine, f"{case.name}{label}", value, arguments, note))
+    return rows
 
 
 def cadence(steps):
@@ -85,32 +89,6 @@ def recorded_times(case):
     an engine's output follows with one equal-style variable)."""
     steps = case.variant.steps
     return case.variant.dt * np.unique(np.append(np.arange(0, steps + 1, cadence(steps)), steps)).astype(float)
-
-
-def check_row(check, case, value, arguments, note):
-    """One row of checks.csv: the measured value against the check's closed form at `arguments`."""
-    expected = check.closed_form(**arguments)
-    error = abs(value - expected) / abs(expected) if check.relative else abs(value - expected)
-    passed = bool(np.isfinite(error) and error <= check.tolerance)
-    return dict(check=check.name, engine=ENGINE, case=case, quantity=check.quantity, value=value, expected=expected,
-                error=error, tolerance=check.tolerance, passed=passed, note=note)
-
-
-def series_rows(case, grid, trace):
-    """The series of one case: each recorded time and body with x, z, vx, vz, w."""
-    n_times, n_bodies, _ = trace.shape
-    frame = pd.DataFrame(trace.reshape(n_times * n_bodies, -1), columns=["x", "z", "vx", "vz", "w"])
-    frame.insert(0, "body", np.tile(np.arange(n_bodies), n_times))
-    frame.insert(0, "t", np.repeat(grid, n_bodies))
-    frame.insert(0, "case", case)
-    return frame
-
-
-def write_scene(directory, run):
-    """series.csv and checks.csv in `directory` (created if missing), each written whole or not at all."""
-    os.makedirs(directory, exist_ok=True)
-    write_csv(run.series, os.path.join(directory, "series.csv"))
-    write_csv(run.checks, os.path.join(directory, "checks.csv"))
 
 
 def kept_events(values):
@@ -277,7 +255,8 @@ def measured_overlap(law, case, values, result):
     else:
         arguments.update(k_n=law.normal.parameters(case.contact, case.e_n, case.variant.speed).values[0])
     yield ("", float(result.final[0, 0, F_ALPHA]), arguments,
-           f"after {values['steps']} steps held; largest energy gain while held {gain:.3g} J")
+           f"after {values['steps']} steps held" + ("" if math.isnan(gain) else
+                                                     f"; largest energy gain while held {gain:.3g} J"))
 
 
 # slide-to-roll
