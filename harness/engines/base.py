@@ -42,6 +42,7 @@ class Engine:
     CONTACT_LINES = ()          # how the lines of its input that set the contact law begin (calibrate prints them)
     SPHERE_STEP_S = 1e-6        # and per sphere-step (docs/performance.md)
     SCENE_KINDS = ()            # the scene kinds beyond impact its inputs run (names of harness.scenes.catalogue)
+    START_FRICTION = True       # its set-up's forces of a contact present at step 0 include the tangential force
 
     @property
     def dialect_label(self):

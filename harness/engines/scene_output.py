@@ -1,7 +1,7 @@
 """What the LAMMPS family's scene inputs write and how harness reads it back into the small-system integrator's
 SystemResult: `start.dump` and `final.dump` (every sphere's `id x z vx vz omegay fz` before and after the run),
 `series.dump` (the same at the series' recorded times, and for a bounce every step near the wall), and for a stack
-`walls.dump` (each sphere's wall force) and `pairs.dump` (each touching pair's normal force) at the end."""
+each engine's own dumps of the contact forces at the end (read by the engine, last_frame)."""
 import math
 import os
 from dataclasses import dataclass
@@ -73,8 +73,9 @@ def read_dump(path, engine, n_bodies):
     return frames
 
 
-def read_scene_output(engine, kind, case, grid, directory):
-    """The SystemResult of a finished scene run in `directory` (Engine.read_scene)."""
+def read_scene_output(engine, kind, case, grid, directory, read_forces=None):
+    """The SystemResult of a finished scene run in `directory` (Engine.read_scene); with several spheres,
+    read_forces(directory, state, variant) gives {(i, j): (F_n, F_t)} of the contacts at the end (j < 0 a wall)."""
     v = case.variant
     n_bodies = len(v.spheres)
     frames = read_dump(os.path.join(directory, "series.dump"), engine, n_bodies)
@@ -94,7 +95,8 @@ def read_scene_output(engine, kind, case, grid, directory):
     if n_bodies == 1:
         final[0, 0, F_FN] = final_state[0, FZ] + sphere_mass(v.spheres[0].radius, v.rho) * v.gravity
     else:
-        final[0, :, F_FN], final[0, :, F_FT] = contact_forces(directory, engine, pairs, final_state, v)
+        forces = read_forces(directory, final_state, v)
+        final[0, :, F_FN], final[0, :, F_FT] = contact_forces(forces, pairs, final_state, v)
     metrics = np.full((1, N_METRICS), np.nan)
     metrics[0, M_STATUS] = STATUS_OK if np.isfinite(trace).all() else STATUS_NONFINITE
     metrics[0, M_STEPS], metrics[0, M_TIME], metrics[0, M_EVENTS] = v.steps, v.steps * v.dt, len(events)
@@ -162,21 +164,11 @@ def last_frame(path, engine, columns):
     return rows
 
 
-def contact_forces(directory, engine, pairs, state, variant):
-    """(F_n, F_t) of each contact at the end: from walls.dump (`id flag fx fz`) a sphere's fz (below; -fz above)
-    and fx as F_t, from pairs.dump each touching pair's normal force (F_t not written: NaN); 0 where not touching."""
-    walls = last_frame(os.path.join(directory, "walls.dump"), engine, 4)
-    walls = walls[np.argsort(walls[:, 0])]
-    pair_rows = last_frame(os.path.join(directory, "pairs.dump"), engine, 3)
-    forces = {}
-    for a, b, f_n in pair_rows:
-        forces[(int(min(a, b)) - 1, int(max(a, b)) - 1)] = (f_n, math.nan)
+def contact_forces(forces, pairs, state, variant):
+    """(F_n, F_t) of each contact of `pairs` at the end from {(i, j): (F_n, F_t)} of those an engine wrote (j < 0 a
+    wall); 0 where a contact does not touch."""
     f_n, f_t = np.zeros(len(pairs)), np.zeros(len(pairs))
     for k, (i, j) in enumerate(pairs):
-        if j < 0:
-            touching = overlap(state, variant, i, j) > 0.0
-            sign = 1.0 if j == WALL_BELOW else -1.0
-            f_n[k], f_t[k] = (sign * walls[i, 3], walls[i, 2]) if touching else (0.0, 0.0)
-        else:
+        if overlap(state, variant, i, j) > 0.0:
             f_n[k], f_t[k] = forces.get((int(i), int(j)), (0.0, 0.0))
     return f_n, f_t

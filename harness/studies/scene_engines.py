@@ -27,9 +27,12 @@ def engine_run(engine, kind, case, grid, options):
 
 
 def dialect_run(engine, law_name, case, grid, options, gain_from, kept):
-    """The small-system integrator's run of the case with the engine's dialect of the law in place of the paper's."""
+    """The small-system integrator's run of the case with the engine's dialect of the law in place of the paper's
+    (against the wall, and between two spheres where it has one) and its set-up's forces (Engine.START_FRICTION)."""
     dialect = engine.dialect(law_name, options)
-    variant = dataclasses.replace(case.variant, law=dialect)
+    pair = engine.dialect(law_name, options, "sphere") if law_name in engine.PAIR_DIALECTS else None
+    variant = dataclasses.replace(case.variant, law=dialect, start_friction=engine.START_FRICTION,
+                                  pair_law=pair if len(case.variant.spheres) > 1 else None)
     return simulate_system([variant], grid, gain_from=gain_from, kept_events=kept)
 
 

@@ -4,7 +4,8 @@ engines/scene_output.py reads (docs/lammps-dialect.md#scenes)."""
 from ...infra.render import render
 from ...infra.version import __version__
 from ..runner import EngineFailure
-from ..scene_output import box, contact_scenes
+from ..scene_output import box, contact_scenes, last_frame, overlap
+from ...solver.system_contacts import WALL_ABOVE, WALL_BELOW
 from .deck import TEMPLATES, settings
 from .dialect import words
 
@@ -44,3 +45,18 @@ def render_scene(kind, case, grid, options=None, version=None):
                   steps=v.steps, gravity=v.gravity, ceiling=v.ceiling, x_lo=x_lo, x_hi=x_hi, z_lo=z_lo, z_hi=z_hi,
                   box_half=half, skin=0.5 * radius, every=every, near=kind == "bounce", radius=radius,
                   contacts=len(v.spheres) > 1)
+
+
+def read_forces(directory, state, variant):
+    """{(i, j): (F_n, F_t)} at the end: walls.dump (`id flag fx fz` of fix wall/gran's contacts) gives each touching
+    sphere's wall force, fz below and -fz above (fx as F_t); pairs.dump (`id1 id2 F_n` of compute pair/local force)
+    each touching pair's normal force (its F_t not written: NaN)."""
+    forces = {}
+    for atom, flag, fx, fz in last_frame(f"{directory}/walls.dump", "LAMMPS", 4):
+        i = int(atom) - 1
+        if flag:
+            above = variant.ceiling is not None and overlap(state, variant, i, WALL_ABOVE) > 0.0
+            forces[(i, WALL_ABOVE if above else WALL_BELOW)] = (-fz if above else fz, fx)
+    for a, b, f_n in last_frame(f"{directory}/pairs.dump", "LAMMPS", 3):
+        forces[(int(min(a, b)) - 1, int(max(a, b)) - 1)] = (f_n, float("nan"))
+    return forces
