@@ -27,7 +27,7 @@ class Variant:
     """One system: its spheres, their material (E, nu, rho), the law (a Law, harness.laws.compose) calibrated at
     target e_n and impact speed `speed`, friction mu, gravity g, the wall at z = 0 and one at z = ceiling (None:
     none), the time step and the number of steps; `start_friction` False: the first half kick takes the starting
-    state's normal forces alone (an engine whose set-up computes no tangential force, as LAMMPS'); `pair_law` the law
+    state's normal forces alone (an engine whose set-up computes no tangential force); `pair_law` the law
     of the contacts between spheres where it is not `law` (an engine's dialect between two spheres)."""
     spheres: tuple
     law: object

@@ -108,7 +108,15 @@ def time_step(law, contact, e_n, speed, resolution):
 def variant(law, scene, e_n, speed, dt, duration, sphere, gravity):
     """A one-sphere variant of the scene's material and friction, `duration` long at step `dt`."""
     return Variant((sphere,), law, E=scene.E, nu=scene.nu, rho=scene.rho, mu=scene.mu, e_n=e_n, speed=speed, dt=dt,
-                   steps=max(1, math.ceil(duration / dt)), gravity=gravity)
+                   steps=steps_for(duration, dt), gravity=gravity)
+
+
+def steps_for(duration, dt):
+    """The steps that cover `duration`: ceil(duration/dt), a quotient within 1e-9 of a whole number being that number
+    (duration/(duration/n) may round to n(1 + 2^-52))."""
+    quotient = duration / dt
+    nearest = round(quotient)
+    return max(1, nearest if abs(quotient - nearest) <= 1e-9 * max(nearest, 1) else math.ceil(quotient))
 
 
 def wall_contact(scene):
@@ -131,8 +139,7 @@ def free_fall(law, values, scene, e_n, resolution):
         raise UserError(f"scene free-fall: the sphere (radius {scene.radius:g} m) reaches the wall within "
                         f"{duration:g} s from height {z0:g} m: raise height or shorten duration")
     dt = time_step(law, contact, e_n, scene.speed, resolution)
-    steps = max(1, math.ceil(duration / dt))
-    dt = duration / steps
+    dt = duration / steps_for(duration, dt)
     sphere = Sphere(scene.radius, z=z0, vz=v0)
     return Case(case_name(e_n), variant(law, scene, e_n, scene.speed, dt, duration, sphere, g), contact, e_n)
 
