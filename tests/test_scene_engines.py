@@ -151,3 +151,46 @@ def test_a_bounce_rebounds_as_the_reference_does(bounce):
     mine = rows(done, engine, "rebound-speed-ratio").value.to_numpy()
     reference = rows(done, "reference", "rebound-speed-ratio").value.to_numpy()
     assert len(mine) == 2 and mine == pytest.approx(reference, rel=1e-9)
+
+
+def test_an_engine_without_the_law_is_skipped_with_its_reason_and_exit_3(tmp_path, capfd):
+    """LIGGGHTS has no counterpart of hertz-kuwabara-kono: the reference still runs and writes its checks, the engine
+    is named with the reason, and the exit code is 3 because it was asked for."""
+    from harness.commands import main
+    import pandas as pd
+    code = main(["run", "--model", "hertz-kuwabara-kono", "--scene", "free-fall", "--scene-param", "duration=0.01",
+                 "--engines", "liggghts", "--en", "0.5", "--E", "1e7", "--radius", "0.005", "-o", str(tmp_path / "out")])
+    err = capfd.readouterr().err.splitlines()
+    assert code == 3
+    assert len(err) == 1 and err[0].startswith("liggghts skipped: "), err
+    checks = pd.read_csv(tmp_path / "out" / "checks.csv")
+    assert set(checks.engine) == {"reference"} and checks.passed.all()
+
+
+def test_run_refuses_engines_on_the_impact_scene_in_one_line(tmp_path, capfd):
+    from harness.commands import main
+    code = main(["run", "--model", "hertz-mindlin", "--engines", "lammps", "-o", str(tmp_path / "r.csv")])
+    err = capfd.readouterr().err
+    assert code == 2 and len(err.strip().splitlines()) == 1 and "harness compare --engines" in err, err
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.engine
+@pytest.mark.skipif(not ENGINES["lammps"].available(), reason="lammps is not installed")
+def test_the_command_writes_each_engine_s_rows_beside_the_reference_s(tmp_path, capfd):
+    """`harness run --scene free-fall --engine lammps`: checks.csv holds the reference's height check, LAMMPS' and
+    LAMMPS' agreement; series.csv both engines' recorded times, the same times for each."""
+    from harness.commands import main
+    import pandas as pd
+    code = main(["run", "--model", "hertz-mindlin", "--scene", "free-fall", "--scene-param", "duration=0.02",
+                 "--engine", "lammps", "--en", "0.5", "--E", "1e7", "--radius", "0.005", "--steps-per-contact", "100",
+                 "-o", str(tmp_path / "out")])
+    lines = capfd.readouterr().out.splitlines()
+    assert code == 0, lines
+    checks = pd.read_csv(tmp_path / "out" / "checks.csv")
+    assert sorted(zip(checks.engine, checks.check)) == [("lammps", "agreement"), ("lammps", "height"),
+                                                        ("reference", "height")]
+    series = pd.read_csv(tmp_path / "out" / "series.csv")
+    times = series.groupby("engine").t.apply(list)
+    assert set(times.index) == {"lammps", "reference"} and times["lammps"] == times["reference"]
+    assert any(line.startswith("passed agreement [lammps, e_n = 0.5]") for line in lines)
