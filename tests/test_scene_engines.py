@@ -159,7 +159,8 @@ def test_an_engine_without_the_law_is_skipped_with_its_reason_and_exit_3(tmp_pat
     from harness.commands import main
     import pandas as pd
     code = main(["run", "--model", "hertz-kuwabara-kono", "--scene", "free-fall", "--scene-param", "duration=0.01",
-                 "--engines", "liggghts", "--en", "0.5", "--E", "1e7", "--radius", "0.005", "-o", str(tmp_path / "out")])
+                 "--engines", "liggghts", "--en", "0.5", "--E", "1e7", "--radius", "0.005",
+                 "-o", str(tmp_path / "out")])
     err = capfd.readouterr().err.splitlines()
     assert code == 3
     assert len(err) == 1 and err[0].startswith("liggghts skipped: "), err
