@@ -105,6 +105,8 @@ def test_a_resting_sphere_holds_hertz_s_static_overlap_with_the_engine_s_wall_mo
     (row,) = rows(done, engine, "hertz-static-overlap").itertuples()
     e_star = WALL_E_STAR[engine]
     assert row.value == pytest.approx((3.0 * MASS * G / (4.0 * e_star * math.sqrt(RADIUS))) ** (2.0 / 3.0), rel=1e-6)
+    if e_star != E / (2.0 * (1.0 - NU ** 2)):       # the paper's closed form fails; the note names the dialect's cause
+        assert not row.passed and "normal hertz-wall-modulus" in row.note, row.note
 
 
 def test_a_column_of_three_carries_i_m_g_below_the_ith_sphere(stack):

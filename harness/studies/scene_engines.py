@@ -108,3 +108,21 @@ def agreement_row(engine, kind, case, ran, dialect):
                 passed=bool(np.isfinite(value) and value <= AGREEMENT),
                 note=f"largest difference over its scale, {where}; {compared} recorded times {span}, "
                      f"dt {case.variant.dt:.6g} s on both")
+
+
+def dialect_ingredients(engine, law, options):
+    """The sub-models where the engine's dialect differs from the paper law, as `key choice` texts."""
+    paper, dialect = law.describe(), engine.dialect(law.name, options).describe()
+    return [f"{key} {choice}" for key, choice in dialect.items() if paper.get(key) != choice]
+
+
+def explained(rows, dialect_rows, ingredients):
+    """The engine's check rows, each that failed noting the value its dialect gives on the small-system integrator
+    and the dialect's ingredients that differ from the paper law (where the difference comes from)."""
+    theirs = {(row["check"], row["case"]): row["value"] for row in dialect_rows}
+    for row in rows:
+        if not row["passed"] and (row["check"], row["case"]) in theirs:
+            value = theirs[row["check"], row["case"]]
+            row["note"] += (f"; its dialect on the small-system integrator gives {value:.9g}, differing from the "
+                            f"paper law in {', '.join(ingredients) or 'nothing'}")
+    return rows

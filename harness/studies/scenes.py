@@ -14,7 +14,7 @@ from ..solver.system_contacts import WALL_BELOW
 from ..solver.system_rows import contact_properties
 from ..solver.system_run import Sphere, Variant, simulate_system
 from .scene_rows import CHECK_COLUMNS, SceneRun, check_row, series_rows
-from .scene_engines import agreement_row, dialect_run, engine_run, scene_engines
+from .scene_engines import agreement_row, dialect_ingredients, dialect_run, engine_run, explained, scene_engines
 
 RECORDED = 201                      # times of the series at most: every cadence-th step from 0, and the last
 SETTLED = 1e-9                      # what is left of the first oscillation's amplitude when a resting sphere is held
@@ -58,8 +58,10 @@ def run_scene(law, kind, values, scene, resolution, engines=(), engine_options=N
                 unavailable[engine.NAME] = failure
                 continue
             series.append(series_rows(engine.NAME, case.name, grid, ran.trace[0]))
-            rows += case_checks(engine.NAME, law, kind, values, case, ran, skipped)
             dialect = dialect_run(engine, law.name, case, grid, options, gain_from, kept_events(values))
+            own = case_checks(engine.NAME, law, kind, values, case, ran, skipped)
+            rows += explained(own, case_checks(engine.NAME, law, kind, values, case, dialect, {}),
+                              dialect_ingredients(engine, law, options))
             rows.append(agreement_row(engine, kind.NAME, case, ran, dialect))
     return SceneRun(kind.NAME, pd.concat(series, ignore_index=True), pd.DataFrame(rows, columns=CHECK_COLUMNS),
                     skipped, unavailable)
