@@ -197,3 +197,13 @@ def test_the_command_writes_each_engine_s_rows_beside_the_reference_s(tmp_path, 
     times = series.groupby("engine").t.apply(list)
     assert set(times.index) == {"lammps", "reference"} and times["lammps"] == times["reference"]
     assert any(line.startswith("passed agreement [lammps, e_n = 0.5]") for line in lines)
+
+
+@pytest.mark.engine
+@pytest.mark.skipif(not ENGINES["lammps"].available(), reason="lammps is not installed")
+def test_an_engine_that_cannot_follow_a_with_is_skipped_with_why():
+    """LAMMPS' hertz-mindlin input has no setting that ends its contact without tension (--with end=no-tension)."""
+    done = harness.run("hertz-mindlin", scene="free-fall", scene_params={"duration": 0.01}, engines=["lammps"],
+                       with_={"end": "no-tension"}, en=[0.5], **SOFT)
+    assert "cannot follow --with end=no-tension" in done.unavailable["lammps"]
+    assert set(done.checks.engine) == {"reference"}

@@ -66,4 +66,4 @@ def run_scene_request(model, scene, scene_params=None, **keywords):
     from ..studies.scenes import run_scene
     request, kind, values = scene_request(model, scene, scene_params, **keywords)
     return run_scene(request.law, kind, values, request.scene, request.resolution, request.engines,
-                     request.engine_options)
+                     request.engine_options, request.overrides)

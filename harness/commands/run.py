@@ -42,7 +42,7 @@ def main_scene(args):
                                           **keywords(args))
     check_output_directory(args.output)
     run = run_scene(request.law, kind, values, request.scene, request.resolution, request.engines,
-                    request.engine_options)
+                    request.engine_options, request.overrides)
     write_scene(args.output, run)
     failed = int((~run.checks.passed).sum())
     for name, reason in run.unavailable.items():

@@ -80,10 +80,11 @@ def first_bounce(engine_result, events, value, where):
     return value, where
 
 
-def scene_engines(kind, law_name, names, engine_options):
-    """([(engine, its options)] of the engines named that run the scene for the law, {name: why not} of the
-    others)."""
+def scene_engines(kind, law_name, names, engine_options, overrides=()):
+    """([(engine, its options)] of the engines named that run the scene for the law with the --with `overrides`
+    (Engine.with_options adds the options that make its input follow them), {name: why not} of the others)."""
     from ..engines import get_engine
+    from ..infra.errors import UserError
     runners, unavailable = [], {}
     for name in names or ():
         if name == REFERENCE:
@@ -92,6 +93,11 @@ def scene_engines(kind, law_name, names, engine_options):
         options = dict(engine_options.get(name, {}))
         status = engine.status(law_name, options)
         reason = status.reason if not status.available else engine.scene_reason(kind, law_name, options)
+        if not reason:
+            try:
+                options = engine.with_options(law_name, dict(overrides), options)
+            except UserError as refusal:
+                reason = str(refusal)
         if reason:
             unavailable[name] = reason
         else:

@@ -31,15 +31,16 @@ class Case:
     e_n: float
 
 
-def run_scene(law, kind, values, scene, resolution, engines=(), engine_options=None):
+def run_scene(law, kind, values, scene, resolution, engines=(), engine_options=None, overrides=()):
     """The SceneRun of the scene `kind` (harness.scenes.catalogue) with parameter `values` for `law` on the sphere
     and wall of `scene` (harness.scenes.scene.Scene: radius, E, nu, rho, mu, e_n, speed) at `resolution`, on the
-    reference and on each of `engines` (names; {name: options} in `engine_options`) that runs the scene."""
+    reference and on each of `engines` (names; {name: options} in `engine_options`) that runs the scene and follows
+    the law's --with `overrides`."""
     if scene.wall != "same":
         raise UserError(f"scene {kind.NAME} puts the sphere on a wall of its own material: give --wall same")
     build, _ = SCENES[kind.NAME]
     cases = [build(law, values, scene, e_n, resolution) for e_n in scene.e_n]
-    runners, unavailable = scene_engines(kind.NAME, law.name, engines, engine_options or {})
+    runners, unavailable = scene_engines(kind.NAME, law.name, engines, engine_options or {}, overrides)
     series, rows, skipped = [], [], {}
     for case in cases:
         grid = recorded_times(case)
