@@ -34,7 +34,8 @@ def test_free_fall_follows_the_parabola_to_1e_9(tmp_path, capfd):
         "--scene-param", "v0=1.5", "--scene-param", "duration=0.3", "--radius", "0.01", "--en", "0.5", *GLASS)
     assert code == 0, lines
     assert list(checks.columns) == COLUMNS
-    assert list(series.columns) == ["case", "t", "body", "x", "z", "vx", "vz", "w"]
+    assert list(series.columns) == ["engine", "case", "t", "body", "x", "z", "vx", "vz", "w"]
+    assert set(series.engine) == {"reference"}
     t = series.t.to_numpy()
     assert t[0] == 0.0 and t[-1] == pytest.approx(0.3, rel=1e-12) and len(t) > 100
     assert series.z.to_numpy() == pytest.approx(0.5 + 1.5 * t - 0.5 * G * t * t, rel=1e-9)
@@ -196,8 +197,8 @@ def test_a_scene_no_command_runs_is_one_line_and_exit_2(tmp_path, capfd, monkeyp
 
 
 @pytest.mark.parametrize("engines, says", [
-    ("liggghts", "engines do not run scenes yet: `harness run --scene bounce`"),
-    ("reference", "compare runs the impact scene: `harness run --scene bounce`"),
+    ("liggghts", "compare runs the impact scene: `harness run --scene bounce --engines ...`"),
+    ("reference", "compare runs the impact scene: `harness run --scene bounce --engines ...`"),
 ])
 def test_compare_refuses_a_scene_in_one_line(tmp_path, capfd, engines, says):
     code = main(["compare", "--model", "hertz-mindlin", "--scene", "bounce", "--engines", engines,

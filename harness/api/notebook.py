@@ -45,19 +45,24 @@ def takes(*groups, doc=""):
 
 
 @takes(SCENE, RESOLUTION, WITH, doc=SCENE_DOC + RESOLUTION_DOC)
-def run(model, scene="impact", scene_params=None, **keywords):
+def run(model, scene="impact", scene_params=None, engines=None, engine_options=None, **keywords):
     """The reference solver's results table (pandas; units: harness.columns) of the law `model` over the impact
     scene, e.g. run("hertz-mindlin", en=[0.5], angles=[10, 30], steps_per_contact=2000); with another scene kind
-    (`harness scenes`), its SceneRun: .series and .checks (the closed-form checks), e.g. run("hertz-mindlin",
-    scene="rest", scene_params={"steps": 1000}, en=[0.5])."""
+    (`harness scenes`), its SceneRun: .series and .checks (the closed-form checks; with `engines`, a list of names,
+    on those engines too, and each one's agreement with its dialect; .unavailable: the engines that did not run it,
+    and why), e.g. run("hertz-mindlin", scene="rest", scene_params={"steps": 1000}, en=[0.5], engines=["lammps"])."""
     as_text("scene", scene)
     if scene != "impact":
         from .scene_requests import run_scene_request
         if scene_params is not None and not isinstance(scene_params, Mapping):
             raise UserTypeError(f"scene_params must be a mapping of parameter names to values, got {scene_params!r}")
-        return run_scene_request(model, scene, scene_params, **keywords)
+        return run_scene_request(model, scene, scene_params, engines=engines, engine_options=engine_options,
+                                 **keywords)
     if scene_params:
         raise UserError("scene impact takes its own keywords (target, en, angles, ...), not scene_params")
+    if engines is not None or engine_options:
+        raise UserError("run computes the impact scene on the reference solver: compare(..., engines=[...]) runs it "
+                        "on engines")
     from .requests import run_request
     return run_request(Request.from_keywords(model, **keywords))
 

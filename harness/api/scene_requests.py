@@ -56,8 +56,6 @@ def scene_request(model, scene, scene_params=None, **keywords):
     if given:
         instead = INSTEAD.get(given[0], "the scene's parameters (harness scenes lists them)")
         raise UserError(f"--{given[0].replace('_', '-')} describes the impact scene; scene {scene} takes {instead}")
-    if keywords.get("engines") not in (None, ("reference",), ["reference"]):
-        raise UserError(f"engines do not run scenes yet: scene {scene} runs on the reference solver alone")
     if keywords.get("engine_input"):
         raise UserError(f"--engine-input runs an engine's own input on the impact scene, not on scene {scene}")
     values = kind.values(scene_params)
@@ -68,4 +66,5 @@ def run_scene_request(model, scene, scene_params=None, **keywords):
     """The SceneRun (harness.studies.scenes) of the law `model` over the scene kind `scene`."""
     from ..studies.scenes import run_scene
     request, kind, values = scene_request(model, scene, scene_params, **keywords)
-    return run_scene(request.law, kind, values, request.scene, request.resolution)
+    return run_scene(request.law, kind, values, request.scene, request.resolution, request.engines,
+                     request.engine_options, request.overrides)

@@ -43,6 +43,7 @@ def run_parser(sub, describe):
     p = describe(sub, "run", "harness run --model thornton --en 0.9,0.5,0.1 --angles 0:80:10 -o results.csv")
     p.add_argument("--model", required=True, type=law_name, help="law name (see `harness models`)")
     add_scene_kind(p)
+    add_scene_engines(p)
     add_engine_input(p)
     add_scene_options(p)
     add_start_options(p)
@@ -50,6 +51,15 @@ def run_parser(sub, describe):
                    help="results CSV to write (scene impact), or the directory for series.csv and checks.csv")
     add_output_options(p, json=True)
     p.set_defaults(func=runs("run"))
+
+
+def add_scene_engines(parser):
+    """--engines (or --engine) and --engine-option of `run`: the engines that run a scene beside the reference."""
+    parser.add_argument("--engines", "--engine", dest="engines", default=None, metavar="LIST",
+                        help="with --scene other than impact: comma-separated engines (builds: lammps@2025.7.22) "
+                             "that run the scene beside the reference (default: the reference alone)")
+    parser.add_argument("--engine-option", dest="engine_options", type=engine_option, action="append", default=[],
+                        metavar="ENGINE:KEY=VALUE", help="an engine's option, repeatable (harness engines lists them)")
 
 
 def add_scene_kind(parser):

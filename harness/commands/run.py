@@ -1,10 +1,11 @@
 """`harness run`: one law over a scene on the reference solver; a results CSV (impact) or a scene's series and
-closed-form checks."""
+closed-form checks (on the engines asked for too)."""
 import os
+import sys
 
 from ..infra.errors import UserError
 from ..infra.wording import counted
-from .options import EXIT_DISAGREE, EXIT_OK, check_output_directory, check_output_file, keywords
+from .options import EXIT_DISAGREE, EXIT_ENGINE, EXIT_OK, check_output_directory, check_output_file, keywords
 
 
 def main(args):
@@ -14,6 +15,9 @@ def main(args):
         raise UserError("scene impact takes its own options (--target, --en, --angles, ...), not --scene-param")
     if args.json:
         raise UserError("--json prints a scene's checks: give --scene and a scene other than impact")
+    if args.engines is not None or args.engine_options:
+        raise UserError("run computes the impact scene on the reference solver: `harness compare --engines ...` runs "
+                        "it on engines")
     from ..api.requests import run_request
     from ..runs.request import Request
     from ..data.results import write_csv
@@ -55,10 +59,13 @@ def main_scene(args):
     request, kind, values = scene_request(args.model, args.scene, parameters_from_text(kind, args.scene_params),
                                           **keywords(args))
     check_output_directory(args.output)
-    run = run_scene(request.law, kind, values, request.scene, request.resolution)
+    run = run_scene(request.law, kind, values, request.scene, request.resolution, request.engines,
+                    request.engine_options, request.overrides)
     write_scene(args.output, run, command_line())
     write_scene_report(args.output, run, command_line())
     failed = int((~run.checks.passed).sum())
+    for name, reason in run.unavailable.items():
+        print(f"{name} skipped: {reason}", file=sys.stderr)
     if args.json:
         print(checks_json(run))
     else:
@@ -67,4 +74,4 @@ def main_scene(args):
                 print(line)
         print(f"{request.law.name} on scene {kind.NAME}: {len(run.checks) - failed} of "
               f"{counted(len(run.checks), 'check')} passed -> {args.output}")
-    return EXIT_DISAGREE if failed else EXIT_OK
+    return EXIT_DISAGREE if failed else EXIT_ENGINE if run.unavailable else EXIT_OK

@@ -42,6 +42,8 @@ class Engine:
     CONTACT_LINES = ()          # how the lines of its input that set the contact law begin (calibrate prints them)
     STARTS_APART = ()           # the targets its inputs start a gap apart from and record states at given times for
     SPHERE_STEP_S = 1e-6        # and per sphere-step (docs/performance.md)
+    SCENE_KINDS = ()            # the scene kinds beyond impact its inputs run (names of harness.scenes.catalogue)
+    START_FRICTION = True       # its set-up's forces of a contact present at step 0 include the tangential force
 
     @property
     def dialect_label(self):
@@ -287,6 +289,49 @@ class Engine:
             raise wall
         try:
             return self.read_batch(scene, spec, directory, observe), wall, log_tail
+        except EngineFailure as exc:
+            raise EngineFailure(str(exc), exc.log_tail or log_tail) from None
+
+    # --- scenes beyond one impact (harness run --scene; docs/design.md) -----------------------------------------
+    def scene_reason(self, kind, law_name, options=None):
+        """Why it cannot run scene `kind` (a catalogue name) for `law_name` with these options, '' when it can."""
+        if kind not in self.SCENE_KINDS:
+            return f"{self.NAME} runs no {kind} scene yet"
+        if not self.supports(law_name):
+            return f"{self.NAME} has no counterpart of {law_name}"
+        return ""
+
+    def render_scene(self, kind, case, grid, options=None):
+        """The text of the input that runs one scene case (harness.studies.scenes.Case) of scene `kind`: the bodies,
+        dt, steps, gravity and ceiling of case.variant, the counterpart of its paper law case.variant.law calibrated
+        at case.e_n and variant.speed with friction variant.mu, and exactly the scene's effects (gravity only where
+        variant.gravity > 0, the wall at z = 0, a ceiling only where variant.ceiling is set, sphere-sphere contacts
+        only with several spheres); its output is what read_scene needs and no more. An EngineFailure refuses it."""
+        raise NotImplementedError(f"{self.NAME} renders no scene")
+
+    def read_scene(self, kind, case, grid, directory):
+        """A finished scene run's harness.solver.system_run.SystemResult for one variant, read from `directory`,
+        with the fields the kind's checks read filled as the small-system integrator fills them: `grid` (the times
+        asked for), `trace` (1, len(grid), bodies, TRACE: x z vx vz w) at those times, `pairs` (contact_pairs order),
+        `events`/`n_events` (bounce: each touch with V_n < 0 the velocity before the contact force acts, each
+        parting with V_n > 0 at the end of its step), `final` (1, pairs, overlap F_n F_t) at the end (rest, stack),
+        `metrics` (M_STATUS; M_GAIN the largest energy gain after settling for rest, M_STEPS, M_TIME); what the
+        kind does not use is NaN. An EngineFailure when the output is missing or short."""
+        raise NotImplementedError(f"{self.NAME} writes no scene output")
+
+    def run_scene(self, kind, case, grid, timeout_s, workdir, options=None):
+        """One scene case run alone in workdir/batch0 through run_inputs (process group, timeout, log tail):
+        (read_scene's SystemResult, wall seconds, log tail); an EngineFailure carries the log tail."""
+        directory = os.path.join(workdir, "batch0")
+        os.makedirs(directory, exist_ok=True)
+        with open(os.path.join(directory, self.INPUT_NAME), "w") as handle:
+            handle.write(self.render_scene(kind, case, grid, options))
+        wall, = self.run_inputs(self.flavour(dict(options or {})), 1, timeout_s, workdir)
+        log_tail = read_tail(os.path.join(workdir, "engine.log"))
+        if isinstance(wall, EngineFailure):
+            raise wall
+        try:
+            return self.read_scene(kind, case, grid, directory), wall, log_tail
         except EngineFailure as exc:
             raise EngineFailure(str(exc), exc.log_tail or log_tail) from None
 

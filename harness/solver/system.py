@@ -30,11 +30,12 @@ STATUS_OK, STATUS_NONFINITE = 0.0, 1.0
 
 
 @njit(cache=True)
-def integrate_systems(bodies, pairs, params, ints, gravity, ceiling, dt, steps, grid, gain_from, trace, energy,
-                      events, final, metrics, ext):
+def integrate_systems(bodies, pairs, params, ints, gravity, ceiling, dt, steps, grid, gain_from, start_friction,
+                      trace, energy, events, final, metrics, ext):
     """Integrate every variant (row): `bodies` (variants, bodies, N_BODY) to their final state; `trace` (variants,
     times, bodies, len(TRACE)) and `energy` (variants, times) at the times of `grid`; `events` (variants, kept,
-    N_EVENT); `final` (variants, contacts, N_FINAL); `metrics` (variants, N_METRICS)."""
+    N_EVENT); `final` (variants, contacts, N_FINAL); `metrics` (variants, N_METRICS). start_friction (variants): 1 where
+    the forces of the starting state include the tangential force, 0 where they are the normal force alone."""
     n_bodies, n_pairs = bodies.shape[1], pairs.shape[0]
     for v in range(bodies.shape[0]):
         forces = np.zeros((n_bodies, 3))
@@ -47,24 +48,27 @@ def integrate_systems(bodies, pairs, params, ints, gravity, ceiling, dt, steps, 
         for k in range(n_pairs):
             clear(contacts[k], tangential[k], ints[v, k, L.I_NORMAL])
         integrate_variant(bodies[v], pairs, params[v], ints[v], gravity[v], ceiling[v], dt[v], steps[v], grid,
-                          gain_from[v], trace[v], energy[v], events[v], final[v], metrics[v], forces, contacts,
-                          tangential, touching, changed, touched, work, ext)
+                          gain_from[v], start_friction[v], trace[v], energy[v], events[v], final[v], metrics[v],
+                          forces, contacts, tangential, touching, changed, touched, work, ext)
 
 
 @compiled
-def integrate_variant(bodies, pairs, p, ints, g, ceiling, h, steps, grid, gain_from, trace, energy, events, final,
-                      metrics, forces, contacts, tangential, touching, changed, touched, work, ext):
+def integrate_variant(bodies, pairs, p, ints, g, ceiling, h, steps, grid, gain_from, start_friction, trace, energy,
+                      events, final, metrics, forces, contacts, tangential, touching, changed, touched, work, ext):
     """One variant from its initial state for `steps` steps of h (or to a non-finite state)."""
     ot, scratch, history = work[0:N_TSTATE], work[N_TSTATE:2 * N_TSTATE], work[2 * N_TSTATE:]
+    collide(bodies, forces, pairs, p, ints, ceiling, 0.0, contacts, tangential, touching, changed, touched, ot,
+            scratch, history, ext, start_friction)      # the forces of the starting state, for the first half kick
+    n_events = note_events(bodies, pairs, ceiling, changed, touched, 0.0, events, 0)
     next_time = record(bodies, pairs, p, ints, g, contacts, tangential, touching, grid, 0, 0.0, h, trace, energy)
-    e_ref, gain, n_events, status, t = math.nan, 0.0, 0, STATUS_OK, 0.0
+    e_ref, gain, status, t = math.nan, 0.0, STATUS_OK, 0.0
     if gain_from <= 0.0:
         e_ref = total_energy(bodies, pairs, p, ints, g, contacts, tangential, touching)
     done = 0
     for step in range(steps):
         kick_drift(bodies, forces, g, h)
         collide(bodies, forces, pairs, p, ints, ceiling, h, contacts, tangential, touching, changed, touched, ot,
-                scratch, history, ext)
+                scratch, history, ext, 1.0)
         kick(bodies, forces, g, h)
         done = step + 1
         t = done * h
@@ -116,10 +120,10 @@ def kick(bodies, forces, g, h):
 
 @njit(cache=True, inline="always")
 def collide(bodies, forces, pairs, p, ints, ceiling, h, contacts, tangential, touching, changed, touched, ot,
-            scratch, history, ext):
+            scratch, history, ext, friction):
     """Every contact's forces at the drifted positions into `forces` (F_x, F_z, torque per body); a contact
     created where its overlap turns positive (its V_n and slip before any of its force acts into `touched`),
-    cleared where it ends (changed: +1, -1, else 0)."""
+    cleared where it ends (changed: +1, -1, else 0); each tangential force times `friction` (1, or 0 for none)."""
     for b in range(bodies.shape[0]):
         forces[b, 0] = forces[b, 1] = forces[b, 2] = 0.0
     for k in range(pairs.shape[0]):
@@ -127,20 +131,22 @@ def collide(bodies, forces, pairs, p, ints, ceiling, h, contacts, tangential, to
         alpha, nx, nz = geometry(bodies, i, j, ceiling)
         changed[k] = 0
         if alpha > 0.0:
-            rate, slip = relative_motion(bodies, i, j, nx, nz)
+            rate, slip = relative_motion(bodies, i, j, nx, nz, p[k, L.LEVER] * alpha)
             if touching[k] == 0:
                 touching[k], changed[k] = 1, 1
                 touched[k, 0], touched[k, 1] = -rate, slip
             f_n, f_t = contact_forces(contacts[k], tangential[k], ot, p[k], ints[k], h, scratch, history, alpha,
                                       rate, slip, ext)
+            f_t *= friction
             fx, fz = f_n * nx + f_t * nz, f_n * nz - f_t * nx
             forces[i, 0] += fx
             forces[i, 1] += fz
-            forces[i, 2] -= bodies[i, B_R] * f_t
+            shorter = p[k, L.TORQUE_LEVER] * alpha
+            forces[i, 2] -= (bodies[i, B_R] - shorter) * f_t
             if j >= 0:
                 forces[j, 0] -= fx
                 forces[j, 1] -= fz
-                forces[j, 2] -= bodies[j, B_R] * f_t
+                forces[j, 2] -= (bodies[j, B_R] - shorter) * f_t
         elif touching[k] == 1:
             touching[k], changed[k] = 0, -1
             clear(contacts[k], tangential[k], ints[k, L.I_NORMAL])
@@ -156,7 +162,7 @@ def note_events(bodies, pairs, ceiling, changed, touched, t, events, n_events):
             v_n, slip = touched[k, 0], touched[k, 1]
             if changed[k] < 0:
                 _, nx, nz = geometry(bodies, pairs[k, 0], pairs[k, 1], ceiling)
-                rate, slip = relative_motion(bodies, pairs[k, 0], pairs[k, 1], nx, nz)
+                rate, slip = relative_motion(bodies, pairs[k, 0], pairs[k, 1], nx, nz, 0.0)
                 v_n = -rate
             if n_events < events.shape[0]:
                 e = events[n_events]

@@ -40,11 +40,13 @@ def geometry(bodies, i, j, ceiling):
 
 
 @njit(cache=True, inline="always")
-def relative_motion(bodies, i, j, nx, nz):
-    """(d alpha/dt, slip V_s) of body i against body j or a wall, from the bodies' velocities and spins."""
-    vx, vz, spin = bodies[i, B_VX], bodies[i, B_VZ], bodies[i, B_R] * bodies[i, B_W]
+def relative_motion(bodies, i, j, nx, nz, shorter):
+    """(d alpha/dt, slip V_s) of body i against body j or a wall, from the bodies' velocities and spins, each spin's
+    lever its body's radius less `shorter` (c alpha of a dialect's lever R - c alpha; 0 for the paper's R)."""
+    vx, vz, spin = bodies[i, B_VX], bodies[i, B_VZ], (bodies[i, B_R] - shorter) * bodies[i, B_W]
     if j >= 0:
-        vx, vz, spin = vx - bodies[j, B_VX], vz - bodies[j, B_VZ], spin + bodies[j, B_R] * bodies[j, B_W]
+        vx, vz = vx - bodies[j, B_VX], vz - bodies[j, B_VZ]
+        spin += (bodies[j, B_R] - shorter) * bodies[j, B_W]
     return -(vx * nx + vz * nz), vx * nz - vz * nx - spin
 
 
@@ -75,7 +77,7 @@ def contact_forces(c, st, ot, p, ints, h, scratch, history, alpha, alpha_rate, s
         for k in range(N_TSTATE):
             ot[k] = st[k]
         f_t, f_s = friction(c, ot, p, ints, ints[L.I_TANGENTIAL], h, scratch, alpha, a, f_n, slip, True, False,
-                            p[L.RADIUS])
+                            p[L.RADIUS] - p[L.LEVER] * alpha)
         for k in range(N_TSTATE):
             st[k] = ot[k]
     c[C_ENERGY] += 0.5 * (c[S_FEL] + f_el) * (alpha - c[S_ALPHA])

@@ -38,14 +38,17 @@ def contact_properties(r1, r2, E, nu, rho):
 def contact_row(law, contact, e_n, speed, mu, gravity, dt):
     """(params, ints): the kernel row of one contact of `law` at target e_n calibrated at impact speed `speed`:
     the normal block, the dashpot, the tangential kernel and its dashpot (none where mu = 0), the end, Coulomb and
-    touch rules. The impact's own columns (incident velocities, step cap, grading, levers, slip form) and the
-    integrator, geometry and stepper codes are the impact steppers' and stay 0."""
+    touch rules, the levers R - c alpha of the slip (the law's c) and of the torque (the slip's, or each body's
+    R_i - alpha/2 with torque `contact-point`). The impact's own columns (incident velocities, step cap, grading, slip
+    form) and the integrator, geometry and stepper codes are the impact steppers' and stay 0."""
     normal = law.normal.parameters(contact, e_n, speed)
     dashpot = law.damping.dashpot(law.normal, contact, e_n, speed, law.end)
     params = np.zeros(L.N_PARAMS)
     ints = np.zeros(L.N_INTS, dtype=np.int64)
     params[L.MASS], params[L.INERTIA], params[L.RADIUS] = contact.mass, contact.inertia, contact.radius
     params[L.DT], params[L.GRAVITY], params[L.MU] = dt, gravity, mu
+    params[L.LEVER] = law.lever
+    params[L.TORQUE_LEVER] = law.lever if law.torque == "lever" else 0.5
     values = check_parameters(law.normal, normal)
     params[L.NORMAL_BLOCK:L.NORMAL_BLOCK + len(values)] = values
     params[L.DAMPING_C0], params[L.DAMPING_POWER] = dashpot.c0, dashpot.power

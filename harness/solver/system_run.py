@@ -26,7 +26,9 @@ class Sphere:
 class Variant:
     """One system: its spheres, their material (E, nu, rho), the law (a Law, harness.laws.compose) calibrated at
     target e_n and impact speed `speed`, friction mu, gravity g, the wall at z = 0 and one at z = ceiling (None:
-    none), the time step and the number of steps."""
+    none), the time step and the number of steps; `start_friction` False: the first half kick takes the starting
+    state's normal forces alone (an engine whose set-up computes no tangential force); `pair_law` the law
+    of the contacts between spheres where it is not `law` (an engine's dialect between two spheres)."""
     spheres: tuple
     law: object
     E: float
@@ -39,6 +41,8 @@ class Variant:
     steps: int
     gravity: float = 9.81
     ceiling: float | None = None
+    start_friction: bool = True
+    pair_law: object = None
 
 
 @dataclass
@@ -78,13 +82,15 @@ def body_rows(variant):
 
 
 def contact_rows(variant, pairs):
-    """Each contact's kernel row (system_rows.contact_row) for the variant's law and material."""
+    """Each contact's kernel row (system_rows.contact_row) for the variant's law (pair_law between spheres, where
+    given) and material."""
     params = np.zeros((len(pairs), L.N_PARAMS))
     ints = np.zeros((len(pairs), L.N_INTS), dtype=np.int64)
     for k, (i, j) in enumerate(pairs):
         other = None if j < 0 else variant.spheres[j].radius
         contact = contact_properties(variant.spheres[i].radius, other, variant.E, variant.nu, variant.rho)
-        params[k], ints[k] = contact_row(variant.law, contact, variant.e_n, variant.speed, variant.mu,
+        law = variant.pair_law if j >= 0 and variant.pair_law is not None else variant.law
+        params[k], ints[k] = contact_row(law, contact, variant.e_n, variant.speed, variant.mu,
                                          variant.gravity, variant.dt)
     return params, ints
 
@@ -106,12 +112,13 @@ def simulate_system(variants, grid, gain_from=0.0, kept_events=256):
     dt = np.array([v.dt for v in variants], dtype=float)
     steps = np.array([v.steps for v in variants], dtype=np.int64)
     gain = np.full(n, float(gain_from))
+    start_friction = np.array([1.0 if v.start_friction else 0.0 for v in variants])
     trace = np.zeros((n, len(grid), n_bodies, len(TRACE)))
     energy = np.zeros((n, len(grid)))
     events = np.full((n, kept_events, N_EVENT), np.nan)
     final = np.zeros((n, len(pairs), N_FINAL))
     metrics = np.zeros((n, N_METRICS))
-    integrate_systems(bodies, pairs, params, ints, gravity, ceiling, dt, steps, grid, gain, trace, energy, events,
-                      final, metrics, extension_table())
+    integrate_systems(bodies, pairs, params, ints, gravity, ceiling, dt, steps, grid, gain, start_friction, trace,
+                      energy, events, final, metrics, extension_table())
     n_events = np.minimum(metrics[:, M_EVENTS].astype(np.int64), kept_events)
     return SystemResult(grid, pairs, trace, energy, events, n_events, bodies, final, metrics)

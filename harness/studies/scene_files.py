@@ -6,7 +6,7 @@ import pandas as pd
 
 from ..data.results import write_csv
 from ..infra.files import write_text
-from .scenes import SceneRun
+from .scene_rows import SceneRun
 
 SERIES, CHECKS, DESCRIPTION = "series.csv", "checks.csv", "scene.json"
 

@@ -2,7 +2,7 @@
 small-system integrator's variants (one per target e_n), and its run becomes a time series and the kind's
 closed-form checks (measured value, expected value, error, tolerance, passed)."""
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 import pandas as pd
@@ -13,31 +13,12 @@ from ..solver.system import E_KIND, E_VN, F_ALPHA, F_FN, M_GAIN, M_STATUS, PART,
 from ..solver.system_contacts import WALL_BELOW
 from ..solver.system_rows import contact_properties
 from ..solver.system_run import Sphere, Variant, simulate_system
+from .scene_rows import CHECK_COLUMNS, SceneRun, check_row, series_rows
+from .scene_engines import agreement_row, dialect_ingredients, dialect_run, engine_run, explained, scene_engines
 
-CHECK_COLUMNS = ("check", "engine", "case", "quantity", "value", "expected", "error", "tolerance", "passed", "note")
-SERIES_COLUMNS = ("case", "t", "body", "x", "z", "vx", "vz", "w")
-RECORDED = 201                      # times of the series, evenly spaced steps from 0 to the end of the run
+RECORDED = 201                      # times of the series at most: every cadence-th step from 0, and the last
 SETTLED = 1e-9                      # what is left of the first oscillation's amplitude when a resting sphere is held
 ENGINE = "reference"
-
-
-@dataclass(frozen=True)
-class SceneRun:
-    """A scene's run: its `series` (one row per case, recorded time and body) and its `checks` (CHECK_COLUMNS), and
-    the checks that do not apply to the law with the reason (`skipped`, {check: reason}); the law's name, the kind's
-    parameter values and the spheres' radius describe it."""
-    scene: str
-    series: pd.DataFrame
-    checks: pd.DataFrame
-    skipped: dict
-    law: str = ""
-    values: dict = field(default_factory=dict)
-    radius: float = math.nan
-
-    def __repr__(self):
-        passed = int(self.checks.passed.sum())
-        return (f"SceneRun({self.scene}: {passed} of {len(self.checks)} checks passed; "
-                f".series {len(self.series)} rows, .checks)")
 
 
 @dataclass(frozen=True)
@@ -50,50 +31,67 @@ class Case:
     e_n: float
 
 
-def run_scene(law, kind, values, scene, resolution):
+def run_scene(law, kind, values, scene, resolution, engines=(), engine_options=None, overrides=()):
     """The SceneRun of the scene `kind` (harness.scenes.catalogue) with parameter `values` for `law` on the sphere
-    and wall of `scene` (harness.scenes.scene.Scene: radius, E, nu, rho, mu, e_n, speed) at `resolution`."""
+    and wall of `scene` (harness.scenes.scene.Scene: radius, E, nu, rho, mu, e_n, speed) at `resolution`, on the
+    reference and on each of `engines` (names; {name: options} in `engine_options`) that runs the scene and follows
+    the law's --with `overrides`."""
     if scene.wall != "same":
         raise UserError(f"scene {kind.NAME} puts the sphere on a wall of its own material: give --wall same")
-    build, measures = SCENES[kind.NAME]
+    build, _ = SCENES[kind.NAME]
     cases = [build(law, values, scene, e_n, resolution) for e_n in scene.e_n]
+    runners, unavailable = scene_engines(kind.NAME, law.name, engines, engine_options or {}, overrides)
     series, rows, skipped = [], [], {}
     for case in cases:
-        grid = case.variant.dt * np.unique(np.round(np.linspace(0, case.variant.steps, RECORDED)))
+        grid = recorded_times(case)
         gain_from = settle_time(law, case, values) if kind.NAME == "rest" else 0.0
         result = simulate_system([case.variant], grid, gain_from=gain_from, kept_events=kept_events(values))
         if result.metrics[0, M_STATUS] != STATUS_OK:
             raise UserError(f"scene {kind.NAME}, {case.name}: the state became non-finite (a time step too long "
                             "for the law?): give a larger --steps-per-contact")
-        series.append(series_rows(case.name, grid, result.trace[0]))
-        for check in kind.CHECKS:
-            reason = not_applicable(check.name, law)
-            if reason:
-                skipped[check.name] = reason
+        series.append(series_rows(ENGINE, case.name, grid, result.trace[0]))
+        rows += case_checks(ENGINE, law, kind, values, case, result, skipped)
+        for engine, options in runners:
+            if engine.NAME in unavailable:
                 continue
-            for label, value, arguments, note in measures[check.name](law, case, values, result):
-                rows.append(check_row(check, f"{case.name}{label}", value, arguments, note))
+            ran, failure = engine_run(engine, kind.NAME, case, grid, options)
+            if failure:
+                unavailable[engine.NAME] = failure
+                continue
+            series.append(series_rows(engine.NAME, case.name, grid, ran.trace[0]))
+            dialect = dialect_run(engine, law.name, case, grid, options, gain_from, kept_events(values))
+            own = case_checks(engine.NAME, law, kind, values, case, ran, skipped)
+            rows += explained(own, case_checks(engine.NAME, law, kind, values, case, dialect, {}),
+                              dialect_ingredients(engine, law, options))
+            rows.append(agreement_row(engine, kind.NAME, case, ran, dialect))
     return SceneRun(kind.NAME, pd.concat(series, ignore_index=True), pd.DataFrame(rows, columns=CHECK_COLUMNS),
-                    skipped, law.name, dict(values), scene.radius)
+                    skipped, unavailable, law.name, dict(values), scene.radius)
 
 
-def check_row(check, case, value, arguments, note):
-    """One row of checks.csv: the measured value against the check's closed form at `arguments`."""
-    expected = check.closed_form(**arguments)
-    error = abs(value - expected) / abs(expected) if check.relative and expected else abs(value - expected)
-    passed = bool(np.isfinite(error) and error <= check.tolerance)
-    return dict(check=check.name, engine=ENGINE, case=case, quantity=check.quantity, value=value, expected=expected,
-                error=error, tolerance=check.tolerance, passed=passed, note=note)
+def case_checks(engine, law, kind, values, case, result, skipped):
+    """The kind's closed-form check rows of one case's result on `engine`."""
+    _, measures = SCENES[kind.NAME]
+    rows = []
+    for check in kind.CHECKS:
+        reason = not_applicable(check.name, law)
+        if reason:
+            skipped[check.name] = reason
+            continue
+        for label, value, arguments, note in measures[check.name](law, case, values, result):
+            rows.append(check_row(check, engine, f"{case.name}{label}", value, arguments, note))
+    return rows
 
 
-def series_rows(case, grid, trace):
-    """The series of one case: each recorded time and body with x, z, vx, vz, w."""
-    n_times, n_bodies, _ = trace.shape
-    frame = pd.DataFrame(trace.reshape(n_times * n_bodies, -1), columns=["x", "z", "vx", "vz", "w"])
-    frame.insert(0, "body", np.tile(np.arange(n_bodies), n_times))
-    frame.insert(0, "t", np.repeat(grid, n_bodies))
-    frame.insert(0, "case", case)
-    return frame
+def cadence(steps):
+    """The steps between two recorded times of a run `steps` long: ceil(steps/(RECORDED - 1))."""
+    return max(1, -(-steps // (RECORDED - 1)))
+
+
+def recorded_times(case):
+    """The times of a case's series: every cadence-th step from 0 and the run's last step (a constant cadence, which
+    an engine's output follows with one equal-style variable)."""
+    steps = case.variant.steps
+    return case.variant.dt * np.unique(np.append(np.arange(0, steps + 1, cadence(steps)), steps)).astype(float)
 
 
 def kept_events(values):
@@ -113,7 +111,15 @@ def time_step(law, contact, e_n, speed, resolution):
 def variant(law, scene, e_n, speed, dt, duration, sphere, gravity):
     """A one-sphere variant of the scene's material and friction, `duration` long at step `dt`."""
     return Variant((sphere,), law, E=scene.E, nu=scene.nu, rho=scene.rho, mu=scene.mu, e_n=e_n, speed=speed, dt=dt,
-                   steps=max(1, math.ceil(duration / dt)), gravity=gravity)
+                   steps=steps_for(duration, dt), gravity=gravity)
+
+
+def steps_for(duration, dt):
+    """The steps that cover `duration`: ceil(duration/dt), a quotient within 1e-9 of a whole number being that number
+    (duration/(duration/n) may round to n(1 + 2^-52))."""
+    quotient = duration / dt
+    nearest = round(quotient)
+    return max(1, nearest if abs(quotient - nearest) <= 1e-9 * max(nearest, 1) else math.ceil(quotient))
 
 
 def wall_contact(scene):
@@ -136,8 +142,7 @@ def free_fall(law, values, scene, e_n, resolution):
         raise UserError(f"scene free-fall: the sphere (radius {scene.radius:g} m) reaches the wall within "
                         f"{duration:g} s from height {z0:g} m: raise height or shorten duration")
     dt = time_step(law, contact, e_n, scene.speed, resolution)
-    steps = max(1, math.ceil(duration / dt))
-    dt = duration / steps
+    dt = duration / steps_for(duration, dt)
     sphere = Sphere(scene.radius, z=z0, vz=v0)
     return Case(case_name(e_n), variant(law, scene, e_n, scene.speed, dt, duration, sphere, g), contact, e_n)
 
@@ -268,7 +273,8 @@ def measured_overlap(law, case, values, result):
     else:
         arguments.update(k_n=law.normal.parameters(case.contact, case.e_n, case.variant.speed).values[0])
     yield ("", float(result.final[0, 0, F_ALPHA]), arguments,
-           f"after {values['steps']} steps held; largest energy gain while held {gain:.3g} J")
+           f"after {values['steps']} steps held" + ("" if math.isnan(gain) else
+                                                     f"; largest energy gain while held {gain:.3g} J"))
 
 
 # slide-to-roll

@@ -10,7 +10,8 @@ def check_lines(run):
     for row in run.checks.itertuples():
         outcome = "passed" if row.passed else "FAILED"
         error = "no value" if math.isnan(row.value) else f"error {row.error:.3g} (tolerance {row.tolerance:g})"
-        yield (f"{outcome} {row.check} [{row.case}]: {row.value:.9g}, expected {row.expected:.9g}, {error}")
+        where = row.case if row.engine == "reference" else f"{row.engine}, {row.case}"
+        yield (f"{outcome} {row.check} [{where}]: {row.value:.9g}, expected {row.expected:.9g}, {error}")
     for check, reason in run.skipped.items():
         yield f"not applicable {check}: {reason}"
 
@@ -18,4 +19,4 @@ def check_lines(run):
 def checks_json(run):
     """The checks' rows and the checks not applicable, as one JSON document."""
     return strict_json.dumps({"scene": run.scene, "checks": run.checks.to_dict(orient="records"),
-                              "not_applicable": run.skipped}, indent=1, default=str)
+                              "not_applicable": run.skipped, "engines_not_run": run.unavailable}, indent=1, default=str)

@@ -7,6 +7,8 @@ from ..protocol import InputRange
 from .deck import (BINARY_VARIABLE, MIN_RESTITUTION, OBSERVE_DUMP, OTHER_WALL_MODELS, TEMPLATES, deck, read_batch,
                    read_dump, read_observation, render_batch, run_deck, run_inputs, settings, typed)
 from .dialect import COUNTERPARTS, DIALECTS, OPTIONS, PAIR_DIALECTS, dialect
+from .scene import KINDS as SCENE_KINDS, read_forces, render_scene, scene_reason
+from ..scene_output import read_scene_output
 
 STEPPING = ("hertz-mindlin", "linear-spring-dashpot")
 
@@ -46,6 +48,17 @@ class Liggghts(Engine):
     CONTACT_LINES = ("fix m", "fix p", "pair_style", "fix wall ")
     render_batch = staticmethod(render_batch)
     read_batch = staticmethod(read_batch)
+
+    SCENE_KINDS = SCENE_KINDS
+
+    def scene_reason(self, kind, law_name, options=None):
+        return super().scene_reason(kind, law_name, options) or scene_reason(kind, law_name)
+
+    def render_scene(self, kind, case, grid, options=None):
+        return render_scene(kind, case, grid, options)
+
+    def read_scene(self, kind, case, grid, directory):
+        return read_scene_output("LIGGGHTS", kind, case, grid, directory, read_forces)
 
     def run_inputs(self, flavour, count, timeout_s, workdir):
         return run_inputs(self.binary(), count, timeout_s, workdir)
