@@ -10,8 +10,9 @@ the small-system integrator's SystemResult (Engine.read_scene):
 
 Both engines store v(t - dt/2) beside x(t), from the forces at x(t - dt) (leapfrog, symplectic Euler); the scripts
 start each sphere at v(-dt/2) (start_vz). The reader gives v(t) ~ v(t - dt/2) + (F/m - g) dt/2 with the recorded
-force (exact in flight and at rest, off by the force's change over one step in contact), the given v(0) at t = 0,
-and at a touch or a parting vz - g dt/2 (no contact force acts on that half step), as the reference records them."""
+force (exact in flight and at rest, off by the force's change over one step in contact), the given v(0) at t = 0;
+as the reference records them, a touch's V_n is the stored vz (the velocity that moved the sphere inside, before the
+contact's first force) and a parting's vz - g dt/2 (v at its step's end, no contact force on that half step)."""
 import math
 import os
 
@@ -99,7 +100,7 @@ def read_scene_rows(engine, case, grid, directory):
             final[0, k, [F_ALPHA, F_FN, F_FT]] = overlap, f_n, f_t
     rows = np.full((max(len(events), 1), N_EVENT), np.nan)
     for r, (kind, step, contact, vz) in enumerate(events):
-        rows[r, [E_TIME, E_KIND, E_CONTACT, E_VN, E_SLIP]] = step * v.dt, kind, contact, vz - half_kick, math.nan
+        rows[r, [E_TIME, E_KIND, E_CONTACT, E_VN, E_SLIP]] = step * v.dt, kind, contact, vz - (half_kick if kind == PART else 0.0), math.nan
     bodies[:, :5] = [full_step(states[v.steps][b], bodies[b], v.gravity, v.dt) for b in range(n_bodies)]
     metrics = np.full((1, N_METRICS), np.nan)
     finite = np.isfinite(trace).all() and np.isfinite(bodies).all()
