@@ -1,8 +1,9 @@
-"""YADE and Kratos against the reference's small-system integrator on one-sphere scenes, at equal dt: the largest
-difference of the recorded states and of the bounce's touch and parting speeds, and the wall seconds of each engine
-run (docs/yade-dialect.md#scenes, docs/kratos-dialect.md#scenes).
+"""YADE and Kratos against the reference's small-system integrator in the engine's dialect on one-sphere scenes, at
+equal dt: the largest difference of the recorded states and of the bounce's touch and parting speeds, and the wall
+seconds of each engine run (docs/yade-dialect.md#scenes, docs/kratos-dialect.md#scenes). hertz-mindlin on every
+one-sphere scene, linear-spring-dashpot on the bounce and at rest; E 1e7, R 5 mm, e_n 0.5, mu 0.3, dt 1e-5.
 
-    python tools/scene_agreement.py [ENGINE ...]      # yade kratos by default; hertz-mindlin, E 1e7, R 5 mm, dt 1e-5
+    python tools/scene_agreement.py [ENGINE ...]      # yade kratos by default
 """
 import math
 import os
@@ -20,6 +21,7 @@ from harness.studies.scenes import Case
 
 R, E, NU, RHO, MU, G, DT, E_N = 0.005, 1e7, 0.3, 2500.0, 0.3, 9.81, 1e-5, 0.5
 REST = (3.0 * 4.0 / 3.0 * math.pi * R ** 3 * RHO * G / (4.0 * E / (2.0 * (1.0 - NU ** 2)) * math.sqrt(R))) ** (2 / 3)
+LAWS = {"hertz-mindlin": ("free-fall", "bounce", "rest", "slide-to-roll"), "linear-spring-dashpot": ("bounce", "rest")}
 SCENES = {   # kind: (spheres, steps)
     "free-fall": ((Sphere(R, z=0.2, vz=0.5),), 15_000),
     "bounce": ((Sphere(R, z=R + 0.05),), 12_000),
@@ -46,24 +48,30 @@ def engine_run(engine, kind, case, times):
 
 
 def main(names):
-    law = compose("hertz-mindlin")
     for name in names:
         engine = get_engine(name)
-        for kind, (spheres, steps) in SCENES.items():
-            variant = Variant(spheres, law, E=E, nu=NU, rho=RHO, mu=MU, e_n=E_N, speed=1.0, dt=DT, steps=steps,
-                              gravity=G)
-            case = Case(kind, variant, contact_properties(R, None, E, NU, RHO), E_N)
-            times = grid(steps)
-            got, wall = engine_run(engine, kind, case, times)
-            reference = simulate_system([variant], times)
-            d = np.abs(got.trace[0] - reference.trace[0]).max(axis=(0, 1))
-            line = (f"{name} {kind} ({steps} steps, {wall:.1f} s): max |dx| {d[0]:.2e} m, |dz| {d[1]:.2e} m, "
-                    f"|dvx| {d[2]:.2e} m/s, |dvz| {d[3]:.2e} m/s, |dw| {d[4]:.2e} rad/s")
-            if kind == "bounce":
-                n = min(got.n_events[0], reference.n_events[0])
-                dv = np.abs(got.events[0, :n, E_VN] - reference.events[0, :n, E_VN]).max()
-                line += f"; {n} touches and partings, max |dV_n| {dv:.2e} m/s"
-            print(line, flush=True)
+        for law_name, kinds in LAWS.items():
+            law, dialect = compose(law_name), engine.dialect(law_name, {}, "wall")
+            for kind in kinds:
+                print(compared(engine, law, dialect, kind), flush=True)
+
+
+def compared(engine, law, dialect, kind):
+    """One line: the engine's run of `kind` against the reference's in the engine's dialect."""
+    spheres, steps = SCENES[kind]
+    fields = dict(E=E, nu=NU, rho=RHO, mu=MU, e_n=E_N, speed=1.0, dt=DT, steps=steps, gravity=G)
+    case = Case(kind, Variant(spheres, law, **fields), contact_properties(R, None, E, NU, RHO), E_N)
+    times = grid(steps)
+    got, wall = engine_run(engine, kind, case, times)
+    reference = simulate_system([Variant(spheres, dialect, **fields)], times)
+    d = np.abs(got.trace[0] - reference.trace[0]).max(axis=(0, 1))
+    line = (f"{engine.NAME} {law.name} {kind} ({steps} steps, {wall:.1f} s): max |dx| {d[0]:.2e} m, |dz| {d[1]:.2e} "
+            f"m, |dvx| {d[2]:.2e} m/s, |dvz| {d[3]:.2e} m/s, |dw| {d[4]:.2e} rad/s")
+    if kind == "bounce":
+        n = min(got.n_events[0], reference.n_events[0])
+        dv = np.abs(got.events[0, :n, E_VN] - reference.events[0, :n, E_VN]).max()
+        line += f"; {n} touches and partings, max |dV_n| {dv:.2e} m/s, first rebound {got.events[0, 1, E_VN]:.9f} m/s"
+    return line
 
 
 if __name__ == "__main__":
