@@ -1,18 +1,18 @@
 """What YADE's and Kratos' scene scripts write (scene.txt, one tagged row a line) and how harness reads it back into
 the small-system integrator's SystemResult (Engine.read_scene):
 
-    state STEP BODY x z vx vz w fx fz ty   a body at a recorded step: the velocities as the engine stores them, and
-                                    the contact force and torque of the step that led there (gravity apart)
+    state STEP BODY x z vx vz w     a body at a recorded step, its velocities as the engine stores them
+    next STEP BODY vx vz w          the stored velocities one step later
     touch STEP CONTACT vz           the first step the sphere is inside the wall below; vz stored that step
     part STEP CONTACT vz            the first step after it that the sphere is clear of it again
     contact K overlap F_n F_t       contact K (contact_pairs order) at the end
     END
 
-Both engines store v(t - dt/2) beside x(t), from the forces at x(t - dt) (leapfrog, symplectic Euler); the scripts
-start each sphere at v(-dt/2) (start_vz). The reader gives v(t) ~ v(t - dt/2) + (F/m - g) dt/2 with the recorded
-force (exact in flight and at rest, off by the force's change over one step in contact), the given v(0) at t = 0;
-as the reference records them, a touch's V_n is the stored vz (the velocity that moved the sphere inside, before the
-contact's first force) and a parting's vz - g dt/2 (v at its step's end, no contact force on that half step)."""
+Both engines store v(t - dt/2) beside x(t) and step v(t + dt/2) = v(t - dt/2) + dt F(x(t))/m (leapfrog, symplectic
+Euler), the positions of velocity Verlet; the scripts start each sphere at v(-dt/2) (start_vz) and run one step
+past the last. The reader gives velocity Verlet's v(t) = (v(t - dt/2) + v(t + dt/2))/2 at each recorded step; a
+touch's V_n is the stored vz (the velocity that moved the sphere inside, before the contact's first force) and a
+parting's vz - g dt/2 (v at its step's end, gravity alone on that half step), as the reference records them."""
 import math
 import os
 
@@ -21,12 +21,11 @@ import numpy as np
 from ..solver.system import (E_CONTACT, E_KIND, E_SLIP, E_TIME, E_VN, F_ALPHA, F_FN, F_FT, M_EVENTS, M_GAIN,
                              M_STATUS, M_STEPS, M_TIME, N_EVENT, N_FINAL, N_METRICS, PART, STATUS_NONFINITE,
                              STATUS_OK, TOUCH)
-from ..solver.system_contacts import B_I, B_M
 from ..solver.system_run import SystemResult, body_rows, contact_pairs
 from .runner import EngineFailure
 
 OUTPUT = "scene.txt"
-STATE_FIELDS = 8                # x z vx vz w fx fz ty
+STATE_FIELDS = 5                # x z vx vz w
 
 
 def start_vz(sphere, variant):
@@ -44,15 +43,9 @@ def recorded_steps(grid, dt):
     return steps, max(every, 1)
 
 
-def full_step(row, body, gravity, dt):
-    """(x, z, vx, vz, w) at the row's time from the stored half-step velocities and the recorded force and torque."""
-    x, z, vx, vz, w, fx, fz, ty = row
-    half = 0.5 * dt
-    return (x, z, vx + half * fx / body[B_M], vz + half * (fz / body[B_M] - gravity), w + half * ty / body[B_I])
-
-
 def parse(path, engine):
-    """(states {step: {body: row}}, events [(kind, step, contact, vz)], contacts {k: (overlap, F_n, F_t)})."""
+    """(states {step: {body: row}}, later {step: {body: (vx, vz, w) a step later}}, events [(kind, step, contact,
+    vz)], contacts {k: (overlap, F_n, F_t)})."""
     try:
         with open(path) as handle:
             lines = handle.read().splitlines()
@@ -60,12 +53,14 @@ def parse(path, engine):
         raise EngineFailure(f"{engine} wrote no {os.path.basename(path)}") from None
     if not lines or lines[-1] != "END":
         raise EngineFailure(f"{engine} {os.path.basename(path)} is truncated (no END line)")
-    states, events, contacts = {}, [], {}
+    states, later, events, contacts = {}, {}, [], {}
     try:
         for line in lines[:-1]:
             tag, *words = line.split()
             if tag == "state":
                 states.setdefault(int(words[0]), {})[int(words[1])] = [float(w) for w in words[2:2 + STATE_FIELDS]]
+            elif tag == "next":
+                later.setdefault(int(words[0]), {})[int(words[1])] = [float(w) for w in words[2:5]]
             elif tag in ("touch", "part"):
                 events.append((TOUCH if tag == "touch" else PART, int(words[0]), int(words[1]), float(words[2])))
             elif tag == "contact":
@@ -74,7 +69,7 @@ def parse(path, engine):
                 raise ValueError(tag)
     except (ValueError, IndexError):
         raise EngineFailure(f"{engine} {os.path.basename(path)} is malformed: {line[:80]!r}") from None
-    return states, events, contacts
+    return states, later, events, contacts
 
 
 def read_scene_rows(engine, case, grid, directory):
@@ -83,16 +78,18 @@ def read_scene_rows(engine, case, grid, directory):
     (not written)."""
     v = case.variant
     n_bodies, half_kick = len(v.spheres), 0.5 * v.gravity * v.dt
-    states, events, contacts = parse(os.path.join(directory, OUTPUT), engine)
+    states, later, events, contacts = parse(os.path.join(directory, OUTPUT), engine)
     steps, _ = recorded_steps(grid, v.dt)
     for step in list(steps) + [v.steps]:
-        if len(states.get(int(step), {})) != n_bodies:
+        if len(states.get(int(step), {})) != n_bodies or len(later.get(int(step), {})) != n_bodies:
             raise EngineFailure(f"{engine} wrote no state of every sphere at step {int(step)} of {v.steps}")
-    bodies = body_rows(v)
-    trace = np.array([[full_step(states[int(s)][b], bodies[b], v.gravity, v.dt) for b in range(n_bodies)]
-                      for s in steps])[None]
-    if steps[0] == 0:
-        trace[0, 0, :, 2:5] = [(s.vx, s.vz, s.w) for s in v.spheres]      # the velocities the engine was given
+
+    def at(step, body):
+        """(x, z, vx, vz, w) at `step`: the mean of the half-step velocities either side."""
+        x, z, *before = states[step][body]
+        return (x, z, *(0.5 * (a + b) for a, b in zip(before, later[step][body])))
+
+    trace = np.array([[at(int(s), b) for b in range(n_bodies)] for s in steps])[None]
     pairs = contact_pairs(n_bodies, v.ceiling)
     final = np.full((1, len(pairs), N_FINAL), np.nan)
     for k, (overlap, f_n, f_t) in contacts.items():
@@ -100,8 +97,10 @@ def read_scene_rows(engine, case, grid, directory):
             final[0, k, [F_ALPHA, F_FN, F_FT]] = overlap, f_n, f_t
     rows = np.full((max(len(events), 1), N_EVENT), np.nan)
     for r, (kind, step, contact, vz) in enumerate(events):
-        rows[r, [E_TIME, E_KIND, E_CONTACT, E_VN, E_SLIP]] = step * v.dt, kind, contact, vz - (half_kick if kind == PART else 0.0), math.nan
-    bodies[:, :5] = [full_step(states[v.steps][b], bodies[b], v.gravity, v.dt) for b in range(n_bodies)]
+        v_n = vz - half_kick if kind == PART else vz
+        rows[r, [E_TIME, E_KIND, E_CONTACT, E_VN, E_SLIP]] = step * v.dt, kind, contact, v_n, math.nan
+    bodies = body_rows(v)
+    bodies[:, :STATE_FIELDS] = [at(v.steps, b) for b in range(n_bodies)]
     metrics = np.full((1, N_METRICS), np.nan)
     finite = np.isfinite(trace).all() and np.isfinite(bodies).all()
     metrics[0, M_STATUS] = STATUS_OK if finite else STATUS_NONFINITE
