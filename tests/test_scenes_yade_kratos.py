@@ -3,6 +3,7 @@ written here: free flight z0 + v0 t - g t^2/2 (Newton), the first touch after a 
 sphere's slip end and rolling speed (Routh, with each engine's torque lever and slip radius), the Hertz static
 overlap (3 m g/(4 E* sqrt(R)))^(2/3) (Johnson) and a column's contact forces i m g (statics). A soft sphere
 (E 1e7, R 5 mm) at dt 1e-5 keeps each run to seconds."""
+import dataclasses
 import math
 import os
 
@@ -10,6 +11,7 @@ import numpy as np
 import pytest
 
 from harness.engines import get_engine
+from harness.engines.runner import EngineFailure
 from harness.laws import compose
 from harness.solver.system import E_KIND, E_TIME, E_VN, F_ALPHA, F_FN, M_STATUS, PART, STATUS_OK, TOUCH
 from harness.solver.system_rows import contact_properties
@@ -149,3 +151,52 @@ def test_a_column_of_three_carries_1_2_3_m_g_below_each_sphere_from_the_top(stac
     forces = result.final[0, :, F_FN]
     np.testing.assert_allclose(forces[[0, 3, 5]], [3 * MASS * G, 2 * MASS * G, MASS * G], rtol=1e-9)
     assert forces[1] == forces[2] == forces[4] == 0.0
+
+
+def case_of(kind, law_name="hertz-mindlin"):
+    variant = Variant(SPHERES[kind], compose(law_name), E=E, nu=NU, rho=RHO, mu=MU, e_n=E_N, speed=1.0, dt=DT,
+                      steps=STEPS[kind], gravity=G)
+    return Case("e_n = 0.5", variant, contact_properties(R, None, E, NU, RHO), E_N)
+
+
+@pytest.mark.parametrize("kind, wall, pairs", [("free-fall", False, False), ("rest", True, False),
+                                               ("stack", True, True)])
+def test_each_input_holds_exactly_its_scene_effects(kind, wall, pairs):
+    """No wall, collider or contact law in free flight; sphere-sphere contacts only in a stack; gravity always."""
+    grid = times(STEPS[kind])
+    yade = get_engine("yade").render_scene(kind, case_of(kind), grid)
+    assert ("utils.wall(0, axis=2, sense=1" in yade) == wall
+    assert ("InsertionSortCollider" in yade) == ("InteractionLoop" in yade) == wall
+    assert ("Ig2_Sphere_Sphere_ScGeom()" in yade) == pairs
+    assert 'gravity=(0, 0, -Real("9.81"))' in yade
+    kratos = get_engine("kratos").render_scene(kind, case_of(kind), grid)
+    assert ("WALL = None" in kratos) != wall
+    assert ("SEARCH = 1000000000" in kratos) == (not wall and not pairs)
+    assert "GRAVITY = 9.81" in kratos
+
+
+def test_engine_options_the_scene_inputs_do_not_follow_are_refused():
+    yade, kratos = get_engine("yade"), get_engine("kratos")
+    assert yade.scene_reason("rest", "hertz-mindlin", {"precision": "double"}) == ""
+    assert "no engine options" in yade.scene_reason("rest", "linear-spring-dashpot", {"linear": "cundall-strack"})
+    assert "no engine options" in yade.scene_reason("rest", "hertz-mindlin", {"precision": "mpfr150"})
+    assert "no engine options" in kratos.scene_reason("rest", "hertz-mindlin", {"with:lever": "0"})
+    assert "walton-braun" in yade.scene_reason("rest", "walton-braun")
+    assert kratos.scene_reason("bounce", "hertz-mindlin") == "" and "runs no impact scene" in kratos.scene_reason(
+        "impact", "hertz-mindlin")
+    with pytest.raises(EngineFailure, match="no face above"):
+        kratos.render_scene("stack", Case("c", dataclasses.replace(case_of("stack").variant, ceiling=0.03), None, E_N),
+                            times(10))
+
+
+@pytest.mark.parametrize("engine_name", ["yade", "kratos"])
+def test_a_cut_or_short_output_is_a_failure_naming_what_is_missing(engine_name, tmp_path):
+    engine, case = get_engine(engine_name), case_of("free-fall")
+    grid = times(STEPS["free-fall"])
+    rows = [f"state {s} 0 0.0 0.2 0.0 0.5 0.0\nnext {s} 0 0.0 0.5 0.0" for s in (0, 75)]
+    (tmp_path / "scene.txt").write_text("\n".join(rows) + "\n")
+    with pytest.raises(EngineFailure, match="truncated"):
+        engine.read_scene("free-fall", case, grid, str(tmp_path))
+    (tmp_path / "scene.txt").write_text("\n".join(rows) + "\nEND\n")
+    with pytest.raises(EngineFailure, match="no state of every sphere at step 150 of 15000"):
+        engine.read_scene("free-fall", case, grid, str(tmp_path))

@@ -1,9 +1,11 @@
 """Kratos' input of one scene case (harness run --scene): its spheres on a rigid face of their own material (none in
 free flight), gravity, the ball-ball relation acting only with several spheres, the law's counterpart as its impact
 inputs name it, and the rows engines/scene_rows.py reads (docs/kratos-dialect.md#scenes)."""
+import os
+
 from ...infra.render import render
 from ...infra.version import __version__
-from ..runner import EngineFailure
+from ..runner import EngineFailure, read_tail
 from ..scene_rows import read_scene_rows, recorded_steps, start_vz
 from .dialect import COUNTERPARTS
 from .script import TEMPLATES
@@ -17,8 +19,8 @@ def scene_reason(kind, law_name, options):
         return f"Kratos runs no {kind} scene"
     if law_name not in COUNTERPARTS:
         return f"Kratos has no counterpart of {law_name}"
-    if "input" in dict(options or {}):
-        return "Kratos' scene inputs take no input of your own"
+    if options:
+        return "Kratos' scene inputs take no engine options"
     return ""
 
 
@@ -52,5 +54,9 @@ def render_scene(kind, case, grid, options=None):
 
 
 def read_scene(kind, case, grid, directory):
-    """The SystemResult of a finished scene run in `directory` (Engine.read_scene)."""
-    return read_scene_rows("Kratos", case, grid, directory)
+    """The SystemResult of a finished scene run in `directory` (Engine.read_scene); a failure carries the tail of the
+    log there (each Kratos script runs, and logs, in its own directory)."""
+    try:
+        return read_scene_rows("Kratos", case, grid, directory)
+    except EngineFailure as exc:
+        raise EngineFailure(str(exc), exc.log_tail or read_tail(os.path.join(directory, "engine.log"))) from None

@@ -14,6 +14,7 @@ from .script import TEMPLATES, viscel_contact_time
 
 KINDS = ("free-fall", "bounce", "rest", "slide-to-roll", "stack")
 LAWS = ("hertz-mindlin", "linear-spring-dashpot")       # the laws whose impact inputs on a wall scenes reuse
+DEFAULTS = {"precision": "double", "linear": "viscel"}  # the only option values they take: the defaults
 
 
 def scene_reason(kind, law_name, options):
@@ -22,9 +23,7 @@ def scene_reason(kind, law_name, options):
         return f"YADE runs no {kind} scene"
     if law_name not in LAWS:
         return f"YADE's scene inputs run {' and '.join(LAWS)}, not {law_name}"
-    options = dict(options or {})
-    if options.get("linear", "viscel") != "viscel" or options.get("precision", "double") != "double" \
-            or "input" in options:
+    if any(DEFAULTS.get(key) != value for key, value in dict(options or {}).items()):
         return "YADE's scene inputs take no engine options (double precision, ViscEl for linear-spring-dashpot)"
     return ""
 
