@@ -43,6 +43,10 @@ LONG = {   # command as shown (without .venv/bin/) -> why it does not run here
     "harness cost --model hertz-mindlin --verbose": "a cost study with every engine: minutes (tests/test_cost.py)",
     "python benchmarks/bench_commands.py": "times the commands cold and warm, several times each: minutes "
                                            "(tests/test_benchmarks.py runs its --smoke size)",
+    "python tools/scene_agreement.py yade": "six YADE scene runs beside the reference: about 30 s "
+                                            "(tests/test_scenes_yade_kratos.py runs the scenes against closed forms)",
+    "python tools/scene_agreement.py kratos": "six Kratos scene runs beside the reference: about 30 s "
+                                              "(tests/test_scenes_yade_kratos.py runs the scenes against closed forms)",
     "python tools/signals_under_load.py --runs 50": "fifty interrupted compares with both cores busy: minutes "
                                                     "(tests/test_signals_under_load.py runs four)",
     "harness compile": "loads or compiles every law's kernels, 5 s of CPU warm and minutes cold (the user guide's "

@@ -11,6 +11,7 @@ from .dialect import COUNTERPARTS, DIALECTS, OPTIONS, PAIR_DIALECTS, check_optio
 from .flavours import (ARITHMETIC, FLAVOURS, PYTHON_VARIABLE, available, environment, flavour_path, missing_reason,
                        python, version)
 from .precision import HIGH, precision_runs
+from .scene import KINDS as SCENE_KINDS, read_scene, render_scene, scene_reason
 from .script import (OBSERVE_FILE, TEMPLATES, read_batch, read_observation, read_result, render_batch, run_inputs,
                      run_script, script, typed)
 
@@ -42,6 +43,17 @@ class Yade(Engine):
     CONTACT_LINES = ("material = ", "other = ", "InteractionLoop(")
     render_batch, run_inputs = staticmethod(render_batch), staticmethod(run_inputs)
     read_batch = staticmethod(read_batch)
+    SCENE_KINDS = SCENE_KINDS   # harness run --scene (scene.py)
+
+    def scene_reason(self, kind, law_name, options=None):
+        """Why it cannot run scene `kind` for `law_name` with these options, '' when it can."""
+        return scene_reason(kind, law_name, options)
+
+    def render_scene(self, kind, case, grid, options=None):
+        return render_scene(kind, case, grid, options)
+
+    def read_scene(self, kind, case, grid, directory):
+        return read_scene(kind, case, grid, directory)
 
     def available(self, flavour="double"):
         """Debian's python3.11 and the flavour's module directory are both there."""
