@@ -12,13 +12,13 @@ SERIES, CHECKS, DESCRIPTION = "series.csv", "checks.csv", "scene.json"
 
 
 def write_scene(directory, run, command=""):
-    """series.csv, checks.csv and scene.json (what the run was, the checks not applicable, the command that ran it) in
-    `directory` (created if missing), each written whole or not at all."""
+    """series.csv, checks.csv and scene.json (what the run was, the checks not applicable, the engines asked for that
+    did not run it, the command that ran it) in `directory` (created if missing), each written whole or not at all."""
     os.makedirs(directory, exist_ok=True)
     write_csv(run.series, os.path.join(directory, SERIES))
     write_csv(run.checks, os.path.join(directory, CHECKS))
     described = {"scene": run.scene, "law": run.law, "values": run.values, "radius": run.radius,
-                 "not_applicable": run.skipped, "command": command}
+                 "not_applicable": run.skipped, "not_run": run.unavailable, "command": command}
     write_text(os.path.join(directory, DESCRIPTION), json.dumps(described, indent=1) + "\n")
 
 
@@ -29,5 +29,5 @@ def load_scene(directory):
     series = pd.read_csv(os.path.join(directory, SERIES))
     checks = pd.read_csv(os.path.join(directory, CHECKS), keep_default_na=False, na_values=[""])
     checks["passed"] = checks.passed.astype(str) == "True"
-    return SceneRun(described["scene"], series, checks, described["not_applicable"], described["law"],
-                    described["values"], described["radius"]), described.get("command", "")
+    return SceneRun(described["scene"], series, checks, described["not_applicable"], described["not_run"],
+                    described["law"], described["values"], described["radius"]), described["command"]
