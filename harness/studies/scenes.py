@@ -181,8 +181,14 @@ def bounces_of(result, n):
     return pairs[:n]
 
 
-def missing(n, found):
-    return f"only {found} of {n} bounces parted from the wall: the sphere stayed on it (0)"
+def missing(result, n, found):
+    """(value, note) of a bounce that did not part: 0 where the sphere stayed on the wall (its last event a touch),
+    NaN where the run ended while it flew (the run's length follows the target e_n's flights)."""
+    events = result.events[0, :result.n_events[0]]
+    if len(events) and events[-1, E_KIND] == TOUCH:
+        return 0.0, f"only {found} of {n} bounces parted from the wall: the sphere stayed on it (0)"
+    return math.nan, (f"only {found} of {n} bounces parted from the wall before the run ended in flight (its length "
+                      "follows the target e_n's flights)")
 
 
 def linear_arguments(law, case, values):
@@ -202,8 +208,8 @@ def measured_rebound_ratio(law, case, values, result):
             yield (f", bounce {k + 1}", pairs[k][1] / pairs[k][0], dict(arguments, v=pairs[k][0]),
                    f"incident {pairs[k][0]:.6g} m/s; {gravity_share(law, case, values, pairs[k][0])}")
         else:
-            yield f", bounce {k + 1}", 0.0, dict(arguments, v=pairs[-1][1] if pairs else math.nan), \
-                missing(n, len(pairs))
+            value, note = missing(result, n, len(pairs))
+            yield f", bounce {k + 1}", value, dict(arguments, v=pairs[-1][1] if pairs else math.nan), note
 
 
 def gravity_share(law, case, values, incident):
@@ -218,10 +224,12 @@ def measured_apex(law, case, values, result):
     pairs = bounces_of(result, n)
     arguments = dict(linear_arguments(law, case, values), h0=values["height"])
     for k in range(n):
-        value = pairs[k][1] ** 2 / (2.0 * g) if k < len(pairs) else 0.0
-        yield (f", apex {k + 1}", value, dict(arguments, k=k + 1),
-               "from the parting speed; " + gravity_share(law, case, values, pairs[k][0]) if k < len(pairs)
-               else missing(n, len(pairs)))
+        if k < len(pairs):
+            yield (f", apex {k + 1}", pairs[k][1] ** 2 / (2.0 * g), dict(arguments, k=k + 1),
+                   "from the parting speed; " + gravity_share(law, case, values, pairs[k][0]))
+        else:
+            yield (f", apex {k + 1}", *missing(result, n, len(pairs))[:1], dict(arguments, k=k + 1),
+                   missing(result, n, len(pairs))[1])
 
 
 # rest
