@@ -20,6 +20,7 @@ from ..solver.batch import batch_of
 from ..solver.stability import stability_limit
 from ..solver.system import M_GAIN, M_STATUS, STATUS_OK
 from ..solver.system_run import simulate_system
+from .hard_cases import ALL_LAWS, CATALOGUE, get_case
 from .scenes import SCENES, kept_events, run_scene, settle_time, static_overlap
 
 PRECISION = 0.02            # the bisection stops when the unstable step is within 2% above the stable one
@@ -27,6 +28,8 @@ ACCURACY = 1e-3             # the accuracy a step must reach against the converg
 SEARCH = 40                 # doublings or halvings that bracket the stable step at most (a factor 1e12)
 ACCURACY_HALVINGS = 16      # halvings below the stable step that look for the accurate one at most (65536x)
 INSIDE = (2, 4, 8)          # dt_stable / these are probed for the verdict, beside the bisection's own probes
+DEFAULT_CASES = ("grazing 89.5 deg", "mu = 2", "E = 1e12 Pa", "R = 10 um")
+SCENE_EN = (0.05, 0.5)      # a scene kind's e_n unless given (a resting sphere settles only below 1)
 HELD_TIMES = 101            # recorded heights of a resting sphere while it is held
 COLUMNS = ("case", "e_n", "engine", "dialect", "law", "dt_estimate", "dt_stable", "dt_unstable", "stable_how",
            "dt_accurate_1e-3", "accurate_how", "dt_rayleigh_20", "rayleigh_20_stable", "stable_over_rayleigh_20",
@@ -167,13 +170,26 @@ def bisect(test, start, precision=PRECISION, upward=True, search=SEARCH, ceiling
 
 
 def contact_time_of(case, law):
-    """The law's contact-time estimate on the case's material at its slowest normal speed (a scene kind: at the
-    Scene's speed): the search's ceiling, one step per contact (a longer step resolves no contact)."""
+    """The search's ceiling, one step per contact (a longer step resolves no contact): the law's contact-time
+    estimate on the case's material at its slowest normal speed (a scene kind: at the Scene's speed, or the period
+    of a resting sphere's oscillation where the kind has gravity and that is longer)."""
     speed = case.scene.speed
     if case.kind is None:
         normal = case.scene.impacts(case.e_n)[0]
         speed = float(np.min(normal[normal > 0.0])) if (normal > 0.0).any() else speed
-    return law.normal.parameters(case.scene.contact, case.e_n, speed).contact_time
+    contact_time = law.normal.parameters(case.scene.contact, case.e_n, speed).contact_time
+    if case.kind is None or "g" not in case.values or law.normal.name not in ("hertz", "linear"):
+        return contact_time
+    return max(contact_time, resting_period(case, law))
+
+
+def resting_period(case, law):
+    """2 pi sqrt(m/k) of a sphere resting on the wall, k linearised at its static overlap (1.5 m g/delta Hertz,
+    m g/delta linear): a scene with a resting contact may step up to one step per resting oscillation."""
+    contact, g = case.scene.contact, case.values["g"]
+    delta = static_overlap(law, contact, case.e_n, case.scene.speed, g)
+    stiffness = (1.5 if law.normal.name == "hertz" else 1.0) * contact.mass * g / delta
+    return 2.0 * math.pi * math.sqrt(contact.mass / stiffness)
 
 
 def estimate_of(case, law):
@@ -257,20 +273,41 @@ def ratios(row):
 
 def stability_study(cases, runners, progress=None):
     """The table (COLUMNS) of every case and runner: for each engine its dialect on the reference first, then the
-    engine, which takes the dialect's accurate step."""
+    engine, which takes the dialect's accurate step; `progress` (views.progress.Progress) told of each row."""
     rows = []
+    if progress is not None:
+        progress.expect(len(cases) * len(runners))
     for case in cases:
         accurate = {}
         for runner in runners:
-            if progress is not None:
-                progress(f"{case.name}, e_n {case.e_n:g}, {runner.name} ({runner.law.dialect})")
             given = accurate.get(runner.law.dialect) if runner.engine is not None else None
             row = ratios(measure(case, runner, given))
             if runner.engine is None:
                 accurate[runner.law.dialect] = (row["dt_accurate_1e-3"], f"its dialect on the reference: "
                                                                          f"{row['accurate_how']}")
             rows.append(row)
+            if progress is not None:
+                progress.advance(f"{case.name}, e_n {case.e_n:g}, {runner.name} ({runner.law.dialect})")
     return pd.DataFrame(rows, columns=list(COLUMNS))
+
+
+def runners_of(law, engines):
+    """The reference running the law, then per engine (available, harness.engines.Engine) its dialect on the
+    reference and the engine itself."""
+    runners = [Runner("reference", law)]
+    for engine in engines:
+        dialect = engine.dialect(law.name, {}, "wall")
+        runners += [Runner("reference", dialect), Runner(engine.NAME, dialect, engine)]
+    return runners
+
+
+def default_cases(law):
+    """The hard cases of issue 43's stability item that apply to the law: grazing incidence, mu >= 0.5, stiff and
+    small spheres, and the catalogue's cases of this law alone (Thornton's deep plastic flow at e_n 0.05, the
+    400x stiffer unloading)."""
+    named = [get_case(name) for name in DEFAULT_CASES]
+    own = [case for case in CATALOGUE if case.laws != ALL_LAWS and law.name in case.laws]
+    return named + own
 
 
 def impact_cases(hard_cases, law, e_n=None):
