@@ -17,9 +17,9 @@ LOST = ("non-finite", "no-separation")      # impact statuses that say the run d
 
 @dataclass(frozen=True)
 class Probe:
-    """One run at time step `dt`: whether it passed (is stable), why not (or what it measured), its energy gain (a fraction
-    of the energy the gain is counted against) and, for a resting contact, the overlap's drift (a fraction of the
-    static overlap; NaN where it does not apply)."""
+    """One run at time step `dt`: whether it passed (is stable, or accurate), why not (or what it measured), its
+    energy gain (a fraction of the energy the gain is counted against) and, for a resting contact, the overlap's
+    drift (a fraction of the static overlap; NaN where it does not apply)."""
     dt: float
     passed: bool
     why: str
@@ -61,7 +61,7 @@ def scene_probe(dt, finite, gain, energy, drift=math.nan):
     return Probe(dt, True, f"energy gain {relative:.2g}{held}", relative, drift)
 
 
-def overlap_drift(z, radius, static_overlap):
+def overlap_drift(z, static_overlap):
     """max |z - z_0| over the held recorded heights `z` of a sphere resting on the wall, over its static overlap."""
     z = np.asarray(z, dtype=float)
     return float(np.max(np.abs(z - z[0])) / static_overlap) if len(z) else 0.0

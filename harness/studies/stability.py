@@ -128,7 +128,7 @@ def reference_scene_probe(case, law, dt):
     drift = math.nan
     if resting and finite:
         delta = static_overlap(law, built.contact, case.e_n, variant.speed, variant.gravity)
-        drift = overlap_drift(result.trace[0, :, 0, 1], variant.spheres[0].radius, delta)
+        drift = overlap_drift(result.trace[0, :, 0, 1], delta)
     return scene_probe(dt, finite, float(result.metrics[0, M_GAIN]), initial_energy(variant), drift)
 
 
