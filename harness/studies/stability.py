@@ -25,7 +25,7 @@ from .scenes import SCENES, kept_events, run_scene, settle_time, static_overlap
 
 PRECISION = 0.02            # the bisection stops when the unstable step is within 2% above the stable one
 ACCURACY = 1e-3             # the accuracy a step must reach against the converged reference
-SEARCH = 40                 # doublings or halvings that bracket the stable step at most (a factor 1e12)
+SEARCH = 12                 # doublings or halvings that bracket the stable step at most (a factor 4096)
 ACCURACY_HALVINGS = 16      # halvings below the stable step that look for the accurate one at most (65536x)
 INSIDE = (2, 4, 8)          # dt_stable / these are probed for the verdict, beside the bisection's own probes
 DEFAULT_CASES = ("grazing 89.5 deg", "mu = 2", "E = 1e12 Pa", "R = 10 um")

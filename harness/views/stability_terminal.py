@@ -4,14 +4,16 @@ from .terminal import text_table
 
 SHOWN = ("case", "e_n", "engine", "dialect", "dt_stable", "dt_accurate_1e-3", "dt_rayleigh_20",
          "stable_over_rayleigh_20", "stable_over_accurate", "verdict")
-FORMATS = {"e_n": "{:g}", "dt_stable": "{:.4g}", "dt_accurate_1e-3": "{:.4g}", "dt_rayleigh_20": "{:.4g}",
+FORMATS = {"e_n": "{:g}", "dt_accurate_1e-3": "{:.4g}", "dt_rayleigh_20": "{:.4g}",
            "stable_over_rayleigh_20": "{:.3g}", "stable_over_accurate": "{:.3g}"}
 
 
 def stability_table(table):
-    """The terminal table: per case, e_n and runner the three steps, two ratios and the verdict; below it each
-    failed verdict's reason."""
-    lines = [text_table(table, list(SHOWN), FORMATS)]
+    """The terminal table: per case, e_n and runner the three steps (a stable step without an unstable one above it,
+    the search's ceiling, as '>=' it), two ratios and the verdict; below it each failed verdict's reason."""
+    shown = table.assign(dt_stable=[f"{'>=' if u != u else ''}{s:.4g}" if s == s else "-"
+                                    for s, u in zip(table.dt_stable, table.dt_unstable)])
+    lines = [text_table(shown, list(SHOWN), {k: v for k, v in FORMATS.items() if k != "dt_stable"})]
     for _, row in table[table.verdict != "pass"].iterrows():
         lines.append(f"  {row.case}, e_n {row.e_n:g}, {row.engine} ({row.dialect}): {row.verdict_note}")
     return "\n".join(lines)
