@@ -104,7 +104,7 @@ def engine_impacts(runner, scene, dt):
     run = engine_runs(runner.engine, runner.law, scene, FixedTimeStep(dt), dict(runner.options))[0]
     unchecked = UncheckedRun(**{f.name: getattr(run, f.name) for f in fields(run)})
     frame, failure = runner.engine.run([unchecked])[0]
-    return frame, "" if failure is None else failure.message.splitlines()[0]
+    return frame, "" if failure is None else (failure.message.strip().splitlines() or ["no message"])[0]
 
 
 def scene_case(case, law, dt):
