@@ -12,7 +12,8 @@ SCENE_GAIN = 1e-9       # a scene's largest energy gain (the system integrator's
                         # mechanical energy (kinetic and m g z of every body)
 DRIFT = 1e-2            # a resting contact's overlap may move by this fraction of the static overlap while held:
                         # a jitter or a creep, not what the settling leaves of a heavily damped Hertz contact
-LOST = ("non-finite", "no-separation")      # impact statuses that say the run did not end as an impact
+LOST = ("non-finite",)  # the impact status that says a state was not finite (a row still in contact at its step cap,
+                        # 'no-separation', is judged by its energy: an engine's reading may say so of a finite rebound)
 
 
 @dataclass(frozen=True)
@@ -29,8 +30,8 @@ class Probe:
 
 def impact_probe(frame, dt, failure=""):
     """The Probe of an impact run's results table: unstable where the run failed (`failure`, its message), a row is
-    lost (LOST) or not finite, or the largest ke_ratio - 1 over the impacts is above IMPACT_GAIN (every law here
-    has e <= 1: none may return more energy than it was given)."""
+    non-finite (LOST) or its rebound not finite, or the largest ke_ratio - 1 over the impacts is above IMPACT_GAIN
+    (every law here has e <= 1: none may return more energy than it was given)."""
     if failure:
         return Probe(dt, False, f"run failed: {failure}")
     status = frame.status.to_numpy()
