@@ -16,6 +16,7 @@ from harness.laws import compose
 from harness.scenes.catalogue import scene_kind
 from harness.scenes.scene import Scene
 from harness.studies.hard_cases import BASE_SCENE, get_case
+from harness.analyses.stability import DRIFT, Probe, scene_probe, verdict
 from harness.studies.stability import (PRECISION, Runner, bisect, contact_time_of, estimate_of, impact_cases,
                                        measure, run_case, scene_cases)
 
@@ -38,6 +39,27 @@ def measured(case, law):
 
 def sphere_mass(scene):
     return 4.0 / 3.0 * math.pi * scene.radius ** 3 * scene.rho
+
+
+@pytest.mark.parametrize("start", [1e-3, 0.37, 50.0])
+def test_the_bisection_brackets_a_known_threshold_to_its_precision(start):
+    """A test that passes exactly below 0.37: from below, at it and from above, the bracket holds 0.37 and is at
+    most PRECISION wide; a threshold beyond SEARCH doublings (2^12) leaves the bracket open."""
+    bracket = bisect(lambda dt: Probe(dt, dt <= 0.37, ""), start)
+    assert bracket.stable.dt <= 0.37 < bracket.unstable.dt <= bracket.stable.dt * (1.0 + PRECISION)
+    assert bisect(lambda dt: Probe(dt, dt <= 0.37, ""), 1e-6).unstable is None
+
+
+def test_a_drifting_rest_or_a_gain_is_unstable_and_a_gain_inside_the_bracket_fails_the_verdict():
+    """A resting overlap moving by more than DRIFT of itself, or an energy gain beyond round-off, is not stable; one
+    such probe below the stable step fails the verdict."""
+    assert scene_probe(1e-6, True, 0.0, 1.0, 0.5 * DRIFT).passed
+    assert not scene_probe(1e-6, True, 0.0, 1.0, 2.0 * DRIFT).passed
+    assert not scene_probe(1e-6, True, 1e-6, 1.0).passed
+    assert not scene_probe(1e-6, False, 0.0, 1.0).passed
+    stable, gaining = Probe(2e-6, True, ""), scene_probe(1e-6, True, 1e-6, 1.0)
+    assert verdict([stable], None)[0] == "pass"
+    assert verdict([stable, gaining], None)[0] == "fail"
 
 
 def test_a_nearly_undamped_linear_spring_is_stable_up_to_two_over_omega():
