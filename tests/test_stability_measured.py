@@ -6,6 +6,7 @@ import math
 import subprocess
 import sys
 
+import pandas as pd
 import pytest
 
 from conftest import needs
@@ -158,3 +159,21 @@ def test_a_named_engine_that_is_missing_is_exit_3_and_the_reference_still_runs(t
     assert summary["could_not_run"] == ["lammps"]
     assert [row["engine"] for row in summary["rows"]] == ["reference"]
     assert (tmp_path / "out" / "stability.csv").is_file()
+
+
+def test_an_engine_that_fails_every_run_exits_3_with_its_log_tail(tmp_path, monkeypatch, capfd):
+    """A LIGGGHTS that fails every run (a stand-in script: a crash cannot be had from the real one on demand): no
+    stable step, its log tail on stderr and in stability.csv, exit 3; the reference's row is kept."""
+    from conftest import fake_executable
+    from harness.commands import main
+    from harness.engines import liggghts
+    monkeypatch.setenv(liggghts.BINARY_VARIABLE, fake_executable(tmp_path, 'echo "ERROR: out of cheese"; exit 1'))
+    out = tmp_path / "s"
+    assert main(["stability", "--model", "hertz-mindlin", "--case", "mu = 2", "--en", "0.5", "--engines", "liggghts",
+                 "-o", str(out)]) == 3
+    said = capfd.readouterr()
+    assert "out of cheese" in said.err
+    table = pd.read_csv(out / "stability.csv")
+    assert list(table.engine) == ["reference", "reference", "liggghts"]
+    crashed = table.iloc[-1]
+    assert math.isnan(crashed.dt_stable) and "out of cheese" in crashed.log_tail and crashed.verdict == "fail"

@@ -26,14 +26,16 @@ class Probe:
     why: str
     gain: float = math.nan
     drift: float = math.nan
+    log_tail: str = ""      # a failed engine run's log tail
 
 
-def impact_probe(frame, dt, failure=""):
-    """The Probe of an impact run's results table: unstable where the run failed (`failure`, its message), a row is
+def impact_probe(frame, dt, failure="", log_tail=""):
+    """The Probe of an impact run's results table: unstable where the run failed (`failure`, its message, and its
+    `log_tail`), a row is
     non-finite (LOST) or its rebound not finite, or the largest ke_ratio - 1 over the impacts is above IMPACT_GAIN
     (every law here has e <= 1: none may return more energy than it was given)."""
     if failure:
-        return Probe(dt, False, f"run failed: {failure}")
+        return Probe(dt, False, f"run failed: {failure}", log_tail=log_tail)
     status = frame.status.to_numpy()
     lost = np.isin(status, LOST)
     if lost.any():

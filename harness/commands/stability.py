@@ -75,13 +75,18 @@ def main(args):
     path = os.path.join(args.output, CSV)
     with exclusive(args.output):
         write_csv(table, path)
+    crashed = table.log_tail.fillna("").astype(str).str.strip() != ""
+    for _, row in table[crashed].iterrows():
+        print(f"harness: {row.engine} failed at every step tried ({row.verdict_note}); its log ends:\n"
+              f"{row.log_tail.rstrip()}", file=sys.stderr)
+    could_not_run = [name for name, _ in missing] + sorted(set(table[crashed].engine))
     failed = int((table.verdict != "pass").sum())
-    code = EXIT_DISAGREE if failed else EXIT_ENGINE if missing else EXIT_OK
+    code = EXIT_DISAGREE if (table.verdict[~crashed] != "pass").any() else EXIT_ENGINE if could_not_run else EXIT_OK
     if args.json:
-        print(stability_json(table, path, code, [name for name, _ in missing]))
+        print(stability_json(table, path, code, could_not_run))
         return code
     if not args.quiet:
         print(stability_table(table))
     print(f"stability of {law.name}: {len(table) - failed} of {len(table)} rows pass, {failed} fail -> {path}"
-          + (f"; could not run: {', '.join(name for name, _ in missing)}" if missing else ""))
+          + (f"; could not run: {', '.join(could_not_run)}" if could_not_run else ""))
     return code

@@ -33,7 +33,7 @@ SCENE_EN = (0.05, 0.5)      # a scene kind's e_n unless given (a resting sphere 
 HELD_TIMES = 101            # recorded heights of a resting sphere while it is held
 COLUMNS = ("case", "e_n", "engine", "dialect", "law", "dt_estimate", "dt_stable", "dt_unstable", "stable_how",
            "dt_accurate_1e-3", "accurate_how", "dt_rayleigh_20", "rayleigh_20_stable", "stable_over_rayleigh_20",
-           "accurate_over_rayleigh_20", "stable_over_accurate", "verdict", "verdict_note", "probes")
+           "accurate_over_rayleigh_20", "stable_over_accurate", "verdict", "verdict_note", "probes", "log_tail")
 
 
 @dataclass(frozen=True)
@@ -84,8 +84,8 @@ def run_case(case, runner, dt):
     if case.kind is None:
         if runner.engine is None:
             return impact_probe(reference_impacts(runner.law, case.scene, dt), dt)
-        frame, failure = engine_impacts(runner, case.scene, dt)
-        return impact_probe(frame, dt, failure)
+        frame, failure, log_tail = engine_impacts(runner, case.scene, dt)
+        return impact_probe(frame, dt, failure, log_tail)
     if runner.engine is not None:
         raise UserError(f"engines do not run scenes yet: scene {case.kind.NAME} runs on the reference solver alone")
     return reference_scene_probe(case, runner.law, dt)
@@ -100,11 +100,14 @@ def reference_impacts(law, scene, dt):
 
 
 def engine_impacts(runner, scene, dt):
-    """(results table, failure message or '') of the engine running its dialect on the scene's impacts at dt."""
+    """(results table, failure message or '', its log tail) of the engine running its dialect on the scene's impacts
+    at dt."""
     run = engine_runs(runner.engine, runner.law, scene, FixedTimeStep(dt), dict(runner.options))[0]
     unchecked = UncheckedRun(**{f.name: getattr(run, f.name) for f in fields(run)})
     frame, failure = runner.engine.run([unchecked])[0]
-    return frame, "" if failure is None else (failure.message.strip().splitlines() or ["no message"])[0]
+    if failure is None:
+        return frame, "", ""
+    return frame, (failure.message.strip().splitlines() or ["no message"])[0], failure.log_tail
 
 
 def scene_case(case, law, dt):
@@ -249,7 +252,7 @@ def measure(case, runner, accurate=None):
         return {**row, "dt_stable": math.nan, "dt_unstable": last.dt,
                 "stable_how": f"no stable step found down to dt {last.dt:.4g} s: {last.why}",
                 "dt_accurate_1e-3": math.nan, "accurate_how": "no stable step", "verdict": "fail",
-                "verdict_note": f"unstable down to dt {last.dt:.4g} s: {last.why}"}
+                "verdict_note": f"unstable down to dt {last.dt:.4g} s: {last.why}", "log_tail": last.log_tail}
     dt_s = bracket.stable.dt
     if bracket.unstable is None:
         how_s = (f"no unstable step up to one step per contact (t_c = {ceiling:.4g} s): {bracket.stable.why}")
@@ -259,7 +262,7 @@ def measure(case, runner, accurate=None):
     dt_a, how_a = accurate if accurate is not None else accurate_step(case, law, dt_s)
     passed, note = verdict([p for p in bracket.probes if p.dt <= dt_s] + inside, rayleigh)
     return {**row, "dt_stable": dt_s, "dt_unstable": math.nan if bracket.unstable is None else bracket.unstable.dt,
-            "stable_how": how_s, "dt_accurate_1e-3": dt_a, "accurate_how": how_a, "verdict": passed,
+            "log_tail": "", "stable_how": how_s, "dt_accurate_1e-3": dt_a, "accurate_how": how_a, "verdict": passed,
             "verdict_note": note, "probes": len(bracket.probes) + 1 + len(inside)}
 
 
