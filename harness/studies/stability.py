@@ -255,7 +255,8 @@ def measure(case, runner, accurate=None):
                 "verdict_note": f"unstable down to dt {last.dt:.4g} s: {last.why}", "log_tail": last.log_tail}
     dt_s = bracket.stable.dt
     if bracket.unstable is None:
-        how_s = (f"no unstable step up to one step per contact (t_c = {ceiling:.4g} s): {bracket.stable.why}")
+        per = "contact" if case.kind is None else "contact or resting oscillation"
+        how_s = f"no unstable step up to the ceiling, one step per {per} ({ceiling:.4g} s): {bracket.stable.why}"
     else:
         how_s = f"bisection to {PRECISION:.0%}; unstable at {bracket.unstable.dt:.4g} s: {bracket.unstable.why}"
     inside = [run_case(case, runner, dt_s / k) for k in INSIDE]
