@@ -55,7 +55,7 @@ def test_listing_and_an_unknown_law_load_no_kernel_table_or_plot(argv, tmp_path)
 
 @pytest.mark.parametrize("command", ["compare", "run", "cost", "calibrate", "paper", "benchmark", "campaign", "check",
                                      "baseline", "render", "report", "query", "compile", "models", "scenes", "engines",
-                                     "cite"])
+                                     "cite", "stability"])
 def test_a_commands_help_imports_none_of_its_implementation(command, tmp_path):
     code, modules = imported([command, "--help"], tmp_path)
     assert code == 0

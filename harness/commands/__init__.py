@@ -26,6 +26,8 @@ COMMANDS = {   # name -> (its module, its summary): the parser lists every comma
                                "step a tolerance needs"),
     "cost": ("cost", "accuracy against time: a ladder of steps per contact for the paper law, each engine's dialect "
                      "and each engine; cost.csv and the report"),
+    "stability": ("stability", "the largest stable time step per hard case or scene and engine, by bisection, beside "
+                               "the step 1e-3 accuracy needs and a fifth of the Rayleigh time; stability.csv"),
     "paper": ("paper", "the paper's figure set: Psi2*, Omega*, e_t against Psi1* per law at its e_n, contact duration "
                        "and peak force against e_n, where each law slides throughout"),
     "benchmark": ("benchmark", "a published verification suite (Chung & Ooi 2011's eight tests) on the reference and "

@@ -14,7 +14,8 @@ EXIT_OK, EXIT_DISAGREE, EXIT_USAGE, EXIT_ENGINE, EXIT_INTERNAL, EXIT_INTERRUPTED
 EXIT_CODES = """exit codes:
   0  done; every engine compared agrees with its own formulas
   1  an engine disagrees with its own formulas (with `compare --require paper`, also: an engine deviates from
-     the paper law), `check` found a metric outside tolerance, or a closed-form check of `run --scene` failed
+     the paper law), `check` found a metric outside tolerance, a closed-form check of `run --scene` failed, or
+     a `stability` verdict failed
   2  bad input (one line on stderr says which); nothing was run
   3  an engine could not run (missing, mis-set, crashed, timed out: what and why is printed) while it was asked
      for by name or had runs that failed, or nothing was compared

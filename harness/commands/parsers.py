@@ -130,6 +130,24 @@ def cost_parser(sub, describe):
     p.set_defaults(func=runs("cost"))
 
 
+def stability_parser(sub, describe):
+    p = describe(sub, "stability", "harness stability --model hertz-mindlin --case 'mu = 2' --engines lammps -o out/")
+    p.add_argument("--model", required=True, type=law_name, help="law name (see `harness models`)")
+    add_scene_kind(p)
+    p.add_argument("--case", dest="cases", action="append", default=[], metavar="NAME",
+                   help="a hard case of the catalogue, repeatable (default: grazing 89.5 deg, mu = 2, E = 1e12 Pa, "
+                        "R = 10 um, the cases of the law alone, and the resting sphere)")
+    p.add_argument("--en", type=number_list, default=None, metavar="LIST",
+                   help="target e_n, e.g. 0.05,0.5 (default: each hard case's own; 0.05,0.5 for a scene kind)")
+    p.add_argument("--engines", default=None, metavar="LIST",
+                   help=f"comma-separated engines besides the reference ({', '.join(EXTERNAL)}, or a build "
+                        "ENGINE@VERSION): each engine and its dialect on the reference")
+    p.add_argument("-o", "--output", default="harness-stability", metavar="DIR",
+                   help="output directory (default %(default)s)")
+    add_output_options(p, json=True)
+    p.set_defaults(func=runs("stability"))
+
+
 def paper_parser(sub, describe):
     p = describe(sub, "paper", "harness paper -o paper/")
     p.add_argument("--laws", default=None, metavar="LIST", help="comma-separated laws (default: every law)")
