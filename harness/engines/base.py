@@ -17,6 +17,9 @@ from .runner import EngineFailure, read_tail
 DOUBLE = "double (IEEE 754 binary64)"
 
 
+SCENES_BEYOND_IMPACT = ("free-fall", "bounce", "rest", "slide-to-roll", "stack")   # what the four engines run
+
+
 class Engine:
     """An engine: one subpackage of harness/engines holding a subclass of this, and one line of the registry
     (engines/__init__.py). The defaults are those of an external engine run as a subprocess on batched inputs."""

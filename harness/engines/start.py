@@ -4,6 +4,7 @@ import math
 
 import numpy as np
 
+from ..scenes.scene import state_steps
 from .runner import EngineFailure
 
 STATE_COLUMNS = ("t", "overlap", "f_n", "f_t", "v_n", "v_t", "omega")
@@ -11,7 +12,7 @@ STATE_COLUMNS = ("t", "overlap", "f_n", "f_t", "v_n", "v_t", "omega")
 
 def named_steps(scene, dt):
     """The step whose end is the state at each named time: k = ceil(t/dt - 1e-9), the same in every engine."""
-    return [int(math.ceil(t / dt - 1e-9)) for t in scene.at_times]
+    return state_steps(scene.at_times, dt)
 
 
 def start_chunks(scene, spec):

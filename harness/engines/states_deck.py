@@ -6,7 +6,7 @@ import os
 
 import numpy as np
 
-from ..solver.states import state_steps
+from ..scenes.scene import state_steps
 from .dumps import read_final
 from .runner import EngineFailure
 
@@ -49,7 +49,7 @@ def read_states(directory, scene, spec, radius, engine):
     """(impacts, times, 7) states from the state dumps: t = k dt, overlap R - z, F_n = fz, F_t = fx (the wall's force
     on the sphere: no gravity, no sphere-sphere contact), v_n = vz, v_t = vx, omega = omegay; NaN at a time beyond
     the deck's step cap."""
-    steps = state_steps(scene.at_times, spec.dt)
+    steps = np.asarray(state_steps(scene.at_times, spec.dt), dtype=float)
     out = np.full((spec.impacts, len(steps), 7), np.nan)
     out[:, :, 0] = steps * spec.dt
     for j in range(len(dumped_steps(scene, spec))):

@@ -282,3 +282,12 @@ def from_material(name, **overrides):
     material_keys = ("radius", "E", "nu", "rho", "mu")     # None here means "the preset's value"
     values.update({k: v for k, v in overrides.items() if v is not None or k not in material_keys})
     return Scene(**values)
+
+
+STEP_ROUNDING = 1e-9            # a named time within this many steps of a step's end is that step's
+
+
+def state_steps(times, dt):
+    """k = ceil(t/dt - 1e-9) of each time: the step after which the state at t is taken, the same in the reference
+    and in every engine."""
+    return [int(math.ceil(t / dt - STEP_ROUNDING)) for t in times]

@@ -5,15 +5,15 @@ import numpy as np
 from . import codes as C
 from . import layout as L
 from .approach import FLAT, WITH_GRAVITY, leapfrog, overlap_after
+from ..scenes.scene import state_steps as named_steps
 from ..submodels.stepping import STEPPER_NAMES
 
 COLUMNS = ("t", "overlap", "f_n", "f_t", "v_n", "v_t", "omega")
-ROUNDING = 1e-9                 # a time within this many steps of a step is that step's
 
 
 def state_steps(times, dt):
-    """k = ceil(t/dt - 1e-9) of each time: the step after which the state at t is taken."""
-    return np.ceil(np.asarray(times, dtype=float) / dt - ROUNDING).astype(np.int64)
+    """The steps of the named times (harness.scenes.scene.state_steps) as an array."""
+    return np.asarray(named_steps(times, dt), dtype=np.int64)
 
 
 def kernel_markers(batch, times):

@@ -6,10 +6,9 @@ and output in script.py, the interpreter's probe in venv.py."""
 import os
 
 from ...infra.programs import from_variable, which
-from ..base import Engine
+from ..base import SCENES_BEYOND_IMPACT, Engine
 from ..builds import directory, prefix_binaries, sha256
 from .dialect import COUNTERPARTS, DIALECTS, PAIR_DIALECTS
-from .scene import KINDS as SCENE_KINDS, read_scene, render_scene, scene_reason
 from .script import INPUT, TEMPLATES, read_batch, render_batch, run_inputs, script, typed
 from .venv import PYTHON_VARIABLE, probe
 
@@ -30,16 +29,19 @@ class Kratos(Engine):
     STARTUP_S, SPHERE_STEP_S = 0.6, 7.5e-6      # bench_kratos.py: ~0.3 ms a step for 45 spheres
     CONTACT_LINES = ("MATERIALS = {", "RELATION = {")
     render_batch, read_batch = staticmethod(render_batch), staticmethod(read_batch)
-    SCENE_KINDS = SCENE_KINDS   # harness run --scene (scene.py)
+    SCENE_KINDS = SCENES_BEYOND_IMPACT   # harness run --scene (scene.py)
 
     def scene_reason(self, kind, law_name, options=None):
         """Why it cannot run scene `kind` for `law_name` with these options, '' when it can."""
+        from .scene import scene_reason
         return scene_reason(kind, law_name, options)
 
     def render_scene(self, kind, case, grid, options=None):
+        from .scene import render_scene
         return render_scene(kind, case, grid, options)
 
     def read_scene(self, kind, case, grid, directory):
+        from .scene import read_scene
         return read_scene(kind, case, grid, directory)
 
     def binary(self):

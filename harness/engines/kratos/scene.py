@@ -5,12 +5,12 @@ import os
 
 from ...infra.render import render
 from ...infra.version import __version__
+from ..base import SCENES_BEYOND_IMPACT as KINDS
 from ..runner import EngineFailure, read_tail
 from ..scene_rows import read_scene_rows, recorded_steps, start_vz
 from .dialect import COUNTERPARTS
 from .script import TEMPLATES
 
-KINDS = ("free-fall", "bounce", "rest", "slide-to-roll", "stack")
 
 
 def scene_reason(kind, law_name, options):

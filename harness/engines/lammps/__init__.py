@@ -4,11 +4,9 @@ versions.py."""
 import glob
 import os
 
-from ..base import Engine, split_submodels
-from ..scene_output import read_scene_output
+from ..base import SCENES_BEYOND_IMPACT, Engine, split_submodels
 from .deck import (BINARY_VARIABLE, OBSERVE_DUMP, TEMPLATES, deck, read_batch, render_batch, run_inputs, settings,
                    typed)
-from .scene import KINDS as SCENE_KINDS, read_forces, render_scene, scene_reason
 from .dialect import (COUNTERPARTS, DIALECTS, HISTORY_STYLES, INGREDIENTS, OPTIONS, PAIR_DIALECTS, check_options,
                       dialect, ingredients, releases_of, walls, words)
 from .versions import checked, dialect_note, release
@@ -47,17 +45,21 @@ class Lammps(Engine):
     STARTUP_S, SPHERE_STEP_S = 0.4, 0.1e-6      # harness cost: start-ups of 0.32-0.42 s, 9.6e-8 s per impact-step
     CONTACT_LINES = ("pair_style", "pair_coeff", "fix wall ")
     read_batch = staticmethod(read_batch)
-    SCENE_KINDS = SCENE_KINDS
+    SCENE_KINDS = SCENES_BEYOND_IMPACT   # harness run --scene (scene.py)
     START_FRICTION = False      # its set-up force of a contact at step 0 has fx = 0 (2021.9.29.2, 2025.7.22.4)
 
     def scene_reason(self, kind, law_name, options=None):
+        from .scene import scene_reason
         return super().scene_reason(kind, law_name, options) or \
             scene_reason(kind, law_name, split_submodels(options)[0], self.version())
 
     def render_scene(self, kind, case, grid, options=None):
+        from .scene import render_scene
         return render_scene(kind, case, grid, options, self.version())
 
     def read_scene(self, kind, case, grid, directory):
+        from ..scene_output import read_scene_output
+        from .scene import read_forces
         return read_scene_output("LAMMPS", kind, case, grid, directory, read_forces)
 
     def run_inputs(self, flavour, count, timeout_s, workdir):

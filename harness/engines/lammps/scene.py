@@ -3,13 +3,13 @@ ceiling), gravity where the scene has it, `pair_style granular` only for several
 engines/scene_output.py reads (docs/lammps-dialect.md#scenes)."""
 from ...infra.render import render
 from ...infra.version import __version__
+from ..base import SCENES_BEYOND_IMPACT as KINDS
 from ..runner import EngineFailure
 from ..scene_output import box, contact_scenes, last_frame, overlap
 from ...solver.system_contacts import WALL_ABOVE, WALL_BELOW
 from .deck import TEMPLATES, settings
 from .dialect import words
 
-KINDS = ("free-fall", "bounce", "rest", "slide-to-roll", "stack")
 
 
 def scene_reason(kind, law_name, options, version):

@@ -2,13 +2,11 @@
 are in dialect.py, its input and output in deck.py."""
 import re
 
-from ..base import Engine
+from ..base import SCENES_BEYOND_IMPACT, Engine
 from ..protocol import InputRange
 from .deck import (BINARY_VARIABLE, MIN_RESTITUTION, OBSERVE_DUMP, OTHER_WALL_MODELS, TEMPLATES, deck, read_batch,
                    read_dump, read_observation, render_batch, run_deck, run_inputs, settings, typed)
 from .dialect import COUNTERPARTS, DIALECTS, OPTIONS, PAIR_DIALECTS, dialect
-from .scene import KINDS as SCENE_KINDS, read_forces, render_scene, scene_reason
-from ..scene_output import read_scene_output
 
 STEPPING = ("hertz-mindlin", "linear-spring-dashpot")
 
@@ -49,15 +47,19 @@ class Liggghts(Engine):
     render_batch = staticmethod(render_batch)
     read_batch = staticmethod(read_batch)
 
-    SCENE_KINDS = SCENE_KINDS
+    SCENE_KINDS = SCENES_BEYOND_IMPACT   # harness run --scene (scene.py)
 
     def scene_reason(self, kind, law_name, options=None):
+        from .scene import scene_reason
         return super().scene_reason(kind, law_name, options) or scene_reason(kind, law_name)
 
     def render_scene(self, kind, case, grid, options=None):
+        from .scene import render_scene
         return render_scene(kind, case, grid, options)
 
     def read_scene(self, kind, case, grid, directory):
+        from ..scene_output import read_scene_output
+        from .scene import read_forces
         return read_scene_output("LIGGGHTS", kind, case, grid, directory, read_forces)
 
     def run_inputs(self, flavour, count, timeout_s, workdir):

@@ -8,12 +8,12 @@ import numpy as np
 from ...infra.render import render
 from ...infra.version import __version__
 from ...solver.system_contacts import WALL_ABOVE, WALL_BELOW
+from ..base import SCENES_BEYOND_IMPACT as KINDS
 from ..runner import EngineFailure
 from ..scene_output import box, contact_scenes, last_frame
 from .deck import MIN_RESTITUTION, TEMPLATES, settings
 from .dialect import COUNTERPARTS
 
-KINDS = ("free-fall", "bounce", "rest", "slide-to-roll", "stack")
 MODELS = ("hooke", "hertz")         # whose settings need no more of the scene than its contact, speed and friction
 
 

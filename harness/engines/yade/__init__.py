@@ -5,13 +5,12 @@ import os
 
 from ...infra.errors import UserError
 from ...infra.programs import which
-from ..base import Engine
+from ..base import SCENES_BEYOND_IMPACT, Engine
 from ..builds import sha256
 from .dialect import COUNTERPARTS, DIALECTS, OPTIONS, PAIR_DIALECTS, check_options, dialect
 from .flavours import (ARITHMETIC, FLAVOURS, PYTHON_VARIABLE, available, environment, flavour_path, missing_reason,
                        python, version)
 from .precision import HIGH, precision_runs
-from .scene import KINDS as SCENE_KINDS, read_scene, render_scene, scene_reason
 from .script import (OBSERVE_FILE, TEMPLATES, read_batch, read_observation, read_result, render_batch, run_inputs,
                      run_script, script, typed)
 
@@ -43,16 +42,19 @@ class Yade(Engine):
     CONTACT_LINES = ("material = ", "other = ", "InteractionLoop(")
     render_batch, run_inputs = staticmethod(render_batch), staticmethod(run_inputs)
     read_batch = staticmethod(read_batch)
-    SCENE_KINDS = SCENE_KINDS   # harness run --scene (scene.py)
+    SCENE_KINDS = SCENES_BEYOND_IMPACT   # harness run --scene (scene.py)
 
     def scene_reason(self, kind, law_name, options=None):
         """Why it cannot run scene `kind` for `law_name` with these options, '' when it can."""
+        from .scene import scene_reason
         return scene_reason(kind, law_name, options)
 
     def render_scene(self, kind, case, grid, options=None):
+        from .scene import render_scene
         return render_scene(kind, case, grid, options)
 
     def read_scene(self, kind, case, grid, directory):
+        from .scene import read_scene
         return read_scene(kind, case, grid, directory)
 
     def available(self, flavour="double"):

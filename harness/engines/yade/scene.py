@@ -6,13 +6,13 @@ from types import SimpleNamespace
 
 from ...infra.render import render
 from ...infra.version import __version__
+from ..base import SCENES_BEYOND_IMPACT as KINDS
 from ..runner import EngineFailure
 from ..scene_rows import read_scene_rows, recorded_steps, start_vz
 from ...solver.system_run import contact_pairs
 from .dialect import COUNTERPARTS
 from .script import TEMPLATES, viscel_contact_time
 
-KINDS = ("free-fall", "bounce", "rest", "slide-to-roll", "stack")
 LAWS = ("hertz-mindlin", "linear-spring-dashpot")       # the laws whose impact inputs on a wall scenes reuse
 DEFAULTS = {"precision": "double", "linear": "viscel"}  # the only option values they take: the defaults
 
