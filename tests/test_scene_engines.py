@@ -207,3 +207,12 @@ def test_an_engine_that_cannot_follow_a_with_is_skipped_with_why():
                        with_={"end": "no-tension"}, en=[0.5], **SOFT)
     assert "cannot follow --with end=no-tension" in done.unavailable["lammps"]
     assert set(done.checks.engine) == {"reference"}
+
+
+def test_a_failed_agreement_names_the_dialects_ingredient_the_integrator_leaves_out():
+    """YADE's Mindlin dialect slips by noRatch (the wall's reference radius), which the small-system integrator does
+    not follow; LAMMPS' slips by its lever, which it does."""
+    from harness.studies.scene_engines import left_out_ingredients
+    assert ENGINES["yade"].dialect("hertz-mindlin").slip == "noratch"
+    assert left_out_ingredients(ENGINES["yade"].dialect("hertz-mindlin")) == ["slip noratch (it takes the lever's)"]
+    assert left_out_ingredients(ENGINES["lammps"].dialect("hertz-mindlin")) == []

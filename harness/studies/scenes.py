@@ -63,7 +63,7 @@ def run_scene(law, kind, values, scene, resolution, engines=(), engine_options=N
             own = case_checks(engine.NAME, law, kind, values, case, ran, skipped)
             rows += explained(own, case_checks(engine.NAME, law, kind, values, case, dialect, {}),
                               dialect_ingredients(engine, law, options))
-            rows.append(agreement_row(engine, kind.NAME, case, ran, dialect))
+            rows.append(agreement_row(engine, kind.NAME, case, ran, dialect, law.name, options))
     return SceneRun(kind.NAME, pd.concat(series, ignore_index=True), pd.DataFrame(rows, columns=CHECK_COLUMNS),
                     skipped, unavailable, law.name, dict(values), scene.radius)
 
