@@ -50,7 +50,8 @@ def engines_of(args, law, scene_kind):
     the law here is reported, not run."""
     names = [n.strip() for n in (args.engines or "").split(",") if n.strip() and n.strip() != "reference"]
     if names and scene_kind != IMPACT:
-        raise UserError(f"stability does not run scenes on engines yet: scene {scene_kind} runs on the reference solver alone")
+        raise UserError(f"stability does not run scenes on engines yet: scene {scene_kind} runs on the "
+                        "reference solver alone")
     engines, missing = [], []
     for name in names:
         engine = get_engine(name)

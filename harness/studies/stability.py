@@ -87,7 +87,8 @@ def run_case(case, runner, dt):
         frame, failure, log_tail = engine_impacts(runner, case.scene, dt)
         return impact_probe(frame, dt, failure, log_tail)
     if runner.engine is not None:
-        raise UserError(f"stability does not run scenes on engines yet: scene {case.kind.NAME} runs on the reference solver alone")
+        raise UserError(f"stability does not run scenes on engines yet: scene {case.kind.NAME} runs on the "
+                        "reference solver alone")
     return reference_scene_probe(case, runner.law, dt)
 
 
