@@ -3,6 +3,7 @@ and status, its dialects composed from sub-models, batching in scratch directori
 and declares every hook a command uses; an engine is a subclass that overrides what differs (docs/engines.md)."""
 import copy
 import dataclasses
+import importlib
 import os
 import sys
 from functools import lru_cache
@@ -282,16 +283,22 @@ class Engine:
 
     def run_batch(self, paper_law, scene, spec, timeout_s, workdir, options=None, observe=False):
         """One run's spec alone in `workdir`: (final state as read_batch gives it, wall seconds, log tail)."""
+        return self.run_alone(self.render_batch(paper_law, scene, spec, options, observe), options, timeout_s, workdir,
+                              lambda directory: self.read_batch(scene, spec, directory, observe))
+
+    def run_alone(self, text, options, timeout_s, workdir, read):
+        """Run one input `text` alone in workdir/batch0 through run_inputs (process group, timeout, log tail):
+        (read(directory), wall seconds, log tail); an EngineFailure carries the log tail."""
         directory = os.path.join(workdir, "batch0")
         os.makedirs(directory, exist_ok=True)
         with open(os.path.join(directory, self.INPUT_NAME), "w") as handle:
-            handle.write(self.render_batch(paper_law, scene, spec, options, observe))
+            handle.write(text)
         wall, = self.run_inputs(self.flavour(dict(options or {})), 1, timeout_s, workdir)
         log_tail = read_tail(os.path.join(workdir, "engine.log"))
         if isinstance(wall, EngineFailure):
             raise wall
         try:
-            return self.read_batch(scene, spec, directory, observe), wall, log_tail
+            return read(directory), wall, log_tail
         except EngineFailure as exc:
             raise EngineFailure(str(exc), exc.log_tail or log_tail) from None
 
@@ -325,18 +332,8 @@ class Engine:
     def run_scene(self, kind, case, grid, timeout_s, workdir, options=None):
         """One scene case run alone in workdir/batch0 through run_inputs (process group, timeout, log tail):
         (read_scene's SystemResult, wall seconds, log tail); an EngineFailure carries the log tail."""
-        directory = os.path.join(workdir, "batch0")
-        os.makedirs(directory, exist_ok=True)
-        with open(os.path.join(directory, self.INPUT_NAME), "w") as handle:
-            handle.write(self.render_scene(kind, case, grid, options))
-        wall, = self.run_inputs(self.flavour(dict(options or {})), 1, timeout_s, workdir)
-        log_tail = read_tail(os.path.join(workdir, "engine.log"))
-        if isinstance(wall, EngineFailure):
-            raise wall
-        try:
-            return self.read_scene(kind, case, grid, directory), wall, log_tail
-        except EngineFailure as exc:
-            raise EngineFailure(str(exc), exc.log_tail or log_tail) from None
+        return self.run_alone(self.render_scene(kind, case, grid, options), options, timeout_s, workdir,
+                              lambda directory: self.read_scene(kind, case, grid, directory))
 
     def render(self, run):
         """(file name, text) of the input a run would give the engine (harness render); a refusal of its input
@@ -362,3 +359,22 @@ def split_submodels(options):
     of its dialect."""
     options = dict(options or {})
     return options, {key[len(WITH_PREFIX):]: options.pop(key) for key in list(options) if key.startswith(WITH_PREFIX)}
+
+
+class SceneScripts:
+    """Scene hooks of an engine whose package's scene.py renders and reads them (`scene_reason`, `render_scene`,
+    `read_scene` there, imported only when a scene runs)."""
+    SCENE_KINDS = SCENES_BEYOND_IMPACT
+
+    def _scene_module(self):
+        return importlib.import_module(f"{type(self).__module__}.scene")
+
+    def scene_reason(self, kind, law_name, options=None):
+        """Why it cannot run scene `kind` for `law_name` with these options, '' when it can."""
+        return self._scene_module().scene_reason(kind, law_name, options)
+
+    def render_scene(self, kind, case, grid, options=None):
+        return self._scene_module().render_scene(kind, case, grid, options)
+
+    def read_scene(self, kind, case, grid, directory):
+        return self._scene_module().read_scene(kind, case, grid, directory)

@@ -6,14 +6,14 @@ and output in script.py, the interpreter's probe in venv.py."""
 import os
 
 from ...infra.programs import from_variable, which
-from ..base import SCENES_BEYOND_IMPACT, Engine
+from ..base import Engine, SceneScripts
 from ..builds import directory, prefix_binaries, sha256
 from .dialect import COUNTERPARTS, DIALECTS, PAIR_DIALECTS
 from .script import INPUT, TEMPLATES, read_batch, render_batch, run_inputs, script, typed
 from .venv import PYTHON_VARIABLE, probe
 
 
-class Kratos(Engine):
+class Kratos(SceneScripts, Engine):
     NAME = "kratos"
     STARTS_APART = ("wall",)
     INPUT_SUFFIX, INPUT_NAME = ".py", INPUT
@@ -29,21 +29,6 @@ class Kratos(Engine):
     STARTUP_S, SPHERE_STEP_S = 0.6, 7.5e-6      # bench_kratos.py: ~0.3 ms a step for 45 spheres
     CONTACT_LINES = ("MATERIALS = {", "RELATION = {")
     render_batch, read_batch = staticmethod(render_batch), staticmethod(read_batch)
-    SCENE_KINDS = SCENES_BEYOND_IMPACT   # harness run --scene (scene.py)
-
-    def scene_reason(self, kind, law_name, options=None):
-        """Why it cannot run scene `kind` for `law_name` with these options, '' when it can."""
-        from .scene import scene_reason
-        return scene_reason(kind, law_name, options)
-
-    def render_scene(self, kind, case, grid, options=None):
-        from .scene import render_scene
-        return render_scene(kind, case, grid, options)
-
-    def read_scene(self, kind, case, grid, directory):
-        from .scene import read_scene
-        return read_scene(kind, case, grid, directory)
-
     def binary(self):
         """The interpreter that runs: a build's own, else HARNESS_KRATOS_PYTHON, else the newest prefix's python
         ('' when there is none)."""

@@ -5,7 +5,7 @@ import os
 
 from ...infra.errors import UserError
 from ...infra.programs import which
-from ..base import SCENES_BEYOND_IMPACT, Engine
+from ..base import Engine, SceneScripts
 from ..builds import sha256
 from .dialect import COUNTERPARTS, DIALECTS, OPTIONS, PAIR_DIALECTS, check_options, dialect
 from .flavours import (ARITHMETIC, FLAVOURS, PYTHON_VARIABLE, available, environment, flavour_path, missing_reason,
@@ -17,7 +17,7 @@ from .script import (OBSERVE_FILE, TEMPLATES, read_batch, read_observation, read
 LEAPFROG = ("hertz-mindlin", "linear-spring-dashpot")
 
 
-class Yade(Engine):
+class Yade(SceneScripts, Engine):
     NAME = "yade"
     STARTS_APART = ("wall",)
     INPUT_SUFFIX, INPUT_NAME = ".py", "harness_yade.py"
@@ -42,21 +42,6 @@ class Yade(Engine):
     CONTACT_LINES = ("material = ", "other = ", "InteractionLoop(")
     render_batch, run_inputs = staticmethod(render_batch), staticmethod(run_inputs)
     read_batch = staticmethod(read_batch)
-    SCENE_KINDS = SCENES_BEYOND_IMPACT   # harness run --scene (scene.py)
-
-    def scene_reason(self, kind, law_name, options=None):
-        """Why it cannot run scene `kind` for `law_name` with these options, '' when it can."""
-        from .scene import scene_reason
-        return scene_reason(kind, law_name, options)
-
-    def render_scene(self, kind, case, grid, options=None):
-        from .scene import render_scene
-        return render_scene(kind, case, grid, options)
-
-    def read_scene(self, kind, case, grid, directory):
-        from .scene import read_scene
-        return read_scene(kind, case, grid, directory)
-
     def available(self, flavour="double"):
         """Debian's python3.11 and the flavour's module directory are both there."""
         return available(flavour or "double")
