@@ -290,7 +290,7 @@ def test_findings_wrap_between_words_and_keep_every_number(capsys, monkeypatch):
               "omega0 0 rad/s); known cause: its formulas in the reference do the same; its velocity-Verlet step")
     record = {"model": "m", "engines": [], "e_n": [0.25], "impacts": 1, "skipped": [], "tolerances": {},
               "findings": [{"engine": "liggghts", "dialect": "liggghts", "kind": "Coulomb bound", "detail": detail}]}
-    print_summary(record, SimpleNamespace(failures=[], versions=pd.DataFrame(), builds={}), ["x"])
+    print_summary(record, SimpleNamespace(failures=[], versions=pd.DataFrame(), builds={}, states=None), ["x"])
     lines = capsys.readouterr().out.splitlines()[1:-1]
     assert all(len(line) <= 80 and not line.endswith("...") for line in lines)
     assert " ".join(line.strip() for line in lines) == f"finding: liggghts (liggghts): Coulomb bound: {detail}"
