@@ -14,15 +14,15 @@ from ..scene_output import box, contact_scenes, last_frame
 from .deck import MIN_RESTITUTION, TEMPLATES, settings
 from .dialect import COUNTERPARTS
 
-MODELS = ("hooke", "hertz")         # whose settings need no more of the scene than its contact, speed and friction
+SCENE_MODELS = ("hooke", "hertz")         # whose settings need no more of the scene than its contact, speed and friction
 
 
 def scene_reason(kind, law_name):
     """Why LIGGGHTS' scene inputs cannot run `kind` for the law, '' when they can."""
     if kind not in KINDS:
         return f"LIGGGHTS runs no {kind} scene"
-    if COUNTERPARTS.get(law_name) not in MODELS:
-        return f"LIGGGHTS' scene inputs take models {' and '.join(MODELS)}, not {COUNTERPARTS.get(law_name)}"
+    if COUNTERPARTS.get(law_name) not in SCENE_MODELS:
+        return f"LIGGGHTS' scene inputs take models {' and '.join(SCENE_MODELS)}, not {COUNTERPARTS.get(law_name)}"
     return ""
 
 
