@@ -14,7 +14,7 @@ from ..scene_output import box, contact_scenes, last_frame
 from .deck import MIN_RESTITUTION, TEMPLATES, settings
 from .dialect import COUNTERPARTS
 
-SCENE_MODELS = ("hooke", "hertz")         # whose settings need no more of the scene than its contact, speed and friction
+SCENE_MODELS = ("hooke", "hertz")   # whose settings need no more of the scene than its contact, speed and friction
 
 
 def scene_reason(kind, law_name):
