@@ -205,3 +205,16 @@ def sweep_stale(root=None):
         shutil.rmtree(path, ignore_errors=True)
         removed += 1
     return removed
+
+
+def ended_lines(path, engine, what):
+    """The lines of an engine's output file before its closing END line; an EngineFailure naming `what` when the
+    file is missing or has no END line (a run cut short)."""
+    try:
+        with open(path) as handle:
+            lines = handle.read().splitlines()
+    except OSError:
+        raise EngineFailure(f"{engine} wrote no {what}") from None
+    if not lines or lines[-1] != "END":
+        raise EngineFailure(f"{engine} {what} is truncated (no END line)")
+    return lines[:-1]

@@ -22,7 +22,7 @@ from ..solver.system import (E_CONTACT, E_KIND, E_SLIP, E_TIME, E_VN, F_ALPHA, F
                              M_STATUS, M_STEPS, M_TIME, N_EVENT, N_FINAL, N_METRICS, PART, STATUS_NONFINITE,
                              STATUS_OK, TOUCH)
 from ..solver.system_run import SystemResult, body_rows, contact_pairs
-from .runner import EngineFailure
+from .runner import EngineFailure, ended_lines
 
 OUTPUT = "scene.txt"
 STATE_FIELDS = 5                # x z vx vz w
@@ -46,16 +46,10 @@ def recorded_steps(grid, dt):
 def parse(path, engine):
     """(states {step: {body: row}}, later {step: {body: (vx, vz, w) a step later}}, events [(kind, step, contact,
     vz)], contacts {k: (overlap, F_n, F_t)})."""
-    try:
-        with open(path) as handle:
-            lines = handle.read().splitlines()
-    except OSError:
-        raise EngineFailure(f"{engine} wrote no {os.path.basename(path)}") from None
-    if not lines or lines[-1] != "END":
-        raise EngineFailure(f"{engine} {os.path.basename(path)} is truncated (no END line)")
+    lines = ended_lines(path, engine, os.path.basename(path))
     states, later, events, contacts = {}, {}, [], {}
     try:
-        for line in lines[:-1]:
+        for line in lines:
             tag, *words = line.split()
             if tag == "state":
                 states.setdefault(int(words[0]), {})[int(words[1])] = [float(w) for w in words[2:2 + STATE_FIELDS]]

@@ -9,7 +9,7 @@ from ...infra.version import __version__
 from ...infra.render import render
 from ...infra.wording import counted
 from ..dumps import pair_rebound, rebound
-from ..runner import EngineFailure, remove_engine_tmpdir, run_engine
+from ..runner import EngineFailure, ended_lines, remove_engine_tmpdir, run_engine
 from ..start import approach_drift, stepping, states_array
 from .dialect import COUNTERPARTS
 from .flavours import environment, python
@@ -108,15 +108,9 @@ def pair_script(scene, e_n, v_n0, v_t0, omega0, common):
 def read_result(path, n_spheres, what="result file", columns=5):
     """(left, vx, vz, wy) per sphere (or the four columns of the observe file, or a pair's ten: see PAIR_COLUMNS);
     EngineFailure when missing or truncated."""
+    lines = ended_lines(path, "YADE", what)
     try:
-        with open(path) as handle:
-            lines = handle.read().splitlines()
-    except OSError:
-        raise EngineFailure(f"YADE wrote no {what}") from None
-    if not lines or lines[-1] != "END":
-        raise EngineFailure(f"YADE {what} is truncated (no END line)")
-    try:
-        rows = np.array([[float(x) for x in line.split()] for line in lines[:-1]])
+        rows = np.array([[float(x) for x in line.split()] for line in lines])
     except ValueError:
         raise EngineFailure(f"YADE {what} is malformed") from None
     if len(rows) > n_spheres:
@@ -183,16 +177,10 @@ def read_states(path, scene, spec):
     """The states at Scene.at_times (engines/start.py's array): overlap, forces along the normal and tangent, and
     the velocities and spin as the results table gives them (the half-step velocity the step ends with, a pair's
     relative one); EngineFailure when missing, truncated or short of a state."""
-    try:
-        with open(path) as handle:
-            lines = handle.read().splitlines()
-    except OSError:
-        raise EngineFailure("YADE wrote no states file") from None
-    if not lines or lines[-1] != "END":
-        raise EngineFailure("YADE states file is truncated (no END line)")
+    lines = ended_lines(path, "YADE", "states file")
     widths = (15,) if scene.spheres else (10, 15)  # a target's (or a stand-in sphere's) x, z, vx, vz, omega_y follow
     try:
-        rows = np.array([[float(x) for x in line.split()] for line in lines[:-1]], dtype=float)
+        rows = np.array([[float(x) for x in line.split()] for line in lines], dtype=float)
     except ValueError:
         raise EngineFailure("YADE states file is malformed") from None
     if rows.ndim != 2 or rows.shape[1] not in widths:
